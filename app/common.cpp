@@ -1,0 +1,44 @@
+#include "app/common.hpp"
+
+#include <sys/resource.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+
+namespace skinfem::app {
+
+void prepare_output_dir(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir))
+    throw std::runtime_error("--out " + dir + ": cannot create output directory (" + ec.message() + ")");
+}
+
+void write_text_atomic(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp);
+    out << text;
+    if (!out) throw std::runtime_error("cannot write " + path);
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+void write_json(const std::string& path, const nlohmann::json& j) { write_text_atomic(path, j.dump(2) + "\n"); }
+
+double peak_rss_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+void progress(const std::string& message) { std::cerr << "[skinfem] " << message << std::endl; }
+
+nlohmann::json scene_json(const Scene& scene) {
+  return {{"name", scene.name}, {"source", scene.source_path}, {"E_MPa", scene.material.E},
+          {"nu", scene.material.nu}, {"sensors", scene.sensors.positions.size()}};
+}
+
+}  // namespace skinfem::app

@@ -1,0 +1,41 @@
+// skinfem — finite-element verification toolkit for tactile sensors under an elastomer skin.
+// Subcommands: mesh (see each cmd_*.cpp for what it computes and writes).
+// Exit codes: 0 success, 2 bad input (scene or arguments), 1 any other failure.
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "app/commands.hpp"
+#include "mesh/surface.hpp"
+#include "scene/load.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App cli{"skinfem: FE verification toolkit for biomimetic tactile sensors (units: mm, N, MPa)"};
+  cli.require_subcommand(1);
+  std::string scene_path, out_dir = "out";
+
+  auto* mesh = cli.add_subcommand("mesh", "mesh the scene's skin (writes mesh.vtu, boundary.vtu, summary.json)");
+  for (auto* sub : {mesh}) {
+    sub->add_option("scene", scene_path, "scene JSON file")->required();
+    sub->add_option("--out", out_dir, "output directory")->capture_default_str();
+  }
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = cli.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  try {
+    const skinfem::Scene scene = skinfem::load_scene(scene_path);
+    if (mesh->parsed()) return skinfem::app::run_mesh(scene, out_dir);
+  } catch (const skinfem::SceneError& e) {
+    std::cerr << "skinfem: " << e.what() << std::endl;
+    return 2;
+  } catch (const skinfem::MeshError& e) {
+    std::cerr << "skinfem: mesh: " << e.what() << std::endl;
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "skinfem: " << e.what() << std::endl;
+    return 1;
+  }
+  return 1;
+}

@@ -1,0 +1,75 @@
+#include "mesh/build.hpp"
+
+#include <map>
+
+#include "mesh/p2_tet.hpp"
+#include "mesh/shape.hpp"
+#include "mesh/surface.hpp"
+#include "mesh/tetrahedralize.hpp"
+
+namespace skinfem {
+
+TetMesh make_quadratic(const RowMatrixX3d& points, const Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor>& tets,
+                       const RowMatrixX3i& faces, const Eigen::VectorXi& face_marker, const Geometry& geometry) {
+  const SkinShape shape(geometry);
+  const int nv = points.rows();
+  auto key = [](int a, int b) { return a < b ? std::pair{a, b} : std::pair{b, a}; };
+
+  // Which boundary parts each boundary edge lies on decides where its mid-node goes.
+  std::map<std::pair<int, int>, int> edge_marker;
+  for (int f = 0; f < faces.rows(); ++f)
+    for (int e = 0; e < 3; ++e) edge_marker[key(faces(f, e), faces(f, (e + 1) % 3))] |= face_marker(f);
+
+  TetMesh m;
+  m.num_vertices = nv;
+  std::map<std::pair<int, int>, int> mid;
+  std::vector<Eigen::Vector3d> extra;
+  auto mid_node = [&](int a, int b) {
+    auto [it, fresh] = mid.emplace(key(a, b), nv + static_cast<int>(extra.size()));
+    if (fresh) {
+      Eigen::Vector3d p = 0.5 * (points.row(a) + points.row(b)).transpose();
+      auto em = edge_marker.find(key(a, b));
+      const int marker = em == edge_marker.end() ? 0 : em->second;
+      if (shape.exact()) {
+        if (marker & kSide) {
+          const Vec3 q = shape.on_side({p.x(), p.y(), p.z()});
+          p << q[0], q[1], q[2];
+        }
+        if (marker & kTop) p.z() = shape.top_z(p.x(), p.y());
+      }
+      extra.push_back(p);
+    }
+    return it->second;
+  };
+  m.tets.resize(tets.rows(), 10);
+  for (int t = 0; t < tets.rows(); ++t) {
+    for (int k = 0; k < 4; ++k) m.tets(t, k) = tets(t, k);
+    for (int e = 0; e < 6; ++e) m.tets(t, 4 + e) = mid_node(tets(t, p2::kEdge[e][0]), tets(t, p2::kEdge[e][1]));
+  }
+  m.nodes.resize(nv + extra.size(), 3);
+  m.nodes.topRows(nv) = points;
+  for (size_t i = 0; i < extra.size(); ++i) m.nodes.row(nv + i) = extra[i];
+
+  m.faces.resize(faces.rows(), 6);
+  m.face_marker = face_marker;
+  m.node_marker = Eigen::VectorXi::Zero(m.nodes.rows());
+  for (int f = 0; f < faces.rows(); ++f) {
+    for (int e = 0; e < 3; ++e) {
+      m.faces(f, e) = faces(f, e);
+      m.faces(f, 3 + e) = mid.at(key(faces(f, e), faces(f, (e + 1) % 3)));
+    }
+    for (int k = 0; k < 6; ++k) m.node_marker(m.faces(f, k)) |= face_marker(f);
+  }
+  return m;
+}
+
+TetMesh build_mesh(const Scene& scene) {
+  const SizingField size(scene.mesh, scene.sensors);
+  const bool generated = scene.geometry.kind != GeometryKind::surface;
+  const SurfaceMesh surface =
+      generated ? layer_surface(scene.geometry, size) : import_surface(scene.geometry.surface.path);
+  const LinearTets lin = tetrahedralize(surface, size, scene.mesh, /*preserve_surface=*/generated);
+  return make_quadratic(lin.points, lin.tets, lin.faces, lin.face_marker, scene.geometry);
+}
+
+}  // namespace skinfem

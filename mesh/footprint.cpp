@@ -1,0 +1,156 @@
+#include "mesh/footprint.hpp"
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Delaunay_mesh_criteria_2.h>
+#include <CGAL/Delaunay_mesh_face_base_2.h>
+#include <CGAL/Delaunay_mesh_vertex_base_2.h>
+#include <CGAL/Delaunay_mesher_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+namespace skinfem {
+
+namespace {
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Vb = CGAL::Delaunay_mesh_vertex_base_2<K>;
+using Fb = CGAL::Delaunay_mesh_face_base_2<K>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
+
+// CGAL's Delaunay_mesh_size_criteria_2 with a size bound that varies in space: a face is
+// imperatively bad when its longest edge exceeds the sizing field at its centroid.
+class GradedCriteria : public virtual CGAL::Delaunay_mesh_criteria_2<CDT> {
+ public:
+  using Base = CGAL::Delaunay_mesh_criteria_2<CDT>;
+  struct Quality : std::pair<double, double> {  // (squared min sine, edge length / size)
+    Quality() = default;
+    Quality(double sine, double size) : std::pair<double, double>(sine, size) {}
+    double sine() const { return first; }
+    double size() const { return second; }
+    bool operator<(const Quality& q) const {
+      if (size() > 1) return q.size() > 1 ? size() > q.size() : true;
+      if (q.size() > 1) return false;
+      return sine() < q.sine();
+    }
+  };
+  class Is_bad : public Base::Is_bad {
+   public:
+    Is_bad(double aspect, const SizingField* size) : Base::Is_bad(aspect, K()), size_(size) {}
+    CGAL::Mesh_2::Face_badness operator()(const Quality q) const {
+      if (q.size() > 1) return CGAL::Mesh_2::IMPERATIVELY_BAD;
+      return q.sine() < this->B ? CGAL::Mesh_2::BAD : CGAL::Mesh_2::NOT_BAD;
+    }
+    CGAL::Mesh_2::Face_badness operator()(const CDT::Face_handle& fh, Quality& q) const {
+      const auto& a = fh->vertex(0)->point();
+      const auto& b = fh->vertex(1)->point();
+      const auto& c = fh->vertex(2)->point();
+      double l[3] = {CGAL::squared_distance(b, c), CGAL::squared_distance(c, a), CGAL::squared_distance(a, b)};
+      std::sort(l, l + 3);
+      const double cx = (a.x() + b.x() + c.x()) / 3, cy = (a.y() + b.y() + c.y()) / 3;
+      const double target = (*size_)(cx, cy);
+      q.second = std::sqrt(l[2]) / target;
+      if (q.size() > 1) {
+        q.first = 1;
+        return CGAL::Mesh_2::IMPERATIVELY_BAD;
+      }
+      const double area2 = 2 * CGAL::area(a, b, c);
+      q.first = area2 * area2 / (l[2] * l[1]);
+      return q.sine() < this->B ? CGAL::Mesh_2::BAD : CGAL::Mesh_2::NOT_BAD;
+    }
+
+   private:
+    const SizingField* size_;
+  };
+  explicit GradedCriteria(const SizingField& size) : Base(0.125), size_(&size) {}  // min angle ≈ 20.7°
+  Is_bad is_bad_object() const { return Is_bad(this->bound(), size_); }
+
+ private:
+  const SizingField* size_;
+};
+
+// Points along a → b, spaced by the sizing field, then stretched to end exactly at b (b excluded).
+void append_graded_edge(const Vec2& a, const Vec2& b, const SizingField& size, std::vector<Vec2>& out) {
+  const double len = std::hypot(b[0] - a[0], b[1] - a[1]);
+  std::vector<double> s{0.0};
+  while (s.back() < len) {
+    const double t = s.back() / len;
+    s.push_back(s.back() + size(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])));
+  }
+  const double stretch = len / s.back();
+  for (size_t i = 0; i + 1 < s.size(); ++i) {
+    const double t = s[i] * stretch / len;
+    out.push_back({a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])});
+  }
+}
+}  // namespace
+
+std::vector<Vec2> circle_loop(const Vec2& centre, double radius, const SizingField& size) {
+  std::vector<double> theta{0.0};
+  while (theta.back() < 2 * M_PI) {
+    const double t = theta.back();
+    theta.push_back(t + size(centre[0] + radius * std::cos(t), centre[1] + radius * std::sin(t)) / radius);
+  }
+  size_t n = theta.size() - 1;
+  if (n < 8) {  // a polygon coarser than an octagon would misrepresent the disc
+    n = 8;
+    for (size_t i = 0; i <= n; ++i) theta.push_back(2 * M_PI * i / n);
+    theta.erase(theta.begin(), theta.end() - (n + 1));
+  }
+  const double stretch = 2 * M_PI / theta.back();
+  std::vector<Vec2> loop;
+  for (size_t i = 0; i < n; ++i) {
+    const double t = theta[i] * stretch;
+    loop.push_back({centre[0] + radius * std::cos(t), centre[1] + radius * std::sin(t)});
+  }
+  return loop;
+}
+
+std::vector<Vec2> square_loop(double w, const SizingField& size) {
+  const Vec2 corners[4] = {{-w, -w}, {w, -w}, {w, w}, {-w, w}};
+  std::vector<Vec2> loop;
+  for (int i = 0; i < 4; ++i) append_graded_edge(corners[i], corners[(i + 1) % 4], size, loop);
+  return loop;
+}
+
+Footprint mesh_footprint(const std::vector<Vec2>& loop, const SizingField& size) {
+  CDT cdt;
+  std::vector<CDT::Vertex_handle> vh;
+  for (const auto& p : loop) vh.push_back(cdt.insert(K::Point_2(p[0], p[1])));
+  for (size_t i = 0; i < vh.size(); ++i) cdt.insert_constraint(vh[i], vh[(i + 1) % vh.size()]);
+  CGAL::refine_Delaunay_mesh_2(cdt, GradedCriteria(size));
+
+  Footprint fp;
+  std::map<CDT::Vertex_handle, int> index;
+  std::vector<Vec2> pts;
+  auto id = [&](CDT::Vertex_handle v) {
+    auto [it, fresh] = index.emplace(v, static_cast<int>(pts.size()));
+    if (fresh) pts.push_back({v->point().x(), v->point().y()});
+    return it->second;
+  };
+  std::vector<std::array<int, 3>> tris;
+  std::map<int, int> next_on_boundary;  // boundary edge a → b, counter-clockwise
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if (!f->is_in_domain()) continue;
+    tris.push_back({id(f->vertex(0)), id(f->vertex(1)), id(f->vertex(2))});
+    for (int e = 0; e < 3; ++e)
+      if (cdt.is_constrained({f, e})) next_on_boundary[id(f->vertex(cdt.ccw(e)))] = id(f->vertex(cdt.cw(e)));
+  }
+  fp.points.resize(pts.size(), 2);
+  for (size_t i = 0; i < pts.size(); ++i) fp.points.row(i) << pts[i][0], pts[i][1];
+  fp.triangles.resize(tris.size(), 3);
+  for (size_t i = 0; i < tris.size(); ++i) fp.triangles.row(i) << tris[i][0], tris[i][1], tris[i][2];
+  if (next_on_boundary.empty()) throw std::runtime_error("footprint meshing produced no boundary");
+  int v = next_on_boundary.begin()->first;
+  do {
+    fp.boundary.push_back(v);
+    v = next_on_boundary.at(v);
+  } while (v != fp.boundary.front() && fp.boundary.size() <= next_on_boundary.size());
+  if (fp.boundary.size() != next_on_boundary.size())
+    throw std::runtime_error("footprint boundary is not a single loop");
+  return fp;
+}
+
+}  // namespace skinfem

@@ -1,0 +1,26 @@
+// Graded 2-D triangulation of the layer's footprint (disc or square) in the (x, y) plane,
+// CGAL constrained Delaunay refinement with the sizing field as local edge-length bound.
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "mesh/sizing.hpp"
+#include "mesh/tet_mesh.hpp"
+
+namespace skinfem {
+
+struct Footprint {
+  Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor> points;  // V×2, mm
+  RowMatrixX3i triangles;                                            // T×3, counter-clockwise
+  std::vector<int> boundary;  // the outer loop, counter-clockwise, each vertex once
+};
+
+// loop: closed polygon, counter-clockwise, first point not repeated; every edge is split as needed.
+Footprint mesh_footprint(const std::vector<Vec2>& loop, const SizingField& size);
+
+// Boundary loops that follow the sizing field: a circle (cap) and a square (flat).
+std::vector<Vec2> circle_loop(const Vec2& centre, double radius, const SizingField& size);
+std::vector<Vec2> square_loop(double half_width, const SizingField& size);
+
+}  // namespace skinfem

@@ -1,0 +1,41 @@
+#include "mesh/sizing.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace skinfem {
+
+namespace {
+double distance_to_segment(double x, double y, const Vec2& a, const Vec2& b) {
+  const double ex = b[0] - a[0], ey = b[1] - a[1];
+  const double len2 = ex * ex + ey * ey;
+  double t = len2 > 0 ? ((x - a[0]) * ex + (y - a[1]) * ey) / len2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  return std::hypot(x - a[0] - t * ex, y - a[1] - t * ey);
+}
+}  // namespace
+
+SizingField::SizingField(const MeshControls& controls, const Sensors& sensors)
+    : regions_(controls.regions), growth_(controls.growth), h_max_(controls.h_max) {
+  for (auto& r : regions_)
+    if (r.h <= 0) r.h = controls.h_min;
+  if (controls.refine_sensors)
+    for (const auto& s : sensors.positions) regions_.push_back({s, s, 0.5 * sensors.disc_diameter, controls.h_min});
+}
+
+double SizingField::operator()(double x, double y) const {
+  double size = h_max_;
+  for (const auto& r : regions_) {
+    const double d = std::max(0.0, distance_to_segment(x, y, r.a, r.b) - r.radius);
+    size = std::min(size, r.h + (growth_ - 1.0) * d);
+  }
+  return size;
+}
+
+double SizingField::h_min() const {
+  double size = h_max_;
+  for (const auto& r : regions_) size = std::min(size, r.h);
+  return size;
+}
+
+}  // namespace skinfem

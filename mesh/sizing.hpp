@@ -1,0 +1,27 @@
+// Target edge length over the (x, y) plane, from the scene's regions of interest.
+//
+// Inside a region the size is its h (default mesh.h_min). Elements then grow geometrically by the
+// growth rate g from one to the next; summing h₀, h₀g, h₀g², … shows that after a distance d the
+// element size is h₀ + (g − 1)·d. So size(p) = min(h_max, min over regions of h_r + (g − 1)·dist(p, r)).
+// Regions are extruded through the thickness: thin skins need the same size at every z.
+#pragma once
+
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace skinfem {
+
+class SizingField {
+ public:
+  SizingField(const MeshControls& controls, const Sensors& sensors);
+  double operator()(double x, double y) const;  // mm
+  double h_max() const { return h_max_; }
+  double h_min() const;  // smallest size anywhere
+
+ private:
+  std::vector<RegionOfInterest> regions_;
+  double growth_, h_max_;
+};
+
+}  // namespace skinfem

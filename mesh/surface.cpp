@@ -1,0 +1,170 @@
+#include "mesh/surface.hpp"
+
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/System/omstream.hh>
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "mesh/footprint.hpp"
+
+namespace skinfem {
+
+namespace {
+struct DoubleTraits : OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;  // the default is float
+  using Normal = OpenMesh::Vec3d;
+};
+using OmMesh = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
+
+// Returns an empty string when closed and manifold, else the reason.
+std::string topology_problem(const OmMesh& m, size_t expected_faces) {
+  if (m.n_faces() != expected_faces)
+    return std::to_string(expected_faces - m.n_faces()) + " faces are non-manifold or inconsistently oriented";
+  for (auto h : m.halfedges())
+    if (m.is_boundary(h)) return "not watertight (open boundary edges)";
+  for (auto v : m.vertices())
+    if (!m.is_manifold(v)) return "non-manifold vertex";
+  return "";
+}
+
+OmMesh to_openmesh(const SurfaceMesh& s, size_t& added) {
+  OmMesh m;
+  std::vector<OmMesh::VertexHandle> vh;
+  for (int i = 0; i < s.vertices.rows(); ++i)
+    vh.push_back(m.add_vertex({s.vertices(i, 0), s.vertices(i, 1), s.vertices(i, 2)}));
+  added = 0;
+  omlog().disable();
+  omerr().disable();  // OpenMesh reports complex edges on stderr; we report them ourselves
+  for (int t = 0; t < s.triangles.rows(); ++t)
+    if (m.add_face(vh[s.triangles(t, 0)], vh[s.triangles(t, 1)], vh[s.triangles(t, 2)]).is_valid()) ++added;
+  return m;
+}
+
+double signed_volume(const SurfaceMesh& s) {
+  double v = 0;
+  for (int t = 0; t < s.triangles.rows(); ++t) {
+    const Eigen::Vector3d a = s.vertices.row(s.triangles(t, 0)), b = s.vertices.row(s.triangles(t, 1)),
+                          c = s.vertices.row(s.triangles(t, 2));
+    v += a.dot(b.cross(c)) / 6.0;
+  }
+  return v;
+}
+}  // namespace
+
+void check_watertight(const SurfaceMesh& surface, const std::string& what) {
+  size_t added = 0;
+  const OmMesh m = to_openmesh(surface, added);
+  if (auto problem = topology_problem(m, surface.triangles.rows()); !problem.empty())
+    throw MeshError(what + ": surface is " + problem + "; a closed manifold surface is required");
+  if (signed_volume(surface) <= 0) throw MeshError(what + ": surface encloses no volume or is inward oriented");
+}
+
+SurfaceMesh layer_surface(const Geometry& geometry, const SizingField& size) {
+  const SkinShape shape(geometry);
+  const Vec2 centre = geometry.kind == GeometryKind::cap ? Vec2{geometry.cap.apex_x, geometry.cap.apex_y} : Vec2{0, 0};
+  const auto loop = geometry.kind == GeometryKind::cap
+                        ? circle_loop(centre, geometry.cap.truncation_radius, size)
+                        : square_loop(geometry.flat.half_width, size);
+  const Footprint fp = mesh_footprint(loop, size);
+  const int nv = fp.points.rows(), nb = static_cast<int>(fp.boundary.size());
+
+  // Side band: as many layers as the rim's sizing asks for, at least one.
+  double rim_size = 0, rim_height = 0;
+  for (int b : fp.boundary) {
+    rim_size += size(fp.points(b, 0), fp.points(b, 1)) / nb;
+    rim_height = std::max(rim_height, shape.top_z(fp.points(b, 0), fp.points(b, 1)));
+  }
+  const int layers = std::max(1, static_cast<int>(std::ceil(rim_height / rim_size - 1e-9)));
+
+  SurfaceMesh s;
+  s.vertices.resize(2 * nv + (layers - 1) * nb, 3);
+  for (int i = 0; i < nv; ++i) {
+    const double x = fp.points(i, 0), y = fp.points(i, 1);
+    s.vertices.row(i) << x, y, 0.0;
+    s.vertices.row(nv + i) << x, y, shape.top_z(x, y);
+  }
+  // vertex of boundary position k on side layer j (0 = base, layers = top)
+  auto side_vertex = [&](int k, int j) {
+    const int b = fp.boundary[k % nb];
+    if (j == 0) return b;
+    if (j == layers) return nv + b;
+    return 2 * nv + (j - 1) * nb + k % nb;
+  };
+  for (int j = 1; j < layers; ++j)
+    for (int k = 0; k < nb; ++k) {
+      const int b = fp.boundary[k];
+      const double x = fp.points(b, 0), y = fp.points(b, 1);
+      s.vertices.row(side_vertex(k, j)) << x, y, shape.top_z(x, y) * j / layers;
+    }
+
+  const int nt = fp.triangles.rows();
+  s.triangles.resize(2 * nt + 2 * nb * layers, 3);
+  s.marker.resize(s.triangles.rows());
+  int f = 0;
+  for (int t = 0; t < nt; ++t) {
+    const int a = fp.triangles(t, 0), b = fp.triangles(t, 1), c = fp.triangles(t, 2);
+    s.triangles.row(f) << a, c, b;  // base: outward normal −z
+    s.marker(f++) = kBase;
+    s.triangles.row(f) << nv + a, nv + b, nv + c;
+    s.marker(f++) = kTop;
+  }
+  for (int k = 0; k < nb; ++k)
+    for (int j = 0; j < layers; ++j) {  // counter-clockwise rim × up = outward
+      const int p0 = side_vertex(k, j), p1 = side_vertex(k + 1, j), p2 = side_vertex(k + 1, j + 1),
+                p3 = side_vertex(k, j + 1);
+      s.triangles.row(f) << p0, p1, p2;
+      s.marker(f++) = kSide;
+      s.triangles.row(f) << p0, p2, p3;
+      s.marker(f++) = kSide;
+    }
+  check_watertight(s, "generated layer surface");
+  return s;
+}
+
+SurfaceMesh import_surface(const std::string& path) {
+  if (!std::filesystem::exists(path)) throw MeshError(path + ": no such file");
+  OmMesh m;
+  omlog().disable();
+  omerr().disable();
+  OpenMesh::IO::Options opt;
+  if (!OpenMesh::IO::read_mesh(m, path, opt)) throw MeshError(path + ": cannot be read as STL/OBJ/OFF");
+  if (m.n_faces() == 0) throw MeshError(path + ": surface has no faces");
+
+  SurfaceMesh s;
+  s.vertices.resize(m.n_vertices(), 3);
+  for (auto v : m.vertices()) {
+    const auto p = m.point(v);
+    s.vertices.row(v.idx()) << p[0], p[1], p[2];
+  }
+  s.triangles.resize(m.n_faces(), 3);
+  for (auto f : m.faces()) {
+    int i = 0;
+    for (auto v : m.fv_range(f)) s.triangles(f.idx(), i++) = v.idx();
+  }
+  // Faces the reader dropped (complex edges) or open edges show up in the same check as ours.
+  for (auto h : m.halfedges())
+    if (m.is_boundary(h)) throw MeshError(path + ": surface is not watertight (open boundary edges)");
+  for (auto v : m.vertices())
+    if (!m.is_manifold(v)) throw MeshError(path + ": surface has a non-manifold vertex");
+  if (signed_volume(s) <= 0) throw MeshError(path + ": surface encloses no volume or is inward oriented");
+
+  const double diameter = (s.vertices.colwise().maxCoeff() - s.vertices.colwise().minCoeff()).norm();
+  const double tol = 1e-9 * diameter;
+  s.marker.resize(s.triangles.rows());
+  int base_faces = 0;
+  for (int t = 0; t < s.triangles.rows(); ++t) {
+    const Eigen::Vector3d a = s.vertices.row(s.triangles(t, 0)), b = s.vertices.row(s.triangles(t, 1)),
+                          c = s.vertices.row(s.triangles(t, 2));
+    const Eigen::Vector3d n = (b - a).cross(c - a).normalized();
+    const bool on_base = std::abs(a.z()) < tol && std::abs(b.z()) < tol && std::abs(c.z()) < tol && n.z() < 0;
+    s.marker(t) = on_base ? kBase : (std::abs(n.z()) < 1e-6 ? kSide : kTop);
+    base_faces += on_base;
+  }
+  if (s.vertices.col(2).minCoeff() < -tol) throw MeshError(path + ": surface reaches below the base plane z = 0");
+  if (base_faces == 0) throw MeshError(path + ": no face lies on the base plane z = 0");
+  return s;
+}
+
+}  // namespace skinfem

@@ -1,0 +1,32 @@
+// Closed boundary surfaces with top / base / side markers: generated for caps and flat layers,
+// imported from STL/OBJ/OFF for anything else. Every surface passes the same watertight and
+// manifold check (OpenMesh halfedge structure) before it is tetrahedralized.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include "mesh/shape.hpp"
+#include "mesh/sizing.hpp"
+#include "mesh/tet_mesh.hpp"
+
+namespace skinfem {
+
+struct MeshError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Cap or flat layer: a graded footprint triangulation lifted to the exact top (z = s(x, y)) and the
+// base (z = 0), joined by a side band of vertical quads split in two.
+SurfaceMesh layer_surface(const Geometry& geometry, const SizingField& size);
+
+// Reads a closed surface; faces lying on z = 0 (all three vertices within 1e-9·diameter, normal −z)
+// become the base, faces with a horizontal normal the side, the rest the top.
+// Throws MeshError naming the file when it cannot be read, is not watertight or not manifold,
+// or has no base face.
+SurfaceMesh import_surface(const std::string& path);
+
+// Throws MeshError (prefixed with `what`) unless the surface is closed, manifold and outward oriented.
+void check_watertight(const SurfaceMesh& surface, const std::string& what);
+
+}  // namespace skinfem

@@ -1,0 +1,41 @@
+// The volume mesh every later stage works on: 10-node (quadratic) tetrahedra.
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+namespace skinfem {
+
+// Boundary parts; a face carries exactly one, a node the OR of those of its faces.
+enum BoundaryMarker : int { kBase = 1, kTop = 2, kSide = 4 };
+
+using RowMatrixX3d = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+using RowMatrixX3i = Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor>;
+using RowMatrixX6i = Eigen::Matrix<int, Eigen::Dynamic, 6, Eigen::RowMajor>;
+using RowMatrixX10i = Eigen::Matrix<int, Eigen::Dynamic, 10, Eigen::RowMajor>;
+
+// Node numbering follows VTK_QUADRATIC_TETRA / VTK_QUADRATIC_TRIANGLE so export is a copy:
+//   tet:      vertices 0–3, then mid-edge nodes of edges 01, 12, 02, 03, 13, 23;
+//   triangle: vertices 0–2, then mid-edge nodes of edges 01, 12, 20.
+// Vertices (corner nodes) are numbered first, 0 … num_vertices−1, so they double as P1 indices.
+// Mid-edge nodes on a curved boundary lie on the exact surface (isoparametric P2 geometry).
+struct TetMesh {
+  RowMatrixX3d nodes;       // N×3, mm
+  int num_vertices = 0;     // corner nodes are nodes.row(0 … num_vertices−1)
+  RowMatrixX10i tets;       // E×10, positively oriented (det J > 0)
+  RowMatrixX6i faces;       // F×6 boundary triangles, outward normal (right-hand rule)
+  Eigen::VectorXi face_marker;  // F: one BoundaryMarker
+  Eigen::VectorXi node_marker;  // N: OR of BoundaryMarker of the faces touching the node, 0 inside
+
+  int num_nodes() const { return static_cast<int>(nodes.rows()); }
+  int num_tets() const { return static_cast<int>(tets.rows()); }
+};
+
+// A closed triangulated boundary surface, outward oriented (input to tetrahedralization).
+struct SurfaceMesh {
+  RowMatrixX3d vertices;       // V×3, mm
+  RowMatrixX3i triangles;      // T×3
+  Eigen::VectorXi marker;      // T: BoundaryMarker
+};
+
+}  // namespace skinfem

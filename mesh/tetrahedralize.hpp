@@ -1,0 +1,22 @@
+// TetGen on a closed marked surface, refining until every tetrahedron's longest edge is within the
+// sizing field and the quality bounds hold. TetGen is not thread-safe: calls are serialised.
+#pragma once
+
+#include "mesh/sizing.hpp"
+#include "mesh/tet_mesh.hpp"
+
+namespace skinfem {
+
+struct LinearTets {
+  RowMatrixX3d points;                                     // P×3, mm
+  Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor> tets;  // T×4, positive volume
+  RowMatrixX3i faces;                                      // boundary triangles, outward
+  Eigen::VectorXi face_marker;                             // BoundaryMarker per face
+};
+
+// preserve_surface: keep the input triangles as they are (TetGen -Y); use it when the surface's
+// vertices lie on a curved exact surface that flat Steiner points would leave.
+LinearTets tetrahedralize(const SurfaceMesh& surface, const SizingField& size, const MeshControls& controls,
+                          bool preserve_surface);
+
+}  // namespace skinfem

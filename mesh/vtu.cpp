@@ -1,0 +1,96 @@
+#include "mesh/vtu.hpp"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "mesh/quality.hpp"
+
+namespace skinfem {
+
+namespace {
+vtkNew<vtkPoints> make_points(const TetMesh& mesh) {
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(mesh.num_nodes());
+  for (int i = 0; i < mesh.num_nodes(); ++i) points->SetPoint(i, mesh.nodes(i, 0), mesh.nodes(i, 1), mesh.nodes(i, 2));
+  return points;
+}
+
+void add_array(vtkDataSetAttributes* attributes, const DataArray& a, vtkIdType count) {
+  if (a.values.size() != static_cast<size_t>(count * a.components))
+    throw std::invalid_argument("write_vtu: array " + a.name + " has the wrong size");
+  vtkNew<vtkDoubleArray> arr;
+  arr->SetName(a.name.c_str());
+  arr->SetNumberOfComponents(a.components);
+  arr->SetNumberOfTuples(count);
+  for (vtkIdType i = 0; i < count * a.components; ++i) arr->SetValue(i, a.values[i]);
+  attributes->AddArray(arr);
+  if (a.components == 9) attributes->SetActiveTensors(a.name.c_str());
+  if (a.components == 3) attributes->SetActiveVectors(a.name.c_str());
+}
+
+void write_grid(const std::string& path, vtkUnstructuredGrid* grid) {
+  const std::string tmp = path + ".tmp";
+  vtkNew<vtkXMLUnstructuredGridWriter> writer;
+  writer->SetFileName(tmp.c_str());
+  writer->SetInputData(grid);
+  writer->SetDataModeToAppended();
+  writer->SetCompressorTypeToZLib();
+  if (writer->Write() != 1) {
+    std::filesystem::remove(tmp);
+    throw std::runtime_error("cannot write " + path);
+  }
+  std::filesystem::rename(tmp, path);
+}
+}  // namespace
+
+void write_vtu(const std::string& path, const TetMesh& mesh, const std::vector<DataArray>& point_data,
+               const std::vector<DataArray>& cell_data) {
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(make_points(mesh));
+  grid->Allocate(mesh.num_tets());
+  for (int t = 0; t < mesh.num_tets(); ++t) {
+    vtkIdType ids[10];
+    for (int k = 0; k < 10; ++k) ids[k] = mesh.tets(t, k);
+    grid->InsertNextCell(VTK_QUADRATIC_TETRA, 10, ids);
+  }
+  vtkNew<vtkIntArray> marker;
+  marker->SetName("boundary_marker");
+  marker->SetNumberOfTuples(mesh.num_nodes());
+  for (int i = 0; i < mesh.num_nodes(); ++i) marker->SetValue(i, mesh.node_marker(i));
+  grid->GetPointData()->AddArray(marker);
+  std::vector<DataArray> cells = cell_data;
+  DataArray volume{"element_volume_mm3", 1, {}};
+  for (int t = 0; t < mesh.num_tets(); ++t) volume.values.push_back(tet_volume(mesh, t));
+  cells.push_back(volume);
+  for (const auto& a : point_data) add_array(grid->GetPointData(), a, mesh.num_nodes());
+  for (const auto& a : cells) add_array(grid->GetCellData(), a, mesh.num_tets());
+  write_grid(path, grid);
+}
+
+void write_boundary_vtu(const std::string& path, const TetMesh& mesh) {
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(make_points(mesh));
+  vtkNew<vtkIntArray> marker;
+  marker->SetName("boundary_marker");
+  for (int f = 0; f < mesh.faces.rows(); ++f) {
+    vtkIdType ids[6];
+    for (int k = 0; k < 6; ++k) ids[k] = mesh.faces(f, k);
+    grid->InsertNextCell(VTK_QUADRATIC_TRIANGLE, 6, ids);
+    marker->InsertNextValue(mesh.face_marker(f));
+  }
+  grid->GetCellData()->AddArray(marker);
+  write_grid(path, grid);
+}
+
+}  // namespace skinfem

@@ -1,0 +1,26 @@
+// VTK XML unstructured-grid output (.vtu) of a 10-node tet mesh with quadratic cells, readable by ParaView.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "mesh/tet_mesh.hpp"
+
+namespace skinfem {
+
+struct DataArray {
+  std::string name;  // include the unit, e.g. "displacement_mm"
+  int components = 1;
+  std::vector<double> values;  // tuple-major: size = count × components
+};
+
+// Writes the volume mesh as VTK_QUADRATIC_TETRA cells. Always adds point data "boundary_marker"
+// (node_marker) and cell data "element_volume_mm3". Writes to path + ".tmp" first, then renames,
+// so a failure leaves no half-written file. Throws std::runtime_error on I/O failure.
+void write_vtu(const std::string& path, const TetMesh& mesh, const std::vector<DataArray>& point_data = {},
+               const std::vector<DataArray>& cell_data = {});
+
+// The boundary faces as VTK_QUADRATIC_TRIANGLE cells with cell data "boundary_marker".
+void write_boundary_vtu(const std::string& path, const TetMesh& mesh);
+
+}  // namespace skinfem

@@ -1,0 +1,532 @@
+// Scene files: JSON → Scene, with validation. The only JSON reader in skinfem.
+//
+// Format (units mm, N, MPa; keys marked * are optional, defaults from scene.hpp):
+//   name*         string; default: the file stem
+//   geometry      {"type": "cap", "R", "h", "apex": [x, y], "truncation_radius", "side"*}
+//               | {"type": "flat", "h", "half_width", "side"*}
+//               | {"type": "surface", "path", "side"*}      path: .stl/.obj/.off, relative to the scene file
+//                 side: "free" (default) | "fixed"
+//   material      {"E", "nu"}
+//   sensors       {"positions": [[x, y], ...]} or {"line": {"start": [x, y], "step": [dx, dy], "count"}},
+//                 plus "disc_diameter"
+//   mesh          {"h_min", "growth", "h_max", "refine_sensors"*, "min_dihedral_deg"*, "max_radius_edge"*,
+//                  "regions"*: [{"from": [x, y], "to": [x, y], "radius", "h"*}]}
+//   loads*        {"punches"*: [{"center", "diameter", "force" | "displacement"}],
+//                  "patches"*: [{"center", "diameter", "direction": [x, y, z], "force"}]}
+//   calibration*  {"punch_diameter"*, "scan_half_width"*, "spacing"*}
+// Unknown keys, duplicate keys, wrong types, missing required keys and out-of-range values are errors.
+// Every error is a SceneError whose what() is one line: "<file>: <json.path> = <value>: <what is allowed>".
+#include "scene/load.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace skinfem {
+namespace {
+
+using json = nlohmann::json;
+namespace fs = std::filesystem;
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+std::string fmt(const Vec2& p) { return "(" + fmt(p[0]) + ", " + fmt(p[1]) + ")"; }
+
+std::string one_line(std::string s) {
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  return s;
+}
+
+std::string join(const std::vector<std::string>& words) {
+  std::string out;
+  for (const auto& w : words) out += (out.empty() ? "" : ", ") + w;
+  return out;
+}
+
+std::string sub(const std::string& path, const std::string& key) {
+  return path.empty() ? key : path + "." + key;
+}
+std::string at(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+
+// Compact rendering of a JSON value for messages. dump() would print non-finite numbers as null.
+std::string show(const json& v) {
+  if (v.is_number_float() && !std::isfinite(v.get<double>())) {
+    const double d = v.get<double>();
+    return std::isnan(d) ? "nan" : (d > 0 ? "inf" : "-inf");
+  }
+  std::string s = v.dump(-1, ' ', false, json::error_handler_t::replace);
+  if (s.size() > 80) s = s.substr(0, 77) + "...";
+  return s;
+}
+
+// An allowed range of a number: a predicate and its description ("a number > 0").
+struct Rule {
+  std::string desc;
+  std::function<bool(double)> ok;
+};
+Rule positive() {
+  return {"a number > 0", [](double x) { return x > 0; }};
+}
+Rule non_negative() {
+  return {"a number >= 0", [](double x) { return x >= 0; }};
+}
+Rule at_least(double lo, const std::string& what = "") {
+  return {"a number >= " + (what.empty() ? fmt(lo) : what), [lo](double x) { return x >= lo; }};
+}
+Rule greater(double lo) {
+  return {"a number > " + fmt(lo), [lo](double x) { return x > lo; }};
+}
+Rule closed_interval(double lo, double hi) {
+  return {"a number in [" + fmt(lo) + ", " + fmt(hi) + "]",
+          [lo, hi](double x) { return lo <= x && x <= hi; }};
+}
+Rule open_interval(double lo, double hi) {
+  return {"a number in (" + fmt(lo) + ", " + fmt(hi) + ")", [lo, hi](double x) { return lo < x && x < hi; }};
+}
+
+// Reads typed values out of the JSON tree; every failure throws a one-line SceneError.
+class Reader {
+ public:
+  explicit Reader(std::string file) : file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const std::string& path, const json& v, const std::string& allowed) const {
+    throw SceneError(one_line(file_ + ": " + label(path) + " = " + show(v) + ": " + allowed));
+  }
+  [[noreturn]] void fail(const std::string& path, const std::string& msg) const {
+    throw SceneError(one_line(file_ + ": " + label(path) + ": " + msg));
+  }
+  // A problem with the file as a whole (JSON syntax): "<file>: <msg>".
+  [[noreturn]] void fail_file(const std::string& msg) const {
+    throw SceneError(one_line(file_ + ": " + msg));
+  }
+
+  // `v` must be an object whose keys are all in `allowed`.
+  void object(const json& v, const std::string& path, const std::vector<std::string>& allowed) const {
+    if (!v.is_object()) fail(path, v, "must be an object with keys " + join(allowed));
+    for (auto it = v.begin(); it != v.end(); ++it)
+      if (std::find(allowed.begin(), allowed.end(), it.key()) == allowed.end())
+        fail(sub(path, it.key()), "unknown key; allowed: " + join(allowed));
+  }
+
+  // obj[key], which must be present; `desc` says what it must be.
+  const json& need(const json& obj, const std::string& path, const std::string& key,
+                   const std::string& desc) const {
+    const auto it = obj.find(key);
+    if (it == obj.end()) fail(sub(path, key), "required key is missing; must be " + desc);
+    return *it;
+  }
+  static const json* find(const json& obj, const std::string& key) {
+    const auto it = obj.find(key);
+    return it == obj.end() ? nullptr : &*it;
+  }
+
+  double number(const json& v, const std::string& path, const Rule& rule) const {
+    if (!v.is_number()) fail(path, v, "must be " + rule.desc);
+    const double d = v.get<double>();
+    if (!std::isfinite(d)) fail(path, v, "must be finite, " + rule.desc);
+    if (!rule.ok(d)) fail(path, v, "must be " + rule.desc);
+    return d;
+  }
+  double number(const json& obj, const std::string& path, const std::string& key, const Rule& rule) const {
+    return number(need(obj, path, key, rule.desc), sub(path, key), rule);
+  }
+  double number_or(const json& obj, const std::string& path, const std::string& key, double fallback,
+                   const Rule& rule) const {
+    const json* v = find(obj, key);
+    return v ? number(*v, sub(path, key), rule) : fallback;
+  }
+
+  long long integer(const json& v, const std::string& path, long long lo, long long hi) const {
+    const std::string desc = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    if (!v.is_number_integer()) fail(path, v, "must be " + desc);
+    const double d = v.get<double>();
+    if (d < static_cast<double>(lo) || d > static_cast<double>(hi)) fail(path, v, "must be " + desc);
+    return v.get<long long>();
+  }
+
+  bool boolean(const json& v, const std::string& path) const {
+    if (!v.is_boolean()) fail(path, v, "must be true or false");
+    return v.get<bool>();
+  }
+
+  std::string string(const json& v, const std::string& path, const std::string& desc) const {
+    if (!v.is_string() || v.get<std::string>().empty()) fail(path, v, "must be " + desc);
+    return v.get<std::string>();
+  }
+
+  template <std::size_t N>
+  std::array<double, N> vec(const json& v, const std::string& path) const {
+    const std::string desc =
+        N == 2 ? "a point [x, y] of 2 finite numbers" : "a vector [x, y, z] of 3 finite numbers";
+    if (!v.is_array() || v.size() != N) fail(path, v, "must be " + desc);
+    std::array<double, N> out{};
+    for (std::size_t i = 0; i < N; ++i) {
+      if (!v[i].is_number() || !std::isfinite(v[i].get<double>())) fail(path, v, "must be " + desc);
+      out[i] = v[i].get<double>();
+    }
+    return out;
+  }
+  Vec2 vec2(const json& obj, const std::string& path, const std::string& key) const {
+    return vec<2>(need(obj, path, key, "a point [x, y]"), sub(path, key));
+  }
+
+  const json& array(const json& obj, const std::string& path, const std::string& key,
+                    const std::string& desc) const {
+    const json& v = need(obj, path, key, desc);
+    if (!v.is_array()) fail(sub(path, key), v, "must be " + desc);
+    return v;
+  }
+
+ private:
+  static std::string label(const std::string& path) { return path.empty() ? "(top level)" : path; }
+  std::string file_;
+};
+
+// Parses JSON text, rejecting duplicate keys (which nlohmann would silently resolve to the last one).
+json parse_json(const std::string& text, const Reader& r) {
+  struct Frame {
+    bool object;
+    std::string path;
+    std::set<std::string> keys;
+    std::string key;
+    std::size_t index = 0;
+  };
+  std::vector<Frame> stack;
+  const auto child_path = [&]() -> std::string {
+    if (stack.empty()) return "";
+    const Frame& f = stack.back();
+    return f.object ? sub(f.path, f.key) : at(f.path, f.index);
+  };
+  const auto child_done = [&]() {
+    if (!stack.empty() && !stack.back().object) ++stack.back().index;
+  };
+  const json::parser_callback_t callback = [&](int, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start:
+      case json::parse_event_t::array_start:
+        stack.push_back({event == json::parse_event_t::object_start, child_path(), {}, {}, 0});
+        break;
+      case json::parse_event_t::key: {
+        Frame& f = stack.back();
+        std::string k = parsed.get<std::string>();
+        if (!f.keys.insert(k).second)
+          r.fail(sub(f.path, k), "duplicate key; each key may appear only once in an object");
+        f.key = std::move(k);
+        break;
+      }
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        stack.pop_back();
+        child_done();
+        break;
+      case json::parse_event_t::value:
+        child_done();
+        break;
+    }
+    return true;
+  };
+  try {
+    return json::parse(text, callback);
+  } catch (const json::parse_error& e) {
+    std::string what = e.what();  // "[json.exception.parse_error.101] parse error at line L, column C: ..."
+    const auto close = what.find("] ");
+    if (close != std::string::npos) what = what.substr(close + 2);
+    r.fail_file("invalid JSON: " + what + " (byte " + std::to_string(e.byte) + ")");
+  } catch (const json::exception& e) {  // e.g. out_of_range.406: a number too large for a double
+    std::string what = e.what();
+    const auto close = what.find("] ");
+    if (close != std::string::npos) what = what.substr(close + 2);
+    r.fail_file("invalid JSON: " + what + "; numbers must be finite doubles");
+  }
+}
+
+// Radius at which the cap's top meets the base plane: sqrt(R² − (R − h)²).
+double cap_rim_radius(const CapGeometry& c) { return std::sqrt(c.R * c.R - (c.R - c.h) * (c.R - c.h)); }
+
+Geometry read_geometry(const Reader& r, const json& g, const fs::path& base_dir) {
+  const std::string P = "geometry";
+  const std::string kinds = R"(one of "cap", "flat", "surface")";
+  if (!g.is_object()) r.fail(P, g, "must be an object with \"type\" " + kinds);
+  const json& type = r.need(g, P, "type", kinds);
+  if (!type.is_string()) r.fail(sub(P, "type"), type, "must be " + kinds);
+  const std::string t = type.get<std::string>();
+
+  Geometry geo;
+  if (t == "cap") {
+    r.object(g, P, {"type", "R", "h", "apex", "truncation_radius", "side"});
+    CapGeometry& c = geo.cap;
+    geo.kind = GeometryKind::cap;
+    c.R = r.number(g, P, "R", positive());
+    const double R = c.R;
+    c.h =
+        r.number(g, P, "h",
+                 Rule{"a number in (0, R) = (0, " + fmt(R) + ")", [R](double x) { return 0 < x && x < R; }});
+    const Vec2 apex = r.vec2(g, P, "apex");
+    c.apex_x = apex[0];
+    c.apex_y = apex[1];
+    const double rim = cap_rim_radius(c);
+    c.truncation_radius =
+        r.number(g, P, "truncation_radius",
+                 Rule{"a number > 0 and < " + fmt(rim) +
+                          ", the radius sqrt(R^2 - (R - h)^2) where the cap thins to zero (R = " + fmt(c.R) +
+                          ", h = " + fmt(c.h) + ")",
+                      [rim](double x) { return x > 0 && x < rim; }});
+  } else if (t == "flat") {
+    r.object(g, P, {"type", "h", "half_width", "side"});
+    geo.kind = GeometryKind::flat;
+    geo.flat.h = r.number(g, P, "h", positive());
+    geo.flat.half_width = r.number(g, P, "half_width", positive());
+  } else if (t == "surface") {
+    r.object(g, P, {"type", "path", "side"});
+    geo.kind = GeometryKind::surface;
+    const std::string desc = "a path to a .stl, .obj or .off file (relative to the scene file)";
+    const json& v = r.need(g, P, "path", desc);
+    const fs::path file = r.string(v, sub(P, "path"), desc);
+    std::string ext = file.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return std::tolower(ch); });
+    if (ext != ".stl" && ext != ".obj" && ext != ".off")
+      r.fail(sub(P, "path"), v, "must be a .stl, .obj or .off file");
+    const fs::path resolved = fs::absolute(file.is_absolute() ? file : base_dir / file).lexically_normal();
+    std::error_code ec;
+    if (!fs::is_regular_file(resolved, ec))
+      r.fail(sub(P, "path"), v, "must name an existing file; not found: " + resolved.string());
+    geo.surface.path = resolved.string();
+  } else {
+    r.fail(sub(P, "type"), type, "must be " + kinds);
+  }
+
+  if (const json* side = Reader::find(g, "side")) {
+    if (*side == "free")
+      geo.side = SideCondition::free;
+    else if (*side == "fixed")
+      geo.side = SideCondition::fixed;
+    else
+      r.fail(sub(P, "side"), *side, R"(must be "free" or "fixed")");
+  }
+  return geo;
+}
+
+Material read_material(const Reader& r, const json& m) {
+  const std::string P = "material";
+  r.object(m, P, {"E", "nu"});
+  Material mat;
+  mat.E = r.number(m, P, "E", positive());
+  mat.nu = r.number(m, P, "nu", closed_interval(0, 0.5));
+  return mat;
+}
+
+// Sensors, each with the JSON path that names it in messages.
+struct SensorSource {
+  std::string path;
+  Vec2 p;
+};
+
+Sensors read_sensors(const Reader& r, const json& s, std::vector<SensorSource>& sources) {
+  const std::string P = "sensors";
+  r.object(s, P, {"positions", "line", "disc_diameter"});
+  Sensors out;
+  const json* positions = Reader::find(s, "positions");
+  const json* line = Reader::find(s, "line");
+  if ((positions != nullptr) == (line != nullptr))
+    r.fail(P, s,
+           R"(must have exactly one of "positions" ([[x, y], ...]) or "line" ({"start", "step", "count"}))");
+  out.disc_diameter = r.number(s, P, "disc_diameter", positive());
+
+  if (positions) {
+    const std::string PP = sub(P, "positions");
+    if (!positions->is_array() || positions->empty())
+      r.fail(PP, *positions, "must be a non-empty array of points [x, y]");
+    for (std::size_t i = 0; i < positions->size(); ++i) {
+      const Vec2 p = r.vec<2>((*positions)[i], at(PP, i));
+      out.positions.push_back(p);
+      sources.push_back({at(PP, i), p});
+    }
+  } else {
+    const std::string PL = sub(P, "line");
+    r.object(*line, PL, {"start", "step", "count"});
+    const Vec2 start = r.vec2(*line, PL, "start");
+    const Vec2 step = r.vec2(*line, PL, "step");
+    const long long count =
+        r.integer(r.need(*line, PL, "count", "an integer >= 1"), sub(PL, "count"), 1, 100000);
+    for (long long i = 0; i < count; ++i) {
+      const Vec2 p{start[0] + static_cast<double>(i) * step[0], start[1] + static_cast<double>(i) * step[1]};
+      out.positions.push_back(p);
+      sources.push_back({PL + " (sensor " + std::to_string(i + 1) + " of " + std::to_string(count) + ")", p});
+    }
+  }
+  return out;
+}
+
+// Every sensor disc must lie inside the skin's footprint on the base (not checked for imported surfaces).
+void check_sensor_footprint(const Reader& r, const Geometry& geo, const Sensors& sensors,
+                            const std::vector<SensorSource>& sources) {
+  const double rad = sensors.disc_diameter / 2;
+  const auto beyond = [](double value, double limit) { return value > limit + 1e-9 * std::max(1.0, limit); };
+  for (const SensorSource& s : sources) {
+    const json shown = json::array({s.p[0], s.p[1]});
+    if (geo.kind == GeometryKind::cap) {
+      const CapGeometry& c = geo.cap;
+      const double dist = std::hypot(s.p[0] - c.apex_x, s.p[1] - c.apex_y);
+      if (beyond(dist + rad, c.truncation_radius))
+        r.fail(
+            s.path, shown,
+            "sensor disc (diameter " + fmt(sensors.disc_diameter) +
+                ") must lie inside the cap footprint: centre at most truncation_radius - disc_diameter/2 = " +
+                fmt(c.truncation_radius - rad) + " from the apex " + fmt(Vec2{c.apex_x, c.apex_y}) +
+                ", got " + fmt(dist));
+    } else if (geo.kind == GeometryKind::flat) {
+      const double hw = geo.flat.half_width;
+      if (beyond(std::abs(s.p[0]) + rad, hw) || beyond(std::abs(s.p[1]) + rad, hw))
+        r.fail(s.path, shown,
+               "sensor disc (diameter " + fmt(sensors.disc_diameter) +
+                   ") must lie inside the flat layer: |x|, |y| <= half_width - disc_diameter/2 = " +
+                   fmt(hw - rad));
+    }
+  }
+}
+
+MeshControls read_mesh(const Reader& r, const json& m) {
+  const std::string P = "mesh";
+  r.object(m, P,
+           {"h_min", "growth", "h_max", "refine_sensors", "min_dihedral_deg", "max_radius_edge", "regions"});
+  MeshControls mc;
+  mc.h_min = r.number(m, P, "h_min", positive());
+  mc.growth = r.number(m, P, "growth", greater(1));
+  mc.h_max = r.number(m, P, "h_max", at_least(mc.h_min, "mesh.h_min = " + fmt(mc.h_min)));
+  if (const json* v = Reader::find(m, "refine_sensors"))
+    mc.refine_sensors = r.boolean(*v, sub(P, "refine_sensors"));
+  mc.min_dihedral_deg = r.number_or(m, P, "min_dihedral_deg", mc.min_dihedral_deg, open_interval(0, 30));
+  mc.max_radius_edge = r.number_or(
+      m, P, "max_radius_edge", mc.max_radius_edge,
+      Rule{"a number >= 1.1 (TetGen radius-edge bound; refinement may not terminate below about 1.1)",
+           [](double x) { return x >= 1.1; }});
+  if (Reader::find(m, "regions")) {
+    const std::string desc = R"(an array of regions {"from": [x, y], "to": [x, y], "radius", "h"})";
+    const json& regions = r.array(m, P, "regions", desc);
+    for (std::size_t i = 0; i < regions.size(); ++i) {
+      const std::string PR = at(sub(P, "regions"), i);
+      const json& g = regions[i];
+      r.object(g, PR, {"from", "to", "radius", "h"});
+      RegionOfInterest roi;
+      roi.a = r.vec2(g, PR, "from");
+      roi.b = r.vec2(g, PR, "to");
+      roi.radius = r.number(g, PR, "radius", non_negative());
+      roi.h = r.number_or(g, PR, "h", 0.0, positive());
+      mc.regions.push_back(roi);
+    }
+  }
+  return mc;
+}
+
+Loads read_loads(const Reader& r, const json& l) {
+  const std::string P = "loads";
+  r.object(l, P, {"punches", "patches"});
+  Loads loads;
+  if (Reader::find(l, "punches")) {
+    const json& punches =
+        r.array(l, P, "punches", R"(an array of punches {"center", "diameter", "force" | "displacement"})");
+    for (std::size_t i = 0; i < punches.size(); ++i) {
+      const std::string PP = at(sub(P, "punches"), i);
+      const json& j = punches[i];
+      r.object(j, PP, {"center", "diameter", "force", "displacement"});
+      Punch punch;
+      punch.center = r.vec2(j, PP, "center");
+      punch.diameter = r.number(j, PP, "diameter", positive());
+      const json* force = Reader::find(j, "force");
+      const json* disp = Reader::find(j, "displacement");
+      if ((force != nullptr) == (disp != nullptr))
+        r.fail(PP, j, R"(must have exactly one of "force" (N) or "displacement" (mm))");
+      if (force) punch.force = r.number(*force, sub(PP, "force"), positive());
+      if (disp) punch.displacement = r.number(*disp, sub(PP, "displacement"), positive());
+      loads.punches.push_back(punch);
+    }
+  }
+  if (Reader::find(l, "patches")) {
+    const json& patches =
+        r.array(l, P, "patches", R"(an array of patches {"center", "diameter", "direction", "force"})");
+    for (std::size_t i = 0; i < patches.size(); ++i) {
+      const std::string PP = at(sub(P, "patches"), i);
+      const json& j = patches[i];
+      r.object(j, PP, {"center", "diameter", "direction", "force"});
+      TractionPatch patch;
+      patch.center = r.vec2(j, PP, "center");
+      patch.diameter = r.number(j, PP, "diameter", positive());
+      const json& dir = r.need(j, PP, "direction", "a non-zero vector [x, y, z]");
+      const Vec3 d = r.vec<3>(dir, sub(PP, "direction"));
+      const double norm = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      if (!(norm > 0) || !std::isfinite(norm))
+        r.fail(sub(PP, "direction"), dir, "must be a non-zero vector [x, y, z]");
+      patch.direction = {d[0] / norm, d[1] / norm, d[2] / norm};
+      patch.force = r.number(j, PP, "force", positive());
+      loads.patches.push_back(patch);
+    }
+  }
+  return loads;
+}
+
+Calibration read_calibration(const Reader& r, const json& c) {
+  const std::string P = "calibration";
+  r.object(c, P, {"punch_diameter", "scan_half_width", "spacing"});
+  Calibration cal;
+  cal.punch_diameter = r.number_or(c, P, "punch_diameter", cal.punch_diameter, positive());
+  cal.scan_half_width = r.number_or(c, P, "scan_half_width", cal.scan_half_width, non_negative());
+  cal.spacing = r.number_or(c, P, "spacing", cal.spacing, positive());
+  return cal;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& json_text, const std::string& source_path) {
+  const Reader r(source_path.empty() ? std::string("<scene>") : source_path);
+  const json root = parse_json(json_text, r);
+  r.object(root, "", {"name", "geometry", "material", "sensors", "mesh", "loads", "calibration"});
+
+  Scene scene;
+  scene.source_path = source_path;
+  const fs::path source(source_path);
+  scene.name = source.stem().string();
+  if (const json* name = Reader::find(root, "name"))
+    scene.name = r.string(*name, "name", "a non-empty string");
+
+  scene.geometry = read_geometry(r, r.need(root, "", "geometry", "an object"), source.parent_path());
+  scene.material = read_material(r, r.need(root, "", "material", "an object {\"E\", \"nu\"}"));
+  std::vector<SensorSource> sources;
+  scene.sensors = read_sensors(r, r.need(root, "", "sensors", "an object"), sources);
+  check_sensor_footprint(r, scene.geometry, scene.sensors, sources);
+  scene.mesh = read_mesh(r, r.need(root, "", "mesh", "an object"));
+  if (const json* loads = Reader::find(root, "loads")) scene.loads = read_loads(r, *loads);
+  if (const json* cal = Reader::find(root, "calibration")) scene.calibration = read_calibration(r, *cal);
+  return scene;
+}
+
+Scene load_scene(const std::string& path) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw SceneError(path + ": cannot read scene file: is a directory");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError(path + ": cannot read scene file: " + std::strerror(errno));
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw SceneError(path + ": cannot read scene file: read error");
+  return parse_scene(text.str(), path);
+}
+
+}  // namespace skinfem

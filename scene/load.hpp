@@ -1,0 +1,23 @@
+// Reading and validating scene files (JSON). The format is documented in load.cpp's header comment
+// and by the shipped scenes in scenes/. Units: mm, N, MPa.
+#pragma once
+
+#include <string>
+
+#include "scene/scene.hpp"
+
+namespace skinfem {
+
+// Reads the JSON scene file at `path`, validates it and returns the Scene. A relative
+// geometry.path (imported surface) is resolved against the directory of `path`;
+// Scene::source_path is `path`; Scene::name is the JSON "name" or, if absent, the file stem.
+// Throws SceneError (one line: "<file>: <json.path> = <value>: <what is allowed>") on any problem,
+// including a file that cannot be read and JSON syntax errors (with line and column).
+Scene load_scene(const std::string& path);
+
+// Same as load_scene on JSON text already in memory. `source_path` names the text in error messages,
+// sets Scene::source_path, anchors a relative geometry.path (its directory; the working directory if
+// it has none) and gives the default name (its stem). It need not exist.
+Scene parse_scene(const std::string& json_text, const std::string& source_path);
+
+}  // namespace skinfem

@@ -1,0 +1,537 @@
+// Scene files: the shipped scenes load with the right values; every class of bad input is rejected
+// with a one-line message naming the file, the JSON path, the offending value and what is allowed.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <string>
+
+#include "scene/load.hpp"
+#include "scene/scene.hpp"
+
+namespace fs = std::filesystem;
+using namespace skinfem;
+
+namespace {
+
+const std::string kSource = "scenes/x.json";
+
+// A valid scene assembled from parts; tests replace one part with bad JSON.
+struct Doc {
+  std::string geometry =
+      R"({"type": "cap", "R": 129.7, "h": 3.04, "apex": [0.5, 0.0], "truncation_radius": 12.0})";
+  std::string material = R"({"E": 3.0, "nu": 0.5})";
+  std::string sensors = R"({"positions": [[0, 0]], "disc_diameter": 0.2})";
+  std::string mesh = R"({"h_min": 0.25, "growth": 1.3, "h_max": 2.0})";
+  std::string extra;  // further top-level members, each starting with ", "
+  std::string str() const {
+    return "{\"geometry\": " + geometry + ", \"material\": " + material + ", \"sensors\": " + sensors +
+           ", \"mesh\": " + mesh + extra + "}";
+  }
+};
+
+std::string with(std::string Doc::*part, const std::string& value) {
+  Doc d;
+  d.*part = value;
+  return d.str();
+}
+
+std::string error_of(const std::string& text, const std::string& source = kSource) {
+  try {
+    parse_scene(text, source);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "accepted: " << text;
+  return "";
+}
+
+void expect_error(const std::string& text, std::initializer_list<std::string> parts) {
+  const std::string msg = error_of(text);
+  EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+  EXPECT_EQ(msg.rfind(kSource + ": ", 0), 0u) << msg;
+  for (const std::string& p : parts)
+    EXPECT_NE(msg.find(p), std::string::npos) << "no '" << p << "' in: " << msg;
+}
+
+#define EXPECT_SCENE_ERROR(text, ...)  \
+  do {                                 \
+    SCOPED_TRACE(text);                \
+    expect_error(text, {__VA_ARGS__}); \
+  } while (0)
+
+fs::path tmp_dir() {
+  const fs::path dir = fs::path(SKINFEM_TEST_TMP) / "scene_test_load";
+  fs::create_directories(dir);
+  return dir;
+}
+
+void write_file(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+}  // namespace
+
+TEST(SceneLoad, Candelier2011) {
+  const std::string path = std::string(SKINFEM_SOURCE_DIR) + "/scenes/candelier2011.json";
+  const Scene s = load_scene(path);
+  EXPECT_EQ(s.name, "candelier2011");
+  EXPECT_EQ(s.source_path, path);
+  ASSERT_EQ(s.geometry.kind, GeometryKind::cap);
+  EXPECT_DOUBLE_EQ(s.geometry.cap.R, 129.7);
+  EXPECT_DOUBLE_EQ(s.geometry.cap.h, 3.04);
+  EXPECT_DOUBLE_EQ(s.geometry.cap.apex_x, 0.5);
+  EXPECT_DOUBLE_EQ(s.geometry.cap.apex_y, 0.0);
+  EXPECT_DOUBLE_EQ(s.geometry.cap.truncation_radius, 12.0);
+  EXPECT_EQ(s.geometry.side, SideCondition::free);
+  EXPECT_DOUBLE_EQ(nominal_thickness(s), 3.04);
+  EXPECT_DOUBLE_EQ(s.material.E, 3.0);
+  EXPECT_DOUBLE_EQ(s.material.nu, 0.5);
+  ASSERT_EQ(s.sensors.positions.size(), 10u);
+  for (int i = 0; i < 10; ++i) {
+    EXPECT_NEAR(s.sensors.positions[i][0], -4.5 + i, 1e-12) << "sensor " << i + 1;
+    EXPECT_EQ(s.sensors.positions[i][1], 0.0) << "sensor " << i + 1;
+  }
+  EXPECT_DOUBLE_EQ(s.sensors.disc_diameter, 0.2);
+  EXPECT_DOUBLE_EQ(s.mesh.h_min, 0.25);
+  EXPECT_DOUBLE_EQ(s.mesh.growth, 1.3);
+  EXPECT_DOUBLE_EQ(s.mesh.h_max, 2.0);
+  EXPECT_TRUE(s.mesh.refine_sensors);
+  EXPECT_DOUBLE_EQ(s.mesh.max_radius_edge, 1.5);
+  EXPECT_DOUBLE_EQ(s.mesh.min_dihedral_deg, 10);
+  ASSERT_EQ(s.mesh.regions.size(), 1u);
+  EXPECT_EQ(s.mesh.regions[0].a, (Vec2{-4.5, 0.0}));
+  EXPECT_EQ(s.mesh.regions[0].b, (Vec2{4.5, 0.0}));
+  EXPECT_DOUBLE_EQ(s.mesh.regions[0].radius, 0.5);
+  EXPECT_EQ(s.mesh.regions[0].h, 0.0);
+  EXPECT_TRUE(s.loads.punches.empty());
+  EXPECT_TRUE(s.loads.patches.empty());
+  EXPECT_DOUBLE_EQ(s.calibration.punch_diameter, 0.5);
+  EXPECT_DOUBLE_EQ(s.calibration.spacing, 0.05);
+  EXPECT_EQ(s.calibration.scan_half_width, 0.0);
+}
+
+TEST(SceneLoad, FlatLayer) {
+  const Scene s = load_scene(std::string(SKINFEM_SOURCE_DIR) + "/scenes/flat_layer.json");
+  EXPECT_EQ(s.name, "flat_layer");
+  ASSERT_EQ(s.geometry.kind, GeometryKind::flat);
+  EXPECT_DOUBLE_EQ(s.geometry.flat.h, 3.04);
+  EXPECT_DOUBLE_EQ(s.geometry.flat.half_width, 15.0);
+  EXPECT_DOUBLE_EQ(nominal_thickness(s), 3.04);
+  EXPECT_DOUBLE_EQ(s.material.E, 3.0);
+  EXPECT_DOUBLE_EQ(s.material.nu, 0.5);
+  ASSERT_EQ(s.sensors.positions.size(), 1u);
+  EXPECT_EQ(s.sensors.positions[0], (Vec2{0.0, 0.0}));
+  EXPECT_DOUBLE_EQ(s.sensors.disc_diameter, 0.2);
+  EXPECT_DOUBLE_EQ(s.mesh.h_min, 0.15);
+  EXPECT_DOUBLE_EQ(s.mesh.growth, 1.3);
+  EXPECT_DOUBLE_EQ(s.mesh.h_max, 2.0);
+  ASSERT_EQ(s.mesh.regions.size(), 1u);
+  EXPECT_EQ(s.mesh.regions[0].a, (Vec2{0.0, 0.0}));
+  EXPECT_EQ(s.mesh.regions[0].b, (Vec2{0.0, 0.0}));
+  EXPECT_DOUBLE_EQ(s.mesh.regions[0].radius, 1.0);
+  ASSERT_EQ(s.loads.punches.size(), 1u);
+  const Punch& p = s.loads.punches[0];
+  EXPECT_EQ(p.center, (Vec2{0.0, 0.0}));
+  EXPECT_DOUBLE_EQ(p.diameter, 0.5);
+  ASSERT_TRUE(p.force.has_value());
+  EXPECT_DOUBLE_EQ(*p.force, 1.0);
+  EXPECT_FALSE(p.displacement.has_value());
+  EXPECT_DOUBLE_EQ(s.calibration.punch_diameter, 0.5);
+}
+
+TEST(SceneLoad, OptionalKeysTakeDefaults) {
+  const Scene s = parse_scene(Doc{}.str(), "some/dir/my_scene.json");
+  EXPECT_EQ(s.name, "my_scene");
+  EXPECT_EQ(s.source_path, "some/dir/my_scene.json");
+  EXPECT_EQ(s.geometry.side, SideCondition::free);
+  EXPECT_TRUE(s.mesh.refine_sensors);
+  EXPECT_TRUE(s.mesh.regions.empty());
+  EXPECT_DOUBLE_EQ(s.mesh.max_radius_edge, MeshControls{}.max_radius_edge);
+  EXPECT_DOUBLE_EQ(s.mesh.min_dihedral_deg, MeshControls{}.min_dihedral_deg);
+  EXPECT_TRUE(s.loads.punches.empty());
+  EXPECT_DOUBLE_EQ(s.calibration.punch_diameter, Calibration{}.punch_diameter);
+  EXPECT_DOUBLE_EQ(s.calibration.spacing, Calibration{}.spacing);
+}
+
+TEST(SceneLoad, OptionalKeysAreRead) {
+  Doc d;
+  d.geometry = R"({"type": "flat", "h": 2, "half_width": 10, "side": "fixed"})";
+  d.mesh = R"({"h_min": 0.1, "growth": 1.2, "h_max": 1, "refine_sensors": false, "min_dihedral_deg": 15,
+               "max_radius_edge": 1.2, "regions": [{"from": [0, 0], "to": [1, 0], "radius": 0, "h": 0.05}]})";
+  d.extra = R"(, "name": "x1", "calibration": {"punch_diameter": 0.3, "scan_half_width": 6, "spacing": 0.1},
+             "loads": {"punches": [{"center": [1, 2], "diameter": 0.5, "displacement": 0.01}],
+                       "patches": [{"center": [0, 0], "diameter": 0.5, "direction": [3, 0, -4], "force": 2}]})";
+  const Scene s = parse_scene(d.str(), kSource);
+  EXPECT_EQ(s.name, "x1");
+  EXPECT_EQ(s.geometry.side, SideCondition::fixed);
+  EXPECT_FALSE(s.mesh.refine_sensors);
+  EXPECT_DOUBLE_EQ(s.mesh.min_dihedral_deg, 15);
+  EXPECT_DOUBLE_EQ(s.mesh.max_radius_edge, 1.2);
+  ASSERT_EQ(s.mesh.regions.size(), 1u);
+  EXPECT_DOUBLE_EQ(s.mesh.regions[0].h, 0.05);
+  EXPECT_DOUBLE_EQ(s.calibration.punch_diameter, 0.3);
+  EXPECT_DOUBLE_EQ(s.calibration.scan_half_width, 6);
+  EXPECT_DOUBLE_EQ(s.calibration.spacing, 0.1);
+  ASSERT_EQ(s.loads.punches.size(), 1u);
+  EXPECT_FALSE(s.loads.punches[0].force.has_value());
+  EXPECT_DOUBLE_EQ(*s.loads.punches[0].displacement, 0.01);
+  ASSERT_EQ(s.loads.patches.size(), 1u);
+  EXPECT_NEAR(s.loads.patches[0].direction[0], 0.6, 1e-15);
+  EXPECT_NEAR(s.loads.patches[0].direction[1], 0.0, 1e-15);
+  EXPECT_NEAR(s.loads.patches[0].direction[2], -0.8, 1e-15);
+  EXPECT_DOUBLE_EQ(s.loads.patches[0].force, 2);
+}
+
+TEST(SceneLoad, SurfacePathIsResolvedAgainstTheSceneFile) {
+  const fs::path dir = tmp_dir();
+  write_file(dir / "dome.stl", "solid dome\nendsolid dome\n");
+  Doc d;
+  d.geometry = R"({"type": "surface", "path": "dome.stl"})";
+  d.sensors = R"({"positions": [[1000, 0]], "disc_diameter": 0.2})";  // footprint not checked for surfaces
+  write_file(dir / "surf_scene.json", d.str());
+  const Scene s = load_scene((dir / "surf_scene.json").string());
+  EXPECT_EQ(s.name, "surf_scene");  // file stem
+  ASSERT_EQ(s.geometry.kind, GeometryKind::surface);
+  EXPECT_TRUE(fs::equivalent(s.geometry.surface.path, dir / "dome.stl"));
+  EXPECT_EQ(nominal_thickness(s), 0.0);  // unknown before the surface is read
+
+  d.geometry = R"({"type": "surface", "path": "DOME.STL"})";
+  write_file(dir / "DOME.STL", "solid dome\nendsolid dome\n");
+  EXPECT_NO_THROW(parse_scene(d.str(), (dir / "x.json").string()));  // extension is case-insensitive
+}
+
+TEST(SceneLoad, SurfaceErrors) {
+  const fs::path dir = tmp_dir();
+  Doc d;
+  d.geometry = R"({"type": "surface", "path": "dome.step"})";
+  const std::string wrong_ext = error_of(d.str(), (dir / "x.json").string());
+  EXPECT_NE(wrong_ext.find("geometry.path = \"dome.step\""), std::string::npos) << wrong_ext;
+  EXPECT_NE(wrong_ext.find(".stl, .obj or .off"), std::string::npos) << wrong_ext;
+
+  d.geometry = R"({"type": "surface", "path": "no_such_file.off"})";
+  const std::string missing = error_of(d.str(), (dir / "x.json").string());
+  EXPECT_NE(missing.find("geometry.path = \"no_such_file.off\""), std::string::npos) << missing;
+  EXPECT_NE(missing.find("existing file"), std::string::npos) << missing;
+  EXPECT_NE(missing.find((dir / "no_such_file.off").string()), std::string::npos) << missing;
+
+  EXPECT_SCENE_ERROR(with(&Doc::geometry, R"({"type": "surface", "path": ""})"), "geometry.path = \"\"");
+  EXPECT_SCENE_ERROR(with(&Doc::geometry, R"({"type": "surface", "path": "a.stl", "R": 3})"),
+                     "geometry.R: unknown key; allowed: type, path, side");
+}
+
+TEST(SceneLoad, LoadSceneErrors) {
+  const fs::path dir = tmp_dir();
+  try {
+    load_scene((dir / "missing.json").string());
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find((dir / "missing.json").string() + ": cannot read"),
+              std::string::npos)
+        << e.what();
+  }
+  write_file(dir / "broken.json", "{\n  \"name\": \"b\",\n  \"geometry\": {,\n}\n");
+  try {
+    load_scene((dir / "broken.json").string());
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    const std::string msg = e.what();
+    EXPECT_EQ(msg.rfind((dir / "broken.json").string() + ": ", 0), 0u) << msg;
+    EXPECT_NE(msg.find("line 3"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("byte"), std::string::npos) << msg;
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+  }
+}
+
+TEST(SceneLoad, JsonSyntaxErrors) {
+  EXPECT_SCENE_ERROR("{\"geometry\": 1,\n \"material\": }", "invalid JSON", "line 2", "byte");
+  EXPECT_SCENE_ERROR("", "invalid JSON", "line 1");
+  EXPECT_SCENE_ERROR(Doc{}.str() + " trailing", "invalid JSON");
+  EXPECT_SCENE_ERROR("{\"material\": {\"E\": NaN}}", "invalid JSON");
+  EXPECT_SCENE_ERROR(with(&Doc::extra, ", /* comment */ \"name\": \"a\""), "invalid JSON");
+}
+
+TEST(SceneLoad, DuplicateKeys) {
+  EXPECT_SCENE_ERROR(with(&Doc::material, R"({"E": 3.0, "nu": 0.5, "E": 4.0})"), "material.E: duplicate key");
+  EXPECT_SCENE_ERROR(
+      with(&Doc::mesh,
+           R"({"h_min": 0.25, "growth": 1.3, "h_max": 2.0, "regions": [{"from": [0, 0], "to": [0, 0],
+          "radius": 1}, {"from": [0, 0], "to": [0, 0], "radius": 1, "radius": 2}]})"),
+      "mesh.regions[1].radius: duplicate key");
+  EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "material": {"E": 1, "nu": 0})"), "material: duplicate key");
+}
+
+TEST(SceneLoad, UnknownKeys) {
+  EXPECT_SCENE_ERROR(
+      with(&Doc::extra, R"(, "colour": "red")"),
+      "colour: unknown key; allowed: name, geometry, material, sensors, mesh, loads, calibration");
+  EXPECT_SCENE_ERROR(
+      with(&Doc::geometry,
+           R"({"type": "cap", "R": 129.7, "h": 3.04, "apex": [0, 0], "truncation_radius": 12, "foo": 1})"),
+      "scenes/x.json: geometry.foo: unknown key; allowed: type, R, h, apex, truncation_radius, side");
+  EXPECT_SCENE_ERROR(with(&Doc::geometry, R"({"type": "flat", "h": 3, "half_width": 15, "R": 1})"),
+                     "geometry.R: unknown key; allowed: type, h, half_width, side");
+  EXPECT_SCENE_ERROR(with(&Doc::material, R"({"E": 3.0, "nu": 0.5, "G": 1})"),
+                     "material.G: unknown key; allowed: E, nu");
+  EXPECT_SCENE_ERROR(with(&Doc::sensors, R"({"positions": [[0, 0]], "disc_diameter": 0.2, "n": 1})"),
+                     "sensors.n: unknown key; allowed: positions, line, disc_diameter");
+  EXPECT_SCENE_ERROR(
+      with(&Doc::sensors,
+           R"({"line": {"start": [0, 0], "step": [1, 0], "count": 1, "end": 3}, "disc_diameter": 0.2})"),
+      "sensors.line.end: unknown key; allowed: start, step, count");
+  EXPECT_SCENE_ERROR(
+      with(&Doc::mesh, R"({"h_min": 0.25, "growth": 1.3, "h_max": 2.0, "min_radius_edge": 2})"),
+      "mesh.min_radius_edge: unknown key; allowed:", "max_radius_edge");
+  EXPECT_SCENE_ERROR(
+      with(&Doc::mesh, R"({"h_min": 0.25, "growth": 1.3, "h_max": 2.0, "regions": [{"a": [0, 0]}]})"),
+      "mesh.regions[0].a: unknown key; allowed: from, to, radius, h");
+  EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "loads": {"contact": {}})"),
+                     "loads.contact: unknown key; allowed: punches, patches");
+  EXPECT_SCENE_ERROR(
+      with(&Doc::extra,
+           R"(, "loads": {"punches": [{"center": [0, 0], "diameter": 0.5, "force": 1, "f": 2}]})"),
+      "loads.punches[0].f: unknown key; allowed: center, diameter, force, displacement");
+  EXPECT_SCENE_ERROR(
+      with(
+          &Doc::extra,
+          R"(, "loads": {"patches": [{"center": [0, 0], "diameter": 0.5, "direction": [1, 0, 0], "force": 1, "t": 0}]})"),
+      "loads.patches[0].t: unknown key; allowed: center, diameter, direction, force");
+  EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "calibration": {"punch": 0.5})"),
+                     "calibration.punch: unknown key; allowed: punch_diameter, scan_half_width, spacing");
+}
+
+TEST(SceneLoad, MissingRequiredKeys) {
+  EXPECT_SCENE_ERROR(R"({"material": {"E": 3, "nu": 0.5}})", "geometry: required key is missing");
+  EXPECT_SCENE_ERROR(with(&Doc::material, R"({"nu": 0.5})"), "material.E: required key is missing", "> 0");
+  EXPECT_SCENE_ERROR(with(&Doc::geometry, R"({"R": 129.7, "h": 3.04})"),
+                     "geometry.type: required key is missing", "\"cap\", \"flat\", \"surface\"");
+  EXPECT_SCENE_ERROR(with(&Doc::geometry, R"({"type": "cap", "R": 129.7, "h": 3.04, "apex": [0, 0]})"),
+                     "geometry.truncation_radius: required key is missing");
+  EXPECT_SCENE_ERROR(with(&Doc::geometry, R"({"type": "flat", "h": 3.04})"),
+                     "geometry.half_width: required key is missing");
+  EXPECT_SCENE_ERROR(with(&Doc::geometry, R"({"type": "surface"})"),
+                     "geometry.path: required key is missing");
+  EXPECT_SCENE_ERROR(with(&Doc::sensors, R"({"positions": [[0, 0]]})"),
+                     "sensors.disc_diameter: required key is missing");
+  EXPECT_SCENE_ERROR(
+      with(&Doc::sensors, R"({"line": {"start": [0, 0], "step": [1, 0]}, "disc_diameter": 0.2})"),
+      "sensors.line.count: required key is missing");
+  EXPECT_SCENE_ERROR(with(&Doc::mesh, R"({"h_min": 0.25, "h_max": 2.0})"),
+                     "mesh.growth: required key is missing");
+  EXPECT_SCENE_ERROR(
+      with(&Doc::mesh, R"({"h_min": 0.25, "growth": 1.3, "h_max": 2.0, "regions": [{"from": [0, 0],
+                                         "to": [0, 0]}]})"),
+      "mesh.regions[0].radius: required key is missing");
+  EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "loads": {"punches": [{"diameter": 0.5, "force": 1}]})"),
+                     "loads.punches[0].center: required key is missing", "[x, y]");
+  EXPECT_SCENE_ERROR(
+      with(&Doc::extra, R"(, "loads": {"patches": [{"center": [0, 0], "diameter": 0.5, "force": 1}]})"),
+      "loads.patches[0].direction: required key is missing");
+}
+
+TEST(SceneLoad, WrongTypes) {
+  EXPECT_SCENE_ERROR("[1, 2]", "(top level) = [1,2]: must be an object");
+  EXPECT_SCENE_ERROR(with(&Doc::material, R"({"E": "3", "nu": 0.5})"),
+                     "material.E = \"3\": must be a number > 0");
+  EXPECT_SCENE_ERROR(with(&Doc::material, R"({"E": true, "nu": 0.5})"),
+                     "material.E = true: must be a number > 0");
+  EXPECT_SCENE_ERROR(with(&Doc::material, "[3, 0.5]"),
+                     "material = [3,0.5]: must be an object with keys E, nu");
+  EXPECT_SCENE_ERROR(with(&Doc::geometry, R"({"type": 1})"), "geometry.type = 1: must be one of");
+  EXPECT_SCENE_ERROR(with(&Doc::geometry, R"({"type": "cube"})"),
+                     "geometry.type = \"cube\": must be one of \"cap\", \"flat\", \"surface\"");
+  EXPECT_SCENE_ERROR(
+      with(&Doc::geometry,
+           R"({"type": "cap", "R": 129.7, "h": 3.04, "apex": [0.5], "truncation_radius": 12})"),
+      "geometry.apex = [0.5]: must be a point [x, y]");
+  EXPECT_SCENE_ERROR(
+      with(&Doc::geometry,
+           R"({"type": "cap", "R": 129.7, "h": 3.04, "apex": [0, "0"], "truncation_radius": 12})"),
+      "geometry.apex = [0,\"0\"]: must be a point [x, y]");
+  EXPECT_SCENE_ERROR(with(&Doc::geometry, R"({"type": "flat", "h": 3, "half_width": 15, "side": "glued"})"),
+                     "geometry.side = \"glued\": must be \"free\" or \"fixed\"");
+  EXPECT_SCENE_ERROR(with(&Doc::mesh, R"({"h_min": 0.25, "growth": 1.3, "h_max": 2.0, "refine_sensors": 1})"),
+                     "mesh.refine_sensors = 1: must be true or false");
+  EXPECT_SCENE_ERROR(with(&Doc::mesh, R"({"h_min": 0.25, "growth": 1.3, "h_max": 2.0, "regions": {}})"),
+                     "mesh.regions = {}: must be an array of regions");
+  EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "name": 5)"), "name = 5: must be a non-empty string");
+  EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "name": "")"), "name = \"\": must be a non-empty string");
+  EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "loads": {"punches": {"center": [0, 0]}})"),
+                     "loads.punches = {\"center\":[0,0]}: must be an array of punches");
+  EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "loads": [])"),
+                     "loads = []: must be an object with keys punches, patches");
+}
+
+TEST(SceneLoad, NumbersMustBeFinite) {
+  // JSON has no inf/nan literals; numbers that overflow a double are rejected by the parser.
+  EXPECT_SCENE_ERROR(with(&Doc::material, R"({"E": 1e999, "nu": 0.5})"), "invalid JSON", "1e999", "finite");
+  EXPECT_SCENE_ERROR(with(&Doc::sensors, R"({"positions": [[-1e400, 0]], "disc_diameter": 0.2})"),
+                     "invalid JSON", "-1e400", "finite");
+  EXPECT_SCENE_ERROR(with(&Doc::material, R"({"E": Infinity, "nu": 0.5})"), "invalid JSON");
+}
+
+TEST(SceneLoad, Material) {
+  EXPECT_SCENE_ERROR(with(&Doc::material, R"({"E": 0, "nu": 0.5})"), "material.E = 0: must be a number > 0");
+  EXPECT_SCENE_ERROR(with(&Doc::material, R"({"E": -3, "nu": 0.5})"),
+                     "material.E = -3: must be a number > 0");
+  EXPECT_SCENE_ERROR(with(&Doc::material, R"({"E": 3, "nu": 0.7})"),
+                     "scenes/x.json: material.nu = 0.7: must be a number in [0, 0.5]");
+  EXPECT_SCENE_ERROR(with(&Doc::material, R"({"E": 3, "nu": -0.1})"),
+                     "material.nu = -0.1: must be a number in [0, 0.5]");
+  EXPECT_NO_THROW(parse_scene(with(&Doc::material, R"({"E": 3, "nu": 0})"), kSource));
+}
+
+TEST(SceneLoad, CapGeometry) {
+  const auto cap = [](const std::string& R, const std::string& h, const std::string& rt) {
+    return with(&Doc::geometry, R"({"type": "cap", "R": )" + R + R"(, "h": )" + h +
+                                    R"(, "apex": [0.5, 0], "truncation_radius": )" + rt + "}");
+  };
+  EXPECT_SCENE_ERROR(cap("0", "3.04", "12"), "geometry.R = 0: must be a number > 0");
+  EXPECT_SCENE_ERROR(cap("129.7", "0", "12"), "geometry.h = 0: must be a number in (0, R) = (0, 129.7)");
+  EXPECT_SCENE_ERROR(cap("129.7", "129.7", "12"),
+                     "geometry.h = 129.7: must be a number in (0, R) = (0, 129.7)");
+  // sqrt(129.7² − 126.66²) = 27.9166...
+  EXPECT_SCENE_ERROR(cap("129.7", "3.04", "30"),
+                     "geometry.truncation_radius = 30: must be a number > 0 and < 27.91",
+                     "sqrt(R^2 - (R - h)^2)", "thins to zero");
+  EXPECT_SCENE_ERROR(cap("129.7", "3.04", "27.92"), "geometry.truncation_radius = 27.92", "< 27.91");
+  EXPECT_SCENE_ERROR(cap("129.7", "3.04", "0"), "geometry.truncation_radius = 0: must be a number > 0");
+  EXPECT_NO_THROW(parse_scene(cap("129.7", "3.04", "27.9"), kSource));
+}
+
+TEST(SceneLoad, FlatGeometry) {
+  EXPECT_SCENE_ERROR(with(&Doc::geometry, R"({"type": "flat", "h": 0, "half_width": 15})"),
+                     "geometry.h = 0: must be a number > 0");
+  EXPECT_SCENE_ERROR(with(&Doc::geometry, R"({"type": "flat", "h": 3, "half_width": -1})"),
+                     "geometry.half_width = -1: must be a number > 0");
+}
+
+TEST(SceneLoad, Sensors) {
+  EXPECT_SCENE_ERROR(with(&Doc::sensors, R"({"disc_diameter": 0.2})"),
+                     "sensors = {\"disc_diameter\":0.2}: must have exactly one of \"positions\"", "\"line\"");
+  EXPECT_SCENE_ERROR(
+      with(
+          &Doc::sensors,
+          R"({"positions": [[0, 0]], "line": {"start": [0, 0], "step": [1, 0], "count": 1}, "disc_diameter": 0.2})"),
+      "sensors = ", "must have exactly one of \"positions\"");
+  EXPECT_SCENE_ERROR(with(&Doc::sensors, R"({"positions": [], "disc_diameter": 0.2})"),
+                     "sensors.positions = []: must be a non-empty array of points [x, y]");
+  EXPECT_SCENE_ERROR(with(&Doc::sensors, R"({"positions": [[0, 0]], "disc_diameter": 0})"),
+                     "sensors.disc_diameter = 0: must be a number > 0");
+  EXPECT_SCENE_ERROR(
+      with(&Doc::sensors, R"({"positions": [[0, 0], [1, 0], [2, 0], [1, 2, 3]], "disc_diameter": 0.2})"),
+      "sensors.positions[3] = [1,2,3]: must be a point [x, y]");
+  EXPECT_SCENE_ERROR(
+      with(&Doc::sensors, R"({"line": {"start": [0, 0], "step": [1, 0], "count": 0}, "disc_diameter": 0.2})"),
+      "sensors.line.count = 0: must be an integer in [1, 100000]");
+  EXPECT_SCENE_ERROR(
+      with(&Doc::sensors,
+           R"({"line": {"start": [0, 0], "step": [1, 0], "count": 2.5}, "disc_diameter": 0.2})"),
+      "sensors.line.count = 2.5: must be an integer in [1, 100000]");
+}
+
+TEST(SceneLoad, SensorsInsideFootprint) {
+  // Cap: apex at (0.5, 0), truncation_radius 12, disc radius 0.1 → centres within 11.9 of the apex.
+  EXPECT_SCENE_ERROR(
+      with(&Doc::sensors, R"({"positions": [[0, 0], [1, 0], [2, 0], [12.5, 0]], "disc_diameter": 0.2})"),
+      "sensors.positions[3] = [12.5,0.0]: sensor disc (diameter 0.2) must lie inside the cap footprint",
+      "11.9", "(0.5, 0)");
+  EXPECT_NO_THROW(
+      parse_scene(with(&Doc::sensors, R"({"positions": [[12.4, 0]], "disc_diameter": 0.2})"), kSource));
+  EXPECT_SCENE_ERROR(
+      with(&Doc::sensors,
+           R"({"line": {"start": [-4.5, 0], "step": [2, 0], "count": 10}, "disc_diameter": 0.2})"),
+      "sensors.line (sensor 10 of 10) = [13.5,0.0]: sensor disc", "11.9");
+  // Flat: |x|, |y| + 0.1 <= 15.
+  Doc d;
+  d.geometry = R"({"type": "flat", "h": 3, "half_width": 15})";
+  d.sensors = R"({"positions": [[0, 14.95]], "disc_diameter": 0.2})";
+  EXPECT_SCENE_ERROR(
+      d.str(),
+      "sensors.positions[0] = [0.0,14.95]: sensor disc (diameter 0.2) must lie inside the flat layer",
+      "|x|, |y| <= half_width - disc_diameter/2 = 14.9");
+  d.sensors = R"({"positions": [[14.9, -14.9]], "disc_diameter": 0.2})";
+  EXPECT_NO_THROW(parse_scene(d.str(), kSource));
+}
+
+TEST(SceneLoad, Mesh) {
+  const auto mesh = [](const std::string& body) { return with(&Doc::mesh, "{" + body + "}"); };
+  EXPECT_SCENE_ERROR(mesh(R"("h_min": 0, "growth": 1.3, "h_max": 2)"),
+                     "mesh.h_min = 0: must be a number > 0");
+  EXPECT_SCENE_ERROR(mesh(R"("h_min": 0.5, "growth": 1.3, "h_max": 0.4)"),
+                     "mesh.h_max = 0.4: must be a number >= mesh.h_min = 0.5");
+  EXPECT_SCENE_ERROR(mesh(R"("h_min": 0.5, "growth": 1, "h_max": 2)"),
+                     "mesh.growth = 1: must be a number > 1");
+  EXPECT_SCENE_ERROR(mesh(R"("h_min": 0.5, "growth": 1.3, "h_max": 2, "min_dihedral_deg": 0)"),
+                     "mesh.min_dihedral_deg = 0: must be a number in (0, 30)");
+  EXPECT_SCENE_ERROR(mesh(R"("h_min": 0.5, "growth": 1.3, "h_max": 2, "min_dihedral_deg": 30)"),
+                     "mesh.min_dihedral_deg = 30: must be a number in (0, 30)");
+  EXPECT_SCENE_ERROR(mesh(R"("h_min": 0.5, "growth": 1.3, "h_max": 2, "max_radius_edge": 1.05)"),
+                     "mesh.max_radius_edge = 1.05: must be a number >= 1.1", "TetGen");
+  EXPECT_SCENE_ERROR(
+      mesh(
+          R"("h_min": 0.5, "growth": 1.3, "h_max": 2, "regions": [{"from": [0, 0], "to": [1, 0], "radius": -1}])"),
+      "mesh.regions[0].radius = -1: must be a number >= 0");
+  EXPECT_SCENE_ERROR(
+      mesh(
+          R"("h_min": 0.5, "growth": 1.3, "h_max": 2, "regions": [{"from": [0, 0], "to": [1, 0], "radius": 1, "h": 0}])"),
+      "mesh.regions[0].h = 0: must be a number > 0");
+  EXPECT_SCENE_ERROR(
+      mesh(R"("h_min": 0.5, "growth": 1.3, "h_max": 2, "regions": [{"from": [0, 0], "to": 1, "radius": 1}])"),
+      "mesh.regions[0].to = 1: must be a point [x, y]");
+  EXPECT_SCENE_ERROR(mesh(R"("h_min": 0.5, "growth": 1.3, "h_max": 2, "regions": [3])"),
+                     "mesh.regions[0] = 3: must be an object with keys from, to, radius, h");
+}
+
+TEST(SceneLoad, Punches) {
+  const auto punch = [](const std::string& body) {
+    return with(&Doc::extra, R"(, "loads": {"punches": [{"center": [0, 0], "diameter": 0.5, "force": 1}, {)" +
+                                 body + "}]}");
+  };
+  EXPECT_SCENE_ERROR(punch(R"("center": [0, 0], "diameter": 0, "force": 1)"),
+                     "loads.punches[1].diameter = 0: must be a number > 0");
+  EXPECT_SCENE_ERROR(punch(R"("center": [0, 0], "diameter": 0.5)"), "loads.punches[1] = {",
+                     "must have exactly one of \"force\" (N) or \"displacement\" (mm)");
+  EXPECT_SCENE_ERROR(punch(R"("center": [0, 0], "diameter": 0.5, "force": 1, "displacement": 0.01)"),
+                     "loads.punches[1] = {", "must have exactly one of \"force\"");
+  EXPECT_SCENE_ERROR(punch(R"("center": [0, 0], "diameter": 0.5, "force": 0)"),
+                     "loads.punches[1].force = 0: must be a number > 0");
+  EXPECT_SCENE_ERROR(punch(R"("center": [0, 0], "diameter": 0.5, "displacement": -0.01)"),
+                     "loads.punches[1].displacement = -0.01: must be a number > 0");
+}
+
+TEST(SceneLoad, Patches) {
+  const auto patch = [](const std::string& body) {
+    return with(&Doc::extra, R"(, "loads": {"patches": [{)" + body + "}]}");
+  };
+  EXPECT_SCENE_ERROR(patch(R"("center": [0, 0], "diameter": 0, "direction": [1, 0, 0], "force": 1)"),
+                     "loads.patches[0].diameter = 0: must be a number > 0");
+  EXPECT_SCENE_ERROR(patch(R"("center": [0, 0], "diameter": 0.5, "direction": [0, 0, 0], "force": 1)"),
+                     "loads.patches[0].direction = [0,0,0]: must be a non-zero vector [x, y, z]");
+  EXPECT_SCENE_ERROR(patch(R"("center": [0, 0], "diameter": 0.5, "direction": [1, 0], "force": 1)"),
+                     "loads.patches[0].direction = [1,0]: must be a vector [x, y, z]");
+  EXPECT_SCENE_ERROR(patch(R"("center": [0, 0], "diameter": 0.5, "direction": [1, 0, 0], "force": -1)"),
+                     "loads.patches[0].force = -1: must be a number > 0");
+}
+
+TEST(SceneLoad, Calibration) {
+  EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "calibration": {"punch_diameter": 0})"),
+                     "calibration.punch_diameter = 0: must be a number > 0");
+  EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "calibration": {"spacing": 0})"),
+                     "calibration.spacing = 0: must be a number > 0");
+  EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "calibration": {"scan_half_width": -1})"),
+                     "calibration.scan_half_width = -1: must be a number >= 0");
+  EXPECT_NO_THROW(parse_scene(with(&Doc::extra, R"(, "calibration": {"scan_half_width": 0})"), kSource));
+}
+
+TEST(SceneLoad, EmptySourcePathIsNamedInMessages) {
+  try {
+    parse_scene("{}", "");
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), "<scene>: geometry: required key is missing; must be an object");
+  }
+}
