@@ -26,7 +26,9 @@ void write_text_atomic(const std::string& path, const std::string& text) {
   std::filesystem::rename(tmp, path);
 }
 
-void write_json(const std::string& path, const nlohmann::json& j) { write_text_atomic(path, j.dump(2) + "\n"); }
+void write_json(const std::string& path, const nlohmann::json& j) {
+  write_text_atomic(path, j.dump(2) + "\n");
+}
 
 double peak_rss_mb() {
   rusage usage{};
@@ -37,8 +39,11 @@ double peak_rss_mb() {
 void progress(const std::string& message) { std::cerr << "[skinfem] " << message << std::endl; }
 
 nlohmann::json scene_json(const Scene& scene) {
-  return {{"name", scene.name}, {"source", scene.source_path}, {"E_MPa", scene.material.E},
-          {"nu", scene.material.nu}, {"sensors", scene.sensors.positions.size()}};
+  return {{"name", scene.name},
+          {"source", scene.source_path},
+          {"E_MPa", scene.material.E},
+          {"nu", scene.material.nu},
+          {"sensors", scene.sensors.positions.size()}};
 }
 
 }  // namespace skinfem::app

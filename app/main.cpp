@@ -13,7 +13,8 @@ int main(int argc, char** argv) {
   cli.require_subcommand(1);
   std::string scene_path, out_dir = "out";
 
-  auto* mesh = cli.add_subcommand("mesh", "mesh the scene's skin (writes mesh.vtu, boundary.vtu, summary.json)");
+  auto* mesh =
+      cli.add_subcommand("mesh", "mesh the scene's skin (writes mesh.vtu, boundary.vtu, summary.json)");
   for (auto* sub : {mesh}) {
     sub->add_option("scene", scene_path, "scene JSON file")->required();
     sub->add_option("--out", out_dir, "output directory")->capture_default_str();

@@ -8,9 +8,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Johnson's frame (K. L. Johnson, Contact Mechanics, CUP 1985, ch. 3) has z pointing INTO the solid (z = depth). Our
-// frame is z-up. Going from one to the other is the reflection Q = diag(1, 1, −1), σ' = Q σ Qᵀ: only the xz and yz
-// components change sign.
+// Johnson's frame (K. L. Johnson, Contact Mechanics, CUP 1985, ch. 3) has z pointing INTO the solid (z =
+// depth). Our frame is z-up. Going from one to the other is the reflection Q = diag(1, 1, −1), σ' = Q σ Qᵀ:
+// only the xz and yz components change sign.
 Eigen::Matrix3d to_z_up(const Eigen::Matrix3d& s_johnson) {
   Eigen::Matrix3d s = s_johnson;
   s(0, 2) = s(2, 0) = -s_johnson(0, 2);
@@ -21,7 +21,8 @@ Eigen::Matrix3d to_z_up(const Eigen::Matrix3d& s_johnson) {
 void check_args(double x, double y, double depth, double nu) {
   if (!(depth >= 0.0)) throw std::invalid_argument("half-space stress: depth must be >= 0");
   if (!(nu >= 0.0 && nu <= 0.5)) throw std::invalid_argument("half-space stress: nu must be in [0, 0.5]");
-  if (x == 0.0 && y == 0.0 && depth == 0.0) throw std::invalid_argument("half-space stress: at the load point");
+  if (x == 0.0 && y == 0.0 && depth == 0.0)
+    throw std::invalid_argument("half-space stress: at the load point");
 }
 
 }  // namespace
@@ -64,8 +65,9 @@ Eigen::Matrix3d cerruti_stress(double x, double y, double depth, double nu) {
   //   τ_xy = −Q y/(2πρ³) [ 3x²/ρ² + (1−2ν)/(ρ+z)² { ρ² − x² − 2ρx²/(ρ+z) } ]
   //   τ_yz = −3Q x y z/(2πρ⁵)
   //   τ_zx = −3Q x² z/(2πρ⁵)
-  // (Some secondary listings print τ_xy with the opposite sign of the last term; the form above is the one that satisfies
-  // equilibrium and Beltrami–Michell compatibility, which tests/green/test_halfspace.cpp checks numerically.)
+  // (Some secondary listings print τ_xy with the opposite sign of the last term; the form above is the one
+  // that satisfies equilibrium and Beltrami–Michell compatibility, which tests/green/test_halfspace.cpp
+  // checks numerically.)
   const double z = depth;
   const double rho2 = x * x + y * y + z * z;
   const double rho = std::sqrt(rho2);
@@ -99,10 +101,12 @@ double component(const GreenSample& g, GreenComponent c) {
   return 0.0;
 }
 
-GreenSample readings_from_stress(const Eigen::Matrix3d& stress_normal, const Eigen::Matrix3d& stress_tangential) {
-  // The skin lies above the sensor; the force the skin exerts on the base per unit area is σ·e_z (z-up). Its z component
-  // is σ_zz (negative when pressing), its x component σ_xz.
-  return GreenSample{-stress_normal(2, 2), stress_normal(0, 2), -stress_tangential(2, 2), stress_tangential(0, 2)};
+GreenSample readings_from_stress(const Eigen::Matrix3d& stress_normal,
+                                 const Eigen::Matrix3d& stress_tangential) {
+  // The skin lies above the sensor; the force the skin exerts on the base per unit area is σ·e_z (z-up). Its
+  // z component is σ_zz (negative when pressing), its x component σ_xz.
+  return GreenSample{-stress_normal(2, 2), stress_normal(0, 2), -stress_tangential(2, 2),
+                     stress_tangential(0, 2)};
 }
 
 GreenSample halfspace_green(double x, double y, double h) {

@@ -9,8 +9,10 @@
 
 namespace skinfem {
 
-TetMesh make_quadratic(const RowMatrixX3d& points, const Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor>& tets,
-                       const RowMatrixX3i& faces, const Eigen::VectorXi& face_marker, const Geometry& geometry) {
+TetMesh make_quadratic(const RowMatrixX3d& points,
+                       const Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor>& tets,
+                       const RowMatrixX3i& faces, const Eigen::VectorXi& face_marker,
+                       const Geometry& geometry) {
   const SkinShape shape(geometry);
   const int nv = points.rows();
   auto key = [](int a, int b) { return a < b ? std::pair{a, b} : std::pair{b, a}; };
@@ -44,7 +46,8 @@ TetMesh make_quadratic(const RowMatrixX3d& points, const Eigen::Matrix<int, Eige
   m.tets.resize(tets.rows(), 10);
   for (int t = 0; t < tets.rows(); ++t) {
     for (int k = 0; k < 4; ++k) m.tets(t, k) = tets(t, k);
-    for (int e = 0; e < 6; ++e) m.tets(t, 4 + e) = mid_node(tets(t, p2::kEdge[e][0]), tets(t, p2::kEdge[e][1]));
+    for (int e = 0; e < 6; ++e)
+      m.tets(t, 4 + e) = mid_node(tets(t, p2::kEdge[e][0]), tets(t, p2::kEdge[e][1]));
   }
   m.nodes.resize(nv + extra.size(), 3);
   m.nodes.topRows(nv) = points;
@@ -63,12 +66,30 @@ TetMesh make_quadratic(const RowMatrixX3d& points, const Eigen::Matrix<int, Eige
   return m;
 }
 
+namespace {
+// Boundary points TetGen added lie on the flat input triangles: move them onto the exact cap or
+// cylinder (by at most the sagitta of a boundary triangle, L²/8R).
+void snap_to_surface(LinearTets& lin, const SkinShape& shape) {
+  Eigen::VectorXi marker = Eigen::VectorXi::Zero(lin.points.rows());
+  for (int f = 0; f < lin.faces.rows(); ++f)
+    for (int k = 0; k < 3; ++k) marker(lin.faces(f, k)) |= lin.face_marker(f);
+  for (int i = 0; i < lin.points.rows(); ++i) {
+    if (marker(i) & kSide) {
+      const Vec3 q = shape.on_side({lin.points(i, 0), lin.points(i, 1), lin.points(i, 2)});
+      lin.points.row(i) << q[0], q[1], q[2];
+    }
+    if (marker(i) & kTop) lin.points(i, 2) = shape.top_z(lin.points(i, 0), lin.points(i, 1));
+  }
+}
+}  // namespace
+
 TetMesh build_mesh(const Scene& scene) {
   const SizingField size(scene.mesh, scene.sensors);
   const bool generated = scene.geometry.kind != GeometryKind::surface;
   const SurfaceMesh surface =
       generated ? layer_surface(scene.geometry, size) : import_surface(scene.geometry.surface.path);
-  const LinearTets lin = tetrahedralize(surface, size, scene.mesh, /*preserve_surface=*/generated);
+  LinearTets lin = tetrahedralize(surface, size, scene.mesh);
+  if (generated) snap_to_surface(lin, SkinShape(scene.geometry));
   return make_quadratic(lin.points, lin.tets, lin.faces, lin.face_marker, scene.geometry);
 }
 

@@ -13,7 +13,9 @@ TetMesh build_mesh(const Scene& scene);
 
 // The P2 completion alone: adds the six mid-edge nodes per tet, placed on the exact top/side
 // surface of `geometry` when the edge lies on a curved boundary face (straight otherwise).
-TetMesh make_quadratic(const RowMatrixX3d& points, const Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor>& tets,
-                       const RowMatrixX3i& faces, const Eigen::VectorXi& face_marker, const Geometry& geometry);
+TetMesh make_quadratic(const RowMatrixX3d& points,
+                       const Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor>& tets,
+                       const RowMatrixX3i& faces, const Eigen::VectorXi& face_marker,
+                       const Geometry& geometry);
 
 }  // namespace skinfem

@@ -47,7 +47,8 @@ class GradedCriteria : public virtual CGAL::Delaunay_mesh_criteria_2<CDT> {
       const auto& a = fh->vertex(0)->point();
       const auto& b = fh->vertex(1)->point();
       const auto& c = fh->vertex(2)->point();
-      double l[3] = {CGAL::squared_distance(b, c), CGAL::squared_distance(c, a), CGAL::squared_distance(a, b)};
+      double l[3] = {CGAL::squared_distance(b, c), CGAL::squared_distance(c, a),
+                     CGAL::squared_distance(a, b)};
       std::sort(l, l + 3);
       const double cx = (a.x() + b.x() + c.x()) / 3, cy = (a.y() + b.y() + c.y()) / 3;
       const double target = (*size_)(cx, cy);

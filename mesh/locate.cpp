@@ -55,18 +55,27 @@ struct PointLocator::Impl {
   const TetMesh& mesh;
   Tree tree;
   double diameter;
+  double bulge;  // largest distance of a mid-edge node from its straight edge's midpoint
 };
 
 PointLocator::PointLocator(const TetMesh& mesh) {
   std::vector<TetPrimitive> prims;
   prims.reserve(mesh.num_tets());
   auto pt = [&](int t, int k) {
-    return K::Point_3(mesh.nodes(mesh.tets(t, k), 0), mesh.nodes(mesh.tets(t, k), 1), mesh.nodes(mesh.tets(t, k), 2));
+    return K::Point_3(mesh.nodes(mesh.tets(t, k), 0), mesh.nodes(mesh.tets(t, k), 1),
+                      mesh.nodes(mesh.tets(t, k), 2));
   };
   for (int t = 0; t < mesh.num_tets(); ++t)
     prims.emplace_back(t, K::Tetrahedron_3(pt(t, 0), pt(t, 1), pt(t, 2), pt(t, 3)));
   const double diameter = (mesh.nodes.colwise().maxCoeff() - mesh.nodes.colwise().minCoeff()).norm();
-  impl_.reset(new Impl{mesh, Tree(prims.begin(), prims.end()), diameter});
+  double bulge = 0;
+  for (int t = 0; t < mesh.num_tets(); ++t)
+    for (int e = 0; e < 6; ++e) {
+      const auto mid = 0.5 * (mesh.nodes.row(mesh.tets(t, p2::kEdge[e][0])) +
+                              mesh.nodes.row(mesh.tets(t, p2::kEdge[e][1])));
+      bulge = std::max(bulge, (mesh.nodes.row(mesh.tets(t, 4 + e)) - mid).norm());
+    }
+  impl_.reset(new Impl{mesh, Tree(prims.begin(), prims.end()), diameter, bulge});
   impl_->tree.accelerate_distance_queries();
 }
 
@@ -75,9 +84,9 @@ PointLocator::PointLocator(PointLocator&&) noexcept = default;
 
 std::optional<Location> PointLocator::locate(const Eigen::Vector3d& p, double tolerance) const {
   if (tolerance < 0) tolerance = 1e-6 * impl_->diameter;
-  // Candidates: every element whose box is within the tolerance (and curved elements bulge only
-  // slightly beyond their straight-sided box, which the tolerance and the margin below cover).
-  const double margin = tolerance + 1e-3 * impl_->diameter;
+  // Candidates: every element whose straight-sided box is within the tolerance plus the largest
+  // bulge of a curved edge (a P2 element reaches at most about that far beyond its box).
+  const double margin = tolerance + 2 * impl_->bulge;
   const CGAL::Bbox_3 box(p.x() - margin, p.y() - margin, p.z() - margin, p.x() + margin, p.y() + margin,
                          p.z() + margin);
   std::vector<int> candidates;

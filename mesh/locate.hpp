@@ -11,7 +11,7 @@ namespace skinfem {
 
 struct Location {
   int tet = -1;
-  Eigen::Vector3d xi;               // reference coordinates (ξ, η, ζ)
+  Eigen::Vector3d xi;                 // reference coordinates (ξ, η, ζ)
   std::array<double, 4> barycentric;  // (1 − ξ − η − ζ, ξ, η, ζ)
 };
 

@@ -8,7 +8,7 @@ namespace skinfem {
 struct MeshQuality {
   int nodes = 0, vertices = 0, elements = 0, boundary_faces = 0;
   double min_dihedral_deg = 0, max_dihedral_deg = 0;  // of the straight-sided tets
-  double max_radius_edge = 0;                          // circumradius / shortest edge
+  double max_radius_edge = 0;                         // circumradius / shortest edge
   double min_edge_mm = 0, max_edge_mm = 0;
   double volume_mm3 = 0;         // isoparametric P2 volume, degree-5 quadrature
   double linear_volume_mm3 = 0;  // straight-sided volume

@@ -4,7 +4,8 @@
 
 namespace skinfem {
 
-SkinShape::SkinShape(const Geometry& geometry) : kind_(geometry.kind), cap_(geometry.cap), flat_(geometry.flat) {}
+SkinShape::SkinShape(const Geometry& geometry)
+    : kind_(geometry.kind), cap_(geometry.cap), flat_(geometry.flat) {}
 
 double SkinShape::top_z(double x, double y) const {
   if (kind_ != GeometryKind::cap) return flat_.h;

@@ -20,7 +20,8 @@ SizingField::SizingField(const MeshControls& controls, const Sensors& sensors)
   for (auto& r : regions_)
     if (r.h <= 0) r.h = controls.h_min;
   if (controls.refine_sensors)
-    for (const auto& s : sensors.positions) regions_.push_back({s, s, 0.5 * sensors.disc_diameter, controls.h_min});
+    for (const auto& s : sensors.positions)
+      regions_.push_back({s, s, 0.5 * sensors.disc_diameter, controls.h_min});
 }
 
 double SizingField::operator()(double x, double y) const {

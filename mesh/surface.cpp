@@ -21,7 +21,8 @@ using OmMesh = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
 // Returns an empty string when closed and manifold, else the reason.
 std::string topology_problem(const OmMesh& m, size_t expected_faces) {
   if (m.n_faces() != expected_faces)
-    return std::to_string(expected_faces - m.n_faces()) + " faces are non-manifold or inconsistently oriented";
+    return std::to_string(expected_faces - m.n_faces()) +
+           " faces are non-manifold or inconsistently oriented";
   for (auto h : m.halfedges())
     if (m.is_boundary(h)) return "not watertight (open boundary edges)";
   for (auto v : m.vertices())
@@ -58,16 +59,24 @@ void check_watertight(const SurfaceMesh& surface, const std::string& what) {
   const OmMesh m = to_openmesh(surface, added);
   if (auto problem = topology_problem(m, surface.triangles.rows()); !problem.empty())
     throw MeshError(what + ": surface is " + problem + "; a closed manifold surface is required");
-  if (signed_volume(surface) <= 0) throw MeshError(what + ": surface encloses no volume or is inward oriented");
+  if (signed_volume(surface) <= 0)
+    throw MeshError(what + ": surface encloses no volume or is inward oriented");
 }
 
 SurfaceMesh layer_surface(const Geometry& geometry, const SizingField& size) {
   const SkinShape shape(geometry);
-  const Vec2 centre = geometry.kind == GeometryKind::cap ? Vec2{geometry.cap.apex_x, geometry.cap.apex_y} : Vec2{0, 0};
+  const Vec2 centre =
+      geometry.kind == GeometryKind::cap ? Vec2{geometry.cap.apex_x, geometry.cap.apex_y} : Vec2{0, 0};
   const auto loop = geometry.kind == GeometryKind::cap
                         ? circle_loop(centre, geometry.cap.truncation_radius, size)
                         : square_loop(geometry.flat.half_width, size);
-  const Footprint fp = mesh_footprint(loop, size);
+  Footprint fp = mesh_footprint(loop, size);
+  // Refinement splits boundary chords at their midpoints; put those vertices back on the circle.
+  if (geometry.kind == GeometryKind::cap)
+    for (int b : fp.boundary) {
+      const Vec3 p = shape.on_side({fp.points(b, 0), fp.points(b, 1), 0.0});
+      fp.points.row(b) << p[0], p[1];
+    }
   const int nv = fp.points.rows(), nb = static_cast<int>(fp.boundary.size());
 
   // Side band: as many layers as the rim's sizing asks for, at least one.
@@ -162,7 +171,8 @@ SurfaceMesh import_surface(const std::string& path) {
     s.marker(t) = on_base ? kBase : (std::abs(n.z()) < 1e-6 ? kSide : kTop);
     base_faces += on_base;
   }
-  if (s.vertices.col(2).minCoeff() < -tol) throw MeshError(path + ": surface reaches below the base plane z = 0");
+  if (s.vertices.col(2).minCoeff() < -tol)
+    throw MeshError(path + ": surface reaches below the base plane z = 0");
   if (base_faces == 0) throw MeshError(path + ": no face lies on the base plane z = 0");
   return s;
 }

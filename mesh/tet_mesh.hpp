@@ -20,10 +20,10 @@ using RowMatrixX10i = Eigen::Matrix<int, Eigen::Dynamic, 10, Eigen::RowMajor>;
 // Vertices (corner nodes) are numbered first, 0 … num_vertices−1, so they double as P1 indices.
 // Mid-edge nodes on a curved boundary lie on the exact surface (isoparametric P2 geometry).
 struct TetMesh {
-  RowMatrixX3d nodes;       // N×3, mm
-  int num_vertices = 0;     // corner nodes are nodes.row(0 … num_vertices−1)
-  RowMatrixX10i tets;       // E×10, positively oriented (det J > 0)
-  RowMatrixX6i faces;       // F×6 boundary triangles, outward normal (right-hand rule)
+  RowMatrixX3d nodes;           // N×3, mm
+  int num_vertices = 0;         // corner nodes are nodes.row(0 … num_vertices−1)
+  RowMatrixX10i tets;           // E×10, positively oriented (det J > 0)
+  RowMatrixX6i faces;           // F×6 boundary triangles, outward normal (right-hand rule)
   Eigen::VectorXi face_marker;  // F: one BoundaryMarker
   Eigen::VectorXi node_marker;  // N: OR of BoundaryMarker of the faces touching the node, 0 inside
 
@@ -33,9 +33,9 @@ struct TetMesh {
 
 // A closed triangulated boundary surface, outward oriented (input to tetrahedralization).
 struct SurfaceMesh {
-  RowMatrixX3d vertices;       // V×3, mm
-  RowMatrixX3i triangles;      // T×3
-  Eigen::VectorXi marker;      // T: BoundaryMarker
+  RowMatrixX3d vertices;   // V×3, mm
+  RowMatrixX3i triangles;  // T×3
+  Eigen::VectorXi marker;  // T: BoundaryMarker
 };
 
 }  // namespace skinfem

@@ -18,8 +18,8 @@ namespace {
 std::mutex tetgen_mutex;
 const SizingField* active_size = nullptr;  // TetGen's size callback takes no user data
 
-// Called by TetGen (-m with tetunsuitable set) for every candidate tetrahedron: split it when its
-// longest edge exceeds the target size at its centroid.
+// Called by TetGen's quality refinement (-q) for every tetrahedron for every candidate tetrahedron: split it
+// when its longest edge exceeds the target size at its centroid.
 bool too_big(REAL* a, REAL* b, REAL* c, REAL* d, REAL*, REAL) {
   REAL* p[4] = {a, b, c, d};
   double longest2 = 0;
@@ -40,8 +40,7 @@ std::array<int, 3> sorted(int a, int b, int c) {
 }
 }  // namespace
 
-LinearTets tetrahedralize(const SurfaceMesh& surface, const SizingField& size, const MeshControls& controls,
-                          bool preserve_surface) {
+LinearTets tetrahedralize(const SurfaceMesh& surface, const SizingField& size, const MeshControls& controls) {
   std::lock_guard<std::mutex> lock(tetgen_mutex);
   active_size = &size;
 
@@ -49,11 +48,8 @@ LinearTets tetrahedralize(const SurfaceMesh& surface, const SizingField& size, c
   in.firstnumber = 0;
   in.numberofpoints = surface.vertices.rows();
   in.pointlist = new REAL[3 * in.numberofpoints];
-  in.pointmtrlist = new REAL[in.numberofpoints];
-  in.numberofpointmtrs = 1;
   for (int i = 0; i < in.numberofpoints; ++i) {
     for (int k = 0; k < 3; ++k) in.pointlist[3 * i + k] = surface.vertices(i, k);
-    in.pointmtrlist[i] = size(surface.vertices(i, 0), surface.vertices(i, 1));
   }
   in.numberoffacets = surface.triangles.rows();
   in.facetlist = new tetgenio::facet[in.numberoffacets];
@@ -72,7 +68,7 @@ LinearTets tetrahedralize(const SurfaceMesh& surface, const SizingField& size, c
   in.tetunsuitable = too_big;
 
   std::ostringstream sw;
-  sw << "pq" << controls.max_radius_edge << "/" << controls.min_dihedral_deg << "mQ" << (preserve_surface ? "Y" : "");
+  sw << "pq" << controls.max_radius_edge << "/" << controls.min_dihedral_deg << "Q";
   std::string switches = sw.str();
   std::vector<char> buf(switches.begin(), switches.end());
   buf.push_back('\0');
@@ -115,7 +111,8 @@ LinearTets tetrahedralize(const SurfaceMesh& surface, const SizingField& size, c
   for (const auto& [key, entry] : face_count)
     if (entry[0] == 1) {
       auto it = marker_of.find(key);
-      if (it == marker_of.end() || it->second == 0) throw MeshError("TetGen left a boundary face without a marker");
+      if (it == marker_of.end() || it->second == 0)
+        throw MeshError("TetGen left a boundary face without a marker");
       faces.push_back({entry[1], entry[2], entry[3], it->second});
     }
   r.faces.resize(faces.size(), 3);

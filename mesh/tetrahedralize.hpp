@@ -8,15 +8,15 @@
 namespace skinfem {
 
 struct LinearTets {
-  RowMatrixX3d points;                                     // P×3, mm
+  RowMatrixX3d points;                                          // P×3, mm
   Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor> tets;  // T×4, positive volume
-  RowMatrixX3i faces;                                      // boundary triangles, outward
-  Eigen::VectorXi face_marker;                             // BoundaryMarker per face
+  RowMatrixX3i faces;                                           // boundary triangles, outward
+  Eigen::VectorXi face_marker;                                  // BoundaryMarker per face
 };
 
-// preserve_surface: keep the input triangles as they are (TetGen -Y); use it when the surface's
-// vertices lie on a curved exact surface that flat Steiner points would leave.
-LinearTets tetrahedralize(const SurfaceMesh& surface, const SizingField& size, const MeshControls& controls,
-                          bool preserve_surface);
+// TetGen may split boundary triangles (its -Y switch, which forbids that, also stalls interior
+// refinement next to the surface); new boundary points lie on the flat input triangles, and
+// build_mesh snaps them onto the exact surface.
+LinearTets tetrahedralize(const SurfaceMesh& surface, const SizingField& size, const MeshControls& controls);
 
 }  // namespace skinfem

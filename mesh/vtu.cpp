@@ -22,7 +22,8 @@ vtkNew<vtkPoints> make_points(const TetMesh& mesh) {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(mesh.num_nodes());
-  for (int i = 0; i < mesh.num_nodes(); ++i) points->SetPoint(i, mesh.nodes(i, 0), mesh.nodes(i, 1), mesh.nodes(i, 2));
+  for (int i = 0; i < mesh.num_nodes(); ++i)
+    points->SetPoint(i, mesh.nodes(i, 0), mesh.nodes(i, 1), mesh.nodes(i, 2));
   return points;
 }
 

@@ -106,7 +106,7 @@ TEST(SceneLoad, Candelier2011) {
   EXPECT_EQ(s.mesh.regions[0].a, (Vec2{-4.5, 0.0}));
   EXPECT_EQ(s.mesh.regions[0].b, (Vec2{4.5, 0.0}));
   EXPECT_DOUBLE_EQ(s.mesh.regions[0].radius, 0.5);
-  EXPECT_EQ(s.mesh.regions[0].h, 0.0);
+  EXPECT_DOUBLE_EQ(s.mesh.regions[0].h, 0.25);
   EXPECT_TRUE(s.loads.punches.empty());
   EXPECT_TRUE(s.loads.patches.empty());
   EXPECT_DOUBLE_EQ(s.calibration.punch_diameter, 0.5);

@@ -1,0 +1,75 @@
+#include "green/kfit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace skinfem::green {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kMin = 0.5, kMax = 4.0;
+
+}  // namespace
+
+KFit fit_k_line(const std::vector<double>& x, const std::vector<double>& g, double h,
+                GreenComponent component) {
+  if (x.empty() || x.size() != g.size())
+    throw std::invalid_argument("fit_k_line: need equally many x and g samples");
+  if (!(h > 0.0)) throw std::invalid_argument("fit_k_line: h must be > 0");
+  double peak = 0.0;
+  for (double v : g) peak = std::max(peak, std::fabs(v));
+  if (!(peak > 0.0)) throw std::invalid_argument("fit_k_line: samples are all zero");
+
+  const auto cost = [&](double k) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const double r = green::component(rescaled_green(x[i], 0.0, h, k), component) - g[i];
+      sum += r * r;
+    }
+    return sum;
+  };
+
+  // Coarse scan: 141 points, logarithmic in k (spacing 1.5 %); the cost is smooth in k, so the global minimum
+  // of the scan brackets the minimiser between its neighbours unless the cost has a second minimum within 1.5
+  // % — not the case for these one-parameter families.
+  constexpr int n_scan = 141;
+  std::vector<double> ks(n_scan), cs(n_scan);
+  for (int i = 0; i < n_scan; ++i) {
+    ks[i] = kMin * std::pow(kMax / kMin, static_cast<double>(i) / (n_scan - 1));
+    cs[i] = cost(ks[i]);
+  }
+  const int best = static_cast<int>(std::min_element(cs.begin(), cs.end()) - cs.begin());
+  double lo = ks[std::max(best - 1, 0)], hi = ks[std::min(best + 1, n_scan - 1)];
+
+  // Golden section on [lo, hi].
+  const double invphi = (std::sqrt(5.0) - 1.0) / 2.0;
+  double c = hi - invphi * (hi - lo), d = lo + invphi * (hi - lo);
+  double fc = cost(c), fd = cost(d);
+  while (hi - lo > 1e-12 * hi) {
+    if (fc < fd) {
+      hi = d;
+      d = c;
+      fd = fc;
+      c = hi - invphi * (hi - lo);
+      fc = cost(c);
+    } else {
+      lo = c;
+      c = d;
+      fc = fd;
+      d = lo + invphi * (hi - lo);
+      fd = cost(d);
+    }
+  }
+  KFit fit;
+  fit.k = 0.5 * (lo + hi);
+  fit.rms_residual_over_peak = std::sqrt(cost(fit.k) / static_cast<double>(x.size())) / peak;
+  return fit;
+}
+
+double k_central(double g_zz_at_zero, double h) {
+  if (!(h > 0.0)) throw std::invalid_argument("k_central: h must be > 0");
+  return g_zz_at_zero / (3.0 / (2.0 * kPi * h * h));
+}
+
+}  // namespace skinfem::green

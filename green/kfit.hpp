@@ -1,0 +1,26 @@
+// Fitting DESIGN.md's k-rescaled half-space Green tensor to a layer's Green tensor.
+#pragma once
+
+#include <vector>
+
+#include "green/halfspace.hpp"
+
+namespace skinfem::green {
+
+struct KFit {
+  double k = 0;                       ///< best rescaling factor in [0.5, 4]
+  double rms_residual_over_peak = 0;  ///< √(mean (model − g)²) / max|g|
+};
+
+/// Least-squares fit, uniform weights, of rescaled_green(x_i, 0, h, k).<component> to the samples g_i taken
+/// on the line y = 0 at offsets x_i (force − sensor, mm). Minimises over k ∈ [0.5, 4] by a coarse logarithmic
+/// scan followed by golden section search in the bracket around the best scan point (relative bracket width
+/// 1e-12 at exit). Throws std::invalid_argument on empty or mismatched inputs or h ≤ 0.
+KFit fit_k_line(const std::vector<double>& x, const std::vector<double>& g, double h,
+                GreenComponent component);
+
+/// Amplitude ratio g_zz(0) / (3/(2πh²)): the k for which the rescaled model matches the layer at zero offset
+/// (the rescaled model gives k·3/(2πh²) there).
+double k_central(double g_zz_at_zero, double h);
+
+}  // namespace skinfem::green

@@ -1,0 +1,181 @@
+// Meshing pipeline on caps and flat layers: exact volume and base area, markers, quality, grading.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "mesh/build.hpp"
+#include "mesh/p2_tet.hpp"
+#include "mesh/quality.hpp"
+#include "mesh/shape.hpp"
+
+namespace skinfem {
+namespace {
+
+// A strongly curved cap (R = 20 mm) so that geometric errors are visible.
+Scene small_cap(double scale) {
+  Scene s;
+  s.geometry.kind = GeometryKind::cap;
+  s.geometry.cap = {20.0, 3.0, 0.5, 0.0, 6.0};
+  s.sensors.positions = {{0.0, 0.0}};
+  s.mesh.h_min = 0.4 * scale;
+  s.mesh.h_max = 1.6 * scale;
+  s.mesh.growth = 1.5;
+  return s;
+}
+
+// Area of the base faces with the quadratic-triangle map (6-point degree-4 rule, Dunavant).
+double base_area(const TetMesh& m) {
+  static const double pts[6][3] = {{0.445948490915965, 0.445948490915965, 0.223381589678011},
+                                   {0.445948490915965, 0.108103018168070, 0.223381589678011},
+                                   {0.108103018168070, 0.445948490915965, 0.223381589678011},
+                                   {0.091576213509771, 0.091576213509771, 0.109951743655322},
+                                   {0.091576213509771, 0.816847572980459, 0.109951743655322},
+                                   {0.816847572980459, 0.091576213509771, 0.109951743655322}};
+  double area = 0;
+  for (int f = 0; f < m.faces.rows(); ++f) {
+    if (m.face_marker(f) != kBase) continue;
+    for (const auto& q : pts) {
+      const double s = q[0], t = q[1], l = 1 - s - t;
+      // quadratic triangle shape derivatives (nodes 0,1,2 then edges 01,12,20), parameters (s, t) at nodes 1,
+      // 2
+      const double ds[6] = {-(4 * l - 1), 4 * s - 1, 0, 4 * (l - s), 4 * t, -4 * t};
+      const double dt[6] = {-(4 * l - 1), 0, 4 * t - 1, -4 * s, 4 * s, 4 * (l - t)};
+      Eigen::Vector3d xs = Eigen::Vector3d::Zero(), xt = Eigen::Vector3d::Zero();
+      for (int a = 0; a < 6; ++a) {
+        xs += ds[a] * m.nodes.row(m.faces(f, a)).transpose();
+        xt += dt[a] * m.nodes.row(m.faces(f, a)).transpose();
+      }
+      area += 0.5 * q[2] * xs.cross(xt).norm();
+    }
+  }
+  return area;
+}
+
+TEST(MeshBuild, CapVolumeConvergesToTruncatedCapVolumeAtFourthOrder) {
+  // Reference: V = π r_t²(h − R) + 2π/3 (R³ − (R² − r_t²)^{3/2}) (SkinShape::volume). With mid-edge
+  // nodes on the exact sphere and cylinder the P2 geometry error is O(h⁴) (interpolation error O(h³)
+  // integrated against a smooth surface, with first-order cancellation); straight tets give O(h²).
+  std::vector<double> size, err_p2, err_p1;
+  for (double scale : {2.0, 1.0, 0.5}) {
+    const Scene s = small_cap(scale);
+    const MeshQuality q = assess_quality(build_mesh(s));
+    const double exact = SkinShape(s.geometry).volume();
+    size.push_back(s.mesh.h_max);
+    err_p2.push_back(std::abs(q.volume_mm3 - exact) / exact);
+    err_p1.push_back(std::abs(q.linear_volume_mm3 - exact) / exact);
+  }
+  // Observed order: least-squares slope of log(error) against log(h) over the three levels.
+  auto order = [&](const std::vector<double>& err) {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    const double n = size.size();
+    for (size_t i = 0; i < size.size(); ++i) {
+      const double x = std::log(size[i]), y = std::log(err[i]);
+      sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  };
+  for (size_t i = 0; i < size.size(); ++i)
+    std::printf("h_max %.2f: P2 volume error %.2e, straight-sided %.2e\n", size[i], err_p2[i], err_p1[i]);
+  std::printf("observed order: P2 %.2f, straight-sided %.2f\n", order(err_p2), order(err_p1));
+  EXPECT_GT(order(err_p2), 3.5);
+  EXPECT_GT(order(err_p1), 1.7);
+  for (size_t i = 0; i < size.size(); ++i) EXPECT_LT(err_p2[i], err_p1[i]);
+}
+
+TEST(MeshBuild, BaseAreaIsTheTruncationDisc) {
+  // The base rim is a polygon whose mid-edge nodes lie on the circle: P2 area error O(Δθ⁴).
+  const Scene s = small_cap(1.0);
+  const TetMesh m = build_mesh(s);
+  const double exact = M_PI * 6.0 * 6.0;
+  const double dtheta = s.mesh.h_max / 6.0;
+  EXPECT_NEAR(base_area(m), exact, exact * std::pow(dtheta, 4));
+}
+
+TEST(MeshBuild, EveryBoundaryFaceIsMarkedAndLiesOnItsExactSurface) {
+  const Scene s = small_cap(1.0);
+  const TetMesh m = build_mesh(s);
+  const SkinShape shape(s.geometry);
+  int counts[8] = {};
+  for (int f = 0; f < m.faces.rows(); ++f) {
+    const int marker = m.face_marker(f);
+    ASSERT_TRUE(marker == kBase || marker == kTop || marker == kSide) << "face " << f;
+    ++counts[marker];
+    for (int k = 0; k < 6; ++k) {
+      const Eigen::Vector3d p = m.nodes.row(m.faces(f, k));
+      if (marker == kBase) {
+        EXPECT_NEAR(p.z(), 0.0, 1e-12);
+      } else if (marker == kTop) {
+        EXPECT_NEAR(p.z(), shape.top_z(p.x(), p.y()), 1e-12);
+      } else {
+        EXPECT_NEAR(std::hypot(p.x() - 0.5, p.y()), 6.0, 1e-12);
+      }
+    }
+  }
+  EXPECT_GT(counts[kBase], 0);
+  EXPECT_GT(counts[kTop], 0);
+  EXPECT_GT(counts[kSide], 0);
+  // Every node of a marked face carries its marker; interior nodes carry none.
+  for (int f = 0; f < m.faces.rows(); ++f)
+    for (int k = 0; k < 6; ++k) EXPECT_TRUE(m.node_marker(m.faces(f, k)) & m.face_marker(f));
+}
+
+TEST(MeshBuild, QualityBoundsHoldAndNoElementIsInverted) {
+  for (GeometryKind kind : {GeometryKind::cap, GeometryKind::flat}) {
+    Scene s = small_cap(1.0);
+    s.geometry.kind = kind;
+    s.geometry.flat = {3.0, 6.0};
+    const TetMesh m = build_mesh(s);
+    const MeshQuality q = assess_quality(m);
+    EXPECT_GE(q.min_dihedral_deg, 5.0);
+    EXPECT_GT(q.min_jacobian_ratio, 0.5);  // curved elements stay close to their straight shape
+    // TetGen's radius-edge bound is guaranteed away from the preserved surface (-Y).
+    for (int t = 0; t < m.num_tets(); ++t) {
+      bool touches_boundary = false;
+      for (int k = 0; k < 4; ++k) touches_boundary |= m.node_marker(m.tets(t, k)) != 0;
+      if (touches_boundary) continue;
+      Eigen::Matrix3d A;
+      Eigen::Vector3d b;
+      const Eigen::Vector3d p0 = m.nodes.row(m.tets(t, 0));
+      double shortest = 1e300;
+      for (int i = 1; i < 4; ++i) {
+        const Eigen::Vector3d d = m.nodes.row(m.tets(t, i)).transpose() - p0;
+        A.row(i - 1) = 2 * d.transpose();
+        b[i - 1] = d.squaredNorm();
+      }
+      for (const auto& e : p2::kEdge)
+        shortest = std::min(shortest, (m.nodes.row(m.tets(t, e[0])) - m.nodes.row(m.tets(t, e[1]))).norm());
+      ASSERT_LE(A.fullPivLu().solve(b).norm() / shortest, s.mesh.max_radius_edge * (1 + 1e-9)) << "tet " << t;
+    }
+  }
+}
+
+TEST(MeshBuild, ElementsAreSmallNearRegionsOfInterestAndLargeFarAway) {
+  Scene s = small_cap(1.0);
+  s.mesh.h_min = 0.2;
+  s.mesh.h_max = 1.5;
+  const TetMesh m = build_mesh(s);
+  double near_max = 0, far_sum = 0;
+  int far_n = 0;
+  for (int t = 0; t < m.num_tets(); ++t) {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 4; ++k) c += m.nodes.row(m.tets(t, k)).transpose() / 4;
+    const double r = std::hypot(c.x(), c.y());  // the sensor disc (radius 0.1) is at the origin
+    if (r < 0.1) near_max = std::max(near_max, tet_longest_edge(m, t));
+    if (r > 4.0) far_sum += tet_longest_edge(m, t), ++far_n;
+  }
+  // The sizing field bounds the longest edge at the centroid by h_min + (g − 1)·distance.
+  EXPECT_LE(near_max, 0.2 + 0.5 * 0.2);
+  EXPECT_GT(far_sum / far_n, 0.5 * 1.5);
+}
+
+TEST(MeshBuild, FlatLayerVolumeIsExact) {
+  Scene s = small_cap(1.0);
+  s.geometry.kind = GeometryKind::flat;
+  s.geometry.flat = {2.0, 4.0};
+  const MeshQuality q = assess_quality(build_mesh(s));
+  EXPECT_NEAR(q.volume_mm3, 8.0 * 8.0 * 2.0, 1e-10);
+  EXPECT_NEAR(q.min_jacobian_ratio, 1.0, 1e-12);  // no curved face: every element is affine
+}
+
+}  // namespace
+}  // namespace skinfem
