@@ -1,0 +1,148 @@
+#include "fem/assembly.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include "fem/surface_quadrature.hpp"
+#include "mesh/p2_tet.hpp"
+#include "mesh/quality.hpp"
+
+namespace skinfem {
+
+bool is_affine(const TetMesh& m, int t) {
+  const double tol = 1e-12 * tet_longest_edge(m, t);
+  for (int e = 0; e < 6; ++e) {
+    const auto mid = 0.5 * (m.nodes.row(m.tets(t, p2::kEdge[e][0])) + m.nodes.row(m.tets(t, p2::kEdge[e][1])));
+    if ((m.nodes.row(m.tets(t, 4 + e)) - mid).norm() > tol) return false;
+  }
+  return true;
+}
+
+namespace {
+// Node adjacency (sorted, including the node itself): the sparsity pattern of every P2 block.
+std::vector<std::vector<int>> node_adjacency(const TetMesh& m) {
+  std::vector<std::vector<int>> adj(m.num_nodes());
+  for (int t = 0; t < m.num_tets(); ++t)
+    for (int a = 0; a < 10; ++a)
+      for (int b = 0; b < 10; ++b) adj[m.tets(t, a)].push_back(m.tets(t, b));
+  for (auto& row : adj) {
+    std::sort(row.begin(), row.end());
+    row.erase(std::unique(row.begin(), row.end()), row.end());
+  }
+  return adj;
+}
+
+// Column-major matrix with rows_per_node × 3 blocks: column 3j + c holds rows
+// rows_per_node·i + r for every i in adj[j] (restricted to i < row_limit).
+SparseMatrixd block_pattern(const std::vector<std::vector<int>>& adj, int rows, int rows_per_node, int row_limit) {
+  const int n = static_cast<int>(adj.size());
+  std::vector<int> outer(3 * n + 1, 0);
+  std::vector<int> inner;
+  for (int j = 0; j < n; ++j) {
+    const auto end = std::lower_bound(adj[j].begin(), adj[j].end(), row_limit);
+    for (int c = 0; c < 3; ++c) {
+      for (auto it = adj[j].begin(); it != end; ++it)
+        for (int r = 0; r < rows_per_node; ++r) inner.push_back(rows_per_node * *it + r);
+      outer[3 * j + c + 1] = static_cast<int>(inner.size());
+    }
+  }
+  SparseMatrixd M(rows, 3 * n);
+  M.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
+  std::copy(outer.begin(), outer.end(), M.outerIndexPtr());
+  std::copy(inner.begin(), inner.end(), M.innerIndexPtr());
+  std::fill(M.valuePtr(), M.valuePtr() + inner.size(), 0.0);
+  return M;
+}
+
+// Position of row index `row` in column `col` of a compressed matrix.
+inline int slot(const SparseMatrixd& M, int row, int col) {
+  const int* begin = M.innerIndexPtr() + M.outerIndexPtr()[col];
+  const int* end = M.innerIndexPtr() + M.outerIndexPtr()[col + 1];
+  return static_cast<int>(std::lower_bound(begin, end, row) - M.innerIndexPtr());
+}
+}  // namespace
+
+MixedMatrices assemble_mixed(const TetMesh& m, const Lame& lame) {
+  const int n = m.num_nodes(), nv = m.num_vertices;
+  const auto adj = node_adjacency(m);
+  MixedMatrices out;
+  out.A = block_pattern(adj, 3 * n, 3, n);
+  out.B = block_pattern(adj, nv, 1, nv);
+  std::vector<Eigen::Triplet<double>> mp;
+  mp.reserve(16 * m.num_tets());
+
+  Eigen::Matrix<double, 30, 30> Ae;
+  Eigen::Matrix<double, 4, 30> Be;
+  Eigen::Matrix4d Me;
+  for (int t = 0; t < m.num_tets(); ++t) {
+    Ae.setZero();
+    Be.setZero();
+    Me.setZero();
+    Eigen::Matrix<double, 10, 3> X;
+    for (int a = 0; a < 10; ++a) X.row(a) = m.nodes.row(m.tets(t, a));
+    const auto& rule = is_affine(m, t) ? p2::quadrature_degree2() : p2::quadrature_degree5();
+    for (const auto& q : rule) {
+      const p2::Grad10 dref = p2::shape_gradient(q.xi);
+      const Eigen::Matrix3d J = X.transpose() * dref;
+      const double w = q.weight * J.determinant();
+      const Eigen::Matrix<double, 10, 3> G = dref * J.inverse();  // ∂φ_a/∂x_k
+      const auto L = p2::barycentric(q.xi);
+      const Eigen::Matrix<double, 10, 10> GG = G * G.transpose();
+      for (int a = 0; a < 10; ++a)
+        for (int b = 0; b < 10; ++b)
+          for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)  // 2μ ε(φ_a e_i):ε(φ_b e_j) = μ(δ_ij ∇φ_a·∇φ_b + ∂_jφ_a ∂_iφ_b)
+              Ae(3 * a + i, 3 * b + j) += w * lame.mu * ((i == j ? GG(a, b) : 0.0) + G(a, j) * G(b, i));
+      for (int r = 0; r < 4; ++r) {
+        for (int a = 0; a < 10; ++a)
+          for (int i = 0; i < 3; ++i) Be(r, 3 * a + i) -= w * L[r] * G(a, i);
+        for (int s = 0; s < 4; ++s) Me(r, s) += w * L[r] * L[s];
+      }
+    }
+    for (int b = 0; b < 10; ++b) {
+      const int nb = m.tets(t, b);
+      for (int j = 0; j < 3; ++j) {
+        const int col = 3 * nb + j;
+        for (int a = 0; a < 10; ++a) {
+          const int k = slot(out.A, 3 * m.tets(t, a), col);
+          for (int i = 0; i < 3; ++i) out.A.valuePtr()[k + i] += Ae(3 * a + i, 3 * b + j);
+        }
+        for (int r = 0; r < 4; ++r) out.B.valuePtr()[slot(out.B, m.tets(t, r), col)] += Be(r, 3 * b + j);
+      }
+    }
+    for (int r = 0; r < 4; ++r)
+      for (int s = 0; s < 4; ++s) mp.emplace_back(m.tets(t, r), m.tets(t, s), Me(r, s));
+  }
+  out.Mp.resize(nv, nv);
+  out.Mp.setFromTriplets(mp.begin(), mp.end());
+  return out;
+}
+
+Eigen::VectorXd body_load(const TetMesh& m, const VectorField& f) {
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(3 * m.num_nodes());
+  for (int t = 0; t < m.num_tets(); ++t) {
+    Eigen::Matrix<double, 10, 3> X;
+    for (int a = 0; a < 10; ++a) X.row(a) = m.nodes.row(m.tets(t, a));
+    for (const auto& q : p2::quadrature_degree5()) {
+      const p2::Vec10 N = p2::shape(q.xi);
+      const double w = q.weight * (X.transpose() * p2::shape_gradient(q.xi)).determinant();
+      const Eigen::Vector3d fx = f(X.transpose() * N);
+      for (int a = 0; a < 10; ++a) F.segment<3>(3 * m.tets(t, a)) += w * N[a] * fx;
+    }
+  }
+  return F;
+}
+
+Eigen::VectorXd traction_load(const TetMesh& m, int markers, const VectorField& t) {
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(3 * m.num_nodes());
+  for (int f = 0; f < m.faces.rows(); ++f) {
+    if (!(m.face_marker(f) & markers)) continue;
+    for (const auto& q : face_quadrature(m, f)) {
+      const Eigen::Vector3d tx = t(q.x);
+      for (int a = 0; a < 6; ++a) F.segment<3>(3 * m.faces(f, a)) += q.weight * q.N[a] * tx;
+    }
+  }
+  return F;
+}
+
+}  // namespace skinfem

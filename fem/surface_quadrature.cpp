@@ -1,0 +1,37 @@
+#include "fem/surface_quadrature.hpp"
+
+namespace skinfem {
+
+Eigen::Matrix<double, 6, 1> triangle_shape(double s, double t) {
+  const double l = 1 - s - t;
+  Eigen::Matrix<double, 6, 1> n;
+  n << l * (2 * l - 1), s * (2 * s - 1), t * (2 * t - 1), 4 * l * s, 4 * s * t, 4 * t * l;
+  return n;
+}
+
+std::vector<FacePoint> face_quadrature(const TetMesh& m, int f) {
+  // Dunavant degree 5: centroid, and two orbits of three points; weights sum to 1 (× area 1/2).
+  static const double a1 = 0.059715871789770, b1 = 0.470142064105115, w1 = 0.132394152788506;
+  static const double a2 = 0.797426985353087, b2 = 0.101286507323456, w2 = 0.125939180544827;
+  static const double pts[7][3] = {{1.0 / 3, 1.0 / 3, 0.225}, {b1, b1, w1}, {a1, b1, w1}, {b1, a1, w1},
+                                   {b2, b2, w2}, {a2, b2, w2}, {b2, a2, w2}};
+  Eigen::Matrix<double, 6, 3> X;
+  for (int a = 0; a < 6; ++a) X.row(a) = m.nodes.row(m.faces(f, a));
+  std::vector<FacePoint> out;
+  out.reserve(7);
+  for (const auto& p : pts) {
+    const double s = p[0], t = p[1], l = 1 - s - t;
+    const double ds[6] = {-(4 * l - 1), 4 * s - 1, 0, 4 * (l - s), 4 * t, -4 * t};
+    const double dt[6] = {-(4 * l - 1), 0, 4 * t - 1, -4 * s, 4 * s, 4 * (l - t)};
+    Eigen::Vector3d xs = Eigen::Vector3d::Zero(), xt = Eigen::Vector3d::Zero();
+    for (int a = 0; a < 6; ++a) {
+      xs += ds[a] * X.row(a).transpose();
+      xt += dt[a] * X.row(a).transpose();
+    }
+    const auto N = triangle_shape(s, t);
+    out.push_back({X.transpose() * N, N, 0.5 * p[2] * xs.cross(xt).norm()});
+  }
+  return out;
+}
+
+}  // namespace skinfem

@@ -1,0 +1,23 @@
+// Quadrature on the quadratic (6-node) boundary triangles of a TetMesh.
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "mesh/tet_mesh.hpp"
+
+namespace skinfem {
+
+struct FacePoint {
+  Eigen::Vector3d x;                 // physical point, mm
+  Eigen::Matrix<double, 6, 1> N;     // face shape functions there (node order of TetMesh::faces)
+  double weight;                     // quadrature weight × surface Jacobian, mm²
+};
+
+// Quadratic triangle shape functions at parameters (s, t): nodes 0, 1, 2, then edges 01, 12, 20.
+Eigen::Matrix<double, 6, 1> triangle_shape(double s, double t);
+
+// 7-point degree-5 rule (Dunavant) mapped onto face f.
+std::vector<FacePoint> face_quadrature(const TetMesh& mesh, int f);
+
+}  // namespace skinfem
