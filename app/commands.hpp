@@ -3,10 +3,12 @@
 
 #include <string>
 
+#include "fem/mixed_solver.hpp"
 #include "scene/scene.hpp"
 
 namespace skinfem::app {
 
 int run_mesh(const Scene& scene, const std::string& out_dir);
+int run_solve(const Scene& scene, const std::string& out_dir, SolverKind solver);
 
 }  // namespace skinfem::app

@@ -1,5 +1,5 @@
 // skinfem — finite-element verification toolkit for tactile sensors under an elastomer skin.
-// Subcommands: mesh (see each cmd_*.cpp for what it computes and writes).
+// Subcommands: mesh, solve (see each cmd_*.cpp for what it computes and writes).
 // Exit codes: 0 success, 2 bad input (scene or arguments), 1 any other failure.
 #include <CLI/CLI.hpp>
 #include <iostream>
@@ -15,7 +15,12 @@ int main(int argc, char** argv) {
 
   auto* mesh =
       cli.add_subcommand("mesh", "mesh the scene's skin (writes mesh.vtu, boundary.vtu, summary.json)");
-  for (auto* sub : {mesh}) {
+  auto* solve = cli.add_subcommand("solve", "solve the scene's loads (writes fields.vtu, sensors.csv, summary.json)");
+  std::string solver_name = "direct_ldlt";
+  solve->add_option("--solver", solver_name, "saddle-point solver")
+      ->check(CLI::IsMember({"direct_ldlt", "schur_cg"}))
+      ->capture_default_str();
+  for (auto* sub : {mesh, solve}) {
     sub->add_option("scene", scene_path, "scene JSON file")->required();
     sub->add_option("--out", out_dir, "output directory")->capture_default_str();
   }
@@ -28,9 +33,14 @@ int main(int argc, char** argv) {
   try {
     const skinfem::Scene scene = skinfem::load_scene(scene_path);
     if (mesh->parsed()) return skinfem::app::run_mesh(scene, out_dir);
+    const auto solver = solver_name == "schur_cg" ? skinfem::SolverKind::schur_cg : skinfem::SolverKind::direct_ldlt;
+    if (solve->parsed()) return skinfem::app::run_solve(scene, out_dir, solver);
   } catch (const skinfem::SceneError& e) {
     std::cerr << "skinfem: " << e.what() << std::endl;
     return 2;
+  } catch (const skinfem::SolverError& e) {
+    std::cerr << "skinfem: solver: " << e.what() << std::endl;
+    return 1;
   } catch (const skinfem::MeshError& e) {
     std::cerr << "skinfem: mesh: " << e.what() << std::endl;
     return 2;

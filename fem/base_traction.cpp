@@ -1,0 +1,152 @@
+#include "fem/base_traction.hpp"
+
+#include <Eigen/SparseCholesky>
+#include <cmath>
+#include <stdexcept>
+#include <unordered_map>
+#include <vector>
+
+#include "fem/face_index.hpp"
+#include "fem/surface_quadrature.hpp"
+
+namespace skinfem {
+
+namespace {
+// Gauss–Legendre nodes/weights on [0, 1].
+void gauss01(int n, std::vector<double>& x, std::vector<double>& w) {
+  x.resize(n);
+  w.resize(n);
+  for (int i = 0; i < n; ++i) {
+    double z = std::cos(M_PI * (i + 0.75) / (n + 0.5)), dp = 0;
+    for (int it = 0; it < 100; ++it) {
+      double p0 = 1, p1 = z;
+      for (int k = 2; k <= n; ++k) {
+        const double pk = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
+        p0 = p1;
+        p1 = pk;
+      }
+      dp = n * (z * p1 - p0) / (z * z - 1);
+      const double dz = p1 / dp;
+      z -= dz;
+      if (std::abs(dz) < 1e-15) break;
+    }
+    x[i] = 0.5 * (1 - z);
+    w[i] = 1.0 / ((1 - z * z) * dp * dp);
+  }
+}
+
+// Base faces for 2-D location plus a numbering of the base nodes.
+struct BaseIndex {
+  PlanarFaceIndex planar;
+  std::vector<int> faces;
+  std::unordered_map<int, int> local;  // mesh node → base node index
+  std::vector<int> nodes;              // base node index → mesh node
+  explicit BaseIndex(const TetMesh& m) : planar(m, kBase), faces(planar.faces()) {
+    for (int f : faces)
+      for (int k = 0; k < 6; ++k)
+        if (local.emplace(m.faces(f, k), static_cast<int>(nodes.size())).second) nodes.push_back(m.faces(f, k));
+  }
+};
+
+void polar_rule(double diameter, std::vector<std::array<double, 3>>& pts) {
+  std::vector<double> r, w;
+  gauss01(12, r, w);
+  const int nt = 32;
+  const double a = 0.5 * diameter;
+  for (int i = 0; i < 12; ++i)
+    for (int j = 0; j < nt; ++j) {
+      const double th = 2 * M_PI * (j + 0.5) / nt;
+      // ∫∫ f r dr dθ / (π a²)
+      pts.push_back({a * r[i] * std::cos(th), a * r[i] * std::sin(th), 2 * w[i] * r[i] / nt});
+    }
+}
+
+Eigen::SparseMatrix<double> base_mass(const TetMesh& m, const BaseIndex& idx) {
+  std::vector<Eigen::Triplet<double>> t;
+  for (int f : idx.faces)
+    for (const auto& q : face_quadrature(m, f))
+      for (int a = 0; a < 6; ++a)
+        for (int b = 0; b < 6; ++b)
+          t.emplace_back(idx.local.at(m.faces(f, a)), idx.local.at(m.faces(f, b)), q.weight * q.N[a] * q.N[b]);
+  Eigen::SparseMatrix<double> M(idx.nodes.size(), idx.nodes.size());
+  M.setFromTriplets(t.begin(), t.end());
+  return M;
+}
+}  // namespace
+
+struct BaseTraction::Impl {
+  const TetMesh& mesh;
+  BaseIndex index;
+  Eigen::MatrixX3d t;  // base node → traction
+  Eigen::Vector3d total;
+  Impl(const TetMesh& m) : mesh(m), index(m) {}
+};
+
+BaseTraction::BaseTraction(const TetMesh& mesh, const Eigen::VectorXd& reactions) : impl_(new Impl(mesh)) {
+  auto& s = *impl_;
+  const int nb = s.index.nodes.size();
+  Eigen::MatrixX3d R(nb, 3);
+  for (int i = 0; i < nb; ++i) R.row(i) = reactions.segment<3>(3 * s.index.nodes[i]).transpose();
+  s.total = R.colwise().sum().transpose();
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> chol(base_mass(mesh, s.index));
+  s.t = chol.solve(R);
+}
+
+BaseTraction::~BaseTraction() = default;
+BaseTraction::BaseTraction(BaseTraction&&) noexcept = default;
+
+std::optional<Eigen::Vector3d> BaseTraction::traction(double x, double y) const {
+  const auto& s = *impl_;
+  double ps, pt;
+  const int f = s.index.planar.find(x, y, ps, pt);
+  if (f < 0) return std::nullopt;
+  const auto N = triangle_shape(ps, pt);
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();
+  for (int a = 0; a < 6; ++a) v += N[a] * s.t.row(s.index.local.at(s.mesh.faces(f, a))).transpose();
+  return v;
+}
+
+SensorReading BaseTraction::reading_at(double x, double y) const {
+  const auto t = traction(x, y);
+  if (!t) throw std::out_of_range("point (" + std::to_string(x) + ", " + std::to_string(y) + ") is off the base");
+  return {(*t)[2], -(*t)[0]};
+}
+
+SensorReading BaseTraction::disc_mean(double x, double y, double diameter) const {
+  std::vector<std::array<double, 3>> pts;
+  polar_rule(diameter, pts);
+  SensorReading r;
+  for (const auto& p : pts) {
+    const SensorReading v = reading_at(x + p[0], y + p[1]);
+    r.sigma_z += p[2] * v.sigma_z;
+    r.sigma_x += p[2] * v.sigma_x;
+  }
+  return r;
+}
+
+Eigen::Vector3d BaseTraction::total_force() const { return impl_->total; }
+const Eigen::MatrixX3d& BaseTraction::nodal_traction() const { return impl_->t; }
+
+Eigen::VectorXd disc_reading_functional(const TetMesh& mesh, double x, double y, double diameter, char component) {
+  // reading = Σ_q w_q N(x_q)ᵀ T, T = M⁻¹ R  ⇒  reading = (M⁻¹ Σ_q w_q N(x_q))ᵀ R.
+  const BaseIndex index(mesh);
+  std::vector<std::array<double, 3>> pts;
+  polar_rule(diameter, pts);
+  Eigen::VectorXd w = Eigen::VectorXd::Zero(index.nodes.size());
+  for (const auto& p : pts) {
+    double s, t;
+    const int f = index.planar.find(x + p[0], y + p[1], s, t);
+    if (f < 0) throw std::out_of_range("sensor disc leaves the base");
+    const auto N = triangle_shape(s, t);
+    for (int a = 0; a < 6; ++a) w[index.local.at(mesh.faces(f, a))] += p[2] * N[a];
+  }
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> chol(base_mass(mesh, index));
+  const Eigen::VectorXd c = chol.solve(w);
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(3 * mesh.num_nodes());
+  const int k = component == 'z' ? 2 : 0;
+  const double sign = component == 'z' ? 1.0 : -1.0;
+  for (size_t i = 0; i < index.nodes.size(); ++i) out[3 * index.nodes[i] + k] = sign * c[i];
+  return out;
+}
+
+}  // namespace skinfem

@@ -1,0 +1,141 @@
+#include "fem/elastic_model.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "fem/face_index.hpp"
+#include "fem/surface_quadrature.hpp"
+
+namespace skinfem {
+
+std::vector<int> punch_nodes(const TetMesh& m, const Punch& punch) {
+  std::vector<int> nodes;
+  const double r = 0.5 * punch.diameter * (1 + 1e-9);
+  for (int i = 0; i < m.num_nodes(); ++i)
+    if ((m.node_marker(i) & kTop) && !(m.node_marker(i) & (kBase | kSide)) &&
+        std::hypot(m.nodes(i, 0) - punch.center[0], m.nodes(i, 1) - punch.center[1]) <= r)
+      nodes.push_back(i);
+  if (nodes.empty())
+    throw std::invalid_argument("punch at (" + std::to_string(punch.center[0]) + ", " +
+                                std::to_string(punch.center[1]) + ") holds no top node: refine the mesh there");
+  return nodes;
+}
+
+ElasticModel::ElasticModel(const TetMesh& mesh, const Material& material, SideCondition side,
+                           const std::vector<Punch>& punches, ModelOptions options)
+    : mesh_(mesh), lame_(Lame::from(material.E, material.nu)) {
+  const auto start = std::chrono::steady_clock::now();
+  matrices_ = assemble_mixed(mesh, lame_);
+  assemble_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const int n = mesh.num_nodes();
+  fixed_.assign(3 * n, false);
+  support_.assign(3 * n, false);
+  const int held = kBase | (side == SideCondition::fixed ? kSide : 0);
+  for (int i = 0; i < n; ++i)
+    if (mesh.node_marker(i) & held)
+      for (int c = 0; c < 3; ++c) fixed_[3 * i + c] = support_[3 * i + c] = true;
+  for (const auto& p : punches) {
+    punch_nodes_.push_back(punch_nodes(mesh, p));
+    for (int i : punch_nodes_.back()) fixed_[3 * i + 2] = true;
+  }
+  top_index_ = std::make_unique<PlanarFaceIndex>(mesh, kTop);
+  solver_ = std::make_unique<MixedSolver>(matrices_, lame_, fixed_, options.solver, options.tolerance);
+}
+
+LoadCaseResult ElasticModel::solve(const Eigen::VectorXd& f, const std::vector<Punch>& punches) const {
+  if (punches.size() != punch_nodes_.size()) throw std::invalid_argument("punch count differs from the model's");
+  const int np = punches.size();
+  // Linear in the punch depths: x = x_0 + Σ δ_k x_k, with x_0 the load alone (punches held at 0)
+  // and x_k a unit depth of punch k. Force-driven punches fix δ through their reaction.
+  auto punch_force = [&](const Eigen::VectorXd& r, int k) {
+    double fz = 0;
+    for (int i : punch_nodes_[k]) fz += r[3 * i + 2];
+    return -fz;  // the punch pushes down on the skin: reaction −z is a positive pressing force
+  };
+  auto all_reactions = [&](const MixedSolution& x, const Eigen::VectorXd& load) {
+    Eigen::VectorXd r = matrices_.A * x.u + matrices_.B.transpose() * x.p;
+    if (load.size()) r -= load;
+    for (int d = 0; d < r.size(); ++d)
+      if (!fixed_[d]) r[d] = 0;
+    return r;
+  };
+  std::vector<MixedSolution> unit;
+  std::vector<Eigen::VectorXd> unit_r;
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(3 * mesh_.num_nodes());
+  for (int k = 0; k < np; ++k) {
+    Eigen::VectorXd g = zero;
+    for (int i : punch_nodes_[k]) g[3 * i + 2] = -1.0;
+    unit.push_back(solver_->solve(zero, g));
+    unit_r.push_back(all_reactions(unit.back(), {}));
+  }
+  LoadCaseResult out;
+  out.solution = solver_->solve(f);
+  Eigen::VectorXd r = all_reactions(out.solution, f);
+  // δ: displacement-driven rows fix δ_k; force-driven rows ask punch_force(r_0 + Σ δ_j r_j) = F_k.
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(np, np);
+  Eigen::VectorXd rhs(np);
+  for (int k = 0; k < np; ++k) {
+    if (punches[k].displacement) {
+      M(k, k) = 1;
+      rhs[k] = *punches[k].displacement;
+    } else {
+      for (int j = 0; j < np; ++j) M(k, j) = punch_force(unit_r[j], k);
+      rhs[k] = punches[k].force.value_or(0.0) - punch_force(r, k);
+    }
+  }
+  const Eigen::VectorXd delta = np ? Eigen::VectorXd(M.fullPivLu().solve(rhs)) : Eigen::VectorXd();
+  for (int k = 0; k < np; ++k) {
+    out.solution.u += delta[k] * unit[k].u;
+    out.solution.p += delta[k] * unit[k].p;
+    r += delta[k] * unit_r[k];
+    out.solution.residual = std::max(out.solution.residual, unit[k].residual);
+  }
+  for (int k = 0; k < np; ++k) out.punches.push_back({punch_force(r, k), delta[k]});
+  out.reactions = r;
+  for (int d = 0; d < r.size(); ++d)
+    if (!support_[d]) out.reactions[d] = 0;
+  // External force on the skin: nodal loads plus punch reactions.
+  for (int i = 0; i < mesh_.num_nodes(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      const int d = 3 * i + c;
+      out.applied_force_N[c] += (fixed_[d] && !support_[d]) ? r[d] : (support_[d] ? 0.0 : f[d]);
+    }
+  return out;
+}
+
+Eigen::VectorXd ElasticModel::patch_load(const TractionPatch& patch) const {
+  // Polar Gauss quadrature over the disc, each point located on the top surface: exact for the
+  // disc's true area whatever faces its edge cuts. Traction density = force / (π a²).
+  const double a = 0.5 * patch.diameter;
+  const Eigen::Vector3d dir = Eigen::Vector3d(patch.direction[0], patch.direction[1], patch.direction[2]).normalized();
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(3 * mesh_.num_nodes());
+  const int nr = 16, nt = 48;
+  // Gauss–Legendre on [0, 1] via the eigenvalues of the Jacobi matrix (Golub–Welsch).
+  Eigen::MatrixXd Jm = Eigen::MatrixXd::Zero(nr, nr);
+  for (int i = 1; i < nr; ++i) Jm(i, i - 1) = Jm(i - 1, i) = i / std::sqrt(4.0 * i * i - 1);
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(Jm);
+  for (int i = 0; i < nr; ++i) {
+    const double rho = 0.5 * (1 + es.eigenvalues()[i]), w = es.eigenvectors()(0, i) * es.eigenvectors()(0, i);
+    for (int j = 0; j < nt; ++j) {
+      const double th = 2 * M_PI * (j + 0.5) / nt;
+      const double weight = w * rho / nt;  // fraction of the total force carried by this point
+      const double x = patch.center[0] + a * rho * std::cos(th), y = patch.center[1] + a * rho * std::sin(th);
+      F += point_load(x, y, patch.force * weight * 2 * dir);
+    }
+  }
+  return F;
+}
+
+Eigen::VectorXd ElasticModel::point_load(double x, double y, const Eigen::Vector3d& force) const {
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(3 * mesh_.num_nodes());
+  double bs, bt;
+  const int best = top_index_->find(x, y, bs, bt);
+  if (best < 0)
+    throw std::out_of_range("load point (" + std::to_string(x) + ", " + std::to_string(y) + ") is off the top surface");
+  const auto N = triangle_shape(bs, bt);
+  for (int k = 0; k < 6; ++k) F.segment<3>(3 * mesh_.faces(best, k)) += N[k] * force;
+  return F;
+}
+
+}  // namespace skinfem

@@ -1,0 +1,77 @@
+// One skin ready for many loads: mesh + material + constraints (bonded base, optional fixed side,
+// rigid punches) assembled and factored once. Loads are traction patches, nodal forces and
+// punches driven by force or by displacement.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "fem/assembly.hpp"
+#include "fem/base_traction.hpp"
+#include "fem/face_index.hpp"
+#include "fem/mixed_solver.hpp"
+#include "scene/scene.hpp"
+
+namespace skinfem {
+
+struct ModelOptions {
+  SolverKind solver = SolverKind::direct_ldlt;
+  double tolerance = 1e-10;
+};
+
+// The nodes a rigid flat punch holds: top-surface nodes with (x, y) within its radius.
+// The punch is frictionless: it prescribes u_z only (at ν = 0.5 a half-space does not couple normal
+// and tangential contact, so friction would not change its pressure; see REFERENCES.md).
+std::vector<int> punch_nodes(const TetMesh& mesh, const Punch& punch);
+
+struct PunchResult {
+  double force_N = 0;          // pressing force (positive when pushing into the skin)
+  double displacement_mm = 0;  // indentation depth (positive downward)
+};
+
+struct LoadCaseResult {
+  MixedSolution solution;
+  Eigen::VectorXd reactions;  // 3N, at base (and side, if fixed) DOFs; punch reactions excluded
+  std::vector<PunchResult> punches;
+  double applied_force_N[3] = {0, 0, 0};  // total external force on the skin (punch + patches)
+};
+
+class ElasticModel {
+ public:
+  // punches: their nodes become constrained (u_z); pass the scene's punches (may be empty).
+  ElasticModel(const TetMesh& mesh, const Material& material, SideCondition side, const std::vector<Punch>& punches,
+               ModelOptions options = {});
+
+  const TetMesh& mesh() const { return mesh_; }
+  const MixedMatrices& matrices() const { return matrices_; }
+  const MixedSolver& solver() const { return *solver_; }
+  const Lame& lame() const { return lame_; }
+  double assemble_seconds() const { return assemble_seconds_; }
+
+  // Solve with an external load vector f (3N) plus the model's punches, each driven by its force or
+  // displacement as given in `punches` (same order as at construction).
+  LoadCaseResult solve(const Eigen::VectorXd& f, const std::vector<Punch>& punches) const;
+
+  // Load vector of a uniform traction patch on the top surface: total force `force` along `direction`,
+  // spread evenly over the disc (exact disc quadrature: the patch edge cuts faces).
+  Eigen::VectorXd patch_load(const TractionPatch& patch) const;
+  // Load vector of a point force at the top-surface point above (x, y): f = N(x) F. Throws off the top.
+  Eigen::VectorXd point_load(double x, double y, const Eigen::Vector3d& force) const;
+
+  // Base-constrained DOF flags (3N) and punch constraint groups.
+  const std::vector<bool>& fixed() const { return fixed_; }
+  const std::vector<std::vector<int>>& punch_groups() const { return punch_nodes_; }
+
+ private:
+  const TetMesh& mesh_;
+  Lame lame_;
+  MixedMatrices matrices_;
+  std::vector<bool> fixed_;
+  std::vector<bool> support_;  // base/side DOFs (reactions reported), not punches
+  std::vector<std::vector<int>> punch_nodes_;
+  std::unique_ptr<MixedSolver> solver_;
+  std::unique_ptr<PlanarFaceIndex> top_index_;
+  double assemble_seconds_ = 0;
+};
+
+}  // namespace skinfem

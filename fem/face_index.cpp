@@ -1,0 +1,62 @@
+#include "fem/face_index.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace skinfem {
+
+PlanarFaceIndex::PlanarFaceIndex(const TetMesh& m, int marker) : mesh_(m) {
+  double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300, area = 0;
+  for (int f = 0; f < m.faces.rows(); ++f) {
+    if (m.face_marker(f) != marker) continue;
+    faces_.push_back(f);
+    for (int k = 0; k < 3; ++k) {
+      const int n = m.faces(f, k);
+      xmin = std::min(xmin, m.nodes(n, 0)), xmax = std::max(xmax, m.nodes(n, 0));
+      ymin = std::min(ymin, m.nodes(n, 1)), ymax = std::max(ymax, m.nodes(n, 1));
+    }
+    const Eigen::Vector2d a = m.nodes.row(m.faces(f, 0)).head<2>(), b = m.nodes.row(m.faces(f, 1)).head<2>(),
+                          c = m.nodes.row(m.faces(f, 2)).head<2>();
+    area += 0.5 * std::abs((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
+  }
+  if (faces_.empty()) throw std::invalid_argument("mesh has no faces with marker " + std::to_string(marker));
+  cell_ = 2 * std::sqrt(area / faces_.size());
+  x0_ = xmin - 1e-9, y0_ = ymin - 1e-9;
+  nx_ = bin(xmax, x0_) + 2;
+  ny_ = bin(ymax, y0_) + 2;
+  buckets_.resize(static_cast<size_t>(nx_) * ny_);
+  for (int f : faces_) {
+    double fx0 = 1e300, fy0 = 1e300, fx1 = -1e300, fy1 = -1e300;
+    for (int k = 0; k < 3; ++k) {
+      const int n = m.faces(f, k);
+      fx0 = std::min(fx0, m.nodes(n, 0)), fx1 = std::max(fx1, m.nodes(n, 0));
+      fy0 = std::min(fy0, m.nodes(n, 1)), fy1 = std::max(fy1, m.nodes(n, 1));
+    }
+    for (int ix = bin(fx0, x0_); ix <= bin(fx1, x0_); ++ix)
+      for (int iy = bin(fy0, y0_); iy <= bin(fy1, y0_); ++iy) buckets_[ix * ny_ + iy].push_back(f);
+  }
+}
+
+int PlanarFaceIndex::find(double x, double y, double& s, double& t) const {
+  const int ix = bin(x, x0_), iy = bin(y, y0_);
+  if (ix < 0 || iy < 0 || ix >= nx_ || iy >= ny_) return -1;
+  int best = -1;
+  double best_score = -1e300, bs = 0, bt = 0;
+  for (int f : buckets_[ix * ny_ + iy]) {
+    const Eigen::Vector2d a = mesh_.nodes.row(mesh_.faces(f, 0)).head<2>(),
+                          b = mesh_.nodes.row(mesh_.faces(f, 1)).head<2>(),
+                          c = mesh_.nodes.row(mesh_.faces(f, 2)).head<2>();
+    Eigen::Matrix2d J;
+    J << b - a, c - a;
+    const Eigen::Vector2d st = J.inverse() * (Eigen::Vector2d(x, y) - a);
+    const double score = std::min({st[0], st[1], 1 - st[0] - st[1]});
+    if (score > best_score) best_score = score, best = f, bs = st[0], bt = st[1];
+  }
+  if (best < 0 || best_score < -1e-9) return -1;
+  s = bs, t = bt;
+  return best;
+}
+
+}  // namespace skinfem

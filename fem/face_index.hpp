@@ -1,0 +1,29 @@
+// 2-D point location among boundary faces that form a graph over the (x, y) plane (the base, or the
+// top of a cap or flat layer): a uniform bucket grid over the faces' corner triangles.
+#pragma once
+
+#include <vector>
+
+#include "mesh/tet_mesh.hpp"
+
+namespace skinfem {
+
+class PlanarFaceIndex {
+ public:
+  PlanarFaceIndex(const TetMesh& mesh, int marker);
+
+  // Mesh face index containing (x, y) and the face parameters (s, t) there; −1 when outside.
+  // On curved faces (s, t) are those of the straight corner triangle (exact on flat faces).
+  int find(double x, double y, double& s, double& t) const;
+  const std::vector<int>& faces() const { return faces_; }
+
+ private:
+  int bin(double v, double origin) const { return static_cast<int>((v - origin) / cell_); }
+  const TetMesh& mesh_;
+  std::vector<int> faces_;
+  double x0_ = 0, y0_ = 0, cell_ = 1;
+  int nx_ = 1, ny_ = 1;
+  std::vector<std::vector<int>> buckets_;  // face indices
+};
+
+}  // namespace skinfem

@@ -1,0 +1,34 @@
+// Post-processing of a mixed solution: stresses σ = 2μ ε(u) − p I, probes anywhere, VTK fields.
+#pragma once
+
+#include <string>
+
+#include "fem/material.hpp"
+#include "fem/mixed_solver.hpp"
+#include "mesh/locate.hpp"
+#include "mesh/tet_mesh.hpp"
+
+namespace skinfem {
+
+// Stress (MPa) in element `tet` at reference point xi.
+Eigen::Matrix3d element_stress(const TetMesh& mesh, const Lame& lame, const MixedSolution& x, int tet,
+                               const Eigen::Vector3d& xi);
+
+// Nodal stress by averaging the element values at each node over the elements sharing it: N×9, row-major
+// components (xx, xy, xz, yx, …).
+Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::RowMajor> recover_stress(const TetMesh& mesh, const Lame& lame,
+                                                                         const MixedSolution& x);
+
+struct Probe {
+  Eigen::Vector3d u;  // mm
+  double p = 0;       // MPa
+  Eigen::Matrix3d sigma;  // MPa, from the element that contains the point
+};
+// Throws std::out_of_range when the point is outside the mesh.
+Probe probe(const TetMesh& mesh, const PointLocator& locator, const Lame& lame, const MixedSolution& x,
+            const Eigen::Vector3d& point);
+
+// fields.vtu: point data displacement_mm, pressure_MPa, stress_MPa (9), cell data von_mises_MPa.
+void write_fields_vtu(const std::string& path, const TetMesh& mesh, const Lame& lame, const MixedSolution& x);
+
+}  // namespace skinfem

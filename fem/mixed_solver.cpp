@@ -1,0 +1,173 @@
+#include "fem/mixed_solver.hpp"
+
+#include "fem/mumps_ldlt.hpp"
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/SparseCholesky>
+#include <chrono>
+#include <cmath>
+
+namespace skinfem {
+
+const char* to_string(SolverKind kind) { return kind == SolverKind::schur_cg ? "schur_cg" : "direct_ldlt"; }
+
+namespace {
+// Rows/columns `keep` of M (a map old → new index, −1 dropped).
+SparseMatrixd restrict(const SparseMatrixd& M, const std::vector<int>& row_map, int rows,
+                       const std::vector<int>& col_map, int cols) {
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(M.nonZeros());
+  for (int c = 0; c < M.outerSize(); ++c) {
+    const int nc = col_map.empty() ? c : col_map[c];
+    if (nc < 0) continue;
+    for (SparseMatrixd::InnerIterator it(M, c); it; ++it) {
+      const int nr = row_map.empty() ? static_cast<int>(it.row()) : row_map[it.row()];
+      if (nr >= 0) t.emplace_back(nr, nc, it.value());
+    }
+  }
+  SparseMatrixd R(rows, cols);
+  R.setFromTriplets(t.begin(), t.end());
+  return R;
+}
+}  // namespace
+
+struct MixedSolver::Impl {
+  const MixedMatrices& M;
+  std::vector<int> free_index;  // 3N → free index or −1
+  std::vector<int> free_dofs;   // free index → DOF
+  int nf = 0, np = 0;
+  double tolerance = 1e-10;
+  SparseMatrixd Aff, Bf, C;
+  // schur_cg
+  Eigen::CholmodSupernodalLLT<SparseMatrixd> chol;
+  Eigen::SimplicialLLT<SparseMatrixd> mass;  // the Schur preconditioner's M_p
+  double precond_scale = 1;
+  // direct_ldlt
+  std::unique_ptr<MumpsLdlt> ldlt;
+
+  explicit Impl(const MixedMatrices& m) : M(m) {}
+};
+
+MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const std::vector<bool>& fixed,
+                         SolverKind kind, double tolerance)
+    : impl_(new Impl(matrices)), kind_(kind) {
+  const auto start = std::chrono::steady_clock::now();
+  Impl& s = *impl_;
+  s.tolerance = tolerance;
+  const int n3 = matrices.A.rows();
+  s.free_index.assign(n3, -1);
+  for (int d = 0; d < n3; ++d)
+    if (!fixed[d]) {
+      s.free_index[d] = s.nf++;
+      s.free_dofs.push_back(d);
+    }
+  s.np = matrices.Mp.rows();
+  s.Aff = restrict(matrices.A, s.free_index, s.nf, s.free_index, s.nf);
+  s.Bf = restrict(matrices.B, {}, s.np, s.free_index, s.nf);
+  s.C = lame.inv_lambda * matrices.Mp;
+
+  if (kind == SolverKind::schur_cg) {
+    s.chol.compute(s.Aff);
+    if (getenv("SKINFEM_DEBUG")) fprintf(stderr, "cholmod: n %d nnzA %ld lnz %.3g flops %.3g method %d ordering %d\n", s.nf, (long)s.Aff.nonZeros(), s.chol.cholmod().lnz, s.chol.cholmod().fl, s.chol.cholmod().selected, s.chol.cholmod().method[s.chol.cholmod().selected].ordering);
+    if (s.chol.info() != Eigen::Success)
+      throw SolverError("CHOLMOD could not factor the displacement block (is every rigid motion fixed?)");
+    s.mass.compute(matrices.Mp);
+    if (s.mass.info() != Eigen::Success) throw SolverError("pressure mass matrix is singular");
+    s.precond_scale = 1.0 / (1.0 / (2 * lame.mu) + lame.inv_lambda);
+  } else {
+    // Lower triangle of [A_ff Bᵀ; B −C] is all MUMPS reads.
+    std::vector<Eigen::Triplet<double>> t;
+    t.reserve(s.Aff.nonZeros() / 2 + s.nf + s.Bf.nonZeros() + s.C.nonZeros());
+    for (int c = 0; c < s.Aff.outerSize(); ++c)
+      for (SparseMatrixd::InnerIterator it(s.Aff, c); it; ++it)
+        if (it.row() >= c) t.emplace_back(it.row(), c, it.value());
+    for (int c = 0; c < s.Bf.outerSize(); ++c)
+      for (SparseMatrixd::InnerIterator it(s.Bf, c); it; ++it) t.emplace_back(s.nf + it.row(), c, it.value());
+    for (int c = 0; c < s.C.outerSize(); ++c)
+      for (SparseMatrixd::InnerIterator it(s.C, c); it; ++it)
+        if (it.row() >= c) t.emplace_back(s.nf + it.row(), s.nf + c, -it.value());
+    SparseMatrixd K(s.nf + s.np, s.nf + s.np);
+    K.setFromTriplets(t.begin(), t.end());
+    try {
+      s.ldlt = std::make_unique<MumpsLdlt>(K);
+    } catch (const std::runtime_error& e) {
+      throw SolverError(std::string("cannot factor the saddle-point matrix: ") + e.what());
+    }
+  }
+  factor_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+MixedSolver::~MixedSolver() = default;
+
+int MixedSolver::free_dofs() const { return impl_->nf + impl_->np; }
+
+MixedSolution MixedSolver::solve(const Eigen::VectorXd& f, const Eigen::VectorXd& u_fixed) const {
+  const Impl& s = *impl_;
+  const int n3 = s.M.A.rows();
+  // Lift the prescribed values: b_f = f_f − A_fc u_c, g = −B_c u_c.
+  Eigen::VectorXd uc = Eigen::VectorXd::Zero(n3);
+  if (u_fixed.size())
+    for (int d = 0; d < n3; ++d)
+      if (s.free_index[d] < 0) uc[d] = u_fixed[d];
+  const Eigen::VectorXd Au = s.M.A * uc, Bu = s.M.B * uc;
+  Eigen::VectorXd bf(s.nf);
+  for (int i = 0; i < s.nf; ++i) bf[i] = f[s.free_dofs[i]] - Au[s.free_dofs[i]];
+  const Eigen::VectorXd g = -Bu;
+
+  MixedSolution out;
+  Eigen::VectorXd uf, p;
+  if (kind_ == SolverKind::schur_cg) {
+    // S p = B A⁻¹ b_f − g, then A u = b_f − Bᵀ p
+    auto apply_S = [&](const Eigen::VectorXd& q) -> Eigen::VectorXd {
+      return s.Bf * s.chol.solve(s.Bf.transpose() * q) + s.C * q;
+    };
+    const Eigen::VectorXd rhs = s.Bf * s.chol.solve(bf) - g;
+    p = Eigen::VectorXd::Zero(s.np);
+    Eigen::VectorXd r = rhs, z = s.mass.solve(r) * s.precond_scale, d = z;
+    double rz = r.dot(z);
+    const double rhs_norm = rhs.norm();
+    // Stop well below the outer tolerance: the Schur residual is amplified by ‖Bᵀ‖ in the full system.
+    const double cg_tol = 1e-3 * s.tolerance;
+    int it = 0;
+    while (rhs_norm > 0 && r.norm() > cg_tol * rhs_norm && it < 1000) {
+      const Eigen::VectorXd Sd = apply_S(d);
+      const double alpha = rz / d.dot(Sd);
+      p += alpha * d;
+      r -= alpha * Sd;
+      z = s.mass.solve(r) * s.precond_scale;
+      const double rz_new = r.dot(z);
+      d = z + (rz_new / rz) * d;
+      rz = rz_new;
+      ++it;
+    }
+    out.iterations = it;
+    uf = s.chol.solve(bf - s.Bf.transpose() * p);
+  } else {
+    Eigen::VectorXd b(s.nf + s.np);
+    b << bf, g;
+    const Eigen::VectorXd x = s.ldlt->solve(b);
+    uf = x.head(s.nf);
+    p = x.tail(s.np);
+  }
+  // Residual of the full constrained system.
+  const Eigen::VectorXd r1 = s.Aff * uf + s.Bf.transpose() * p - bf;
+  const Eigen::VectorXd r2 = s.Bf * uf - s.C * p - g;
+  const double bnorm = std::sqrt(bf.squaredNorm() + g.squaredNorm());
+  out.residual = bnorm > 0 ? std::sqrt(r1.squaredNorm() + r2.squaredNorm()) / bnorm : 0.0;
+  if (!std::isfinite(out.residual) || out.residual > s.tolerance)
+    throw SolverError(std::string(to_string(kind_)) + " solve missed its tolerance: relative residual " +
+                      std::to_string(out.residual) + " > " + std::to_string(s.tolerance));
+  out.u = uc;
+  for (int i = 0; i < s.nf; ++i) out.u[s.free_dofs[i]] = uf[i];
+  out.p = p;
+  return out;
+}
+
+Eigen::VectorXd MixedSolver::reactions(const MixedSolution& x, const Eigen::VectorXd& f) const {
+  const Impl& s = *impl_;
+  Eigen::VectorXd r = s.M.A * x.u + s.M.B.transpose() * x.p;
+  for (int d = 0; d < r.size(); ++d) r[d] = s.free_index[d] < 0 ? r[d] - (f.size() ? f[d] : 0.0) : 0.0;
+  return r;
+}
+
+}  // namespace skinfem

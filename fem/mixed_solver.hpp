@@ -1,0 +1,63 @@
+// Saddle-point solver for the Taylor–Hood system with Dirichlet displacement DOFs eliminated.
+// It factors once per mesh and constraint set; every further load costs triangular solves.
+//
+// Two roads (DESIGN.md "Numerical guidance"), selectable and compared by `skinfem study`:
+//  - schur_cg:  CHOLMOD supernodal LLᵀ of the free displacement block A_ff, and preconditioned CG on
+//               the pressure Schur complement S = B A⁻¹ Bᵀ + C with preconditioner (1/2μ + 1/λ) M_p
+//               (spectrally equivalent to S for inf-sup stable pairs: mesh-independent iterations);
+//  - direct_ldlt: MUMPS symmetric-indefinite LDLᵀ of the whole free saddle-point matrix, one
+//               forward/back substitution per load.
+#pragma once
+
+#include <Eigen/Sparse>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "fem/assembly.hpp"
+
+namespace skinfem {
+
+enum class SolverKind { schur_cg, direct_ldlt };
+const char* to_string(SolverKind kind);
+
+// Thrown when a solve misses its tolerance or a factorization fails; never a silent result.
+struct SolverError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct MixedSolution {
+  Eigen::VectorXd u;  // 3N, mm
+  Eigen::VectorXd p;  // Nv, MPa
+  double residual = 0;  // ‖K x − b‖ / ‖b‖ of the full constrained system
+  int iterations = 0;   // CG iterations (schur_cg), 0 for direct_ldlt
+};
+
+class MixedSolver {
+ public:
+  // fixed: 3N flags, true where the displacement DOF is prescribed. Factors immediately.
+  MixedSolver(const MixedMatrices& matrices, const Lame& lame, const std::vector<bool>& fixed, SolverKind kind,
+              double tolerance = 1e-10);
+  ~MixedSolver();
+
+  // f: 3N load vector (entries at fixed DOFs ignored); u_fixed: 3N prescribed values (only fixed DOFs
+  // read; pass an empty vector for zero). Throws SolverError if the relative residual exceeds the tolerance.
+  MixedSolution solve(const Eigen::VectorXd& f, const Eigen::VectorXd& u_fixed = {}) const;
+
+  // Reactions at the fixed DOFs, K x − f restricted to them (3N vector, zero at free DOFs): the force
+  // the supports exert on the body, N.
+  Eigen::VectorXd reactions(const MixedSolution& x, const Eigen::VectorXd& f) const;
+
+  double factor_seconds() const { return factor_seconds_; }
+  int free_dofs() const;  // free displacement DOFs + pressure DOFs
+  SolverKind kind() const { return kind_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  SolverKind kind_;
+  double factor_seconds_ = 0;
+};
+
+}  // namespace skinfem

@@ -1,0 +1,27 @@
+// Symmetric-indefinite sparse LDLᵀ with pivoting (MUMPS 5, sequential, METIS ordering): factor once,
+// then each right-hand side costs one forward/back substitution. Not copyable; not thread-safe.
+#pragma once
+
+#include <Eigen/Sparse>
+#include <memory>
+
+namespace skinfem {
+
+class MumpsLdlt {
+ public:
+  // K: symmetric matrix; only its lower triangle is read. Throws std::runtime_error on failure
+  // (with MUMPS's INFOG(1) code: −9/−13 out of memory, −10 singular).
+  explicit MumpsLdlt(const Eigen::SparseMatrix<double>& K);
+  ~MumpsLdlt();
+  MumpsLdlt(const MumpsLdlt&) = delete;
+  MumpsLdlt& operator=(const MumpsLdlt&) = delete;
+
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  double factor_entries() const;  // entries in the factors (INFOG(29))
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace skinfem
