@@ -133,12 +133,12 @@ Eigen::VectorXd body_load(const TetMesh& m, const VectorField& f) {
   return F;
 }
 
-Eigen::VectorXd traction_load(const TetMesh& m, int markers, const VectorField& t) {
+Eigen::VectorXd traction_load(const TetMesh& m, int markers, const TractionField& t) {
   Eigen::VectorXd F = Eigen::VectorXd::Zero(3 * m.num_nodes());
   for (int f = 0; f < m.faces.rows(); ++f) {
     if (!(m.face_marker(f) & markers)) continue;
     for (const auto& q : face_quadrature(m, f)) {
-      const Eigen::Vector3d tx = t(q.x);
+      const Eigen::Vector3d tx = t(q.x, q.normal);
       for (int a = 0; a < 6; ++a) F.segment<3>(3 * m.faces(f, a)) += q.weight * q.N[a] * tx;
     }
   }

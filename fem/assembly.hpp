@@ -31,9 +31,10 @@ MixedMatrices assemble_mixed(const TetMesh& mesh, const Lame& lame);
 using VectorField = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
 Eigen::VectorXd body_load(const TetMesh& mesh, const VectorField& f);
 
-// ∫ t·v over the boundary faces with one of `markers` for a traction t(x) (MPa): a 3N load vector.
-// Degree-5 7-point triangle rule on the quadratic faces.
-Eigen::VectorXd traction_load(const TetMesh& mesh, int markers, const VectorField& t);
+// ∫ t·v over the boundary faces with one of `markers` for a traction t(x, n) (MPa; n the outward unit
+// normal): a 3N load vector. Degree-5 7-point triangle rule on the quadratic faces.
+using TractionField = std::function<Eigen::Vector3d(const Eigen::Vector3d& x, const Eigen::Vector3d& n)>;
+Eigen::VectorXd traction_load(const TetMesh& mesh, int markers, const TractionField& t);
 
 // True when the element's mid-edge nodes sit at the midpoints of its straight edges.
 bool is_affine(const TetMesh& mesh, int tet);

@@ -68,7 +68,6 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
 
   if (kind == SolverKind::schur_cg) {
     s.chol.compute(s.Aff);
-    if (getenv("SKINFEM_DEBUG")) fprintf(stderr, "cholmod: n %d nnzA %ld lnz %.3g flops %.3g method %d ordering %d\n", s.nf, (long)s.Aff.nonZeros(), s.chol.cholmod().lnz, s.chol.cholmod().fl, s.chol.cholmod().selected, s.chol.cholmod().method[s.chol.cholmod().selected].ordering);
     if (s.chol.info() != Eigen::Success)
       throw SolverError("CHOLMOD could not factor the displacement block (is every rigid motion fixed?)");
     s.mass.compute(matrices.Mp);

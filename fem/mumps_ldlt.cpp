@@ -47,7 +47,9 @@ MumpsLdlt::MumpsLdlt(const Eigen::SparseMatrix<double>& K) : impl_(new Impl) {
   s.id.icntl[1] = -1;
   s.id.icntl[2] = -1;
   s.id.icntl[3] = 0;
-  s.id.icntl[6] = 5;    // ICNTL(7): METIS ordering
+  // ICNTL(7) = 2, approximate minimum fill: as fast here as SCOTCH/METIS (measured on the flat
+  // layer, 165k DOFs: AMF 23.6 s, SCOTCH 21.7 s, PORD 27.4 s) and, unlike SCOTCH, bitwise reproducible.
+  s.id.icntl[6] = 2;
   s.id.icntl[13] = 60;  // ICNTL(14): +60 % working-space relaxation for delayed pivots
   s.id.n = static_cast<MUMPS_INT>(K.rows());
   s.id.nnz = static_cast<MUMPS_INT8>(s.a.size());

@@ -1,4 +1,4 @@
-// Symmetric-indefinite sparse LDLᵀ with pivoting (MUMPS 5, sequential, METIS ordering): factor once,
+// Symmetric-indefinite sparse LDLᵀ with pivoting (MUMPS 5, sequential, AMF ordering): factor once,
 // then each right-hand side costs one forward/back substitution. Not copyable; not thread-safe.
 #pragma once
 

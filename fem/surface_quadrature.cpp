@@ -29,7 +29,8 @@ std::vector<FacePoint> face_quadrature(const TetMesh& m, int f) {
       xt += dt[a] * X.row(a).transpose();
     }
     const auto N = triangle_shape(s, t);
-    out.push_back({X.transpose() * N, N, 0.5 * p[2] * xs.cross(xt).norm()});
+    const Eigen::Vector3d n = xs.cross(xt);
+    out.push_back({X.transpose() * N, N, n.normalized(), 0.5 * p[2] * n.norm()});
   }
   return out;
 }

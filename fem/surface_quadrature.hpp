@@ -11,6 +11,7 @@ namespace skinfem {
 struct FacePoint {
   Eigen::Vector3d x;                 // physical point, mm
   Eigen::Matrix<double, 6, 1> N;     // face shape functions there (node order of TetMesh::faces)
+  Eigen::Vector3d normal;            // outward unit normal
   double weight;                     // quadrature weight × surface Jacobian, mm²
 };
 

@@ -84,10 +84,10 @@ void snap_to_surface(LinearTets& lin, const SkinShape& shape) {
 }  // namespace
 
 TetMesh build_mesh(const Scene& scene) {
-  const SizingField size(scene.mesh, scene.sensors);
+  const SizingField size(scene);
   const bool generated = scene.geometry.kind != GeometryKind::surface;
   const SurfaceMesh surface =
-      generated ? layer_surface(scene.geometry, size) : import_surface(scene.geometry.surface.path);
+      generated ? layer_surface(scene, size) : import_surface(scene.geometry.surface.path);
   LinearTets lin = tetrahedralize(surface, size, scene.mesh);
   if (generated) snap_to_surface(lin, SkinShape(scene.geometry));
   return make_quadratic(lin.points, lin.tets, lin.faces, lin.face_marker, scene.geometry);

@@ -116,12 +116,36 @@ std::vector<Vec2> square_loop(double w, const SizingField& size) {
   return loop;
 }
 
-Footprint mesh_footprint(const std::vector<Vec2>& loop, const SizingField& size) {
+Footprint mesh_footprint(const std::vector<Vec2>& loop, const SizingField& size, const std::vector<Circle>& circles) {
   CDT cdt;
-  std::vector<CDT::Vertex_handle> vh;
-  for (const auto& p : loop) vh.push_back(cdt.insert(K::Point_2(p[0], p[1])));
-  for (size_t i = 0; i < vh.size(); ++i) cdt.insert_constraint(vh[i], vh[(i + 1) % vh.size()]);
+  auto insert_loop = [&](const std::vector<Vec2>& pts) {
+    std::vector<CDT::Vertex_handle> vh;
+    for (const auto& p : pts) vh.push_back(cdt.insert(K::Point_2(p[0], p[1])));
+    for (size_t i = 0; i < vh.size(); ++i) cdt.insert_constraint(vh[i], vh[(i + 1) % vh.size()]);
+  };
+  insert_loop(loop);
+  for (const auto& c : circles) insert_loop(circle_loop(c.centre, c.radius, size));
   CGAL::refine_Delaunay_mesh_2(cdt, GradedCriteria(size));
+  // Refinement splits constrained chords at their midpoints: put interior-circle vertices back on
+  // their circle (the outer loop is the caller's to project).
+  for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
+    if (!cdt.is_constrained(*e) || circles.empty()) continue;
+    for (int k : {cdt.cw(e->second), cdt.ccw(e->second)}) {
+      auto v = e->first->vertex(k);
+      const double x = v->point().x(), y = v->point().y();
+      const Circle* nearest = nullptr;
+      double gap = 1e300;
+      for (const auto& c : circles) {
+        const double g = std::abs(std::hypot(x - c.centre[0], y - c.centre[1]) - c.radius);
+        if (g < gap) gap = g, nearest = &c;
+      }
+      if (gap > 0.25 * size(x, y)) continue;  // a vertex of the outer loop
+      const double r = std::hypot(x - nearest->centre[0], y - nearest->centre[1]);
+      if (r > 0)
+        v->set_point(K::Point_2(nearest->centre[0] + nearest->radius * (x - nearest->centre[0]) / r,
+                                nearest->centre[1] + nearest->radius * (y - nearest->centre[1]) / r));
+    }
+  }
 
   Footprint fp;
   std::map<CDT::Vertex_handle, int> index;
@@ -137,7 +161,7 @@ Footprint mesh_footprint(const std::vector<Vec2>& loop, const SizingField& size)
     if (!f->is_in_domain()) continue;
     tris.push_back({id(f->vertex(0)), id(f->vertex(1)), id(f->vertex(2))});
     for (int e = 0; e < 3; ++e)
-      if (cdt.is_constrained({f, e})) next_on_boundary[id(f->vertex(cdt.ccw(e)))] = id(f->vertex(cdt.cw(e)));
+      if (cdt.is_infinite(f->neighbor(e)) || !f->neighbor(e)->is_in_domain()) next_on_boundary[id(f->vertex(cdt.ccw(e)))] = id(f->vertex(cdt.cw(e)));
   }
   fp.points.resize(pts.size(), 2);
   for (size_t i = 0; i < pts.size(); ++i) fp.points.row(i) << pts[i][0], pts[i][1];

@@ -16,8 +16,15 @@ struct Footprint {
   std::vector<int> boundary;  // the outer loop, counter-clockwise, each vertex once
 };
 
+struct Circle {
+  Vec2 centre;
+  double radius;
+};
+
 // loop: closed polygon, counter-clockwise, first point not repeated; every edge is split as needed.
-Footprint mesh_footprint(const std::vector<Vec2>& loop, const SizingField& size);
+// circles: interior curves the triangulation must follow (a punch's edge), their vertices on the circle.
+Footprint mesh_footprint(const std::vector<Vec2>& loop, const SizingField& size,
+                         const std::vector<Circle>& circles = {});
 
 // Boundary loops that follow the sizing field: a circle (cap) and a square (flat).
 std::vector<Vec2> circle_loop(const Vec2& centre, double radius, const SizingField& size);

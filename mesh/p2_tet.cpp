@@ -31,8 +31,8 @@ const std::vector<QuadPoint>& quadrature_degree2() {
 const std::vector<QuadPoint>& quadrature_degree5() {
   static const std::vector<QuadPoint> q = [] {
     std::vector<QuadPoint> r;
-    add_orbit4(r, 0.0927352503108912, 0.1126879257180159 / 6);
-    add_orbit4(r, 0.3108859192633006, 0.0734930431163620 / 6);
+    add_orbit4(r, 0.0927352503108912, 0.0734930431163620 / 6);
+    add_orbit4(r, 0.3108859192633006, 0.1126879257180159 / 6);
     add_orbit6(r, 0.0455037041256496, 0.0425460207770815 / 6);
     return r;
   }();

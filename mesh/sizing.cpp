@@ -15,13 +15,15 @@ double distance_to_segment(double x, double y, const Vec2& a, const Vec2& b) {
 }
 }  // namespace
 
-SizingField::SizingField(const MeshControls& controls, const Sensors& sensors)
-    : regions_(controls.regions), growth_(controls.growth), h_max_(controls.h_max) {
+SizingField::SizingField(const Scene& scene)
+    : regions_(scene.mesh.regions), growth_(scene.mesh.growth), h_max_(scene.mesh.h_max) {
+  const double h_min = scene.mesh.h_min;
   for (auto& r : regions_)
-    if (r.h <= 0) r.h = controls.h_min;
-  if (controls.refine_sensors)
-    for (const auto& s : sensors.positions)
-      regions_.push_back({s, s, 0.5 * sensors.disc_diameter, controls.h_min});
+    if (r.h <= 0) r.h = h_min;
+  if (scene.mesh.refine_sensors)
+    for (const auto& s : scene.sensors.positions) regions_.push_back({s, s, 0.5 * scene.sensors.disc_diameter, h_min});
+  for (const auto& p : scene.loads.punches) regions_.push_back({p.center, p.center, 0.5 * p.diameter, h_min});
+  for (const auto& p : scene.loads.patches) regions_.push_back({p.center, p.center, 0.5 * p.diameter, h_min});
 }
 
 double SizingField::operator()(double x, double y) const {

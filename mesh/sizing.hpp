@@ -14,7 +14,8 @@ namespace skinfem {
 
 class SizingField {
  public:
-  SizingField(const MeshControls& controls, const Sensors& sensors);
+  // Regions: mesh.regions, the sensor discs (if mesh.refine_sensors), every punch and traction patch.
+  explicit SizingField(const Scene& scene);
   double operator()(double x, double y) const;  // mm
   double h_max() const { return h_max_; }
   double h_min() const;  // smallest size anywhere

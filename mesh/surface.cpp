@@ -63,14 +63,17 @@ void check_watertight(const SurfaceMesh& surface, const std::string& what) {
     throw MeshError(what + ": surface encloses no volume or is inward oriented");
 }
 
-SurfaceMesh layer_surface(const Geometry& geometry, const SizingField& size) {
+SurfaceMesh layer_surface(const Scene& scene, const SizingField& size) {
+  const Geometry& geometry = scene.geometry;
   const SkinShape shape(geometry);
   const Vec2 centre =
       geometry.kind == GeometryKind::cap ? Vec2{geometry.cap.apex_x, geometry.cap.apex_y} : Vec2{0, 0};
   const auto loop = geometry.kind == GeometryKind::cap
                         ? circle_loop(centre, geometry.cap.truncation_radius, size)
                         : square_loop(geometry.flat.half_width, size);
-  Footprint fp = mesh_footprint(loop, size);
+  std::vector<Circle> circles;
+  for (const auto& p : scene.loads.punches) circles.push_back({p.center, 0.5 * p.diameter});
+  Footprint fp = mesh_footprint(loop, size, circles);
   // Refinement splits boundary chords at their midpoints; put those vertices back on the circle.
   if (geometry.kind == GeometryKind::cap)
     for (int b : fp.boundary) {

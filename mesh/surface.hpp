@@ -17,8 +17,9 @@ struct MeshError : std::runtime_error {
 };
 
 // Cap or flat layer: a graded footprint triangulation lifted to the exact top (z = s(x, y)) and the
-// base (z = 0), joined by a side band of vertical quads split in two.
-SurfaceMesh layer_surface(const Geometry& geometry, const SizingField& size);
+// base (z = 0), joined by a side band of vertical quads split in two. The triangulation follows the
+// edge of every punch, so that a rigid punch holds exactly its disc.
+SurfaceMesh layer_surface(const Scene& scene, const SizingField& size);
 
 // Reads a closed surface; faces lying on z = 0 (all three vertices within 1e-9·diameter, normal −z)
 // become the base, faces with a horizontal normal the side, the rest the top.
