@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "fem/mixed_solver.hpp"
 #include "scene/scene.hpp"
@@ -10,5 +11,6 @@ namespace skinfem::app {
 
 int run_mesh(const Scene& scene, const std::string& out_dir);
 int run_solve(const Scene& scene, const std::string& out_dir, SolverKind solver);
+int run_study(const Scene& scene, const std::string& out_dir, const std::vector<double>& scales);
 
 }  // namespace skinfem::app

@@ -1,5 +1,5 @@
 // skinfem — finite-element verification toolkit for tactile sensors under an elastomer skin.
-// Subcommands: mesh, solve (see each cmd_*.cpp for what it computes and writes).
+// Subcommands: mesh, solve, study (see each cmd_*.cpp for what it computes and writes).
 // Exit codes: 0 success, 2 bad input (scene or arguments), 1 any other failure.
 #include <CLI/CLI.hpp>
 #include <iostream>
@@ -20,7 +20,13 @@ int main(int argc, char** argv) {
   solve->add_option("--solver", solver_name, "saddle-point solver")
       ->check(CLI::IsMember({"direct_ldlt", "schur_cg"}))
       ->capture_default_str();
-  for (auto* sub : {mesh, solve}) {
+  auto* study = cli.add_subcommand("study", "refinement study of the scene's load with both solvers (study.json, study.csv)");
+  std::vector<double> scales{2.0, 1.41, 1.0, 0.71};
+  study->add_option("--scales", scales, "factors applied to h_min and h_max, coarse to fine")
+      ->delimiter(',')
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  for (auto* sub : {mesh, solve, study}) {
     sub->add_option("scene", scene_path, "scene JSON file")->required();
     sub->add_option("--out", out_dir, "output directory")->capture_default_str();
   }
@@ -35,6 +41,7 @@ int main(int argc, char** argv) {
     if (mesh->parsed()) return skinfem::app::run_mesh(scene, out_dir);
     const auto solver = solver_name == "schur_cg" ? skinfem::SolverKind::schur_cg : skinfem::SolverKind::direct_ldlt;
     if (solve->parsed()) return skinfem::app::run_solve(scene, out_dir, solver);
+    if (study->parsed()) return skinfem::app::run_study(scene, out_dir, scales);
   } catch (const skinfem::SceneError& e) {
     std::cerr << "skinfem: " << e.what() << std::endl;
     return 2;
