@@ -1,5 +1,5 @@
 // skinfem — finite-element verification toolkit for tactile sensors under an elastomer skin.
-// Subcommands: mesh, solve, study (see each cmd_*.cpp for what it computes and writes).
+// Subcommands: mesh, solve, study, kfit, green (see each cmd_*.cpp for what it computes and writes).
 // Exit codes: 0 success, 2 bad input (scene or arguments), 1 any other failure.
 #include <CLI/CLI.hpp>
 #include <iostream>
@@ -26,7 +26,13 @@ int main(int argc, char** argv) {
       ->delimiter(',')
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  for (auto* sub : {mesh, solve, study}) {
+  auto* kfit = cli.add_subcommand("kfit", "fit the k correction of the Green tensor (kfit.json)");
+  std::string load_name = "punch";
+  kfit->add_option("--load", load_name, "calibration load model")
+      ->check(CLI::IsMember({"punch", "point"}))
+      ->capture_default_str();
+  auto* green_cmd = cli.add_subcommand("green", "FE Green tensors of every sensor (green.csv, green_maps.vtp)");
+  for (auto* sub : {mesh, solve, study, kfit, green_cmd}) {
     sub->add_option("scene", scene_path, "scene JSON file")->required();
     sub->add_option("--out", out_dir, "output directory")->capture_default_str();
   }
@@ -41,6 +47,8 @@ int main(int argc, char** argv) {
     if (mesh->parsed()) return skinfem::app::run_mesh(scene, out_dir);
     const auto solver = solver_name == "schur_cg" ? skinfem::SolverKind::schur_cg : skinfem::SolverKind::direct_ldlt;
     if (solve->parsed()) return skinfem::app::run_solve(scene, out_dir, solver);
+    if (green_cmd->parsed()) return skinfem::app::run_green(scene, out_dir);
+    if (kfit->parsed()) return skinfem::app::run_kfit(scene, out_dir, load_name);
     if (study->parsed()) return skinfem::app::run_study(scene, out_dir, scales);
   } catch (const skinfem::SceneError& e) {
     std::cerr << "skinfem: " << e.what() << std::endl;

@@ -131,7 +131,10 @@ Eigen::VectorXd disc_reading_functional(const TetMesh& mesh, double x, double y,
   // reading = Σ_q w_q N(x_q)ᵀ T, T = M⁻¹ R  ⇒  reading = (M⁻¹ Σ_q w_q N(x_q))ᵀ R.
   const BaseIndex index(mesh);
   std::vector<std::array<double, 3>> pts;
-  polar_rule(diameter, pts);
+  if (diameter > 0)
+    polar_rule(diameter, pts);
+  else
+    pts.push_back({0.0, 0.0, 1.0});  // the point value at the centre
   Eigen::VectorXd w = Eigen::VectorXd::Zero(index.nodes.size());
   for (const auto& p : pts) {
     double s, t;

@@ -40,7 +40,8 @@ class BaseTraction {
 };
 
 // Weights w (3N vector) such that the disc-mean reading component of the traction field built from
-// reactions R is w·R (a linear functional: the adjoint load of reciprocity). component: 'z' or 'x'.
+// reactions R is w·R (a linear functional: the adjoint load of reciprocity). component: 'z' or 'x';
+// diameter 0 gives the point value at (x, y).
 Eigen::VectorXd disc_reading_functional(const TetMesh& mesh, double x, double y, double diameter, char component);
 
 }  // namespace skinfem

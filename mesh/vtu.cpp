@@ -8,6 +8,8 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkPolyData.h>
+#include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include <filesystem>
@@ -40,9 +42,10 @@ void add_array(vtkDataSetAttributes* attributes, const DataArray& a, vtkIdType c
   if (a.components == 3) attributes->SetActiveVectors(a.name.c_str());
 }
 
-void write_grid(const std::string& path, vtkUnstructuredGrid* grid) {
+template <class Writer, class Data>
+void write_xml(const std::string& path, Data* grid) {
   const std::string tmp = path + ".tmp";
-  vtkNew<vtkXMLUnstructuredGridWriter> writer;
+  vtkNew<Writer> writer;
   writer->SetFileName(tmp.c_str());
   writer->SetInputData(grid);
   writer->SetDataModeToAppended();
@@ -76,7 +79,7 @@ void write_vtu(const std::string& path, const TetMesh& mesh, const std::vector<D
   cells.push_back(volume);
   for (const auto& a : point_data) add_array(grid->GetPointData(), a, mesh.num_nodes());
   for (const auto& a : cells) add_array(grid->GetCellData(), a, mesh.num_tets());
-  write_grid(path, grid);
+  write_xml<vtkXMLUnstructuredGridWriter>(path, grid.GetPointer());
 }
 
 void write_boundary_vtu(const std::string& path, const TetMesh& mesh) {
@@ -91,7 +94,37 @@ void write_boundary_vtu(const std::string& path, const TetMesh& mesh) {
     marker->InsertNextValue(mesh.face_marker(f));
   }
   grid->GetCellData()->AddArray(marker);
-  write_grid(path, grid);
+  write_xml<vtkXMLUnstructuredGridWriter>(path, grid.GetPointer());
+}
+
+void write_surface_vtp(const std::string& path, const TetMesh& mesh, int marker, const std::vector<DataArray>& point_data) {
+  std::vector<int> local(mesh.num_nodes(), -1), nodes;
+  for (int f = 0; f < mesh.faces.rows(); ++f)
+    if (mesh.face_marker(f) == marker)
+      for (int k = 0; k < 6; ++k)
+        if (local[mesh.faces(f, k)] < 0) local[mesh.faces(f, k)] = static_cast<int>(nodes.size()), nodes.push_back(mesh.faces(f, k));
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (int n : nodes) points->InsertNextPoint(mesh.nodes(n, 0), mesh.nodes(n, 1), mesh.nodes(n, 2));
+  vtkNew<vtkCellArray> polys;
+  static const int split[4][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
+  for (int f = 0; f < mesh.faces.rows(); ++f) {
+    if (mesh.face_marker(f) != marker) continue;
+    for (const auto& t : split) {
+      vtkIdType ids[3] = {local[mesh.faces(f, t[0])], local[mesh.faces(f, t[1])], local[mesh.faces(f, t[2])]};
+      polys->InsertNextCell(3, ids);
+    }
+  }
+  vtkNew<vtkPolyData> poly;
+  poly->SetPoints(points);
+  poly->SetPolys(polys);
+  for (const auto& a : point_data) {
+    DataArray sub{a.name, a.components, {}};
+    for (int n : nodes)
+      for (int c = 0; c < a.components; ++c) sub.values.push_back(a.values.at(static_cast<size_t>(n) * a.components + c));
+    add_array(poly->GetPointData(), sub, static_cast<vtkIdType>(nodes.size()));
+  }
+  write_xml<vtkXMLPolyDataWriter>(path, poly.GetPointer());
 }
 
 }  // namespace skinfem

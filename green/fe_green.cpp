@@ -1,0 +1,101 @@
+#include "green/fe_green.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "fem/surface_quadrature.hpp"
+
+namespace skinfem::green {
+
+namespace {
+// Gauss–Legendre on [0, 1] (Golub–Welsch).
+void gauss01(int n, std::vector<double>& x, std::vector<double>& w) {
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n, n);
+  for (int i = 1; i < n; ++i) J(i, i - 1) = J(i - 1, i) = i / std::sqrt(4.0 * i * i - 1);
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(J);
+  x.resize(n);
+  w.resize(n);
+  for (int i = 0; i < n; ++i) {
+    x[i] = 0.5 * (1 + es.eigenvalues()[i]);
+    w[i] = es.eigenvectors()(0, i) * es.eigenvectors()(0, i);
+  }
+}
+}  // namespace
+
+std::vector<std::array<double, 3>> load_quadrature(LayerLoad load, double a) {
+  std::vector<std::array<double, 3>> pts;
+  if (load == LayerLoad::point || a <= 0) return {{0.0, 0.0, 1.0}};
+  std::vector<double> x, w;
+  const int nr = 12, nt = 32;
+  gauss01(nr, x, w);
+  for (int i = 0; i < nr; ++i)
+    for (int j = 0; j < nt; ++j) {
+      const double th = 2 * M_PI * (j + 0.5) / nt;
+      double r, weight;
+      if (load == LayerLoad::punch) {
+        // r = a sin φ removes the edge singularity: ∫ f r dr / (2πa√(a² − r²)) dθ = (1/2π) ∫∫ f sin φ dφ dθ
+        const double phi = 0.5 * M_PI * x[i];
+        r = a * std::sin(phi);
+        weight = 0.5 * M_PI * w[i] * std::sin(phi) / nt;
+      } else {
+        r = a * x[i];
+        weight = 2 * w[i] * x[i] / nt;
+      }
+      pts.push_back({r * std::cos(th), r * std::sin(th), weight});
+    }
+  return pts;
+}
+
+FeGreen::FeGreen(const ElasticModel& model, const Sensors& sensors,
+                 const std::function<void(const std::string&)>& progress)
+    : model_(model), sensors_(sensors), top_(model.mesh(), kTop) {
+  if (!model.punch_groups().empty()) throw std::invalid_argument("FeGreen needs a model without punch constraints");
+  const TetMesh& m = model.mesh();
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(3 * m.num_nodes());
+  for (size_t s = 0; s < sensors.positions.size(); ++s) {
+    if (progress)
+      progress("adjoint solves for sensor " + std::to_string(s + 1) + "/" + std::to_string(sensors.positions.size()));
+    for (bool disc : {false, true})
+      for (char reading : {'z', 'x'}) {
+        const Eigen::VectorXd w = disc_reading_functional(m, sensors.positions[s][0], sensors.positions[s][1],
+                                                          disc ? sensors.disc_diameter : 0.0, reading);
+        const MixedSolution y = model.solver().solve(zero, -w);
+        max_residual_ = std::max(max_residual_, y.residual);
+        adjoint_.push_back(y.u);
+      }
+  }
+}
+
+const Eigen::VectorXd& FeGreen::adjoint(int sensor, char reading, bool disc) const {
+  return adjoint_.at(4 * sensor + 2 * disc + (reading == 'x'));
+}
+
+Eigen::Vector3d FeGreen::displacement_at_top(const Eigen::VectorXd& y, double x, double yy) const {
+  double s, t;
+  const int f = top_.find(x, yy, s, t);
+  if (f < 0) throw std::out_of_range("load point (" + std::to_string(x) + ", " + std::to_string(yy) + ") is off the top");
+  const auto N = triangle_shape(s, t);
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 6; ++k) v += N[k] * y.segment<3>(3 * model_.mesh().faces(f, k));
+  return v;
+}
+
+GreenSample FeGreen::at(int sensor, bool disc, double ox, double oy, LayerLoad load, double radius) const {
+  const auto& yz = adjoint(sensor, 'z', disc);
+  const auto& yx = adjoint(sensor, 'x', disc);
+  const double cx = sensors_.positions[sensor][0] + ox, cy = sensors_.positions[sensor][1] + oy;
+  Eigen::Vector3d vz = Eigen::Vector3d::Zero(), vx = Eigen::Vector3d::Zero();
+  for (const auto& q : load_quadrature(load, radius)) {
+    vz += q[2] * displacement_at_top(yz, cx + q[0], cy + q[1]);
+    vx += q[2] * displacement_at_top(yx, cx + q[0], cy + q[1]);
+  }
+  // A force "along z" presses into the skin (−e_z); along x it is +e_x.
+  GreenSample g;
+  g.zz = -vz.z();
+  g.zx = -vx.z();
+  g.xz = vz.x();
+  g.xx = vx.x();
+  return g;
+}
+
+}  // namespace skinfem::green
