@@ -7,7 +7,7 @@
 // pressed normally or sheared along +x) is scanned along x through each sensor (y offset 0) at
 // calibration.spacing over |offset| ≤ max(4h, calibration.scan_half_width).
 // Writes DIR/green.csv (sensor,component,offset_x_mm,offset_y_mm,g_point_per_mm2,g_disc_per_mm2, and
-// g_exact_per_mm2 for flat layers: the exact layer value), DIR/green_maps.vtp (top surface; point data
+// g_exact_point_per_mm2, g_exact_disc_per_mm2 for flat layers: the exact layer values), DIR/green_maps.vtp (top surface; point data
 // g_<ab>_sensorNN_per_mm2: the sensor-disc reading for a unit point force at that surface point) and
 // DIR/summary.json (DOFs, adjoint solves, reciprocity check, timings, memory).
 #include <cmath>
@@ -56,26 +56,30 @@ int run_green(const Scene& scene, const std::string& out_dir) {
   const bool flat = scene.geometry.kind == GeometryKind::flat;
   std::ostringstream csv;
   csv.precision(10);
-  csv << "sensor,component,offset_x_mm,offset_y_mm,g_point_per_mm2,g_disc_per_mm2" << (flat ? ",g_exact_per_mm2" : "")
-      << "\n";
+  csv << "sensor,component,offset_x_mm,offset_y_mm,g_point_per_mm2,g_disc_per_mm2"
+      << (flat ? ",g_exact_point_per_mm2,g_exact_disc_per_mm2" : "") << "\n";
   nlohmann::json per_sensor = nlohmann::json::array();
   for (size_t s = 0; s < scene.sensors.positions.size(); ++s) {
     const auto& pos = scene.sensors.positions[s];
     const double h = shape.exact() ? shape.top_z(pos[0], pos[1]) : nominal_thickness(scene);
     const double half = std::max(4 * h, scene.calibration.scan_half_width);
     const auto prof = green::scan_profile(fe, s, LayerLoad::punch, radius, half, scene.calibration.spacing);
-    std::vector<GreenSample> exact;
-    if (flat) exact = green::exact_profile(green::LayerGreen(h, scene.material.nu, LayerLoad::punch, radius), prof.offset_x);
+    std::vector<GreenSample> exact, exact_disc;
+    if (flat) {
+      const green::LayerGreen layer(h, scene.material.nu, LayerLoad::punch, radius);
+      exact = green::exact_profile(layer, prof.offset_x);
+      exact_disc = green::exact_profile(layer, prof.offset_x, scene.sensors.disc_diameter);
+    }
     for (auto c : green::kComponents)
       for (size_t i = 0; i < prof.offset_x.size(); ++i) {
         csv << s + 1 << "," << green::component_name(c) << "," << prof.offset_x[i] << ",0,"
             << green::component(prof.point[i], c) << "," << green::component(prof.disc[i], c);
-        if (flat) csv << "," << green::component(exact[i], c);
+        if (flat) csv << "," << green::component(exact[i], c) << "," << green::component(exact_disc[i], c);
         csv << "\n";
       }
     nlohmann::json js = {{"sensor", s + 1}, {"h_mm", h}};
     if (flat) {
-      const auto err = green::max_error_over_peak(prof.point, exact);
+      const auto err = green::max_error_over_peak(prof.disc, exact_disc);
       for (size_t c = 0; c < 4; ++c) js["fe_vs_exact_max_err_over_peak"][green::component_name(green::kComponents[c])] = err[c];
     }
     per_sensor.push_back(js);

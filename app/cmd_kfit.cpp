@@ -73,8 +73,15 @@ int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& 
     if (flat) {
       const green::LayerGreen layer(h, scene.material.nu, load, radius);
       const auto exact = green::exact_profile(layer, prof.offset_x);
+      const auto exact_disc = green::exact_profile(layer, prof.offset_x, scene.sensors.disc_diameter);
       const green::KReport ex_k = green::fit_profile(prof.offset_x, exact, h);
-      const auto err = green::max_error_over_peak(prof.point, exact);
+      // Sensor readings (disc means) against the exact disc means; point values against point values.
+      const auto err = green::max_error_over_peak(prof.disc, exact_disc);
+      const auto err_point = green::max_error_over_peak(prof.point, exact);
+      js["k_central_rel_error"] = fe_k.k_central / ex_k.k_central - 1;
+      js["k_lsq_line_rel_error"] = fe_k.k_lsq_line / ex_k.k_lsq_line - 1;
+      for (size_t c = 0; c < 4; ++c)
+        js["fe_point_vs_exact_max_err_over_peak"][green::component_name(green::kComponents[c])] = err_point[c];
       js["k_central_exact"] = ex_k.k_central;
       js["k_lsq_line_exact"] = ex_k.k_lsq_line;
       js["components_exact"] = components_json(ex_k);

@@ -125,7 +125,6 @@ SensorReading BaseTraction::disc_mean(double x, double y, double diameter) const
 }
 
 Eigen::Vector3d BaseTraction::total_force() const { return impl_->total; }
-const Eigen::MatrixX3d& BaseTraction::nodal_traction() const { return impl_->t; }
 
 Eigen::VectorXd disc_reading_functional(const TetMesh& mesh, double x, double y, double diameter, char component) {
   // reading = Σ_q w_q N(x_q)ᵀ T, T = M⁻¹ R  ⇒  reading = (M⁻¹ Σ_q w_q N(x_q))ᵀ R.

@@ -31,8 +31,7 @@ class BaseTraction {
   SensorReading disc_mean(double x, double y, double diameter) const;
   // ∫ t dA over the whole base (N); equals the sum of the reactions.
   Eigen::Vector3d total_force() const;
-  // Nodal traction values: base node → t (rows follow base_nodes()).
-  const Eigen::MatrixX3d& nodal_traction() const;
+
 
  private:
   struct Impl;

@@ -10,12 +10,20 @@
 namespace skinfem {
 
 std::vector<int> punch_nodes(const TetMesh& m, const Punch& punch) {
-  std::vector<int> nodes;
+  // Corner nodes of the top inside the disc (the footprint mesh follows the punch circle), then the
+  // mid-edge nodes of top edges between two of them: exactly the nodes of the polygonal contact area.
   const double r = 0.5 * punch.diameter * (1 + 1e-9);
+  std::vector<bool> held(m.num_nodes(), false);
+  for (int i = 0; i < m.num_vertices; ++i)
+    held[i] = (m.node_marker(i) & kTop) && !(m.node_marker(i) & (kBase | kSide)) &&
+              std::hypot(m.nodes(i, 0) - punch.center[0], m.nodes(i, 1) - punch.center[1]) <= r;
+  for (int f = 0; f < m.faces.rows(); ++f)
+    if (m.face_marker(f) == kTop)
+      for (int e = 0; e < 3; ++e)
+        if (held[m.faces(f, e)] && held[m.faces(f, (e + 1) % 3)]) held[m.faces(f, 3 + e)] = true;
+  std::vector<int> nodes;
   for (int i = 0; i < m.num_nodes(); ++i)
-    if ((m.node_marker(i) & kTop) && !(m.node_marker(i) & (kBase | kSide)) &&
-        std::hypot(m.nodes(i, 0) - punch.center[0], m.nodes(i, 1) - punch.center[1]) <= r)
-      nodes.push_back(i);
+    if (held[i]) nodes.push_back(i);
   if (nodes.empty())
     throw std::invalid_argument("punch at (" + std::to_string(punch.center[0]) + ", " +
                                 std::to_string(punch.center[1]) + ") holds no top node: refine the mesh there");

@@ -19,7 +19,8 @@ struct ModelOptions {
   double tolerance = 1e-10;
 };
 
-// The nodes a rigid flat punch holds: top-surface nodes with (x, y) within its radius.
+// The nodes a rigid flat punch holds: top corner nodes with (x, y) within its radius and the mid-edge
+// nodes between them (the mesh follows the punch circle, so this is the inscribed polygon).
 // The punch is frictionless: it prescribes u_z only (at ν = 0.5 a half-space does not couple normal
 // and tangential contact, so friction would not change its pressure; see REFERENCES.md).
 std::vector<int> punch_nodes(const TetMesh& mesh, const Punch& punch);

@@ -47,9 +47,19 @@ KReport fit_profile(const std::vector<double>& x, const std::vector<GreenSample>
   return r;
 }
 
-std::vector<GreenSample> exact_profile(const LayerGreen& layer, const std::vector<double>& x) {
+std::vector<GreenSample> exact_profile(const LayerGreen& layer, const std::vector<double>& x, double disc_diameter) {
+  // The disc mean over sensor positions equals the mean over load offsets (offset = force − sensor).
+  const auto rule = disc_diameter > 0 ? load_quadrature(LayerLoad::uniform, 0.5 * disc_diameter, 6, 12)
+                                      : load_quadrature(LayerLoad::point, 0);
   std::vector<GreenSample> g;
-  for (double xi : x) g.push_back(layer.at(xi, 0.0));
+  for (double xi : x) {
+    GreenSample sum;
+    for (const auto& q : rule) {
+      const GreenSample v = layer.at(xi - q[0], -q[1]);
+      sum.zz += q[2] * v.zz, sum.zx += q[2] * v.zx, sum.xz += q[2] * v.xz, sum.xx += q[2] * v.xx;
+    }
+    g.push_back(sum);
+  }
   return g;
 }
 

@@ -33,8 +33,10 @@ struct KReport {
 // k fits of a profile of point values along x (offset 0 must be present) for thickness h.
 KReport fit_profile(const std::vector<double>& x, const std::vector<GreenSample>& g, double h);
 
-// The exact flat-layer reference on the same offsets.
-std::vector<GreenSample> exact_profile(const LayerGreen& layer, const std::vector<double>& x);
+// The exact flat-layer reference on the same offsets: point values, or (disc_diameter > 0) the mean over
+// the sensor disc (Gauss rule, 6 radii × 12 angles: the field varies on the scale h ≫ the disc, so the
+// rule's error is far below the FE's).
+std::vector<GreenSample> exact_profile(const LayerGreen& layer, const std::vector<double>& x, double disc_diameter = 0);
 
 // max over the offsets of |fe − exact| / max|exact|, per component.
 std::array<double, 4> max_error_over_peak(const std::vector<GreenSample>& fe, const std::vector<GreenSample>& exact);

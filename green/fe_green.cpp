@@ -22,11 +22,10 @@ void gauss01(int n, std::vector<double>& x, std::vector<double>& w) {
 }
 }  // namespace
 
-std::vector<std::array<double, 3>> load_quadrature(LayerLoad load, double a) {
+std::vector<std::array<double, 3>> load_quadrature(LayerLoad load, double a, int nr, int nt) {
   std::vector<std::array<double, 3>> pts;
   if (load == LayerLoad::point || a <= 0) return {{0.0, 0.0, 1.0}};
   std::vector<double> x, w;
-  const int nr = 12, nt = 32;
   gauss01(nr, x, w);
   for (int i = 0; i < nr; ++i)
     for (int j = 0; j < nt; ++j) {

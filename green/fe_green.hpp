@@ -22,7 +22,8 @@ namespace skinfem::green {
 // Quadrature of a unit load spread over a disc of radius a with the profile of LayerLoad:
 // point (a ignored), punch (rigid-punch half-space profile 1/(2πa√(a² − r²)), also for the bonded
 // tangential punch, Johnson §7.1) or uniform (1/(πa²)). Points (dx, dy, weight), weights sum to 1.
-std::vector<std::array<double, 3>> load_quadrature(LayerLoad load, double radius);
+// nr × nt points (radial Gauss × uniform angles).
+std::vector<std::array<double, 3>> load_quadrature(LayerLoad load, double radius, int nr = 12, int nt = 32);
 
 class FeGreen {
  public:

@@ -43,6 +43,16 @@ OmMesh to_openmesh(const SurfaceMesh& s, size_t& added) {
   return m;
 }
 
+// Whether a footprint triangle lies inside one of the circles (its centroid does: the
+// triangulation follows the circles, so no triangle straddles one).
+bool inside_circle(const Footprint& fp, int a, int b, int c, const std::vector<Circle>& circles) {
+  const double x = (fp.points(a, 0) + fp.points(b, 0) + fp.points(c, 0)) / 3;
+  const double y = (fp.points(a, 1) + fp.points(b, 1) + fp.points(c, 1)) / 3;
+  for (const auto& circle : circles)
+    if (std::hypot(x - circle.centre[0], y - circle.centre[1]) < circle.radius) return true;
+  return false;
+}
+
 double signed_volume(const SurfaceMesh& s) {
   double v = 0;
   for (int t = 0; t < s.triangles.rows(); ++t) {
@@ -120,7 +130,7 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size) {
     s.triangles.row(f) << a, c, b;  // base: outward normal −z
     s.marker(f++) = kBase;
     s.triangles.row(f) << nv + a, nv + b, nv + c;
-    s.marker(f++) = kTop;
+    s.marker(f++) = kTop | (inside_circle(fp, a, b, c, circles) ? kKeepOutline : 0);
   }
   for (int k = 0; k < nb; ++k)
     for (int j = 0; j < layers; ++j) {  // counter-clockwise rim × up = outward

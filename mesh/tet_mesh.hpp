@@ -8,6 +8,8 @@ namespace skinfem {
 
 // Boundary parts; a face carries exactly one, a node the OR of those of its faces.
 enum BoundaryMarker : int { kBase = 1, kTop = 2, kSide = 4 };
+// Extra bit on SurfaceMesh markers only: a region whose outline TetGen must keep (a punch disc).
+inline constexpr int kKeepOutline = 8;
 
 using RowMatrixX3d = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 using RowMatrixX3i = Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor>;

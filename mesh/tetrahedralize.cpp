@@ -68,6 +68,8 @@ LinearTets tetrahedralize(const SurfaceMesh& surface, const SizingField& size, c
   in.tetunsuitable = too_big;
 
   std::ostringstream sw;
+  // TetGen merges coplanar triangles with equal markers into one facet and remeshes it; a region
+  // that must keep its outline (a punch disc) carries the extra kKeepOutline bit in its marker.
   sw << "pq" << controls.max_radius_edge << "/" << controls.min_dihedral_deg << "Q";
   std::string switches = sw.str();
   std::vector<char> buf(switches.begin(), switches.end());
@@ -97,7 +99,7 @@ LinearTets tetrahedralize(const SurfaceMesh& surface, const SizingField& size, c
   std::map<std::array<int, 3>, int> marker_of;
   for (int f = 0; f < out.numberoftrifaces; ++f) {
     const int* v = &out.trifacelist[3 * f];
-    marker_of[sorted(v[0] - base, v[1] - base, v[2] - base)] = out.trifacemarkerlist[f];
+    marker_of[sorted(v[0] - base, v[1] - base, v[2] - base)] = out.trifacemarkerlist[f] & ~kKeepOutline;
   }
   std::map<std::array<int, 3>, std::array<int, 4>> face_count;  // key → (count, a, b, c) outward
   static const int local[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};  // outward for det > 0

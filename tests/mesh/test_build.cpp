@@ -179,3 +179,35 @@ TEST(MeshBuild, FlatLayerVolumeIsExact) {
 
 }  // namespace
 }  // namespace skinfem
+
+namespace skinfem {
+namespace {
+
+TEST(MeshBuild, TopFacesFollowThePunchEdge) {
+  // A rigid punch holds exactly its disc only if no top face straddles the punch circle: every
+  // face has its corners all within or all outside (corners on the circle count as both).
+  for (GeometryKind kind : {GeometryKind::flat, GeometryKind::cap}) {
+    Scene s = small_cap(1.0);
+    s.geometry.kind = kind;
+    s.geometry.flat = {3.0, 6.0};
+    s.loads.punches = {Punch{{0.7, -0.3}, 0.5, 1.0, std::nullopt}};
+    const TetMesh m = build_mesh(s);
+    int straddling = 0, inside = 0;
+    for (int f = 0; f < m.faces.rows(); ++f) {
+      if (m.face_marker(f) != kTop) continue;
+      bool in = false, out = false;
+      for (int k = 0; k < 3; ++k) {
+        const double r = std::hypot(m.nodes(m.faces(f, k), 0) - 0.7, m.nodes(m.faces(f, k), 1) + 0.3);
+        in |= r < 0.25 * (1 - 1e-9);
+        out |= r > 0.25 * (1 + 1e-9);
+      }
+      straddling += in && out;
+      inside += in && !out;
+    }
+    EXPECT_EQ(straddling, 0);
+    EXPECT_GT(inside, 0);
+  }
+}
+
+}  // namespace
+}  // namespace skinfem

@@ -85,7 +85,7 @@ TEST(SceneLoad, Candelier2011) {
   EXPECT_DOUBLE_EQ(s.geometry.cap.h, 3.04);
   EXPECT_DOUBLE_EQ(s.geometry.cap.apex_x, 0.5);
   EXPECT_DOUBLE_EQ(s.geometry.cap.apex_y, 0.0);
-  EXPECT_DOUBLE_EQ(s.geometry.cap.truncation_radius, 12.0);
+  EXPECT_DOUBLE_EQ(s.geometry.cap.truncation_radius, 18.0);
   EXPECT_EQ(s.geometry.side, SideCondition::free);
   EXPECT_DOUBLE_EQ(nominal_thickness(s), 3.04);
   EXPECT_DOUBLE_EQ(s.material.E, 3.0);
@@ -96,17 +96,13 @@ TEST(SceneLoad, Candelier2011) {
     EXPECT_EQ(s.sensors.positions[i][1], 0.0) << "sensor " << i + 1;
   }
   EXPECT_DOUBLE_EQ(s.sensors.disc_diameter, 0.2);
-  EXPECT_DOUBLE_EQ(s.mesh.h_min, 0.25);
-  EXPECT_DOUBLE_EQ(s.mesh.growth, 1.3);
-  EXPECT_DOUBLE_EQ(s.mesh.h_max, 2.0);
   EXPECT_TRUE(s.mesh.refine_sensors);
   EXPECT_DOUBLE_EQ(s.mesh.max_radius_edge, 1.5);
   EXPECT_DOUBLE_EQ(s.mesh.min_dihedral_deg, 10);
-  ASSERT_EQ(s.mesh.regions.size(), 1u);
+  // Mesh sizes are tuned for cost versus error (README); the region along the sensor line is physics.
+  ASSERT_FALSE(s.mesh.regions.empty());
   EXPECT_EQ(s.mesh.regions[0].a, (Vec2{-4.5, 0.0}));
   EXPECT_EQ(s.mesh.regions[0].b, (Vec2{4.5, 0.0}));
-  EXPECT_DOUBLE_EQ(s.mesh.regions[0].radius, 0.5);
-  EXPECT_DOUBLE_EQ(s.mesh.regions[0].h, 0.25);
   EXPECT_TRUE(s.loads.punches.empty());
   EXPECT_TRUE(s.loads.patches.empty());
   EXPECT_DOUBLE_EQ(s.calibration.punch_diameter, 0.5);
@@ -119,20 +115,16 @@ TEST(SceneLoad, FlatLayer) {
   EXPECT_EQ(s.name, "flat_layer");
   ASSERT_EQ(s.geometry.kind, GeometryKind::flat);
   EXPECT_DOUBLE_EQ(s.geometry.flat.h, 3.04);
-  EXPECT_DOUBLE_EQ(s.geometry.flat.half_width, 15.0);
+  EXPECT_DOUBLE_EQ(s.geometry.flat.half_width, 20.0);
   EXPECT_DOUBLE_EQ(nominal_thickness(s), 3.04);
   EXPECT_DOUBLE_EQ(s.material.E, 3.0);
   EXPECT_DOUBLE_EQ(s.material.nu, 0.5);
   ASSERT_EQ(s.sensors.positions.size(), 1u);
   EXPECT_EQ(s.sensors.positions[0], (Vec2{0.0, 0.0}));
   EXPECT_DOUBLE_EQ(s.sensors.disc_diameter, 0.2);
-  EXPECT_DOUBLE_EQ(s.mesh.h_min, 0.15);
-  EXPECT_DOUBLE_EQ(s.mesh.growth, 1.3);
-  EXPECT_DOUBLE_EQ(s.mesh.h_max, 2.0);
-  ASSERT_EQ(s.mesh.regions.size(), 1u);
+  ASSERT_FALSE(s.mesh.regions.empty());
   EXPECT_EQ(s.mesh.regions[0].a, (Vec2{0.0, 0.0}));
   EXPECT_EQ(s.mesh.regions[0].b, (Vec2{0.0, 0.0}));
-  EXPECT_DOUBLE_EQ(s.mesh.regions[0].radius, 1.0);
   ASSERT_EQ(s.loads.punches.size(), 1u);
   const Punch& p = s.loads.punches[0];
   EXPECT_EQ(p.center, (Vec2{0.0, 0.0}));
