@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"direct_ldlt", "schur_cg"}))
       ->capture_default_str();
   auto* study = cli.add_subcommand("study", "refinement study of the scene's load with both solvers (study.json, study.csv)");
-  std::vector<double> scales{2.0, 1.41, 1.0, 0.71};
+  std::vector<double> scales{2.0, 1.41, 1.0};
   study->add_option("--scales", scales, "factors applied to h_min and h_max, coarse to fine")
       ->delimiter(',')
       ->check(CLI::PositiveNumber)

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "fem/elastic_model.hpp"
+#include "green/layer_exact.hpp"
 #include "mesh/build.hpp"
 #include "mesh/shape.hpp"
 
@@ -88,6 +89,21 @@ StudyResult refinement_study(const Scene& base_scene, const std::vector<double>&
     const double d = L.back().center_ratio - L[L.size() - 2].center_ratio;
     out.finest_error_estimate = std::abs(d) / (std::pow(ratio, p) - 1);
     out.extrapolated = L.back().center_ratio + d / (std::pow(ratio, p) - 1);
+  }
+  if (base_scene.geometry.kind == GeometryKind::flat) {
+    const double h = base_scene.geometry.flat.h;
+    const bool punch = !base_scene.loads.punches.empty();
+    const double a = 0.5 * (punch ? base_scene.loads.punches[0].diameter : base_scene.loads.patches[0].diameter);
+    const green::LayerGreen layer(h, base_scene.material.nu, punch ? green::LayerLoad::punch : green::LayerLoad::uniform, a);
+    out.exact = layer.at(0, 0).zz / (3 / (2 * M_PI * h * h));
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (const auto& level : L) {
+      out.error_vs_exact.push_back(level.center_ratio - *out.exact);
+      const double x = std::log(level.scale), y = std::log(std::abs(out.error_vs_exact.back()));
+      sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    const double n = L.size();
+    if (L.size() >= 2) out.order_vs_exact = (n * sxy - sx * sy) / (n * sxx - sx * sx);
   }
   return out;
 }

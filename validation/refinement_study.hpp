@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,12 @@ struct StudyResult {
   // estimate of its limit and of the finest level's error.
   std::vector<double> observed_order;
   double extrapolated = 0, finest_error_estimate = 0;
+  // Flat layers: the exact layer value (Hankel transforms) for the same load profile — the half-space
+  // rigid-punch pressure for a punch, uniform for a patch — with each level's error and the observed
+  // order fitted by least squares over all levels.
+  std::optional<double> exact;
+  std::vector<double> error_vs_exact;
+  double order_vs_exact = 0;
 };
 
 StudyResult refinement_study(const Scene& scene, const std::vector<double>& scales,
