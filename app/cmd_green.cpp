@@ -7,9 +7,9 @@
 // pressed normally or sheared along +x) is scanned along x through each sensor (y offset 0) at
 // calibration.spacing over |offset| ≤ max(4h, calibration.scan_half_width).
 // Writes DIR/green.csv (sensor,component,offset_x_mm,offset_y_mm,g_point_per_mm2,g_disc_per_mm2, and
-// g_exact_point_per_mm2, g_exact_disc_per_mm2 for flat layers: the exact layer values), DIR/green_maps.vtp (top surface; point data
-// g_<ab>_sensorNN_per_mm2: the sensor-disc reading for a unit point force at that surface point) and
-// DIR/summary.json (DOFs, adjoint solves, reciprocity check, timings, memory).
+// g_exact_point_per_mm2, g_exact_disc_per_mm2 for flat layers: the exact layer values), DIR/green_maps.vtp
+// (top surface; point data g_<ab>_sensorNN_per_mm2: the sensor-disc reading for a unit point force at that
+// surface point) and DIR/summary.json (DOFs, adjoint solves, reciprocity check, timings, memory).
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -47,7 +47,8 @@ int run_green(const Scene& scene, const std::string& out_dir) {
   const SensorReading direct_reading =
       BaseTraction(mesh, direct.reactions).disc_mean(s0[0], s0[1], scene.sensors.disc_diameter);
   const GreenSample adjoint_value = fe.at(0, true, 1.0, 0.0, LayerLoad::point, 0);
-  const double reciprocity_rel = std::abs(direct_reading.sigma_z - adjoint_value.zz) / std::abs(direct_reading.sigma_z);
+  const double reciprocity_rel =
+      std::abs(direct_reading.sigma_z - adjoint_value.zz) / std::abs(direct_reading.sigma_z);
   wall["reciprocity_check"] = clock.seconds();
 
   clock = Stopwatch();
@@ -80,7 +81,8 @@ int run_green(const Scene& scene, const std::string& out_dir) {
     nlohmann::json js = {{"sensor", s + 1}, {"h_mm", h}};
     if (flat) {
       const auto err = green::max_error_over_peak(prof.disc, exact_disc);
-      for (size_t c = 0; c < 4; ++c) js["fe_vs_exact_max_err_over_peak"][green::component_name(green::kComponents[c])] = err[c];
+      for (size_t c = 0; c < 4; ++c)
+        js["fe_vs_exact_max_err_over_peak"][green::component_name(green::kComponents[c])] = err[c];
     }
     per_sensor.push_back(js);
   }
@@ -101,22 +103,26 @@ int run_green(const Scene& scene, const std::string& out_dir) {
   prepare_output_dir(out_dir);
   write_text_atomic(out_dir + "/green.csv", csv.str());
   write_surface_vtp(out_dir + "/green_maps.vtp", mesh, kTop, maps);
-  nlohmann::json summary = {{"scene", scene_json(scene)},
-                            {"dofs", model.solver().free_dofs()},
-                            {"sensors", per_sensor},
-                            {"adjoint_solves", fe.adjoint_solves()},
-                            {"max_adjoint_residual", fe.max_adjoint_residual()},
-                            {"reciprocity_check_rel", reciprocity_rel},
-                            {"load_model", "rigid-punch half-space profile F/(2πa√(a²−r²)), normal and tangential"},
-                            {"punch_diameter_mm", scene.calibration.punch_diameter},
-                            {"wall_s", wall},
-                            {"wall_total_s", total.seconds()},
-                            {"peak_rss_mb", peak_rss_mb()}};
+  nlohmann::json summary = {
+      {"scene", scene_json(scene)},
+      {"dofs", model.solver().free_dofs()},
+      {"sensors", per_sensor},
+      {"adjoint_solves", fe.adjoint_solves()},
+      {"max_adjoint_residual", fe.max_adjoint_residual()},
+      {"reciprocity_check_rel", reciprocity_rel},
+      {"load_model", "rigid-punch half-space profile F/(2πa√(a²−r²)), normal and tangential"},
+      {"punch_diameter_mm", scene.calibration.punch_diameter},
+      {"wall_s", wall},
+      {"wall_total_s", total.seconds()},
+      {"peak_rss_mb", peak_rss_mb()}};
   write_json(out_dir + "/summary.json", summary);
-  std::printf("green %s: %zu sensors × 4 components, %d adjoint solves on %d DOFs; %.1f s (factor %.1f s), peak %.0f MB\n",
-              scene.name.c_str(), scene.sensors.positions.size(), fe.adjoint_solves(), model.solver().free_dofs(),
-              total.seconds(), wall["factor"].get<double>(), peak_rss_mb());
-  std::printf("  reciprocity check (direct solve vs adjoint, sensor 1, offset 1 mm): %.1e relative\n", reciprocity_rel);
+  std::printf(
+      "green %s: %zu sensors × 4 components, %d adjoint solves on %d DOFs; %.1f s (factor %.1f s), peak %.0f "
+      "MB\n",
+      scene.name.c_str(), scene.sensors.positions.size(), fe.adjoint_solves(), model.solver().free_dofs(),
+      total.seconds(), wall["factor"].get<double>(), peak_rss_mb());
+  std::printf("  reciprocity check (direct solve vs adjoint, sensor 1, offset 1 mm): %.1e relative\n",
+              reciprocity_rel);
   std::printf("  wrote %s/green.csv, green_maps.vtp, summary.json\n", out_dir.c_str());
   return 0;
 }

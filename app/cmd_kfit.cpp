@@ -1,7 +1,8 @@
 // skinfem kfit — the k correction of the paper (§III (iii)), computed rather than quoted.
 //
 //   $ skinfem kfit scenes/flat_layer.json --out out/kfit
-//   kfit flat_layer: h 3.04 mm, nu 0.5, punch 0.5 mm: k_central 1.550 (exact 1.550), k_lsq_line 1.609 (exact 1.609)
+//   kfit flat_layer: h 3.04 mm, nu 0.5, punch 0.5 mm: k_central 1.550 (exact 1.550), k_lsq_line 1.609
+//   (exact 1.609)
 //
 // Definitions (also in the README and kfit.json):
 //   k_central  = g_zz at zero offset (point value at the base, no sensor averaging) / (3/(2πh²));
@@ -27,8 +28,8 @@ namespace {
 nlohmann::json components_json(const green::KReport& r) {
   nlohmann::json j;
   for (size_t c = 0; c < 4; ++c)
-    j[green::component_name(green::kComponents[c])] = {{"k", r.components[c].k},
-                                                        {"rms_residual_over_peak", r.components[c].rms_residual_over_peak}};
+    j[green::component_name(green::kComponents[c])] = {
+        {"k", r.components[c].k}, {"rms_residual_over_peak", r.components[c].rms_residual_over_peak}};
   return j;
 }
 }  // namespace
@@ -60,9 +61,12 @@ int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& 
     const double h = shape.exact() ? shape.top_z(pos[0], pos[1]) : nominal_thickness(scene);
     const auto prof = green::scan_profile(fe, s, load, radius, 4 * h, scene.calibration.spacing);
     const green::KReport fe_k = green::fit_profile(prof.offset_x, prof.point, h);
-    nlohmann::json js = {{"sensor", s + 1},           {"x_mm", pos[0]},
-                         {"y_mm", pos[1]},            {"h_mm", h},
-                         {"k_central", fe_k.k_central}, {"k_lsq_line", fe_k.k_lsq_line},
+    nlohmann::json js = {{"sensor", s + 1},
+                         {"x_mm", pos[0]},
+                         {"y_mm", pos[1]},
+                         {"h_mm", h},
+                         {"k_central", fe_k.k_central},
+                         {"k_lsq_line", fe_k.k_lsq_line},
                          {"components", components_json(fe_k)}};
     if (!flat && shape.exact()) {
       std::vector<double> zz;
@@ -81,7 +85,8 @@ int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& 
       js["k_central_rel_error"] = fe_k.k_central / ex_k.k_central - 1;
       js["k_lsq_line_rel_error"] = fe_k.k_lsq_line / ex_k.k_lsq_line - 1;
       for (size_t c = 0; c < 4; ++c)
-        js["fe_point_vs_exact_max_err_over_peak"][green::component_name(green::kComponents[c])] = err_point[c];
+        js["fe_point_vs_exact_max_err_over_peak"][green::component_name(green::kComponents[c])] =
+            err_point[c];
       js["k_central_exact"] = ex_k.k_central;
       js["k_lsq_line_exact"] = ex_k.k_lsq_line;
       js["components_exact"] = components_json(ex_k);
@@ -98,13 +103,15 @@ int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& 
   summary.erase("sensor");
   summary["nu"] = scene.material.nu;
   summary["load"] = load == LayerLoad::point ? "point" : "punch";
-  summary["load_model"] = load == LayerLoad::point
-                              ? "unit point force"
-                              : "rigid-punch half-space profile F/(2πa√(a²−r²)) for both normal and tangential load";
+  summary["load_model"] =
+      load == LayerLoad::point
+          ? "unit point force"
+          : "rigid-punch half-space profile F/(2πa√(a²−r²)) for both normal and tangential load";
   summary["punch_diameter_mm"] = load == LayerLoad::point ? 0.0 : scene.calibration.punch_diameter;
   summary["definitions"] = {
       {"k_central", "g_zz at zero offset (point value at the base, no sensor averaging) / (3/(2*pi*h^2))"},
-      {"k_lsq_line", "least-squares fit of k*g_half(sqrt(k)x, 0) to g_zz along y = 0, |x| <= 3h, uniform weight"}};
+      {"k_lsq_line",
+       "least-squares fit of k*g_half(sqrt(k)x, 0) to g_zz along y = 0, |x| <= 3h, uniform weight"}};
   summary["sensors"] = sensors;
   summary["dofs"] = model.solver().free_dofs();
   summary["adjoint_solves"] = fe.adjoint_solves();
@@ -128,10 +135,13 @@ int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& 
 
   prepare_output_dir(out_dir);
   write_json(out_dir + "/kfit.json", summary);
-  std::printf("kfit %s: h %.3f mm, nu %.3g, %s load; %d DOFs, %.2f s (mesh %.2f, assemble %.2f, factor %.2f, adjoint %.2f)\n",
-              scene.name.c_str(), first["h_mm"].get<double>(), scene.material.nu, summary["load"].get<std::string>().c_str(),
-              model.solver().free_dofs(), total.seconds(), wall["mesh"].get<double>(), wall["assemble"].get<double>(),
-              wall["factor"].get<double>(), wall["adjoint_solves"].get<double>());
+  std::printf(
+      "kfit %s: h %.3f mm, nu %.3g, %s load; %d DOFs, %.2f s (mesh %.2f, assemble %.2f, factor %.2f, adjoint "
+      "%.2f)\n",
+      scene.name.c_str(), first["h_mm"].get<double>(), scene.material.nu,
+      summary["load"].get<std::string>().c_str(), model.solver().free_dofs(), total.seconds(),
+      wall["mesh"].get<double>(), wall["assemble"].get<double>(), wall["factor"].get<double>(),
+      wall["adjoint_solves"].get<double>());
   std::printf("  k_central %.5f, k_lsq_line %.5f", kc, kl);
   if (flat)
     std::printf(" (exact layer: %.5f, %.5f); FE vs exact max error / peak: zz %.1e zx %.1e xz %.1e xx %.1e",

@@ -60,7 +60,8 @@ int run_solve(const Scene& scene, const std::string& out_dir, SolverKind solver)
   }
   if (normal_force != 0) {
     const double h = SkinShape(scene.geometry).top_z(centre[0], centre[1]);
-    summary["center_ratio"] = base.reading_at(centre[0], centre[1]).sigma_z / (3 * normal_force / (2 * M_PI * h * h));
+    summary["center_ratio"] =
+        base.reading_at(centre[0], centre[1]).sigma_z / (3 * normal_force / (2 * M_PI * h * h));
   }
 
   clock = Stopwatch();
@@ -90,16 +91,19 @@ int run_solve(const Scene& scene, const std::string& out_dir, SolverKind solver)
   summary["applied_force_N"] = {applied[0], applied[1], applied[2]};
   summary["base_force_N"] = {base.total_force()[0], base.total_force()[1], base.total_force()[2]};
   summary["base_force_balance_rel"] = balance;
-  for (const auto& p : r.punches) summary["punches"].push_back({{"force_N", p.force_N}, {"depth_mm", p.displacement_mm}});
+  for (const auto& p : r.punches)
+    summary["punches"].push_back({{"force_N", p.force_N}, {"depth_mm", p.displacement_mm}});
   write_json(out_dir + "/summary.json", summary);
 
-  std::printf("solve %s: %d DOFs (%s); mesh %.2f s, assemble %.2f s, factor %.2f s, solve %.2f s; peak %.0f MB\n",
-              scene.name.c_str(), model.solver().free_dofs(), to_string(solver), wall["mesh"].get<double>(),
-              wall["assemble"].get<double>(), wall["factor"].get<double>(), wall["solve"].get<double>(),
-              peak_rss_mb());
+  std::printf(
+      "solve %s: %d DOFs (%s); mesh %.2f s, assemble %.2f s, factor %.2f s, solve %.2f s; peak %.0f MB\n",
+      scene.name.c_str(), model.solver().free_dofs(), to_string(solver), wall["mesh"].get<double>(),
+      wall["assemble"].get<double>(), wall["factor"].get<double>(), wall["solve"].get<double>(),
+      peak_rss_mb());
   std::printf("  residual %.1e, applied force (%.4g, %.4g, %.4g) N, base balance %.1e", r.solution.residual,
               applied[0], applied[1], applied[2], balance);
-  if (summary.contains("center_ratio")) std::printf(", center_ratio %.5f", summary["center_ratio"].get<double>());
+  if (summary.contains("center_ratio"))
+    std::printf(", center_ratio %.5f", summary["center_ratio"].get<double>());
   std::printf("\n  wrote %s/fields.vtu, sensors.csv, summary.json\n", out_dir.c_str());
   return 0;
 }

@@ -29,23 +29,27 @@ int run_study(const Scene& scene, const std::string& out_dir, const std::vector<
               "solve_s", "extra_s", "iters", "center_ratio", "change");
   for (size_t i = 0; i < study.levels.size(); ++i) {
     const auto& L = study.levels[i];
-    nlohmann::json jl = {{"scale", L.scale},          {"nodes", L.nodes},
-                         {"elements", L.elements},    {"dofs", L.dofs},
-                         {"center_ratio", L.center_ratio}, {"base_force_balance_rel", L.force_balance_rel},
+    nlohmann::json jl = {{"scale", L.scale},
+                         {"nodes", L.nodes},
+                         {"elements", L.elements},
+                         {"dofs", L.dofs},
+                         {"center_ratio", L.center_ratio},
+                         {"base_force_balance_rel", L.force_balance_rel},
                          {"wall_s", {{"mesh", L.mesh_s}, {"assemble", L.assemble_s}}}};
     if (i > 0) jl["center_ratio_change"] = L.center_ratio - study.levels[i - 1].center_ratio;
     std::printf("%6.3f %8d %8.2f %7.2f", L.scale, L.dofs, L.mesh_s, L.assemble_s);
     for (const auto& s : L.solvers) {
-      jl["solvers"][to_string(s.kind)] = {{"factor_s", s.factor_s},    {"solve_s", s.first_solve_s},
+      jl["solvers"][to_string(s.kind)] = {{"factor_s", s.factor_s},       {"solve_s", s.first_solve_s},
                                           {"extra_rhs_s", s.extra_rhs_s}, {"rss_mb", s.rss_mb},
-                                          {"residual", s.residual},     {"iterations", s.iterations}};
-      std::printf(" | %-11s %8.2f %8.2f %8.3f %8.0f", to_string(s.kind), s.factor_s, s.first_solve_s, s.extra_rhs_s,
-                  s.rss_mb);
+                                          {"residual", s.residual},       {"iterations", s.iterations}};
+      std::printf(" | %-11s %8.2f %8.2f %8.3f %8.0f", to_string(s.kind), s.factor_s, s.first_solve_s,
+                  s.extra_rhs_s, s.rss_mb);
       if (s.kind == SolverKind::schur_cg) std::printf(" %5d", s.iterations);
 
-      csv << L.scale << "," << L.nodes << "," << L.elements << "," << L.dofs << "," << L.mesh_s << "," << L.assemble_s
-          << "," << to_string(s.kind) << "," << s.factor_s << "," << s.first_solve_s << "," << s.extra_rhs_s << ","
-          << s.rss_mb << "," << s.residual << "," << s.iterations << "," << L.center_ratio << "\n";
+      csv << L.scale << "," << L.nodes << "," << L.elements << "," << L.dofs << "," << L.mesh_s << ","
+          << L.assemble_s << "," << to_string(s.kind) << "," << s.factor_s << "," << s.first_solve_s << ","
+          << s.extra_rhs_s << "," << s.rss_mb << "," << s.residual << "," << s.iterations << ","
+          << L.center_ratio << "\n";
     }
     std::printf(" | %12.6f", L.center_ratio);
     if (i > 0) std::printf(" %+10.2e", L.center_ratio - study.levels[i - 1].center_ratio);
@@ -68,8 +72,8 @@ int run_study(const Scene& scene, const std::string& out_dir, const std::vector<
     summary["center_ratio_exact_layer"] = *study.exact;
     summary["center_ratio_error_vs_exact"] = study.error_vs_exact;
     summary["center_ratio_order_vs_exact"] = study.order_vs_exact;
-    std::printf("exact layer (Hankel, %s profile): %.6f; errors", scene.loads.punches.empty() ? "uniform" : "rigid-punch",
-                *study.exact);
+    std::printf("exact layer (Hankel, %s profile): %.6f; errors",
+                scene.loads.punches.empty() ? "uniform" : "rigid-punch", *study.exact);
     for (double e : study.error_vs_exact) std::printf(" %+.2e", e);
     std::printf("; least-squares order %.2f\n", study.order_vs_exact);
   }

@@ -15,12 +15,14 @@ int main(int argc, char** argv) {
 
   auto* mesh =
       cli.add_subcommand("mesh", "mesh the scene's skin (writes mesh.vtu, boundary.vtu, summary.json)");
-  auto* solve = cli.add_subcommand("solve", "solve the scene's loads (writes fields.vtu, sensors.csv, summary.json)");
+  auto* solve =
+      cli.add_subcommand("solve", "solve the scene's loads (writes fields.vtu, sensors.csv, summary.json)");
   std::string solver_name = "direct_ldlt";
   solve->add_option("--solver", solver_name, "saddle-point solver")
       ->check(CLI::IsMember({"direct_ldlt", "schur_cg"}))
       ->capture_default_str();
-  auto* study = cli.add_subcommand("study", "refinement study of the scene's load with both solvers (study.json, study.csv)");
+  auto* study = cli.add_subcommand(
+      "study", "refinement study of the scene's load with both solvers (study.json, study.csv)");
   std::vector<double> scales{2.0, 1.41, 1.0};
   study->add_option("--scales", scales, "factors applied to h_min and h_max, coarse to fine")
       ->delimiter(',')
@@ -31,7 +33,8 @@ int main(int argc, char** argv) {
   kfit->add_option("--load", load_name, "calibration load model")
       ->check(CLI::IsMember({"punch", "point"}))
       ->capture_default_str();
-  auto* green_cmd = cli.add_subcommand("green", "FE Green tensors of every sensor (green.csv, green_maps.vtp)");
+  auto* green_cmd =
+      cli.add_subcommand("green", "FE Green tensors of every sensor (green.csv, green_maps.vtp)");
   for (auto* sub : {mesh, solve, study, kfit, green_cmd}) {
     sub->add_option("scene", scene_path, "scene JSON file")->required();
     sub->add_option("--out", out_dir, "output directory")->capture_default_str();
@@ -39,13 +42,15 @@ int main(int argc, char** argv) {
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = cli.exit(e);
-    return code == 0 ? 0 : 2;
+    if (e.get_exit_code() == 0) return cli.exit(e);  // --help
+    std::cerr << "skinfem: " << e.what() << std::endl;
+    return 2;
   }
   try {
     const skinfem::Scene scene = skinfem::load_scene(scene_path);
     if (mesh->parsed()) return skinfem::app::run_mesh(scene, out_dir);
-    const auto solver = solver_name == "schur_cg" ? skinfem::SolverKind::schur_cg : skinfem::SolverKind::direct_ldlt;
+    const auto solver =
+        solver_name == "schur_cg" ? skinfem::SolverKind::schur_cg : skinfem::SolverKind::direct_ldlt;
     if (solve->parsed()) return skinfem::app::run_solve(scene, out_dir, solver);
     if (green_cmd->parsed()) return skinfem::app::run_green(scene, out_dir);
     if (kfit->parsed()) return skinfem::app::run_kfit(scene, out_dir, load_name);

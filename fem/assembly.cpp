@@ -12,7 +12,8 @@ namespace skinfem {
 bool is_affine(const TetMesh& m, int t) {
   const double tol = 1e-12 * tet_longest_edge(m, t);
   for (int e = 0; e < 6; ++e) {
-    const auto mid = 0.5 * (m.nodes.row(m.tets(t, p2::kEdge[e][0])) + m.nodes.row(m.tets(t, p2::kEdge[e][1])));
+    const auto mid =
+        0.5 * (m.nodes.row(m.tets(t, p2::kEdge[e][0])) + m.nodes.row(m.tets(t, p2::kEdge[e][1])));
     if ((m.nodes.row(m.tets(t, 4 + e)) - mid).norm() > tol) return false;
   }
   return true;
@@ -34,7 +35,8 @@ std::vector<std::vector<int>> node_adjacency(const TetMesh& m) {
 
 // Column-major matrix with rows_per_node × 3 blocks: column 3j + c holds rows
 // rows_per_node·i + r for every i in adj[j] (restricted to i < row_limit).
-SparseMatrixd block_pattern(const std::vector<std::vector<int>>& adj, int rows, int rows_per_node, int row_limit) {
+SparseMatrixd block_pattern(const std::vector<std::vector<int>>& adj, int rows, int rows_per_node,
+                            int row_limit) {
   const int n = static_cast<int>(adj.size());
   std::vector<int> outer(3 * n + 1, 0);
   std::vector<int> inner;

@@ -44,7 +44,8 @@ struct BaseIndex {
   explicit BaseIndex(const TetMesh& m) : planar(m, kBase), faces(planar.faces()) {
     for (int f : faces)
       for (int k = 0; k < 6; ++k)
-        if (local.emplace(m.faces(f, k), static_cast<int>(nodes.size())).second) nodes.push_back(m.faces(f, k));
+        if (local.emplace(m.faces(f, k), static_cast<int>(nodes.size())).second)
+          nodes.push_back(m.faces(f, k));
   }
 };
 
@@ -67,7 +68,8 @@ Eigen::SparseMatrix<double> base_mass(const TetMesh& m, const BaseIndex& idx) {
     for (const auto& q : face_quadrature(m, f))
       for (int a = 0; a < 6; ++a)
         for (int b = 0; b < 6; ++b)
-          t.emplace_back(idx.local.at(m.faces(f, a)), idx.local.at(m.faces(f, b)), q.weight * q.N[a] * q.N[b]);
+          t.emplace_back(idx.local.at(m.faces(f, a)), idx.local.at(m.faces(f, b)),
+                         q.weight * q.N[a] * q.N[b]);
   Eigen::SparseMatrix<double> M(idx.nodes.size(), idx.nodes.size());
   M.setFromTriplets(t.begin(), t.end());
   return M;
@@ -108,7 +110,8 @@ std::optional<Eigen::Vector3d> BaseTraction::traction(double x, double y) const 
 
 SensorReading BaseTraction::reading_at(double x, double y) const {
   const auto t = traction(x, y);
-  if (!t) throw std::out_of_range("point (" + std::to_string(x) + ", " + std::to_string(y) + ") is off the base");
+  if (!t)
+    throw std::out_of_range("point (" + std::to_string(x) + ", " + std::to_string(y) + ") is off the base");
   return {(*t)[2], -(*t)[0]};
 }
 
@@ -126,7 +129,8 @@ SensorReading BaseTraction::disc_mean(double x, double y, double diameter) const
 
 Eigen::Vector3d BaseTraction::total_force() const { return impl_->total; }
 
-Eigen::VectorXd disc_reading_functional(const TetMesh& mesh, double x, double y, double diameter, char component) {
+Eigen::VectorXd disc_reading_functional(const TetMesh& mesh, double x, double y, double diameter,
+                                        char component) {
   // reading = Σ_q w_q N(x_q)ᵀ T, T = M⁻¹ R  ⇒  reading = (M⁻¹ Σ_q w_q N(x_q))ᵀ R.
   const BaseIndex index(mesh);
   std::vector<std::array<double, 3>> pts;

@@ -32,7 +32,6 @@ class BaseTraction {
   // ∫ t dA over the whole base (N); equals the sum of the reactions.
   Eigen::Vector3d total_force() const;
 
-
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
@@ -41,6 +40,7 @@ class BaseTraction {
 // Weights w (3N vector) such that the disc-mean reading component of the traction field built from
 // reactions R is w·R (a linear functional: the adjoint load of reciprocity). component: 'z' or 'x';
 // diameter 0 gives the point value at (x, y).
-Eigen::VectorXd disc_reading_functional(const TetMesh& mesh, double x, double y, double diameter, char component);
+Eigen::VectorXd disc_reading_functional(const TetMesh& mesh, double x, double y, double diameter,
+                                        char component);
 
 }  // namespace skinfem

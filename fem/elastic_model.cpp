@@ -26,7 +26,8 @@ std::vector<int> punch_nodes(const TetMesh& m, const Punch& punch) {
     if (held[i]) nodes.push_back(i);
   if (nodes.empty())
     throw std::invalid_argument("punch at (" + std::to_string(punch.center[0]) + ", " +
-                                std::to_string(punch.center[1]) + ") holds no top node: refine the mesh there");
+                                std::to_string(punch.center[1]) +
+                                ") holds no top node: refine the mesh there");
   return nodes;
 }
 
@@ -52,7 +53,8 @@ ElasticModel::ElasticModel(const TetMesh& mesh, const Material& material, SideCo
 }
 
 LoadCaseResult ElasticModel::solve(const Eigen::VectorXd& f, const std::vector<Punch>& punches) const {
-  if (punches.size() != punch_nodes_.size()) throw std::invalid_argument("punch count differs from the model's");
+  if (punches.size() != punch_nodes_.size())
+    throw std::invalid_argument("punch count differs from the model's");
   const int np = punches.size();
   // Linear in the punch depths: x = x_0 + Σ δ_k x_k, with x_0 the load alone (punches held at 0)
   // and x_k a unit depth of punch k. Force-driven punches fix δ through their reaction.
@@ -116,7 +118,8 @@ Eigen::VectorXd ElasticModel::patch_load(const TractionPatch& patch) const {
   // Polar Gauss quadrature over the disc, each point located on the top surface: exact for the
   // disc's true area whatever faces its edge cuts. Traction density = force / (π a²).
   const double a = 0.5 * patch.diameter;
-  const Eigen::Vector3d dir = Eigen::Vector3d(patch.direction[0], patch.direction[1], patch.direction[2]).normalized();
+  const Eigen::Vector3d dir =
+      Eigen::Vector3d(patch.direction[0], patch.direction[1], patch.direction[2]).normalized();
   Eigen::VectorXd F = Eigen::VectorXd::Zero(3 * mesh_.num_nodes());
   const int nr = 16, nt = 48;
   // Gauss–Legendre on [0, 1] via the eigenvalues of the Jacobi matrix (Golub–Welsch).
@@ -140,7 +143,8 @@ Eigen::VectorXd ElasticModel::point_load(double x, double y, const Eigen::Vector
   double bs, bt;
   const int best = top_index_->find(x, y, bs, bt);
   if (best < 0)
-    throw std::out_of_range("load point (" + std::to_string(x) + ", " + std::to_string(y) + ") is off the top surface");
+    throw std::out_of_range("load point (" + std::to_string(x) + ", " + std::to_string(y) +
+                            ") is off the top surface");
   const auto N = triangle_shape(bs, bt);
   for (int k = 0; k < 6; ++k) F.segment<3>(3 * mesh_.faces(best, k)) += N[k] * force;
   return F;

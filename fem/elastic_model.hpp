@@ -40,8 +40,8 @@ struct LoadCaseResult {
 class ElasticModel {
  public:
   // punches: their nodes become constrained (u_z); pass the scene's punches (may be empty).
-  ElasticModel(const TetMesh& mesh, const Material& material, SideCondition side, const std::vector<Punch>& punches,
-               ModelOptions options = {});
+  ElasticModel(const TetMesh& mesh, const Material& material, SideCondition side,
+               const std::vector<Punch>& punches, ModelOptions options = {});
 
   const TetMesh& mesh() const { return mesh_; }
   const MixedMatrices& matrices() const { return matrices_; }

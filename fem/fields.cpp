@@ -26,14 +26,15 @@ Eigen::Matrix3d element_stress(const TetMesh& m, const Lame& lame, const MixedSo
 
 Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::RowMajor> recover_stress(const TetMesh& m, const Lame& lame,
                                                                          const MixedSolution& x) {
-  static const double node_xi[10][3] = {{0, 0, 0},     {1, 0, 0},     {0, 1, 0},   {0, 0, 1},     {.5, 0, 0},
-                                        {.5, .5, 0},   {0, .5, 0},    {0, 0, .5},  {.5, 0, .5},   {0, .5, .5}};
+  static const double node_xi[10][3] = {{0, 0, 0},   {1, 0, 0},  {0, 1, 0},  {0, 0, 1},   {.5, 0, 0},
+                                        {.5, .5, 0}, {0, .5, 0}, {0, 0, .5}, {.5, 0, .5}, {0, .5, .5}};
   Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::RowMajor> S =
       Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::RowMajor>::Zero(m.num_nodes(), 9);
   Eigen::VectorXd count = Eigen::VectorXd::Zero(m.num_nodes());
   for (int t = 0; t < m.num_tets(); ++t)
     for (int a = 0; a < 10; ++a) {
-      const Eigen::Matrix3d s = element_stress(m, lame, x, t, Eigen::Vector3d(node_xi[a][0], node_xi[a][1], node_xi[a][2]));
+      const Eigen::Matrix3d s =
+          element_stress(m, lame, x, t, Eigen::Vector3d(node_xi[a][0], node_xi[a][1], node_xi[a][2]));
       S.row(m.tets(t, a)) += Eigen::Map<const Eigen::Matrix<double, 1, 9>>(s.data());
       count[m.tets(t, a)] += 1;
     }

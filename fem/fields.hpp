@@ -16,12 +16,13 @@ Eigen::Matrix3d element_stress(const TetMesh& mesh, const Lame& lame, const Mixe
 
 // Nodal stress by averaging the element values at each node over the elements sharing it: N×9, row-major
 // components (xx, xy, xz, yx, …).
-Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::RowMajor> recover_stress(const TetMesh& mesh, const Lame& lame,
+Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::RowMajor> recover_stress(const TetMesh& mesh,
+                                                                         const Lame& lame,
                                                                          const MixedSolution& x);
 
 struct Probe {
-  Eigen::Vector3d u;  // mm
-  double p = 0;       // MPa
+  Eigen::Vector3d u;      // mm
+  double p = 0;           // MPa
   Eigen::Matrix3d sigma;  // MPa, from the element that contains the point
 };
 // Throws std::out_of_range when the point is outside the mesh.

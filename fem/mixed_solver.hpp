@@ -28,8 +28,8 @@ struct SolverError : std::runtime_error {
 };
 
 struct MixedSolution {
-  Eigen::VectorXd u;  // 3N, mm
-  Eigen::VectorXd p;  // Nv, MPa
+  Eigen::VectorXd u;    // 3N, mm
+  Eigen::VectorXd p;    // Nv, MPa
   double residual = 0;  // ‖K x − b‖ / ‖b‖ of the full constrained system
   int iterations = 0;   // CG iterations (schur_cg), 0 for direct_ldlt
 };
@@ -37,8 +37,8 @@ struct MixedSolution {
 class MixedSolver {
  public:
   // fixed: 3N flags, true where the displacement DOF is prescribed. Factors immediately.
-  MixedSolver(const MixedMatrices& matrices, const Lame& lame, const std::vector<bool>& fixed, SolverKind kind,
-              double tolerance = 1e-10);
+  MixedSolver(const MixedMatrices& matrices, const Lame& lame, const std::vector<bool>& fixed,
+              SolverKind kind, double tolerance = 1e-10);
   ~MixedSolver();
 
   // f: 3N load vector (entries at fixed DOFs ignored); u_fixed: 3N prescribed values (only fixed DOFs

@@ -13,8 +13,13 @@ std::vector<FacePoint> face_quadrature(const TetMesh& m, int f) {
   // Dunavant degree 5: centroid, and two orbits of three points; weights sum to 1 (× area 1/2).
   static const double a1 = 0.059715871789770, b1 = 0.470142064105115, w1 = 0.132394152788506;
   static const double a2 = 0.797426985353087, b2 = 0.101286507323456, w2 = 0.125939180544827;
-  static const double pts[7][3] = {{1.0 / 3, 1.0 / 3, 0.225}, {b1, b1, w1}, {a1, b1, w1}, {b1, a1, w1},
-                                   {b2, b2, w2}, {a2, b2, w2}, {b2, a2, w2}};
+  static const double pts[7][3] = {{1.0 / 3, 1.0 / 3, 0.225},
+                                   {b1, b1, w1},
+                                   {a1, b1, w1},
+                                   {b1, a1, w1},
+                                   {b2, b2, w2},
+                                   {a2, b2, w2},
+                                   {b2, a2, w2}};
   Eigen::Matrix<double, 6, 3> X;
   for (int a = 0; a < 6; ++a) X.row(a) = m.nodes.row(m.faces(f, a));
   std::vector<FacePoint> out;

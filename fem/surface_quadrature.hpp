@@ -9,10 +9,10 @@
 namespace skinfem {
 
 struct FacePoint {
-  Eigen::Vector3d x;                 // physical point, mm
-  Eigen::Matrix<double, 6, 1> N;     // face shape functions there (node order of TetMesh::faces)
-  Eigen::Vector3d normal;            // outward unit normal
-  double weight;                     // quadrature weight × surface Jacobian, mm²
+  Eigen::Vector3d x;              // physical point, mm
+  Eigen::Matrix<double, 6, 1> N;  // face shape functions there (node order of TetMesh::faces)
+  Eigen::Vector3d normal;         // outward unit normal
+  double weight;                  // quadrature weight × surface Jacobian, mm²
 };
 
 // Quadratic triangle shape functions at parameters (s, t): nodes 0, 1, 2, then edges 01, 12, 20.

@@ -7,10 +7,14 @@ namespace skinfem::green {
 
 const char* component_name(GreenComponent c) {
   switch (c) {
-    case GreenComponent::zz: return "zz";
-    case GreenComponent::zx: return "zx";
-    case GreenComponent::xz: return "xz";
-    default: return "xx";
+    case GreenComponent::zz:
+      return "zz";
+    case GreenComponent::zx:
+      return "zx";
+    case GreenComponent::xz:
+      return "xz";
+    default:
+      return "xx";
   }
 }
 
@@ -47,7 +51,8 @@ KReport fit_profile(const std::vector<double>& x, const std::vector<GreenSample>
   return r;
 }
 
-std::vector<GreenSample> exact_profile(const LayerGreen& layer, const std::vector<double>& x, double disc_diameter) {
+std::vector<GreenSample> exact_profile(const LayerGreen& layer, const std::vector<double>& x,
+                                       double disc_diameter) {
   // The disc mean over sensor positions equals the mean over load offsets (offset = force − sensor).
   const auto rule = disc_diameter > 0 ? load_quadrature(LayerLoad::uniform, 0.5 * disc_diameter, 6, 12)
                                       : load_quadrature(LayerLoad::point, 0);
@@ -63,7 +68,8 @@ std::vector<GreenSample> exact_profile(const LayerGreen& layer, const std::vecto
   return g;
 }
 
-std::array<double, 4> max_error_over_peak(const std::vector<GreenSample>& fe, const std::vector<GreenSample>& exact) {
+std::array<double, 4> max_error_over_peak(const std::vector<GreenSample>& fe,
+                                          const std::vector<GreenSample>& exact) {
   std::array<double, 4> out{};
   for (size_t c = 0; c < 4; ++c) {
     double peak = 0, err = 0;
@@ -76,8 +82,8 @@ std::array<double, 4> max_error_over_peak(const std::vector<GreenSample>& fe, co
   return out;
 }
 
-double effective_thickness(const std::vector<double>& x, const std::vector<double>& g_zz, double h0, double nu,
-                           LayerLoad load, double radius) {
+double effective_thickness(const std::vector<double>& x, const std::vector<double>& g_zz, double h0,
+                           double nu, LayerLoad load, double radius) {
   auto misfit = [&](double h) {
     const LayerGreen layer(h, nu, load, radius);
     double s = 0;

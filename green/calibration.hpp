@@ -16,7 +16,7 @@ inline constexpr std::array<GreenComponent, 4> kComponents{GreenComponent::zz, G
 const char* component_name(GreenComponent c);
 
 struct ScanProfile {
-  std::vector<double> offset_x;  // load position − sensor position along x, mm (y offset 0)
+  std::vector<double> offset_x;          // load position − sensor position along x, mm (y offset 0)
   std::vector<GreenSample> point, disc;  // sensor-centre value and disc mean, 1/mm²
 };
 
@@ -25,9 +25,9 @@ ScanProfile scan_profile(const FeGreen& fe, int sensor, LayerLoad load, double r
                          double spacing);
 
 struct KReport {
-  double k_central = 0;                  // g_zz(0) / (3/(2πh²)), point value at the base
-  double k_lsq_line = 0;                 // least squares of g_k to g_zz on |x| ≤ 3h, uniform weight in x
-  std::array<KFit, 4> components{};      // best k and rms residual / peak per component (zz, zx, xz, xx)
+  double k_central = 0;              // g_zz(0) / (3/(2πh²)), point value at the base
+  double k_lsq_line = 0;             // least squares of g_k to g_zz on |x| ≤ 3h, uniform weight in x
+  std::array<KFit, 4> components{};  // best k and rms residual / peak per component (zz, zx, xz, xx)
 };
 
 // k fits of a profile of point values along x (offset 0 must be present) for thickness h.
@@ -36,14 +36,16 @@ KReport fit_profile(const std::vector<double>& x, const std::vector<GreenSample>
 // The exact flat-layer reference on the same offsets: point values, or (disc_diameter > 0) the mean over
 // the sensor disc (Gauss rule, 6 radii × 12 angles: the field varies on the scale h ≫ the disc, so the
 // rule's error is far below the FE's).
-std::vector<GreenSample> exact_profile(const LayerGreen& layer, const std::vector<double>& x, double disc_diameter = 0);
+std::vector<GreenSample> exact_profile(const LayerGreen& layer, const std::vector<double>& x,
+                                       double disc_diameter = 0);
 
 // max over the offsets of |fe − exact| / max|exact|, per component.
-std::array<double, 4> max_error_over_peak(const std::vector<GreenSample>& fe, const std::vector<GreenSample>& exact);
+std::array<double, 4> max_error_over_peak(const std::vector<GreenSample>& fe,
+                                          const std::vector<GreenSample>& exact);
 
 // Thickness of the flat bonded layer whose exact g_zz (same load) best fits `g_zz` on the offsets
 // (least squares, golden section on [0.5 h0, 1.5 h0]): the effective skin thickness at a sensor.
-double effective_thickness(const std::vector<double>& x, const std::vector<double>& g_zz, double h0, double nu,
-                           LayerLoad load, double radius);
+double effective_thickness(const std::vector<double>& x, const std::vector<double>& g_zz, double h0,
+                           double nu, LayerLoad load, double radius);
 
 }  // namespace skinfem::green

@@ -48,12 +48,14 @@ std::vector<std::array<double, 3>> load_quadrature(LayerLoad load, double a, int
 FeGreen::FeGreen(const ElasticModel& model, const Sensors& sensors,
                  const std::function<void(const std::string&)>& progress)
     : model_(model), sensors_(sensors), top_(model.mesh(), kTop) {
-  if (!model.punch_groups().empty()) throw std::invalid_argument("FeGreen needs a model without punch constraints");
+  if (!model.punch_groups().empty())
+    throw std::invalid_argument("FeGreen needs a model without punch constraints");
   const TetMesh& m = model.mesh();
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(3 * m.num_nodes());
   for (size_t s = 0; s < sensors.positions.size(); ++s) {
     if (progress)
-      progress("adjoint solves for sensor " + std::to_string(s + 1) + "/" + std::to_string(sensors.positions.size()));
+      progress("adjoint solves for sensor " + std::to_string(s + 1) + "/" +
+               std::to_string(sensors.positions.size()));
     for (bool disc : {false, true})
       for (char reading : {'z', 'x'}) {
         const Eigen::VectorXd w = disc_reading_functional(m, sensors.positions[s][0], sensors.positions[s][1],
@@ -72,7 +74,9 @@ const Eigen::VectorXd& FeGreen::adjoint(int sensor, char reading, bool disc) con
 Eigen::Vector3d FeGreen::displacement_at_top(const Eigen::VectorXd& y, double x, double yy) const {
   double s, t;
   const int f = top_.find(x, yy, s, t);
-  if (f < 0) throw std::out_of_range("load point (" + std::to_string(x) + ", " + std::to_string(yy) + ") is off the top");
+  if (f < 0)
+    throw std::out_of_range("load point (" + std::to_string(x) + ", " + std::to_string(yy) +
+                            ") is off the top");
   const auto N = triangle_shape(s, t);
   Eigen::Vector3d v = Eigen::Vector3d::Zero();
   for (int k = 0; k < 6; ++k) v += N[k] * y.segment<3>(3 * model_.mesh().faces(f, k));

@@ -116,7 +116,8 @@ std::vector<Vec2> square_loop(double w, const SizingField& size) {
   return loop;
 }
 
-Footprint mesh_footprint(const std::vector<Vec2>& loop, const SizingField& size, const std::vector<Circle>& circles) {
+Footprint mesh_footprint(const std::vector<Vec2>& loop, const SizingField& size,
+                         const std::vector<Circle>& circles) {
   CDT cdt;
   auto insert_loop = [&](const std::vector<Vec2>& pts) {
     std::vector<CDT::Vertex_handle> vh;
@@ -161,7 +162,8 @@ Footprint mesh_footprint(const std::vector<Vec2>& loop, const SizingField& size,
     if (!f->is_in_domain()) continue;
     tris.push_back({id(f->vertex(0)), id(f->vertex(1)), id(f->vertex(2))});
     for (int e = 0; e < 3; ++e)
-      if (cdt.is_infinite(f->neighbor(e)) || !f->neighbor(e)->is_in_domain()) next_on_boundary[id(f->vertex(cdt.ccw(e)))] = id(f->vertex(cdt.cw(e)));
+      if (cdt.is_infinite(f->neighbor(e)) || !f->neighbor(e)->is_in_domain())
+        next_on_boundary[id(f->vertex(cdt.ccw(e)))] = id(f->vertex(cdt.cw(e)));
   }
   fp.points.resize(pts.size(), 2);
   for (size_t i = 0; i < pts.size(); ++i) fp.points.row(i) << pts[i][0], pts[i][1];

@@ -21,7 +21,8 @@ SizingField::SizingField(const Scene& scene)
   for (auto& r : regions_)
     if (r.h <= 0) r.h = h_min;
   if (scene.mesh.refine_sensors)
-    for (const auto& s : scene.sensors.positions) regions_.push_back({s, s, 0.5 * scene.sensors.disc_diameter, h_min});
+    for (const auto& s : scene.sensors.positions)
+      regions_.push_back({s, s, 0.5 * scene.sensors.disc_diameter, h_min});
   for (const auto& p : scene.loads.punches) regions_.push_back({p.center, p.center, 0.5 * p.diameter, h_min});
   for (const auto& p : scene.loads.patches) regions_.push_back({p.center, p.center, 0.5 * p.diameter, h_min});
 }

@@ -7,8 +7,8 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
-#include <vtkUnstructuredGrid.h>
 #include <vtkPolyData.h>
+#include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
@@ -97,12 +97,14 @@ void write_boundary_vtu(const std::string& path, const TetMesh& mesh) {
   write_xml<vtkXMLUnstructuredGridWriter>(path, grid.GetPointer());
 }
 
-void write_surface_vtp(const std::string& path, const TetMesh& mesh, int marker, const std::vector<DataArray>& point_data) {
+void write_surface_vtp(const std::string& path, const TetMesh& mesh, int marker,
+                       const std::vector<DataArray>& point_data) {
   std::vector<int> local(mesh.num_nodes(), -1), nodes;
   for (int f = 0; f < mesh.faces.rows(); ++f)
     if (mesh.face_marker(f) == marker)
       for (int k = 0; k < 6; ++k)
-        if (local[mesh.faces(f, k)] < 0) local[mesh.faces(f, k)] = static_cast<int>(nodes.size()), nodes.push_back(mesh.faces(f, k));
+        if (local[mesh.faces(f, k)] < 0)
+          local[mesh.faces(f, k)] = static_cast<int>(nodes.size()), nodes.push_back(mesh.faces(f, k));
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   for (int n : nodes) points->InsertNextPoint(mesh.nodes(n, 0), mesh.nodes(n, 1), mesh.nodes(n, 2));
@@ -121,7 +123,8 @@ void write_surface_vtp(const std::string& path, const TetMesh& mesh, int marker,
   for (const auto& a : point_data) {
     DataArray sub{a.name, a.components, {}};
     for (int n : nodes)
-      for (int c = 0; c < a.components; ++c) sub.values.push_back(a.values.at(static_cast<size_t>(n) * a.components + c));
+      for (int c = 0; c < a.components; ++c)
+        sub.values.push_back(a.values.at(static_cast<size_t>(n) * a.components + c));
     add_array(poly->GetPointData(), sub, static_cast<vtkIdType>(nodes.size()));
   }
   write_xml<vtkXMLPolyDataWriter>(path, poly.GetPointer());

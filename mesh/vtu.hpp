@@ -23,7 +23,8 @@ void write_vtu(const std::string& path, const TetMesh& mesh, const std::vector<D
 // The boundary faces with `marker` as a surface (.vtp): each quadratic triangle is split into four
 // linear ones through its mid-edge nodes (PolyData has no quadratic cells); point data per mesh node
 // (arrays sized num_nodes × components; nodes off the surface are dropped).
-void write_surface_vtp(const std::string& path, const TetMesh& mesh, int marker, const std::vector<DataArray>& point_data);
+void write_surface_vtp(const std::string& path, const TetMesh& mesh, int marker,
+                       const std::vector<DataArray>& point_data);
 
 // The boundary faces as VTK_QUADRATIC_TRIANGLE cells with cell data "boundary_marker".
 void write_boundary_vtu(const std::string& path, const TetMesh& mesh);

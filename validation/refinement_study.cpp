@@ -1,10 +1,11 @@
 #include "validation/refinement_study.hpp"
 
+#include <unistd.h>
+
 #include <chrono>
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
-#include <unistd.h>
 
 #include "fem/elastic_model.hpp"
 #include "green/layer_exact.hpp"
@@ -61,7 +62,8 @@ StudyResult refinement_study(const Scene& base_scene, const std::vector<double>&
       timing.first_solve_s = seconds_since(t0);
       timing.residual = r.solution.residual;
       // An extra load: a tangential unit patch at the load centre (a different right-hand side).
-      const Vec2 c = scene.loads.punches.empty() ? scene.loads.patches[0].center : scene.loads.punches[0].center;
+      const Vec2 c =
+          scene.loads.punches.empty() ? scene.loads.patches[0].center : scene.loads.punches[0].center;
       const Eigen::VectorXd g = model.patch_load({c, 0.5, {1, 0, 0}, 1.0});
       t0 = std::chrono::steady_clock::now();
       timing.iterations = model.solver().solve(g).iterations;
@@ -80,7 +82,8 @@ StudyResult refinement_study(const Scene& base_scene, const std::vector<double>&
   // Observed order from three consecutive levels: p = log(|c1 − c0| / |c2 − c1|) / log(s0 / s1).
   const auto& L = out.levels;
   for (size_t i = 2; i < L.size(); ++i) {
-    const double d1 = L[i - 1].center_ratio - L[i - 2].center_ratio, d2 = L[i].center_ratio - L[i - 1].center_ratio;
+    const double d1 = L[i - 1].center_ratio - L[i - 2].center_ratio,
+                 d2 = L[i].center_ratio - L[i - 1].center_ratio;
     out.observed_order.push_back(std::log(std::abs(d1 / d2)) / std::log(L[i - 1].scale / L[i].scale));
   }
   if (L.size() >= 2) {
@@ -93,8 +96,10 @@ StudyResult refinement_study(const Scene& base_scene, const std::vector<double>&
   if (base_scene.geometry.kind == GeometryKind::flat) {
     const double h = base_scene.geometry.flat.h;
     const bool punch = !base_scene.loads.punches.empty();
-    const double a = 0.5 * (punch ? base_scene.loads.punches[0].diameter : base_scene.loads.patches[0].diameter);
-    const green::LayerGreen layer(h, base_scene.material.nu, punch ? green::LayerLoad::punch : green::LayerLoad::uniform, a);
+    const double a =
+        0.5 * (punch ? base_scene.loads.punches[0].diameter : base_scene.loads.patches[0].diameter);
+    const green::LayerGreen layer(h, base_scene.material.nu,
+                                  punch ? green::LayerLoad::punch : green::LayerLoad::uniform, a);
     out.exact = layer.at(0, 0).zz / (3 / (2 * M_PI * h * h));
     double sx = 0, sy = 0, sxx = 0, sxy = 0;
     for (const auto& level : L) {

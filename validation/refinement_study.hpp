@@ -17,11 +17,11 @@ namespace skinfem {
 struct SolverTiming {
   SolverKind kind;
   double factor_s = 0;
-  double first_solve_s = 0;   // the scene's load, punches included (one solve per punch + one)
-  double extra_rhs_s = 0;     // one more right-hand side on the same factorization
+  double first_solve_s = 0;  // the scene's load, punches included (one solve per punch + one)
+  double extra_rhs_s = 0;    // one more right-hand side on the same factorization
   double residual = 0;
-  int iterations = 0;         // CG iterations of the extra right-hand side (schur_cg)
-  double rss_mb = 0;          // resident memory right after the factorization
+  int iterations = 0;  // CG iterations of the extra right-hand side (schur_cg)
+  double rss_mb = 0;   // resident memory right after the factorization
 };
 
 struct StudyLevel {

@@ -111,11 +111,11 @@ TEST(MixedSolver, PatchTestReproducesLinearDisplacementToRoundOff) {
     Eigen::VectorXd g = Eigen::VectorXd::Zero(3 * m.num_nodes());
     for (int i = 0; i < m.num_nodes(); ++i)
       if (m.node_marker(i) & kBase)
-        for (int k = 0; k < 3; ++k) fixed[3 * i + k] = true, g[3 * i + k] = (G * m.nodes.row(i).transpose() + c)[k];
-    const Eigen::VectorXd f =
-        traction_load(m, kTop | kSide, [&](const Eigen::Vector3d&, const Eigen::Vector3d& n) {
-          return Eigen::Vector3d(sigma * n);
-        });
+        for (int k = 0; k < 3; ++k)
+          fixed[3 * i + k] = true, g[3 * i + k] = (G * m.nodes.row(i).transpose() + c)[k];
+    const Eigen::VectorXd f = traction_load(
+        m, kTop | kSide,
+        [&](const Eigen::Vector3d&, const Eigen::Vector3d& n) { return Eigen::Vector3d(sigma * n); });
     for (SolverKind kind : {SolverKind::direct_ldlt, SolverKind::schur_cg}) {
       const MixedSolution x = MixedSolver(M, lame, fixed, kind).solve(f, g);
       double err = 0;
@@ -138,7 +138,8 @@ void check_rates(double nu, const PlaneWaves& field) {
     double mean_edge = 0;
     for (int t = 0; t < m.num_tets(); ++t)
       for (const auto& ed : p2::kEdge)
-        mean_edge += (m.nodes.row(m.tets(t, ed[0])) - m.nodes.row(m.tets(t, ed[1]))).norm() / (6.0 * m.num_tets());
+        mean_edge +=
+            (m.nodes.row(m.tets(t, ed[0])) - m.nodes.row(m.tets(t, ed[1]))).norm() / (6.0 * m.num_tets());
     h.push_back(mean_edge);
     eu.push_back(e.u_l2), eh.push_back(e.u_h1), ep.push_back(e.p_l2);
     std::printf("nu %.2f h %.3f: |u|L2 %.3e |u|H1 %.3e |p|L2 %.3e\n", nu, mean_edge, e.u_l2, e.u_h1, e.p_l2);

@@ -16,7 +16,8 @@ void expect_exact_to_degree(const std::vector<p2::QuadPoint>& rule, int degree) 
     for (int b = 0; a + b <= degree; ++b)
       for (int c = 0; a + b + c <= degree; ++c) {
         double sum = 0;
-        for (const auto& q : rule) sum += q.weight * std::pow(q.xi[0], a) * std::pow(q.xi[1], b) * std::pow(q.xi[2], c);
+        for (const auto& q : rule)
+          sum += q.weight * std::pow(q.xi[0], a) * std::pow(q.xi[1], b) * std::pow(q.xi[2], c);
         EXPECT_NEAR(sum, factorial(a) * factorial(b) * factorial(c) / factorial(a + b + c + 3), 1e-15)
             << "monomial " << a << b << c;
       }
@@ -28,7 +29,7 @@ TEST(P2Tet, QuadratureRulesAreExactToTheirDegree) {
 }
 
 TEST(P2Tet, ShapeFunctionsAreNodalAndPartitionUnity) {
-  const double node_xi[10][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {.5, 0, 0},
+  const double node_xi[10][3] = {{0, 0, 0},   {1, 0, 0},  {0, 1, 0},  {0, 0, 1},   {.5, 0, 0},
                                  {.5, .5, 0}, {0, .5, 0}, {0, 0, .5}, {.5, 0, .5}, {0, .5, .5}};
   for (int a = 0; a < 10; ++a) {
     const p2::Vec10 n = p2::shape(Eigen::Vector3d(node_xi[a][0], node_xi[a][1], node_xi[a][2]));
