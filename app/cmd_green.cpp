@@ -14,10 +14,10 @@
 #include <cstdio>
 #include <sstream>
 
+#include "app/adjoint_setup.hpp"
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "green/calibration.hpp"
-#include "mesh/build.hpp"
 #include "mesh/shape.hpp"
 #include "mesh/vtu.hpp"
 
@@ -28,17 +28,11 @@ int run_green(const Scene& scene, const std::string& out_dir) {
   using green::LayerLoad;
   const double radius = 0.5 * scene.calibration.punch_diameter;
   Stopwatch total, clock;
-  nlohmann::json wall;
-  progress("meshing " + scene.name);
-  const TetMesh mesh = build_mesh(scene);
-  wall["mesh"] = clock.seconds();
-  progress("assembling and factoring");
-  const ElasticModel model(mesh, scene.material, scene.geometry.side, {});
-  wall["assemble"] = model.assemble_seconds();
-  wall["factor"] = model.solver().factor_seconds();
-  clock = Stopwatch();
-  const green::FeGreen fe(model, scene.sensors, progress);
-  wall["adjoint_solves"] = clock.seconds();
+  const auto setup = adjoint_setup(scene);
+  const TetMesh& mesh = setup->mesh;
+  const ElasticModel& model = *setup->model;
+  const green::FeGreen& fe = *setup->fe;
+  nlohmann::json wall = setup->wall;
 
   // Reciprocity check: a direct solve with a point force at 1 mm from sensor 1 against the adjoint value.
   clock = Stopwatch();

@@ -13,10 +13,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/adjoint_setup.hpp"
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "green/calibration.hpp"
-#include "mesh/build.hpp"
 #include "mesh/shape.hpp"
 
 namespace skinfem::app {
@@ -39,17 +39,10 @@ int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& 
   const double radius = 0.5 * scene.calibration.punch_diameter;
   const double paper_k = 1.48;  // the paper's value (§III (iii), fig. 4)
   Stopwatch total, clock;
-  nlohmann::json wall;
-  progress("meshing " + scene.name);
-  const TetMesh mesh = build_mesh(scene);
-  wall["mesh"] = clock.seconds();
-  progress("assembling and factoring");
-  const ElasticModel model(mesh, scene.material, scene.geometry.side, {});
-  wall["assemble"] = model.assemble_seconds();
-  wall["factor"] = model.solver().factor_seconds();
-  clock = Stopwatch();
-  const green::FeGreen fe(model, scene.sensors, progress);
-  wall["adjoint_solves"] = clock.seconds();
+  const auto setup = adjoint_setup(scene);
+  const ElasticModel& model = *setup->model;
+  const green::FeGreen& fe = *setup->fe;
+  nlohmann::json wall = setup->wall;
 
   clock = Stopwatch();
   const SkinShape shape(scene.geometry);

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <vector>
 
-#include "fem/surface_quadrature.hpp"
 #include "mesh/p2_tet.hpp"
 #include "mesh/quality.hpp"
+#include "mesh/surface_quadrature.hpp"
 
 namespace skinfem {
 

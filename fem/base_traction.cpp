@@ -7,34 +7,12 @@
 #include <vector>
 
 #include "fem/face_index.hpp"
-#include "fem/surface_quadrature.hpp"
+#include "mesh/gauss_legendre.hpp"
+#include "mesh/surface_quadrature.hpp"
 
 namespace skinfem {
 
 namespace {
-// Gauss–Legendre nodes/weights on [0, 1].
-void gauss01(int n, std::vector<double>& x, std::vector<double>& w) {
-  x.resize(n);
-  w.resize(n);
-  for (int i = 0; i < n; ++i) {
-    double z = std::cos(M_PI * (i + 0.75) / (n + 0.5)), dp = 0;
-    for (int it = 0; it < 100; ++it) {
-      double p0 = 1, p1 = z;
-      for (int k = 2; k <= n; ++k) {
-        const double pk = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
-        p0 = p1;
-        p1 = pk;
-      }
-      dp = n * (z * p1 - p0) / (z * z - 1);
-      const double dz = p1 / dp;
-      z -= dz;
-      if (std::abs(dz) < 1e-15) break;
-    }
-    x[i] = 0.5 * (1 - z);
-    w[i] = 1.0 / ((1 - z * z) * dp * dp);
-  }
-}
-
 // Base faces for 2-D location plus a numbering of the base nodes.
 struct BaseIndex {
   PlanarFaceIndex planar;
@@ -50,8 +28,8 @@ struct BaseIndex {
 };
 
 void polar_rule(double diameter, std::vector<std::array<double, 3>>& pts) {
-  std::vector<double> r, w;
-  gauss01(12, r, w);
+  const GaussRule1d g = gauss_legendre01(12);
+  const std::vector<double>&r = g.x, &w = g.w;
   const int nt = 32;
   const double a = 0.5 * diameter;
   for (int i = 0; i < 12; ++i)

@@ -5,7 +5,8 @@
 #include <stdexcept>
 
 #include "fem/face_index.hpp"
-#include "fem/surface_quadrature.hpp"
+#include "mesh/gauss_legendre.hpp"
+#include "mesh/surface_quadrature.hpp"
 
 namespace skinfem {
 
@@ -122,12 +123,9 @@ Eigen::VectorXd ElasticModel::patch_load(const TractionPatch& patch) const {
       Eigen::Vector3d(patch.direction[0], patch.direction[1], patch.direction[2]).normalized();
   Eigen::VectorXd F = Eigen::VectorXd::Zero(3 * mesh_.num_nodes());
   const int nr = 16, nt = 48;
-  // Gauss–Legendre on [0, 1] via the eigenvalues of the Jacobi matrix (Golub–Welsch).
-  Eigen::MatrixXd Jm = Eigen::MatrixXd::Zero(nr, nr);
-  for (int i = 1; i < nr; ++i) Jm(i, i - 1) = Jm(i - 1, i) = i / std::sqrt(4.0 * i * i - 1);
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(Jm);
+  const GaussRule1d g = gauss_legendre01(nr);
   for (int i = 0; i < nr; ++i) {
-    const double rho = 0.5 * (1 + es.eigenvalues()[i]), w = es.eigenvectors()(0, i) * es.eigenvectors()(0, i);
+    const double rho = g.x[i], w = g.w[i];
     for (int j = 0; j < nt; ++j) {
       const double th = 2 * M_PI * (j + 0.5) / nt;
       const double weight = w * rho / nt;  // fraction of the total force carried by this point

@@ -3,30 +3,16 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "fem/surface_quadrature.hpp"
+#include "mesh/gauss_legendre.hpp"
+#include "mesh/surface_quadrature.hpp"
 
 namespace skinfem::green {
-
-namespace {
-// Gauss–Legendre on [0, 1] (Golub–Welsch).
-void gauss01(int n, std::vector<double>& x, std::vector<double>& w) {
-  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n, n);
-  for (int i = 1; i < n; ++i) J(i, i - 1) = J(i - 1, i) = i / std::sqrt(4.0 * i * i - 1);
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(J);
-  x.resize(n);
-  w.resize(n);
-  for (int i = 0; i < n; ++i) {
-    x[i] = 0.5 * (1 + es.eigenvalues()[i]);
-    w[i] = es.eigenvectors()(0, i) * es.eigenvectors()(0, i);
-  }
-}
-}  // namespace
 
 std::vector<std::array<double, 3>> load_quadrature(LayerLoad load, double a, int nr, int nt) {
   std::vector<std::array<double, 3>> pts;
   if (load == LayerLoad::point || a <= 0) return {{0.0, 0.0, 1.0}};
-  std::vector<double> x, w;
-  gauss01(nr, x, w);
+  const GaussRule1d g = gauss_legendre01(nr);
+  const std::vector<double>&x = g.x, &w = g.w;
   for (int i = 0; i < nr; ++i)
     for (int j = 0; j < nt; ++j) {
       const double th = 2 * M_PI * (j + 0.5) / nt;

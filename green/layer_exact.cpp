@@ -6,6 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "mesh/gauss_legendre.hpp"
+
 // Derivation (summarised; signs and factors are checked by tests/green/test_layer_exact.cpp against the
 // half-space closed forms, the force balance and the closed-form/linear-system agreement).
 //
@@ -33,36 +35,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kGauss = 16;
-
-struct GaussRule {
-  std::array<double, kGauss> x{}, w{};  // on [−1, 1]
-};
-
-const GaussRule& gauss_rule() {
-  static const GaussRule rule = [] {
-    GaussRule g;
-    for (int i = 0; i < kGauss; ++i) {
-      double x = std::cos(kPi * (i + 0.75) / (kGauss + 0.5));
-      double dp = 1.0;
-      for (int it = 0; it < 100; ++it) {
-        double p0 = 1.0, p1 = x;
-        for (int k = 2; k <= kGauss; ++k) {
-          const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-          p0 = p1;
-          p1 = p2;
-        }
-        dp = kGauss * (x * p1 - p0) / (x * x - 1.0);
-        const double dx = p1 / dp;
-        x -= dx;
-        if (std::fabs(dx) < 1e-16) break;
-      }
-      g.x[i] = x;
-      g.w[i] = 2.0 / ((1.0 - x * x) * dp * dp);
-    }
-    return g;
-  }();
-  return rule;
-}
 
 // Bessel functions of the first kind. glibc's POSIX j0/j1 (declared by <cmath> under g++, which defines
 // _GNU_SOURCE) agree with std::cyl_bessel_j to 1.5e-14 on [0, 74] and are ~15× faster (measured: 60 ns
@@ -160,7 +132,7 @@ double LayerGreen::load_profile(double s) const {
 // for ν = 0) is closest, growing geometrically further out; at most 4/depth for the exp(−s·depth) decay. With
 // 16 nodes the Bernstein-ellipse bound for each of these constraints is below 1e-16 relative.
 std::vector<double> LayerGreen::panel_nodes(double r, double depth, std::vector<double>* weights) const {
-  const GaussRule& g = gauss_rule();
+  static const GaussRule1d g = gauss_legendre01(kGauss);
   const double s_max = quad_.s_max_depth / depth;
   std::vector<double> s;
   weights->clear();
@@ -170,10 +142,9 @@ std::vector<double> LayerGreen::panel_nodes(double r, double depth, std::vector<
     if (r + a_ > 0.0) w = std::min(w, 2.0 * kPi / (r + a_));
     w *= quad_.panel_scale;
     const double s1 = std::min(s0 + w, s_max);
-    const double half = 0.5 * (s1 - s0), mid = 0.5 * (s1 + s0);
     for (int i = 0; i < kGauss; ++i) {
-      s.push_back(mid + half * g.x[i]);
-      weights->push_back(half * g.w[i]);
+      s.push_back(s0 + (s1 - s0) * g.x[i]);
+      weights->push_back((s1 - s0) * g.w[i]);
     }
     s0 = s1;
   }

@@ -11,7 +11,7 @@
 
 #include "fem/base_traction.hpp"
 #include "fem/elastic_model.hpp"
-#include "fem/surface_quadrature.hpp"
+#include "mesh/surface_quadrature.hpp"
 #include "mesh/build.hpp"
 
 namespace skinfem {

@@ -10,7 +10,7 @@
 
 #include "fem/assembly.hpp"
 #include "fem/elastic_model.hpp"
-#include "fem/surface_quadrature.hpp"
+#include "mesh/surface_quadrature.hpp"
 #include "fixtures.hpp"
 
 namespace skinfem {

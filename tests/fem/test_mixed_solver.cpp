@@ -4,6 +4,7 @@
 
 #include <cstring>
 
+#include "../common/convergence.hpp"
 #include "fem/assembly.hpp"
 #include "fem/mixed_solver.hpp"
 #include "fixtures.hpp"
@@ -13,6 +14,7 @@ namespace skinfem {
 namespace {
 
 using testing::box_mesh;
+using testing::observed_order;
 using testing::PlaneWaves;
 
 // Solve with u = exact on the base (Dirichlet) and the exact traction σ·n on every other face.
@@ -61,17 +63,6 @@ Errors errors(const TetMesh& m, const MixedSolution& x, const PlaneWaves& ex) {
     }
   }
   return {std::sqrt(e.u_l2), std::sqrt(e.u_h1), std::sqrt(e.p_l2)};
-}
-
-// Least-squares slope of log(error) over log(h).
-double observed_order(const std::vector<double>& h, const std::vector<double>& err) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double n = h.size();
-  for (size_t i = 0; i < h.size(); ++i) {
-    const double x = std::log(h[i]), y = std::log(err[i]);
-    sx += x, sy += y, sxx += x * x, sxy += x * y;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
 PlaneWaves incompressible_field(const Lame& lame) {

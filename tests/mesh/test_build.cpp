@@ -3,10 +3,12 @@
 
 #include <cmath>
 
+#include "../common/convergence.hpp"
 #include "mesh/build.hpp"
 #include "mesh/p2_tet.hpp"
 #include "mesh/quality.hpp"
 #include "mesh/shape.hpp"
+#include "mesh/surface_quadrature.hpp"
 
 namespace skinfem {
 namespace {
@@ -23,31 +25,12 @@ Scene small_cap(double scale) {
   return s;
 }
 
-// Area of the base faces with the quadratic-triangle map (6-point degree-4 rule, Dunavant).
+// Area of the base faces with the quadratic-triangle map (degree-5 face rule).
 double base_area(const TetMesh& m) {
-  static const double pts[6][3] = {{0.445948490915965, 0.445948490915965, 0.223381589678011},
-                                   {0.445948490915965, 0.108103018168070, 0.223381589678011},
-                                   {0.108103018168070, 0.445948490915965, 0.223381589678011},
-                                   {0.091576213509771, 0.091576213509771, 0.109951743655322},
-                                   {0.091576213509771, 0.816847572980459, 0.109951743655322},
-                                   {0.816847572980459, 0.091576213509771, 0.109951743655322}};
   double area = 0;
-  for (int f = 0; f < m.faces.rows(); ++f) {
-    if (m.face_marker(f) != kBase) continue;
-    for (const auto& q : pts) {
-      const double s = q[0], t = q[1], l = 1 - s - t;
-      // quadratic triangle shape derivatives (nodes 0,1,2 then edges 01,12,20), parameters (s, t) at nodes 1,
-      // 2
-      const double ds[6] = {-(4 * l - 1), 4 * s - 1, 0, 4 * (l - s), 4 * t, -4 * t};
-      const double dt[6] = {-(4 * l - 1), 0, 4 * t - 1, -4 * s, 4 * s, 4 * (l - t)};
-      Eigen::Vector3d xs = Eigen::Vector3d::Zero(), xt = Eigen::Vector3d::Zero();
-      for (int a = 0; a < 6; ++a) {
-        xs += ds[a] * m.nodes.row(m.faces(f, a)).transpose();
-        xt += dt[a] * m.nodes.row(m.faces(f, a)).transpose();
-      }
-      area += 0.5 * q[2] * xs.cross(xt).norm();
-    }
-  }
+  for (int f = 0; f < m.faces.rows(); ++f)
+    if (m.face_marker(f) == kBase)
+      for (const auto& q : face_quadrature(m, f)) area += q.weight;
   return area;
 }
 
@@ -64,16 +47,7 @@ TEST(MeshBuild, CapVolumeConvergesToTruncatedCapVolumeAtFourthOrder) {
     err_p2.push_back(std::abs(q.volume_mm3 - exact) / exact);
     err_p1.push_back(std::abs(q.linear_volume_mm3 - exact) / exact);
   }
-  // Observed order: least-squares slope of log(error) against log(h) over the three levels.
-  auto order = [&](const std::vector<double>& err) {
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    const double n = size.size();
-    for (size_t i = 0; i < size.size(); ++i) {
-      const double x = std::log(size[i]), y = std::log(err[i]);
-      sx += x, sy += y, sxx += x * x, sxy += x * y;
-    }
-    return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-  };
+  auto order = [&](const std::vector<double>& err) { return testing::observed_order(size, err); };
   for (size_t i = 0; i < size.size(); ++i)
     std::printf("h_max %.2f: P2 volume error %.2e, straight-sided %.2e\n", size[i], err_p2[i], err_p1[i]);
   std::printf("observed order: P2 %.2f, straight-sided %.2f\n", order(err_p2), order(err_p1));

@@ -1,4 +1,4 @@
-#include "fem/surface_quadrature.hpp"
+#include "mesh/surface_quadrature.hpp"
 
 namespace skinfem {
 
