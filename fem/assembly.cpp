@@ -147,4 +147,17 @@ Eigen::VectorXd traction_load(const TetMesh& m, int markers, const TractionField
   return F;
 }
 
+Eigen::VectorXd nodal_traction_load(const TetMesh& m, int markers, const Eigen::MatrixX3d& traction) {
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(3 * m.num_nodes());
+  for (int f = 0; f < m.faces.rows(); ++f) {
+    if (!(m.face_marker(f) & markers)) continue;
+    for (const auto& q : face_quadrature(m, f)) {
+      Eigen::Vector3d tq = Eigen::Vector3d::Zero();
+      for (int a = 0; a < 6; ++a) tq += q.N[a] * traction.row(m.faces(f, a)).transpose();
+      for (int a = 0; a < 6; ++a) F.segment<3>(3 * m.faces(f, a)) += q.weight * q.N[a] * tq;
+    }
+  }
+  return F;
+}
+
 }  // namespace skinfem

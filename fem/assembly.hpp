@@ -36,6 +36,10 @@ Eigen::VectorXd body_load(const TetMesh& mesh, const VectorField& f);
 using TractionField = std::function<Eigen::Vector3d(const Eigen::Vector3d& x, const Eigen::Vector3d& n)>;
 Eigen::VectorXd traction_load(const TetMesh& mesh, int markers, const TractionField& t);
 
+// ∫ t·v over the faces with one of `markers` for a traction given per node (N×3, MPa; rows of nodes
+// off those faces are ignored), interpolated with the faces' quadratic shape functions.
+Eigen::VectorXd nodal_traction_load(const TetMesh& mesh, int markers, const Eigen::MatrixX3d& traction);
+
 // True when the element's mid-edge nodes sit at the midpoints of its straight edges.
 bool is_affine(const TetMesh& mesh, int tet);
 

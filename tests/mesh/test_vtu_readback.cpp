@@ -3,7 +3,9 @@
 #include <vtkCellData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkXMLPolyDataReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <filesystem>
@@ -43,6 +45,35 @@ TEST(VtuReadback, QuadraticTetsPointsAndMarkersSurviveTheRoundTrip) {
   for (int i = 0; i < m.num_nodes(); ++i) ASSERT_EQ(marker->GetTuple1(i), m.node_marker(i));
   ASSERT_NE(g->GetPointData()->GetArray("displacement_mm"), nullptr);
   ASSERT_NE(g->GetCellData()->GetArray("element_volume_mm3"), nullptr);
+}
+
+TEST(VtuReadback, TopSurfaceMapReadsBackAsPolyData) {
+  Scene s;
+  s.geometry.kind = GeometryKind::flat;
+  s.geometry.flat = {1.0, 2.0};
+  s.mesh.refine_sensors = false;
+  s.mesh.h_min = s.mesh.h_max = 0.6;
+  const TetMesh m = build_mesh(s);
+  std::filesystem::create_directories(SKINFEM_TEST_TMP);
+  const std::string path = std::string(SKINFEM_TEST_TMP) + "/top.vtp";
+  DataArray g{"g_zz_sensor01_per_mm2", 1, {}};
+  for (int i = 0; i < m.num_nodes(); ++i) g.values.push_back(m.nodes(i, 0));  // x as a recognisable field
+  write_surface_vtp(path, m, kTop, {g});
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkPolyData* p = reader->GetOutput();
+  int top_faces = 0;
+  for (int f = 0; f < m.faces.rows(); ++f) top_faces += m.face_marker(f) == kTop;
+  EXPECT_EQ(p->GetNumberOfPolys(), 4 * top_faces);  // each quadratic face as four triangles
+  auto* arr = p->GetPointData()->GetArray("g_zz_sensor01_per_mm2");
+  ASSERT_NE(arr, nullptr);
+  for (vtkIdType i = 0; i < p->GetNumberOfPoints(); ++i) {
+    double x[3];
+    p->GetPoint(i, x);
+    EXPECT_EQ(arr->GetTuple1(i), x[0]);
+    EXPECT_DOUBLE_EQ(x[2], 1.0);  // all on the top
+  }
 }
 
 }  // namespace
