@@ -11,7 +11,7 @@
 namespace skinfem::green {
 namespace {
 
-TEST(FeHalfSpace, PatchStressOnTheAxisMatchesTheExactLayerAndTendsToBoussinesq) {
+TEST(FeBoussinesq, PatchStressOnTheAxisMatchesTheExactLayerAndTendsToBoussinesq) {
   // References: (i) Boussinesq for a uniform disc on a half-space, on the axis:
   // σ_zz = −q[1 − d³/(a² + d²)^{3/2}] (Johnson 1985 §3.4); (ii) the exact bonded layer of the same
   // thickness (Hankel transforms) at depth d. (ii) differs from (i) by the rigid base, a correction
