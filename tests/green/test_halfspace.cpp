@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "green/halfspace.hpp"
+#include "mesh/gauss_legendre.hpp"
 
 namespace {
 
@@ -20,27 +21,11 @@ using skinfem::green::rescaled_green;
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Gauss–Legendre nodes/weights on [0, 1] (Newton on P_n).
+// Gauss–Legendre nodes/weights on [0, 1] (the library rule).
 void gauss_legendre01(int n, std::vector<double>& x, std::vector<double>& w) {
-  x.assign(n, 0.0);
-  w.assign(n, 0.0);
-  for (int i = 0; i < n; ++i) {
-    double t = std::cos(kPi * (i + 0.75) / (n + 0.5)), dp = 1.0;
-    for (int it = 0; it < 100; ++it) {
-      double p0 = 1.0, p1 = t;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2.0 * k - 1.0) * t * p1 - (k - 1.0) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (t * p1 - p0) / (t * t - 1.0);
-      const double dt = p1 / dp;
-      t -= dt;
-      if (std::fabs(dt) < 1e-16) break;
-    }
-    x[i] = 0.5 * (1.0 + t);
-    w[i] = 1.0 / ((1.0 - t * t) * dp * dp);
-  }
+  const skinfem::GaussRule1d g = skinfem::gauss_legendre01(n);
+  x = g.x;
+  w = g.w;
 }
 
 // ∬ g dA over the whole plane with r = h tan α, α ∈ [0, π/2): ρ = h/cos α, r dr = h² tan α sec² α dα, so

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "green/calibration.hpp"
 #include "green/halfspace.hpp"
 #include "green/kfit.hpp"
 #include "green/layer_exact.hpp"
@@ -23,21 +24,8 @@ using skinfem::green::rescaled_green;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kH = 3.04;
-constexpr GreenComponent kAll[] = {GreenComponent::zz, GreenComponent::zx, GreenComponent::xz,
-                                   GreenComponent::xx};
-const char* name(GreenComponent c) {
-  switch (c) {
-    case GreenComponent::zz:
-      return "zz";
-    case GreenComponent::zx:
-      return "zx";
-    case GreenComponent::xz:
-      return "xz";
-    case GreenComponent::xx:
-      return "xx";
-  }
-  return "?";
-}
+constexpr auto kAll = kComponents;
+const char* name(GreenComponent c) { return component_name(c); }
 
 std::vector<double> line(double half_width, int n) {
   std::vector<double> x(n);

@@ -11,6 +11,7 @@
 
 #include "green/halfspace.hpp"
 #include "green/layer_exact.hpp"
+#include "mesh/gauss_legendre.hpp"
 
 namespace {
 
@@ -32,25 +33,10 @@ double max_diff(const GreenSample& a, const GreenSample& b) {
 }
 
 void gauss_legendre(int n, std::vector<double>& x, std::vector<double>& w) {  // on [−1, 1]
-  x.assign(n, 0.0);
-  w.assign(n, 0.0);
-  for (int i = 0; i < n; ++i) {
-    double t = std::cos(kPi * (i + 0.75) / (n + 0.5)), dp = 1.0;
-    for (int it = 0; it < 100; ++it) {
-      double p0 = 1.0, p1 = t;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2.0 * k - 1.0) * t * p1 - (k - 1.0) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (t * p1 - p0) / (t * t - 1.0);
-      const double dt = p1 / dp;
-      t -= dt;
-      if (std::fabs(dt) < 1e-16) break;
-    }
-    x[i] = t;
-    w[i] = 2.0 / ((1.0 - t * t) * dp * dp);
-  }
+  const GaussRule1d g = gauss_legendre01(n);
+  x.resize(n);
+  w.resize(n);
+  for (int i = 0; i < n; ++i) x[i] = 2 * g.x[i] - 1, w[i] = 2 * g.w[i];
 }
 
 // The sampling offsets used by several tests: on and off the x axis, up to 12h.
