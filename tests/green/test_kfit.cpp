@@ -24,8 +24,8 @@ using skinfem::green::rescaled_green;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kH = 3.04;
-constexpr auto kAll = kComponents;
-const char* name(GreenComponent c) { return component_name(c); }
+constexpr auto kAll = skinfem::green::kComponents;
+const char* name(GreenComponent c) { return skinfem::green::component_name(c); }
 
 std::vector<double> line(double half_width, int n) {
   std::vector<double> x(n);
