@@ -33,7 +33,7 @@ double max_diff(const GreenSample& a, const GreenSample& b) {
 }
 
 void gauss_legendre(int n, std::vector<double>& x, std::vector<double>& w) {  // on [−1, 1]
-  const GaussRule1d g = gauss_legendre01(n);
+  const skinfem::GaussRule1d g = skinfem::gauss_legendre01(n);
   x.resize(n);
   w.resize(n);
   for (int i = 0; i < n; ++i) x[i] = 2 * g.x[i] - 1, w[i] = 2 * g.w[i];
