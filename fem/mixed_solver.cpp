@@ -35,7 +35,8 @@ struct MixedSolver::Impl {
   const MixedMatrices& M;
   std::vector<int> free_index;  // 3N → free index or −1
   std::vector<int> free_dofs;   // free index → DOF
-  int nf = 0, np = 0;
+  std::vector<int> p_index;     // vertex → pressure unknown, −1 when pinned
+  int nf = 0, np = 0, pinned_pressures = 0;
   double tolerance = 1e-10;
   SparseMatrixd Aff, Bf, C;
   // schur_cg
@@ -61,16 +62,27 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
       s.free_index[d] = s.nf++;
       s.free_dofs.push_back(d);
     }
-  s.np = matrices.Mp.rows();
   s.Aff = restrict(matrices.A, s.free_index, s.nf, s.free_index, s.nf);
-  s.Bf = restrict(matrices.B, {}, s.np, s.free_index, s.nf);
-  s.C = lame.inv_lambda * matrices.Mp;
+  // A pressure DOF coupled to no free displacement (a corner tet whose nodes are all held, possible
+  // with fixed sides) is undetermined at ν = 0.5: pin it to 0. It only acts on held DOFs.
+  const int nv = matrices.Mp.rows();
+  const SparseMatrixd B_all_free = restrict(matrices.B, {}, nv, s.free_index, s.nf);
+  std::vector<double> coupling(nv, 0.0);
+  for (int c = 0; c < B_all_free.outerSize(); ++c)
+    for (SparseMatrixd::InnerIterator it(B_all_free, c); it; ++it) coupling[it.row()] += std::abs(it.value());
+  s.p_index.assign(nv, -1);
+  for (int q = 0; q < nv; ++q)
+    if (coupling[q] > 0 || lame.inv_lambda > 0) s.p_index[q] = s.np++;
+  s.pinned_pressures = nv - s.np;
+  s.Bf = restrict(matrices.B, s.p_index, s.np, s.free_index, s.nf);
+  const SparseMatrixd Mp = restrict(matrices.Mp, s.p_index, s.np, s.p_index, s.np);
+  s.C = lame.inv_lambda * Mp;
 
   if (kind == SolverKind::schur_cg) {
     s.chol.compute(s.Aff);
     if (s.chol.info() != Eigen::Success)
       throw SolverError("CHOLMOD could not factor the displacement block (is every rigid motion fixed?)");
-    s.mass.compute(matrices.Mp);
+    s.mass.compute(Mp);
     if (s.mass.info() != Eigen::Success) throw SolverError("pressure mass matrix is singular");
     s.precond_scale = 1.0 / (1.0 / (2 * lame.mu) + lame.inv_lambda);
   } else {
@@ -99,6 +111,7 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
 MixedSolver::~MixedSolver() = default;
 
 int MixedSolver::free_dofs() const { return impl_->nf + impl_->np; }
+int MixedSolver::pinned_pressures() const { return impl_->pinned_pressures; }
 
 MixedSolution MixedSolver::solve(const Eigen::VectorXd& f, const Eigen::VectorXd& u_fixed) const {
   const Impl& s = *impl_;
@@ -111,7 +124,9 @@ MixedSolution MixedSolver::solve(const Eigen::VectorXd& f, const Eigen::VectorXd
   const Eigen::VectorXd Au = s.M.A * uc, Bu = s.M.B * uc;
   Eigen::VectorXd bf(s.nf);
   for (int i = 0; i < s.nf; ++i) bf[i] = f[s.free_dofs[i]] - Au[s.free_dofs[i]];
-  const Eigen::VectorXd g = -Bu;
+  Eigen::VectorXd g(s.np);
+  for (size_t q = 0; q < s.p_index.size(); ++q)
+    if (s.p_index[q] >= 0) g[s.p_index[q]] = -Bu[q];
 
   MixedSolution out;
   Eigen::VectorXd uf, p;
@@ -158,7 +173,9 @@ MixedSolution MixedSolver::solve(const Eigen::VectorXd& f, const Eigen::VectorXd
                       std::to_string(out.residual) + " > " + std::to_string(s.tolerance));
   out.u = uc;
   for (int i = 0; i < s.nf; ++i) out.u[s.free_dofs[i]] = uf[i];
-  out.p = p;
+  out.p = Eigen::VectorXd::Zero(s.p_index.size());
+  for (size_t q = 0; q < s.p_index.size(); ++q)
+    if (s.p_index[q] >= 0) out.p[q] = p[s.p_index[q]];
   return out;
 }
 

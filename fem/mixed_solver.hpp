@@ -51,6 +51,8 @@ class MixedSolver {
 
   double factor_seconds() const { return factor_seconds_; }
   int free_dofs() const;  // free displacement DOFs + pressure DOFs
+  // Pressures coupled to no free displacement (all-held corner tets at ν = 0.5), fixed at 0.
+  int pinned_pressures() const;
   SolverKind kind() const { return kind_; }
 
  private:
