@@ -32,9 +32,4 @@ double SkinShape::base_area() const {
   return 4.0 * flat_.half_width * flat_.half_width;
 }
 
-double SkinShape::thinning_radius() const {
-  if (kind_ != GeometryKind::cap) return 0.0;
-  return std::sqrt(cap_.R * cap_.R - (cap_.R - cap_.h) * (cap_.R - cap_.h));
-}
-
 }  // namespace skinfem

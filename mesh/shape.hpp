@@ -22,8 +22,6 @@ class SkinShape {
   // Closed-form volume (mm³) and base area (mm²) of the truncated layer.
   double volume() const;
   double base_area() const;
-  // Radius at which the full cap's thickness reaches zero, sqrt(R² − (R − h)²); 0 for flat layers.
-  double thinning_radius() const;
 
  private:
   GeometryKind kind_;

@@ -36,10 +36,4 @@ double SizingField::operator()(double x, double y) const {
   return size;
 }
 
-double SizingField::h_min() const {
-  double size = h_max_;
-  for (const auto& r : regions_) size = std::min(size, r.h);
-  return size;
-}
-
 }  // namespace skinfem

@@ -18,7 +18,6 @@ class SizingField {
   explicit SizingField(const Scene& scene);
   double operator()(double x, double y) const;  // mm
   double h_max() const { return h_max_; }
-  double h_min() const;  // smallest size anywhere
 
  private:
   std::vector<RegionOfInterest> regions_;
