@@ -74,20 +74,6 @@ const ShippedLayer& shipped_layer() {
 
 const std::vector<Vec2> kOffsets = {{0.0, 0.0}, {1.0, 0.3}, {-2.0, 0.5}};
 
-// Component-wise max |a_i − b_i| / max_i |b_i|.
-std::array<double, 4> relative_gap(const std::vector<GreenSample>& a, const std::vector<GreenSample>& b) {
-  std::array<double, 4> out{};
-  for (size_t c = 0; c < 4; ++c) {
-    double peak = 0, gap = 0;
-    for (size_t i = 0; i < b.size(); ++i) {
-      peak = std::max(peak, std::abs(component(b[i], kComponents[c])));
-      gap = std::max(gap, std::abs(component(a[i], kComponents[c]) - component(b[i], kComponents[c])));
-    }
-    out[c] = gap / peak;
-  }
-  return out;
-}
-
 // The four readings of `sensor` from direct solves: a load built by `load(direction)` for a normal
 // (0, 0, −1) and a tangential (1, 0, 0) force, read at the sensor's centre or over its disc.
 template <class LoadFn>
@@ -164,9 +150,9 @@ TEST(FeGreen, UniformPatchEqualsDirectPatchLoadToQuadratureAccuracy) {
         own16.push_back(adjoint_quadrature(l, top, sensor, disc, cx, cy, q16));
         own24.push_back(adjoint_quadrature(l, top, sensor, disc, cx, cy, q24));
       }
-    const auto exact_rule = relative_gap(own16, direct), same_rule = relative_gap(at, own12);
-    const auto gap = relative_gap(at, direct), refine = relative_gap(own12, own24),
-               fine = relative_gap(own16, own24);
+    const auto exact_rule = max_error_over_peak(own16, direct), same_rule = max_error_over_peak(at, own12);
+    const auto gap = max_error_over_peak(at, direct), refine = max_error_over_peak(own12, own24),
+               fine = max_error_over_peak(own16, own24);
     for (size_t c = 0; c < 4; ++c) {
       const char* name = component_name(kComponents[c]);
       std::printf(
