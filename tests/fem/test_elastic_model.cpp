@@ -11,8 +11,8 @@
 
 #include "fem/base_traction.hpp"
 #include "fem/elastic_model.hpp"
-#include "mesh/surface_quadrature.hpp"
 #include "mesh/build.hpp"
+#include "mesh/surface_quadrature.hpp"
 
 namespace skinfem {
 namespace {

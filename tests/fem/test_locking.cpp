@@ -10,8 +10,8 @@
 
 #include "fem/assembly.hpp"
 #include "fem/elastic_model.hpp"
-#include "mesh/surface_quadrature.hpp"
 #include "fixtures.hpp"
+#include "mesh/surface_quadrature.hpp"
 
 namespace skinfem {
 namespace {
