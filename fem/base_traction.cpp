@@ -27,19 +27,6 @@ struct BaseIndex {
   }
 };
 
-void polar_rule(double diameter, std::vector<std::array<double, 3>>& pts) {
-  const GaussRule1d g = gauss_legendre01(12);
-  const std::vector<double>&r = g.x, &w = g.w;
-  const int nt = 32;
-  const double a = 0.5 * diameter;
-  for (int i = 0; i < 12; ++i)
-    for (int j = 0; j < nt; ++j) {
-      const double th = 2 * M_PI * (j + 0.5) / nt;
-      // ∫∫ f r dr dθ / (π a²)
-      pts.push_back({a * r[i] * std::cos(th), a * r[i] * std::sin(th), 2 * w[i] * r[i] / nt});
-    }
-}
-
 Eigen::SparseMatrix<double> base_mass(const TetMesh& m, const BaseIndex& idx) {
   std::vector<Eigen::Triplet<double>> t;
   for (int f : idx.faces)
@@ -94,10 +81,8 @@ SensorReading BaseTraction::reading_at(double x, double y) const {
 }
 
 SensorReading BaseTraction::disc_mean(double x, double y, double diameter) const {
-  std::vector<std::array<double, 3>> pts;
-  polar_rule(diameter, pts);
   SensorReading r;
-  for (const auto& p : pts) {
+  for (const auto& p : uniform_disc_rule(0.5 * diameter, 12, 32)) {
     const SensorReading v = reading_at(x + p[0], y + p[1]);
     r.sigma_z += p[2] * v.sigma_z;
     r.sigma_x += p[2] * v.sigma_x;
@@ -111,11 +96,8 @@ Eigen::VectorXd disc_reading_functional(const TetMesh& mesh, double x, double y,
                                         char component) {
   // reading = Σ_q w_q N(x_q)ᵀ T, T = M⁻¹ R  ⇒  reading = (M⁻¹ Σ_q w_q N(x_q))ᵀ R.
   const BaseIndex index(mesh);
-  std::vector<std::array<double, 3>> pts;
-  if (diameter > 0)
-    polar_rule(diameter, pts);
-  else
-    pts.push_back({0.0, 0.0, 1.0});  // the point value at the centre
+  const auto pts = diameter > 0 ? uniform_disc_rule(0.5 * diameter, 12, 32)
+                                : std::vector<std::array<double, 3>>{{0.0, 0.0, 1.0}};  // the centre value
   Eigen::VectorXd w = Eigen::VectorXd::Zero(index.nodes.size());
   for (const auto& p : pts) {
     double s, t;

@@ -64,13 +64,6 @@ LoadCaseResult ElasticModel::solve(const Eigen::VectorXd& f, const std::vector<P
     for (int i : punch_nodes_[k]) fz += r[3 * i + 2];
     return -fz;  // the punch pushes down on the skin: reaction −z is a positive pressing force
   };
-  auto all_reactions = [&](const MixedSolution& x, const Eigen::VectorXd& load) {
-    Eigen::VectorXd r = matrices_.A * x.u + matrices_.B.transpose() * x.p;
-    if (load.size()) r -= load;
-    for (int d = 0; d < r.size(); ++d)
-      if (!fixed_[d]) r[d] = 0;
-    return r;
-  };
   std::vector<MixedSolution> unit;
   std::vector<Eigen::VectorXd> unit_r;
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(3 * mesh_.num_nodes());
@@ -78,11 +71,11 @@ LoadCaseResult ElasticModel::solve(const Eigen::VectorXd& f, const std::vector<P
     Eigen::VectorXd g = zero;
     for (int i : punch_nodes_[k]) g[3 * i + 2] = -1.0;
     unit.push_back(solver_->solve(zero, g));
-    unit_r.push_back(all_reactions(unit.back(), {}));
+    unit_r.push_back(solver_->reactions(unit.back(), {}));
   }
   LoadCaseResult out;
   out.solution = solver_->solve(f);
-  Eigen::VectorXd r = all_reactions(out.solution, f);
+  Eigen::VectorXd r = solver_->reactions(out.solution, f);
   // δ: displacement-driven rows fix δ_k; force-driven rows ask punch_force(r_0 + Σ δ_j r_j) = F_k.
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(np, np);
   Eigen::VectorXd rhs(np);
@@ -122,30 +115,26 @@ Eigen::VectorXd ElasticModel::patch_load(const TractionPatch& patch) const {
   const Eigen::Vector3d dir =
       Eigen::Vector3d(patch.direction[0], patch.direction[1], patch.direction[2]).normalized();
   Eigen::VectorXd F = Eigen::VectorXd::Zero(3 * mesh_.num_nodes());
-  const int nr = 16, nt = 48;
-  const GaussRule1d g = gauss_legendre01(nr);
-  for (int i = 0; i < nr; ++i) {
-    const double rho = g.x[i], w = g.w[i];
-    for (int j = 0; j < nt; ++j) {
-      const double th = 2 * M_PI * (j + 0.5) / nt;
-      const double weight = w * rho / nt;  // fraction of the total force carried by this point
-      const double x = patch.center[0] + a * rho * std::cos(th), y = patch.center[1] + a * rho * std::sin(th);
-      F += point_load(x, y, patch.force * weight * 2 * dir);
-    }
-  }
+  for (const auto& q : uniform_disc_rule(a, 16, 48))
+    add_point_load(F, patch.center[0] + q[0], patch.center[1] + q[1], patch.force * q[2] * dir);
   return F;
 }
 
 Eigen::VectorXd ElasticModel::point_load(double x, double y, const Eigen::Vector3d& force) const {
   Eigen::VectorXd F = Eigen::VectorXd::Zero(3 * mesh_.num_nodes());
-  double bs, bt;
-  const int best = top_index_->find(x, y, bs, bt);
-  if (best < 0)
+  add_point_load(F, x, y, force);
+  return F;
+}
+
+void ElasticModel::add_point_load(Eigen::VectorXd& F, double x, double y,
+                                  const Eigen::Vector3d& force) const {
+  double s, t;
+  const int f = top_index_->find(x, y, s, t);
+  if (f < 0)
     throw std::out_of_range("load point (" + std::to_string(x) + ", " + std::to_string(y) +
                             ") is off the top surface");
-  const auto N = triangle_shape(bs, bt);
-  for (int k = 0; k < 6; ++k) F.segment<3>(3 * mesh_.faces(best, k)) += N[k] * force;
-  return F;
+  const auto N = triangle_shape(s, t);
+  for (int k = 0; k < 6; ++k) F.segment<3>(3 * mesh_.faces(f, k)) += N[k] * force;
 }
 
 }  // namespace skinfem

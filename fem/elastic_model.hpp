@@ -59,6 +59,9 @@ class ElasticModel {
   // Load vector of a point force at the top-surface point above (x, y): f = N(x) F. Throws off the top.
   Eigen::VectorXd point_load(double x, double y, const Eigen::Vector3d& force) const;
 
+  // Adds the point load above (x, y) to F, without allocating.
+  void add_point_load(Eigen::VectorXd& F, double x, double y, const Eigen::Vector3d& force) const;
+
   // Base-constrained DOF flags (3N) and punch constraint groups.
   const std::vector<bool>& fixed() const { return fixed_; }
   const std::vector<std::vector<int>>& punch_groups() const { return punch_nodes_; }

@@ -9,24 +9,15 @@
 namespace skinfem::green {
 
 std::vector<std::array<double, 3>> load_quadrature(LayerLoad load, double a, int nr, int nt) {
-  std::vector<std::array<double, 3>> pts;
   if (load == LayerLoad::point || a <= 0) return {{0.0, 0.0, 1.0}};
+  if (load == LayerLoad::uniform) return uniform_disc_rule(a, nr, nt);
+  // r = a sin φ removes the edge singularity: ∫ f r dr / (2πa√(a² − r²)) dθ = (1/2π) ∫∫ f sin φ dφ dθ
   const GaussRule1d g = gauss_legendre01(nr);
-  const std::vector<double>&x = g.x, &w = g.w;
+  std::vector<std::array<double, 3>> pts;
   for (int i = 0; i < nr; ++i)
     for (int j = 0; j < nt; ++j) {
-      const double th = 2 * M_PI * (j + 0.5) / nt;
-      double r, weight;
-      if (load == LayerLoad::punch) {
-        // r = a sin φ removes the edge singularity: ∫ f r dr / (2πa√(a² − r²)) dθ = (1/2π) ∫∫ f sin φ dφ dθ
-        const double phi = 0.5 * M_PI * x[i];
-        r = a * std::sin(phi);
-        weight = 0.5 * M_PI * w[i] * std::sin(phi) / nt;
-      } else {
-        r = a * x[i];
-        weight = 2 * w[i] * x[i] / nt;
-      }
-      pts.push_back({r * std::cos(th), r * std::sin(th), weight});
+      const double th = 2 * M_PI * (j + 0.5) / nt, phi = 0.5 * M_PI * g.x[i], r = a * std::sin(phi);
+      pts.push_back({r * std::cos(th), r * std::sin(th), 0.5 * M_PI * g.w[i] * std::sin(phi) / nt});
     }
   return pts;
 }

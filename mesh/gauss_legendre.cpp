@@ -28,4 +28,16 @@ GaussRule1d gauss_legendre01(int n) {
   return rule;
 }
 
+std::vector<std::array<double, 3>> uniform_disc_rule(double radius, int nr, int nt) {
+  const GaussRule1d g = gauss_legendre01(nr);
+  std::vector<std::array<double, 3>> pts;
+  pts.reserve(static_cast<size_t>(nr) * nt);
+  for (int i = 0; i < nr; ++i)
+    for (int j = 0; j < nt; ++j) {
+      const double th = 2 * M_PI * (j + 0.5) / nt, r = radius * g.x[i];
+      pts.push_back({r * std::cos(th), r * std::sin(th), 2 * g.w[i] * g.x[i] / nt});
+    }
+  return pts;
+}
+
 }  // namespace skinfem
