@@ -17,7 +17,7 @@
 #include "fem/elastic_model.hpp"
 #include "fem/fields.hpp"
 #include "mesh/build.hpp"
-#include "mesh/shape.hpp"
+#include "validation/load_metrics.hpp"
 
 namespace skinfem::app {
 
@@ -43,26 +43,11 @@ int run_solve(const Scene& scene, const std::string& out_dir, SolverKind solver)
   const BaseTraction base(mesh, r.reactions);
   wall["solve"] = clock.seconds();
 
-  // Force balance: the base (and side) reactions against the applied load.
   const Eigen::Vector3d applied(r.applied_force_N[0], r.applied_force_N[1], r.applied_force_N[2]);
-  const double balance = (base.total_force() + applied).norm() / applied.norm();
-
-  // Centre ratio for a normal load: base traction below the load centre over Boussinesq's 3F/(2πh²).
+  const LoadMetrics metrics = load_metrics(scene, r, base);
+  const double balance = metrics.force_balance_rel;
   nlohmann::json summary;
-  Vec2 centre{0, 0};
-  double normal_force = 0;
-  if (!scene.loads.punches.empty()) {
-    centre = scene.loads.punches[0].center;
-    normal_force = r.punches[0].force_N;
-  } else if (std::abs(scene.loads.patches[0].direction[2]) > 0.99) {
-    centre = scene.loads.patches[0].center;
-    normal_force = scene.loads.patches[0].force;
-  }
-  if (normal_force != 0) {
-    const double h = SkinShape(scene.geometry).top_z(centre[0], centre[1]);
-    summary["center_ratio"] =
-        base.reading_at(centre[0], centre[1]).sigma_z / (3 * normal_force / (2 * M_PI * h * h));
-  }
+  if (metrics.center_ratio) summary["center_ratio"] = *metrics.center_ratio;
 
   clock = Stopwatch();
   prepare_output_dir(out_dir);

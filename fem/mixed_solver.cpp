@@ -66,10 +66,11 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
   // A pressure DOF coupled to no free displacement (a corner tet whose nodes are all held, possible
   // with fixed sides) is undetermined at ν = 0.5: pin it to 0. It only acts on held DOFs.
   const int nv = matrices.Mp.rows();
-  const SparseMatrixd B_all_free = restrict(matrices.B, {}, nv, s.free_index, s.nf);
   std::vector<double> coupling(nv, 0.0);
-  for (int c = 0; c < B_all_free.outerSize(); ++c)
-    for (SparseMatrixd::InnerIterator it(B_all_free, c); it; ++it) coupling[it.row()] += std::abs(it.value());
+  for (int c = 0; c < matrices.B.outerSize(); ++c)
+    if (s.free_index[c] >= 0)
+      for (SparseMatrixd::InnerIterator it(matrices.B, c); it; ++it)
+        coupling[it.row()] += std::abs(it.value());
   s.p_index.assign(nv, -1);
   for (int q = 0; q < nv; ++q)
     if (coupling[q] > 0 || lame.inv_lambda > 0) s.p_index[q] = s.np++;

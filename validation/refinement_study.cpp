@@ -10,7 +10,7 @@
 #include "fem/elastic_model.hpp"
 #include "green/layer_exact.hpp"
 #include "mesh/build.hpp"
-#include "mesh/shape.hpp"
+#include "validation/load_metrics.hpp"
 
 namespace skinfem {
 
@@ -70,12 +70,10 @@ StudyResult refinement_study(const Scene& base_scene, const std::vector<double>&
       timing.extra_rhs_s = seconds_since(t0);
       level.solvers.push_back(timing);
 
-      const BaseTraction base(mesh, r.reactions);
-      const Eigen::Vector3d applied(r.applied_force_N[0], r.applied_force_N[1], r.applied_force_N[2]);
-      level.force_balance_rel = (base.total_force() + applied).norm() / applied.norm();
-      const double F = scene.loads.punches.empty() ? scene.loads.patches[0].force : r.punches[0].force_N;
-      const double h = SkinShape(scene.geometry).top_z(c[0], c[1]);
-      level.center_ratio = base.reading_at(c[0], c[1]).sigma_z / (3 * F / (2 * M_PI * h * h));
+      const LoadMetrics metrics = load_metrics(scene, r, BaseTraction(mesh, r.reactions));
+      if (!metrics.center_ratio) throw std::invalid_argument("refinement study needs a normal load");
+      level.force_balance_rel = metrics.force_balance_rel;
+      level.center_ratio = *metrics.center_ratio;
     }
     out.levels.push_back(level);
   }
