@@ -20,4 +20,9 @@ struct AdjointSetup {
 
 std::unique_ptr<AdjointSetup> adjoint_setup(const Scene& scene);
 
+// Skin thickness above a sensor (exact shapes) or the scene's nominal thickness.
+double thickness_at(const Scene& scene, const Vec2& sensor);
+// Half-width of the calibration scan: at least 4h, more if the scene asks.
+double scan_half_width(const Scene& scene, double h);
+
 }  // namespace skinfem::app

@@ -18,7 +18,6 @@
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "green/calibration.hpp"
-#include "mesh/shape.hpp"
 #include "mesh/vtu.hpp"
 
 namespace skinfem::app {
@@ -47,7 +46,6 @@ int run_green(const Scene& scene, const std::string& out_dir) {
 
   clock = Stopwatch();
   progress("scanning the calibration load");
-  const SkinShape shape(scene.geometry);
   const bool flat = scene.geometry.kind == GeometryKind::flat;
   std::ostringstream csv;
   csv.precision(10);
@@ -56,9 +54,9 @@ int run_green(const Scene& scene, const std::string& out_dir) {
   nlohmann::json per_sensor = nlohmann::json::array();
   for (size_t s = 0; s < scene.sensors.positions.size(); ++s) {
     const auto& pos = scene.sensors.positions[s];
-    const double h = shape.exact() ? shape.top_z(pos[0], pos[1]) : nominal_thickness(scene);
-    const double half = std::max(4 * h, scene.calibration.scan_half_width);
-    const auto prof = green::scan_profile(fe, s, LayerLoad::punch, radius, half, scene.calibration.spacing);
+    const double h = thickness_at(scene, pos);
+    const auto prof = green::scan_profile(fe, s, LayerLoad::punch, radius, scan_half_width(scene, h),
+                                          scene.calibration.spacing);
     std::vector<GreenSample> exact, exact_disc;
     if (flat) {
       const green::LayerGreen layer(h, scene.material.nu, LayerLoad::punch, radius);

@@ -17,7 +17,6 @@
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "green/calibration.hpp"
-#include "mesh/shape.hpp"
 
 namespace skinfem::app {
 
@@ -45,14 +44,14 @@ int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& 
   nlohmann::json wall = setup->wall;
 
   clock = Stopwatch();
-  const SkinShape shape(scene.geometry);
   const bool flat = scene.geometry.kind == GeometryKind::flat;
   nlohmann::json sensors = nlohmann::json::array();
   nlohmann::json summary;
   for (size_t s = 0; s < scene.sensors.positions.size(); ++s) {
     const auto& pos = scene.sensors.positions[s];
-    const double h = shape.exact() ? shape.top_z(pos[0], pos[1]) : nominal_thickness(scene);
-    const auto prof = green::scan_profile(fe, s, load, radius, 4 * h, scene.calibration.spacing);
+    const double h = thickness_at(scene, pos);
+    const auto prof =
+        green::scan_profile(fe, s, load, radius, scan_half_width(scene, h), scene.calibration.spacing);
     const green::KReport fe_k = green::fit_profile(prof.offset_x, prof.point, h);
     nlohmann::json js = {{"sensor", s + 1},
                          {"x_mm", pos[0]},
@@ -61,7 +60,7 @@ int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& 
                          {"k_central", fe_k.k_central},
                          {"k_lsq_line", fe_k.k_lsq_line},
                          {"components", components_json(fe_k)}};
-    if (!flat && shape.exact()) {
+    if (scene.geometry.kind == GeometryKind::cap) {
       std::vector<double> zz;
       for (const auto& g : prof.point) zz.push_back(g.zz);
       js["effective_thickness_mm"] =
