@@ -76,7 +76,6 @@ PointLocator::PointLocator(const TetMesh& mesh) {
       bulge = std::max(bulge, (mesh.nodes.row(mesh.tets(t, 4 + e)) - mid).norm());
     }
   impl_.reset(new Impl{mesh, Tree(prims.begin(), prims.end()), diameter, bulge});
-  impl_->tree.accelerate_distance_queries();
 }
 
 PointLocator::~PointLocator() = default;
