@@ -92,10 +92,19 @@ SensorReading BaseTraction::disc_mean(double x, double y, double diameter) const
 
 Eigen::Vector3d BaseTraction::total_force() const { return impl_->total; }
 
-Eigen::VectorXd disc_reading_functional(const TetMesh& mesh, double x, double y, double diameter,
-                                        char component) {
+struct ReadingFunctionals::Impl {
+  const TetMesh& mesh;
+  BaseIndex index;
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> mass;
+  explicit Impl(const TetMesh& m) : mesh(m), index(m), mass(base_mass(m, index)) {}
+};
+
+ReadingFunctionals::ReadingFunctionals(const TetMesh& mesh) : impl_(new Impl(mesh)) {}
+ReadingFunctionals::~ReadingFunctionals() = default;
+
+Eigen::VectorXd ReadingFunctionals::operator()(double x, double y, double diameter, char component) const {
   // reading = Σ_q w_q N(x_q)ᵀ T, T = M⁻¹ R  ⇒  reading = (M⁻¹ Σ_q w_q N(x_q))ᵀ R.
-  const BaseIndex index(mesh);
+  const auto& [mesh, index, mass] = *impl_;
   const auto pts = diameter > 0 ? uniform_disc_rule(0.5 * diameter, 12, 32)
                                 : std::vector<std::array<double, 3>>{{0.0, 0.0, 1.0}};  // the centre value
   Eigen::VectorXd w = Eigen::VectorXd::Zero(index.nodes.size());
@@ -106,13 +115,17 @@ Eigen::VectorXd disc_reading_functional(const TetMesh& mesh, double x, double y,
     const auto N = triangle_shape(s, t);
     for (int a = 0; a < 6; ++a) w[index.local.at(mesh.faces(f, a))] += p[2] * N[a];
   }
-  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> chol(base_mass(mesh, index));
-  const Eigen::VectorXd c = chol.solve(w);
+  const Eigen::VectorXd c = mass.solve(w);
   Eigen::VectorXd out = Eigen::VectorXd::Zero(3 * mesh.num_nodes());
   const int k = component == 'z' ? 2 : 0;
   const double sign = component == 'z' ? 1.0 : -1.0;
   for (size_t i = 0; i < index.nodes.size(); ++i) out[3 * index.nodes[i] + k] = sign * c[i];
   return out;
+}
+
+Eigen::VectorXd disc_reading_functional(const TetMesh& mesh, double x, double y, double diameter,
+                                        char component) {
+  return ReadingFunctionals(mesh)(x, y, diameter, component);
 }
 
 }  // namespace skinfem

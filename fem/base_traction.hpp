@@ -39,7 +39,19 @@ class BaseTraction {
 
 // Weights w (3N vector) such that the disc-mean reading component of the traction field built from
 // reactions R is w·R (a linear functional: the adjoint load of reciprocity). component: 'z' or 'x';
-// diameter 0 gives the point value at (x, y).
+// diameter 0 gives the point value at (x, y). The class factors the base mass matrix once for many
+// sensors; the free function is the one-off form.
+class ReadingFunctionals {
+ public:
+  explicit ReadingFunctionals(const TetMesh& mesh);
+  ~ReadingFunctionals();
+  Eigen::VectorXd operator()(double x, double y, double diameter, char component) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
 Eigen::VectorXd disc_reading_functional(const TetMesh& mesh, double x, double y, double diameter,
                                         char component);
 

@@ -29,14 +29,15 @@ FeGreen::FeGreen(const ElasticModel& model, const Sensors& sensors,
     throw std::invalid_argument("FeGreen needs a model without punch constraints");
   const TetMesh& m = model.mesh();
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(3 * m.num_nodes());
+  const ReadingFunctionals functional(m);
   for (size_t s = 0; s < sensors.positions.size(); ++s) {
     if (progress)
       progress("adjoint solves for sensor " + std::to_string(s + 1) + "/" +
                std::to_string(sensors.positions.size()));
     for (bool disc : {false, true})
       for (char reading : {'z', 'x'}) {
-        const Eigen::VectorXd w = disc_reading_functional(m, sensors.positions[s][0], sensors.positions[s][1],
-                                                          disc ? sensors.disc_diameter : 0.0, reading);
+        const Eigen::VectorXd w = functional(sensors.positions[s][0], sensors.positions[s][1],
+                                             disc ? sensors.disc_diameter : 0.0, reading);
         const MixedSolution y = model.solver().solve(zero, -w);
         max_residual_ = std::max(max_residual_, y.residual);
         adjoint_.push_back(y.u);
