@@ -1,6 +1,7 @@
 #include "app/common.hpp"
 
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -14,6 +15,18 @@ void prepare_output_dir(const std::string& dir) {
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir))
     throw std::runtime_error("--out " + dir + ": cannot create output directory (" + ec.message() + ")");
+}
+
+void check_output_dir(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path p = fs::absolute(dir, ec);
+  if (fs::exists(p, ec) && !fs::is_directory(p, ec))
+    throw std::runtime_error("--out " + dir + ": exists and is not a directory");
+  while (!p.empty() && !fs::exists(p, ec)) p = p.parent_path();
+  if (p.empty() || !fs::is_directory(p, ec) || access(p.c_str(), W_OK) != 0)
+    throw std::runtime_error("--out " + dir + ": cannot create or write the output directory (" + p.string() +
+                             " is not a writable directory)");
 }
 
 void write_text_atomic(const std::string& path, const std::string& text) {

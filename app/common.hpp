@@ -9,6 +9,8 @@
 
 namespace skinfem::app {
 
+// Fails early (before any computation) when DIR could not be created or written; creates nothing.
+void check_output_dir(const std::string& dir);
 // Creates DIR if needed; throws with a one-line message when it cannot.
 void prepare_output_dir(const std::string& dir);
 // Writes text to path through a temporary file and a rename: never a half-written file.

@@ -1,6 +1,6 @@
 // skinfem — finite-element verification toolkit for tactile sensors under an elastomer skin.
-// Subcommands: mesh, solve, study, kfit, green (see each cmd_*.cpp for what it computes and writes).
-// Exit codes: 0 success, 2 bad input (scene or arguments), 1 any other failure.
+// Subcommands: mesh, solve, study, kfit, green, contact, defect (see each cmd_*.cpp for what it computes and
+// writes). Exit codes: 0 success, 2 bad input (scene or arguments), 1 any other failure.
 #include <CLI/CLI.hpp>
 #include <iostream>
 
@@ -35,7 +35,17 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   auto* green_cmd =
       cli.add_subcommand("green", "FE Green tensors of every sensor (green.csv, green_maps.vtp)");
-  for (auto* sub : {mesh, solve, study, kfit, green_cmd}) {
+  auto* contact_cmd = cli.add_subcommand(
+      "contact",
+      "rigid indenter in contact with the skin (pressure.vtp, fields.vtu, sensors.csv, summary.json)");
+  std::string friction = "scene";
+  contact_cmd
+      ->add_option("--friction", friction, "friction mode (default: the scene's contact.friction.mode)")
+      ->check(CLI::IsMember({"scene", "none", "static", "uncoupled", "coupled"}))
+      ->capture_default_str();
+  auto* defect = cli.add_subcommand(
+      "defect", "hole swept through the contact, static and sliding (defect.csv, defect.pvd, summary.json)");
+  for (auto* sub : {mesh, solve, study, kfit, green_cmd, contact_cmd, defect}) {
     sub->add_option("scene", scene_path, "scene JSON file")->required();
     sub->add_option("--out", out_dir, "output directory")->capture_default_str();
   }
@@ -54,6 +64,8 @@ int main(int argc, char** argv) {
     if (solve->parsed()) return skinfem::app::run_solve(scene, out_dir, solver);
     if (green_cmd->parsed()) return skinfem::app::run_green(scene, out_dir);
     if (kfit->parsed()) return skinfem::app::run_kfit(scene, out_dir, load_name);
+    if (contact_cmd->parsed()) return skinfem::app::run_contact(scene, out_dir, friction);
+    if (defect->parsed()) return skinfem::app::run_defect(scene, out_dir);
     if (study->parsed()) return skinfem::app::run_study(scene, out_dir, scales);
   } catch (const skinfem::SceneError& e) {
     std::cerr << "skinfem: " << e.what() << std::endl;

@@ -180,6 +180,39 @@ MixedSolution MixedSolver::solve(const Eigen::VectorXd& f, const Eigen::VectorXd
   return out;
 }
 
+Eigen::MatrixXd MixedSolver::solve_block(const Eigen::MatrixXd& F, const Eigen::MatrixXd& U_fixed) const {
+  const Impl& s = *impl_;
+  const int n3 = s.M.A.rows(), k = F.cols();
+  Eigen::MatrixXd U = Eigen::MatrixXd::Zero(n3, k);
+  if (U_fixed.size())
+    for (int d = 0; d < n3; ++d)
+      if (s.free_index[d] < 0) U.row(d) = U_fixed.row(d);
+  if (kind_ == SolverKind::schur_cg) {
+    for (int j = 0; j < k; ++j) U.col(j) = solve(F.col(j), U.col(j)).u;
+    return U;
+  }
+  // Lift the prescribed values as in solve(): b_f = f_f − A_fc u_c, g = −B_c u_c.
+  const Eigen::MatrixXd AU = s.M.A * U, BU = s.M.B * U;
+  Eigen::MatrixXd b(s.nf + s.np, k);
+  for (int i = 0; i < s.nf; ++i) b.row(i) = F.row(s.free_dofs[i]) - AU.row(s.free_dofs[i]);
+  for (size_t q = 0; q < s.p_index.size(); ++q)
+    if (s.p_index[q] >= 0) b.row(s.nf + s.p_index[q]) = -BU.row(q);
+  const Eigen::MatrixXd x = s.ldlt->solve(b);
+  const Eigen::MatrixXd r1 =
+      s.Aff * x.topRows(s.nf) + s.Bf.transpose() * x.bottomRows(s.np) - b.topRows(s.nf);
+  const Eigen::MatrixXd r2 = s.Bf * x.topRows(s.nf) - s.C * x.bottomRows(s.np) - b.bottomRows(s.np);
+  for (int j = 0; j < k; ++j) {
+    const double bnorm = b.col(j).norm();
+    const double res = bnorm > 0 ? std::sqrt(r1.col(j).squaredNorm() + r2.col(j).squaredNorm()) / bnorm : 0.0;
+    if (!std::isfinite(res) || res > s.tolerance)
+      throw SolverError("direct_ldlt block solve missed its tolerance: relative residual " +
+                        std::to_string(res) + " > " + std::to_string(s.tolerance) + " (column " +
+                        std::to_string(j) + ")");
+  }
+  for (int i = 0; i < s.nf; ++i) U.row(s.free_dofs[i]) = x.row(i);
+  return U;
+}
+
 Eigen::VectorXd MixedSolver::reactions(const MixedSolution& x, const Eigen::VectorXd& f) const {
   const Impl& s = *impl_;
   Eigen::VectorXd r = s.M.A * x.u + s.M.B.transpose() * x.p;

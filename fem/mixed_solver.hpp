@@ -45,6 +45,11 @@ class MixedSolver {
   // read; pass an empty vector for zero). Throws SolverError if the relative residual exceeds the tolerance.
   MixedSolution solve(const Eigen::VectorXd& f, const Eigen::VectorXd& u_fixed = {}) const;
 
+  // Displacements (3N×k) for k load vectors F (3N×k) and prescribed values U_fixed (3N×k, only fixed
+  // DOFs read; empty for zero), solved as one block (direct_ldlt; schur_cg goes column by column).
+  // Same residual check as solve().
+  Eigen::MatrixXd solve_block(const Eigen::MatrixXd& F, const Eigen::MatrixXd& U_fixed = {}) const;
+
   // Reactions at the fixed DOFs, K x − f restricted to them (3N vector, zero at free DOFs): the force
   // the supports exert on the body, N.
   Eigen::VectorXd reactions(const MixedSolution& x, const Eigen::VectorXd& f) const;

@@ -84,6 +84,20 @@ Eigen::VectorXd MumpsLdlt::solve(const Eigen::VectorXd& b) const {
   return Eigen::Map<const Eigen::VectorXd>(s.rhs.data(), b.size());
 }
 
+Eigen::MatrixXd MumpsLdlt::solve(const Eigen::MatrixXd& B) const {
+  std::lock_guard<std::mutex> lock(mumps_mutex);
+  Impl& s = *impl_;
+  Eigen::MatrixXd X = B;  // column-major, leading dimension n: MUMPS's dense multi-RHS layout
+  s.id.rhs = X.data();
+  s.id.nrhs = static_cast<MUMPS_INT>(B.cols());
+  s.id.lrhs = s.id.n;
+  s.id.icntl[19] = 0;
+  s.id.icntl[20] = 0;
+  s.id.icntl[26] = 32;  // ICNTL(27): blocking factor of the solve phase
+  s.call(3);
+  return X;
+}
+
 double MumpsLdlt::factor_entries() const {
   const auto& id = impl_->id;
   return id.infog[28];  // INFOG(29); negative would mean millions (×−10⁶), not reached here

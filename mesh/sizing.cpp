@@ -25,6 +25,14 @@ SizingField::SizingField(const Scene& scene)
       regions_.push_back({s, s, 0.5 * scene.sensors.disc_diameter, h_min});
   for (const auto& p : scene.loads.punches) regions_.push_back({p.center, p.center, 0.5 * p.diameter, h_min});
   for (const auto& p : scene.loads.patches) regions_.push_back({p.center, p.center, 0.5 * p.diameter, h_min});
+  if (scene.contact) {
+    const Vec2 c = contact_center(scene);
+    regions_.push_back({c, c, contact_zone_radius(scene), contact_zone_h(scene)});
+    for (const auto& hole : scene.contact->holes)
+      regions_.push_back({hole.center, hole.center, 0.5 * hole.diameter, contact_zone_h(scene)});
+    if (const auto& s = scene.contact->sweep; s && s->h > 0)
+      regions_.push_back({s->from, s->to, 0.5 * s->hole_diameter + s->h, s->h});
+  }
 }
 
 double SizingField::operator()(double x, double y) const {

@@ -14,7 +14,8 @@ namespace skinfem {
 
 class SizingField {
  public:
-  // Regions: mesh.regions, the sensor discs (if mesh.refine_sensors), every punch and traction patch.
+  // Regions: mesh.regions, the sensor discs (if mesh.refine_sensors), every punch and traction patch, and
+  // with a contact: its candidate zone (size contact.h), its holes and the sweep path (size sweep.h).
   explicit SizingField(const Scene& scene);
   double operator()(double x, double y) const;  // mm
   double h_max() const { return h_max_; }

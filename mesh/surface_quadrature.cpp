@@ -1,5 +1,7 @@
 #include "mesh/surface_quadrature.hpp"
 
+#include <cmath>
+
 namespace skinfem {
 
 Eigen::Matrix<double, 6, 1> triangle_shape(double s, double t) {
@@ -35,7 +37,8 @@ std::vector<FacePoint> face_quadrature(const TetMesh& m, int f) {
     }
     const auto N = triangle_shape(s, t);
     const Eigen::Vector3d n = xs.cross(xt);
-    out.push_back({X.transpose() * N, N, n.normalized(), 0.5 * p[2] * n.norm()});
+    out.push_back(
+        {X.transpose() * N, N, n.normalized(), 0.5 * p[2] * n.norm(), 0.5 * p[2] * std::abs(n.z()), s, t});
   }
   return out;
 }

@@ -13,6 +13,8 @@ struct FacePoint {
   Eigen::Matrix<double, 6, 1> N;  // face shape functions there (node order of TetMesh::faces)
   Eigen::Vector3d normal;         // outward unit normal
   double weight;                  // quadrature weight × surface Jacobian, mm²
+  double weight_xy;               // quadrature weight × Jacobian of the projection onto (x, y), mm²
+  double s, t;                    // face parameters of the point
 };
 
 // Quadratic triangle shape functions at parameters (s, t): nodes 0, 1, 2, then edges 01, 12, 20.

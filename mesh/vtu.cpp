@@ -99,24 +99,29 @@ void write_boundary_vtu(const std::string& path, const TetMesh& mesh) {
 
 void write_surface_vtp(const std::string& path, const TetMesh& mesh, int marker,
                        const std::vector<DataArray>& point_data) {
-  std::vector<int> local(mesh.num_nodes(), -1), nodes;
+  std::vector<int> faces;
   for (int f = 0; f < mesh.faces.rows(); ++f)
-    if (mesh.face_marker(f) == marker)
-      for (int k = 0; k < 6; ++k)
-        if (local[mesh.faces(f, k)] < 0)
-          local[mesh.faces(f, k)] = static_cast<int>(nodes.size()), nodes.push_back(mesh.faces(f, k));
+    if (mesh.face_marker(f) == marker) faces.push_back(f);
+  write_faces_vtp(path, mesh, faces, point_data);
+}
+
+void write_faces_vtp(const std::string& path, const TetMesh& mesh, const std::vector<int>& faces,
+                     const std::vector<DataArray>& point_data) {
+  std::vector<int> local(mesh.num_nodes(), -1), nodes;
+  for (int f : faces)
+    for (int k = 0; k < 6; ++k)
+      if (local[mesh.faces(f, k)] < 0)
+        local[mesh.faces(f, k)] = static_cast<int>(nodes.size()), nodes.push_back(mesh.faces(f, k));
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   for (int n : nodes) points->InsertNextPoint(mesh.nodes(n, 0), mesh.nodes(n, 1), mesh.nodes(n, 2));
   vtkNew<vtkCellArray> polys;
   static const int split[4][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
-  for (int f = 0; f < mesh.faces.rows(); ++f) {
-    if (mesh.face_marker(f) != marker) continue;
+  for (int f : faces)
     for (const auto& t : split) {
       vtkIdType ids[3] = {local[mesh.faces(f, t[0])], local[mesh.faces(f, t[1])], local[mesh.faces(f, t[2])]};
       polys->InsertNextCell(3, ids);
     }
-  }
   vtkNew<vtkPolyData> poly;
   poly->SetPoints(points);
   poly->SetPolys(polys);

@@ -26,6 +26,10 @@ void write_vtu(const std::string& path, const TetMesh& mesh, const std::vector<D
 void write_surface_vtp(const std::string& path, const TetMesh& mesh, int marker,
                        const std::vector<DataArray>& point_data);
 
+// The same for a chosen list of boundary faces (e.g. a contact zone).
+void write_faces_vtp(const std::string& path, const TetMesh& mesh, const std::vector<int>& faces,
+                     const std::vector<DataArray>& point_data);
+
 // The boundary faces as VTK_QUADRATIC_TRIANGLE cells with cell data "boundary_marker".
 void write_boundary_vtu(const std::string& path, const TetMesh& mesh);
 

@@ -14,6 +14,19 @@
 //   loads*        {"punches"*: [{"center", "diameter", "force" | "displacement"}],
 //                  "patches"*: [{"center", "diameter", "direction": [x, y, z], "force"}]}
 //   calibration*  {"punch_diameter"*, "scan_half_width"*, "spacing"*}
+//   contact*      {"indenter": {"type": "plane"} | {"type": "sphere", "R", "center": [x, y]},
+//                  "force" | "depth",                 N total normal force, or mm rigid approach (> 0)
+//                  "holes"*: [{"center": [x, y], "diameter"}],       discs where the indenter is absent
+//                  "zone_radius"*, "h"*,              candidate contact zone radius (default 1.25 × Hertz)
+//                                                     and its mesh size (default mesh.h_min)
+//                  "friction"*: {"mode"*: "none" | "static" | "uncoupled" | "coupled", "mu"*,
+//                  "static_ratio"*,
+//                                "direction"*: [dx, dy]},          sliding direction of the indenter
+//                  "sweep"*: {"from": [x, y], "to": [x, y], "positions"* (default 201),
+//                             "hole_diameter"* (default 0.5), "h"*}}  a hole swept for `skinfem defect`
+//                 A plane needs a cap (it touches a flat layer everywhere); holes, the sphere's centre and
+//                 the sweep must lie on the skin, and the candidate zone at least one thickness inside its
+//                 edge.
 // Unknown keys, duplicate keys, wrong types, missing required keys and out-of-range values are errors.
 // Every error is a SceneError whose what() is one line: "<file>: <json.path> = <value>: <what is allowed>".
 #include "scene/load.hpp"
@@ -29,6 +42,7 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -493,12 +507,125 @@ Calibration read_calibration(const Reader& r, const json& c) {
   return cal;
 }
 
+// Distance from p to the footprint's edge (negative outside); +inf for imported surfaces (not known here).
+double inside_margin(const Geometry& g, const Vec2& p) {
+  if (g.kind == GeometryKind::cap)
+    return g.cap.truncation_radius - std::hypot(p[0] - g.cap.apex_x, p[1] - g.cap.apex_y);
+  if (g.kind == GeometryKind::flat) return g.flat.half_width - std::max(std::abs(p[0]), std::abs(p[1]));
+  return std::numeric_limits<double>::infinity();
+}
+
+ContactLoad read_contact(const Reader& r, const json& c, const Scene& scene) {
+  const std::string P = "contact";
+  r.object(c, P, {"indenter", "force", "depth", "holes", "zone_radius", "h", "friction", "sweep"});
+  ContactLoad out;
+  const std::string PI = sub(P, "indenter");
+  const json& ind = r.need(c, P, "indenter", R"({"type": "plane"} or {"type": "sphere", "R", "center"})");
+  if (!ind.is_object()) r.fail(PI, ind, R"(must be {"type": "plane"} or {"type": "sphere", "R", "center"})");
+  const json& type = r.need(ind, PI, "type", R"("plane" or "sphere")");
+  if (type == "plane") {
+    r.object(ind, PI, {"type"});
+    out.indenter = IndenterKind::plane;
+    if (scene.geometry.kind != GeometryKind::cap)
+      r.fail(sub(PI, "type"), type,
+             "a plane needs a cap geometry (on a flat layer it touches everywhere at once, on an imported "
+             "surface its first touch is not known); use a sphere");
+  } else if (type == "sphere") {
+    r.object(ind, PI, {"type", "R", "center"});
+    out.indenter = IndenterKind::sphere;
+    out.sphere_R = r.number(ind, PI, "R", positive());
+    out.center = r.vec2(ind, PI, "center");
+    if (inside_margin(scene.geometry, out.center) <= 0)
+      r.fail(sub(PI, "center"), json::array({out.center[0], out.center[1]}),
+             "must lie on the skin's footprint");
+  } else {
+    r.fail(sub(PI, "type"), type, R"(must be "plane" or "sphere")");
+  }
+  const json* force = Reader::find(c, "force");
+  const json* depth = Reader::find(c, "depth");
+  if ((force != nullptr) == (depth != nullptr))
+    r.fail(P, c, R"(must have exactly one of "force" (N) or "depth" (mm))");
+  if (force) out.force = r.number(*force, sub(P, "force"), positive());
+  if (depth) out.depth = r.number(*depth, sub(P, "depth"), positive());
+  if (Reader::find(c, "holes")) {
+    const json& holes = r.array(c, P, "holes", R"(an array of holes {"center", "diameter"})");
+    for (std::size_t i = 0; i < holes.size(); ++i) {
+      const std::string PH = at(sub(P, "holes"), i);
+      r.object(holes[i], PH, {"center", "diameter"});
+      Hole h;
+      h.center = r.vec2(holes[i], PH, "center");
+      h.diameter = r.number(holes[i], PH, "diameter", positive());
+      if (inside_margin(scene.geometry, h.center) < 0.5 * h.diameter)
+        r.fail(PH, holes[i], "the hole (diameter " + fmt(h.diameter) + ") must lie on the skin's footprint");
+      out.holes.push_back(h);
+    }
+  }
+  out.zone_radius = r.number_or(c, P, "zone_radius", 0.0, positive());
+  out.h = r.number_or(c, P, "h", 0.0, positive());
+  if (const json* f = Reader::find(c, "friction")) {
+    const std::string PF = sub(P, "friction");
+    r.object(*f, PF, {"mode", "mu", "static_ratio", "direction"});
+    if (const json* mode = Reader::find(*f, "mode")) {
+      const std::string modes = R"(one of "none", "static", "uncoupled", "coupled")";
+      if (*mode == "none")
+        out.friction = FrictionMode::none;
+      else if (*mode == "static")
+        out.friction = FrictionMode::static_residual;
+      else if (*mode == "uncoupled")
+        out.friction = FrictionMode::uncoupled;
+      else if (*mode == "coupled")
+        out.friction = FrictionMode::coupled;
+      else
+        r.fail(sub(PF, "mode"), *mode, "must be " + modes);
+    }
+    out.mu = r.number_or(*f, PF, "mu", 0.0, non_negative());
+    out.static_ratio = r.number_or(*f, PF, "static_ratio", 0.0, non_negative());
+    if (const json* d = Reader::find(*f, "direction")) {
+      const Vec2 v = r.vec<2>(*d, sub(PF, "direction"));
+      const double n = std::hypot(v[0], v[1]);
+      if (!(n > 0) || !std::isfinite(n))
+        r.fail(sub(PF, "direction"), *d, "must be a non-zero vector [dx, dy]");
+      out.direction = {v[0] / n, v[1] / n};
+    }
+  }
+  if (const json* sw = Reader::find(c, "sweep")) {
+    const std::string PS = sub(P, "sweep");
+    r.object(*sw, PS, {"from", "to", "positions", "hole_diameter", "h"});
+    HoleSweep s;
+    s.from = r.vec2(*sw, PS, "from");
+    s.to = r.vec2(*sw, PS, "to");
+    if (const json* n = Reader::find(*sw, "positions"))
+      s.positions = static_cast<int>(r.integer(*n, sub(PS, "positions"), 2, 100000));
+    s.hole_diameter = r.number_or(*sw, PS, "hole_diameter", s.hole_diameter, positive());
+    s.h = r.number_or(*sw, PS, "h", 0.0, positive());
+    for (const auto& [key, p] : {std::make_pair("from", s.from), std::make_pair("to", s.to)})
+      if (inside_margin(scene.geometry, p) < 0.5 * s.hole_diameter)
+        r.fail(sub(PS, key), json::array({p[0], p[1]}),
+               "the swept hole (diameter " + fmt(s.hole_diameter) + ") must stay on the skin's footprint");
+    out.sweep = s;
+  }
+  return out;
+}
+
+// The candidate contact zone must stay one skin thickness inside the footprint's edge (the truncated side).
+void check_contact_zone(const Reader& r, const Scene& scene) {
+  if (scene.geometry.kind == GeometryKind::surface) return;
+  const Vec2 c = contact_center(scene);
+  const double radius = contact_zone_radius(scene), h = nominal_thickness(scene);
+  const double margin = inside_margin(scene.geometry, c);
+  if (radius + h > margin)
+    r.fail(scene.contact->zone_radius > 0 ? "contact.zone_radius" : "contact", json(radius),
+           "the candidate contact zone (radius " + fmt(radius) + " about " + fmt(c) +
+               ") must stay one skin thickness (" + fmt(h) + ") inside the skin's edge, which is " +
+               fmt(margin) + " away: it would reach the truncated side; load less or use a larger skin");
+}
+
 }  // namespace
 
 Scene parse_scene(const std::string& json_text, const std::string& source_path) {
   const Reader r(source_path.empty() ? std::string("<scene>") : source_path);
   const json root = parse_json(json_text, r);
-  r.object(root, "", {"name", "geometry", "material", "sensors", "mesh", "loads", "calibration"});
+  r.object(root, "", {"name", "geometry", "material", "sensors", "mesh", "loads", "calibration", "contact"});
 
   Scene scene;
   scene.source_path = source_path;
@@ -515,6 +642,10 @@ Scene parse_scene(const std::string& json_text, const std::string& source_path) 
   scene.mesh = read_mesh(r, r.need(root, "", "mesh", "an object"));
   if (const json* loads = Reader::find(root, "loads")) scene.loads = read_loads(r, *loads);
   if (const json* cal = Reader::find(root, "calibration")) scene.calibration = read_calibration(r, *cal);
+  if (const json* contact = Reader::find(root, "contact")) {
+    scene.contact = read_contact(r, *contact, scene);
+    check_contact_zone(r, scene);
+  }
   return scene;
 }
 

@@ -103,6 +103,47 @@ struct Calibration {
   double spacing = 0.05;        // mm
 };
 
+// Unilateral contact of a rigid indenter with the skin's top (contact/). The indenter's lower surface is
+// z = z_touch − depth + φ(x, y) over the (x, y) plane, with z_touch the height at which it first touches the
+// undeformed skin: φ = 0 for a plane (the paper's plate on the cap), φ = R − sqrt(R² − r²) for a sphere of
+// radius R centred above `center`. Holes are discs where the indenter is absent (deep holes: the skin never
+// reaches their bottom).
+enum class IndenterKind { plane, sphere };
+// How the tangential traction of a sliding or resting plate enters (contact/friction.hpp):
+//   none: frictionless; static: p_t = static_ratio·p_z; uncoupled: frictionless pressure, then p_t = μ p_z
+//   added (the paper's assumption); coupled: p_t = μ p_z acting while pressure and zone are solved.
+enum class FrictionMode { none, static_residual, uncoupled, coupled };
+
+struct Hole {
+  Vec2 center{0, 0};
+  double diameter = 0.5;  // mm
+};
+
+// A hole swept along a straight path: `positions` solves with the hole centre evenly spaced from `from`
+// to `to` (inclusive), each a full contact solve (skinfem defect).
+struct HoleSweep {
+  Vec2 from{0, 0}, to{0, 0};
+  int positions = 201;
+  double hole_diameter = 0.5;  // mm
+  double h = 0;  // mm, mesh size along the path (a region of interest of radius hole/2 + h); 0 → none
+};
+
+struct ContactLoad {
+  IndenterKind indenter = IndenterKind::plane;
+  double sphere_R = 0;          // mm, sphere only
+  Vec2 center{0, 0};            // mm, sphere's lowest point; plane: ignored (the skin's highest point)
+  std::optional<double> force;  // N, total normal force (> 0), or
+  std::optional<double> depth;  // mm, rigid approach from first touch (> 0)
+  std::vector<Hole> holes;      // static holes in the indenter
+  double zone_radius = 0;       // mm, candidate contact zone about the first-touch point; 0 → auto
+  double h = 0;                 // mm, mesh size inside the candidate zone; 0 → mesh.h_min
+  double mu = 0;                // sliding friction coefficient μ ≥ 0
+  double static_ratio = 0;      // residual p_t / p_z at rest ≥ 0
+  Vec2 direction{1, 0};         // unit sliding direction of the indenter over the skin (x, y)
+  FrictionMode friction = FrictionMode::none;  // default mode of `skinfem contact`
+  std::optional<HoleSweep> sweep;
+};
+
 struct Scene {
   std::string name;
   std::string source_path;  // the JSON file this came from (empty if built in code)
@@ -112,6 +153,7 @@ struct Scene {
   MeshControls mesh;
   Loads loads;
   Calibration calibration;
+  std::optional<ContactLoad> contact;
 };
 
 // Thrown for any invalid scene; what() is one line naming the JSON path, the value and what is allowed.
@@ -122,5 +164,14 @@ struct SceneError : std::runtime_error {
 // Thickness of the skin at the apex (cap) or everywhere (flat), mm. For an imported surface the
 // thickness is not known before the file is read: returns 0, meaning "unknown" (ask the mesh).
 double nominal_thickness(const Scene& scene);
+
+// Where the indenter first touches the skin: a plane on a cap touches at the apex, a sphere at its centre.
+Vec2 contact_center(const Scene& scene);
+// Radius of the candidate contact zone (the multipliers' disc): contact.zone_radius, else 1.25 × the
+// half-space Hertz radius. A bonded layer is stiffer than the half-space, so its contact is smaller than
+// Hertz's; the margin covers the shift of a sliding contact. Commands check the answer stays inside.
+double contact_zone_radius(const Scene& scene);
+// Mesh size inside the candidate zone: contact.h, else mesh.h_min.
+double contact_zone_h(const Scene& scene);
 
 }  // namespace skinfem

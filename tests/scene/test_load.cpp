@@ -527,3 +527,74 @@ TEST(SceneLoad, EmptySourcePathIsNamedInMessages) {
     EXPECT_EQ(std::string(e.what()), "<scene>: geometry: required key is missing; must be an object");
   }
 }
+
+// The contact section: every field read, defaults, and each bad input with a message naming its field.
+TEST(SceneLoad, Contact) {
+  const auto contact = [](const std::string& body) {
+    return with(&Doc::extra, R"(, "contact": {)" + body + "}");
+  };
+  const Scene s =
+      parse_scene(contact(R"("indenter": {"type": "plane"}, "force": 0.8, "zone_radius": 3.0, "h": 0.2,
+                 "holes": [{"center": [1, 0], "diameter": 0.5}],
+                 "friction": {"mode": "coupled", "mu": 3, "static_ratio": 0.1, "direction": [2, 0]},
+                 "sweep": {"from": [-2, 0], "to": [3, 0], "positions": 11, "h": 0.1})"),
+                  kSource);
+  ASSERT_TRUE(s.contact);
+  const ContactLoad& c = *s.contact;
+  EXPECT_EQ(c.indenter, IndenterKind::plane);
+  EXPECT_EQ(*c.force, 0.8);
+  EXPECT_FALSE(c.depth);
+  EXPECT_EQ(c.zone_radius, 3.0);
+  EXPECT_EQ(c.h, 0.2);
+  ASSERT_EQ(c.holes.size(), 1u);
+  EXPECT_EQ(c.holes[0].diameter, 0.5);
+  EXPECT_EQ(c.friction, FrictionMode::coupled);
+  EXPECT_EQ(c.mu, 3.0);
+  EXPECT_EQ(c.static_ratio, 0.1);
+  EXPECT_EQ(c.direction[0], 1.0);  // normalised
+  ASSERT_TRUE(c.sweep);
+  EXPECT_EQ(c.sweep->positions, 11);
+  EXPECT_EQ(c.sweep->hole_diameter, 0.5);  // default
+  EXPECT_EQ(contact_center(s)[0], 0.5);    // the cap's apex
+  EXPECT_EQ(contact_zone_h(s), 0.2);
+
+  // Automatic zone: 1.25 × the half-space Hertz radius (Johnson §4.2), E* = E/(1 − ν²).
+  const Scene a = parse_scene(contact(R"("indenter": {"type": "plane"}, "force": 0.8)"), kSource);
+  EXPECT_NEAR(contact_zone_radius(a), 1.25 * std::cbrt(3 * 0.8 * 129.7 / (4 * 4.0)), 1e-12);
+  EXPECT_EQ(contact_zone_h(a), 0.25);  // mesh.h_min
+  EXPECT_EQ(a.contact->friction, FrictionMode::none);
+  const Scene d = parse_scene(
+      contact(R"("indenter": {"type": "sphere", "R": 50, "center": [0.5, 0]}, "depth": 0.02)"), kSource);
+  const double R = 1 / (1 / 50.0 + 1 / 129.7);
+  EXPECT_NEAR(contact_zone_radius(d), 1.25 * std::sqrt(R * 0.02), 1e-12);
+
+  EXPECT_SCENE_ERROR(contact(R"("force": 0.8)"), "contact.indenter: required key is missing");
+  EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "plane"})"), "contact = {",
+                     "must have exactly one of \"force\" (N) or \"depth\" (mm)");
+  EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "plane"}, "force": 0)"),
+                     "contact.force = 0: must be a number > 0");
+  EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "cone"}, "force": 1)"),
+                     "contact.indenter.type = \"cone\"");
+  EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "plane"}, "force": 1, "friction": {"mu": -1})"),
+                     "contact.friction.mu = -1: must be a number >= 0");
+  EXPECT_SCENE_ERROR(
+      contact(R"("indenter": {"type": "plane"}, "force": 1, "friction": {"direction": [0, 0]})"),
+      "contact.friction.direction = [0,0]: must be a non-zero vector");
+  EXPECT_SCENE_ERROR(
+      contact(
+          R"("indenter": {"type": "plane"}, "force": 1, "holes": [{"center": [12.4, 0], "diameter": 0.5}])"),
+      "contact.holes[0]", "must lie on the skin's footprint");
+  EXPECT_SCENE_ERROR(
+      contact(R"("indenter": {"type": "plane"}, "force": 1, "sweep": {"from": [-20, 0], "to": [0, 0]})"),
+      "contact.sweep.from = [-20.0,0.0]", "must stay on the skin's footprint");
+  EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "plane"}, "force": 1, "zone_radius": 10)"),
+                     "contact.zone_radius = 10", "would reach the truncated side");
+  EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "plane"}, "force": 1, "colour": 1)"), "contact.colour",
+                     "unknown key");
+  Doc flat;
+  flat.geometry = R"({"type": "flat", "h": 3, "half_width": 10})";
+  flat.extra = R"(, "contact": {"indenter": {"type": "plane"}, "force": 1})";
+  EXPECT_SCENE_ERROR(flat.str(), "contact.indenter.type = \"plane\"", "a plane needs a cap geometry");
+  flat.extra = R"(, "contact": {"indenter": {"type": "sphere", "R": 100, "center": [10.5, 0]}, "force": 1})";
+  EXPECT_SCENE_ERROR(flat.str(), "contact.indenter.center = [10.5,0.0]", "must lie on the skin's footprint");
+}

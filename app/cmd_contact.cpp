@@ -1,0 +1,205 @@
+// skinfem contact — unilateral contact of the scene's rigid indenter (plate or sphere, optional holes)
+// with the skin, frictionless or with friction (static residual, uncoupled or coupled sliding), on one
+// factorization condensed onto the contact multipliers. All four friction modes are solved (each a
+// small dense complementarity problem once the skin is condensed); the chosen one is written in full.
+//
+//   $ skinfem contact scenes/hertz_layer.json --out out/hertz
+//   contact hertz_layer (none): 0.8000 N, a = 2.318 mm, p0 = 83.5 kPa, indentation 23.1 µm; ...
+//
+// Writes DIR/pressure.vtp (contact zone: pressure_kPa, traction_kPa, gap_um, in_contact), DIR/fields.vtu
+// (the volume solution of the chosen mode), DIR/sensors.csv (sensor,x_mm,y_mm,sigma_z_kPa,sigma_x_kPa),
+// DIR/modes.csv (the same readings for every friction mode) and DIR/summary.json (contact_radius_mm,
+// p0_kPa, indentation_um, force_N, tangential_force_N, max_penetration_um, min_pressure_kPa,
+// pressure_centroid_x_mm, complementarity, every mode's metrics, coupled − uncoupled differences, dofs,
+// wall_s per stage, peak_rss_mb).
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "app/commands.hpp"
+#include "app/common.hpp"
+#include "app/contact_setup.hpp"
+#include "contact/metrics.hpp"
+#include "contact/pressure_map.hpp"
+#include "fem/fields.hpp"
+
+namespace skinfem::app {
+
+namespace {
+using contact::ContactResult;
+
+nlohmann::json metrics_json(const contact::ContactMetrics& m, const ContactResult& r) {
+  return {{"friction", contact::to_string(r.mode)},
+          {"ratio", r.ratio},
+          {"force_N", r.force_N},
+          {"tangential_force_N", r.tangential_force_N},
+          {"indentation_um", 1e3 * r.depth_mm},
+          {"contact_radius_mm", m.contact_radius_mm},
+          {"equivalent_radius_mm", m.equivalent_radius_mm},
+          {"p0_kPa", 1e3 * m.p0_MPa},
+          {"p_max_kPa", 1e3 * m.p_max_MPa},
+          {"pressure_centroid_mm", {m.pressure_centroid[0], m.pressure_centroid[1]}},
+          {"zone_centroid_mm", {m.zone_centroid[0], m.zone_centroid[1]}},
+          {"front_back_peak_ratio", m.front_back_peak_ratio},
+          {"front_edge_mm", m.front_edge_mm},
+          {"back_edge_mm", m.back_edge_mm},
+          {"min_pressure_kPa", 1e3 * r.min_lambda},
+          {"min_weighted_gap_mm3", r.min_gap},
+          {"complementarity", r.complementarity},
+          {"active_multipliers", r.active.size()},
+          {"pivots", r.pivots}};
+}
+}  // namespace
+
+int run_contact(const Scene& scene, const std::string& out_dir, const std::string& friction) {
+  Stopwatch total;
+  if (!scene.contact)
+    throw SceneError(scene.source_path + ": contact: missing; skinfem contact needs a \"contact\" section");
+  FrictionMode chosen = scene.contact->friction;
+  if (friction == "none") chosen = FrictionMode::none;
+  if (friction == "static") chosen = FrictionMode::static_residual;
+  if (friction == "uncoupled") chosen = FrictionMode::uncoupled;
+  if (friction == "coupled") chosen = FrictionMode::coupled;
+  check_output_dir(out_dir);
+
+  const auto setup = contact_setup(scene);
+  const TetMesh& mesh = setup->mesh;
+  nlohmann::json wall = setup->wall;
+  Stopwatch clock;
+  const contact::ContactSolver& solver = *setup->solver;
+  const auto excluded = contact::excluded_by_holes(setup->condensed->zone, mesh, scene.contact->holes);
+  std::map<FrictionMode, ContactResult> results;
+  std::map<FrictionMode, contact::ContactMetrics> metrics;
+  const Vec2 centre = contact_center(scene);
+  for (FrictionMode mode :
+       {FrictionMode::none, FrictionMode::static_residual, FrictionMode::uncoupled, FrictionMode::coupled}) {
+    results[mode] = solver.solve(mode, excluded);
+    check_zone(scene, *setup, results[mode]);
+    metrics[mode] = contact::contact_metrics(*setup->condensed, mesh, *setup->top, results[mode], centre);
+  }
+  wall["contact_solves"] = clock.seconds();
+  const ContactResult& r = results[chosen];
+  const contact::ContactMetrics& m = metrics[chosen];
+
+  // The volume solution of the chosen mode: one more solve with the contact load.
+  clock = Stopwatch();
+  const auto& c = *setup->condensed;
+  const Eigen::VectorXd f = c.zone.load(r.lambda, c.direction, r.ratio);
+  const MixedSolution x = setup->model->solver().solve(f);
+  const Eigen::VectorXd reactions = setup->model->solver().reactions(x, f);
+  const BaseTraction base(mesh, reactions);
+  // Pointwise gap at every node of the zone's faces (the constraint holds it ≥ 0 in the hat-weighted mean).
+  double max_penetration = 0;
+  for (int face : c.zone.faces)
+    for (int k = 0; k < 6; ++k) {
+      const int n = mesh.faces(face, k);
+      const double gap = setup->indenter->z_touch() - r.depth_mm +
+                         setup->indenter->phi(mesh.nodes(n, 0), mesh.nodes(n, 1)) - mesh.nodes(n, 2) -
+                         x.u[3 * n + 2];
+      const bool under_hole = [&] {
+        for (const Hole& h : scene.contact->holes)
+          if (std::hypot(mesh.nodes(n, 0) - h.center[0], mesh.nodes(n, 1) - h.center[1]) <
+              0.5 * h.diameter + 1e-12)
+            return true;
+        return false;
+      }();
+      if (!under_hole) max_penetration = std::max(max_penetration, -gap);
+    }
+  // The condensed readings (adjoints) against the reactions of the full solve: a second method.
+  double reading_gap = 0, reading_scale = 0;
+  for (size_t k = 0; k < scene.sensors.positions.size(); ++k) {
+    const auto& p = scene.sensors.positions[k];
+    const SensorReading v = base.disc_mean(p[0], p[1], scene.sensors.disc_diameter);
+    reading_gap = std::max(
+        {reading_gap, std::abs(v.sigma_z - r.readings[2 * k]), std::abs(v.sigma_x - r.readings[2 * k + 1])});
+    reading_scale = std::max({reading_scale, std::abs(v.sigma_z), std::abs(v.sigma_x)});
+  }
+  wall["full_solve"] = clock.seconds();
+
+  clock = Stopwatch();
+  prepare_output_dir(out_dir);
+  write_fields_vtu(out_dir + "/fields.vtu", mesh, setup->model->lame(), x);
+  contact::write_pressure_vtp(out_dir + "/pressure.vtp", mesh, c, r);
+  std::ostringstream csv, modes;
+  csv.precision(10);
+  modes.precision(10);
+  csv << "sensor,x_mm,y_mm,sigma_z_kPa,sigma_x_kPa\n";
+  modes << "sensor,x_mm,y_mm,friction,sigma_z_kPa,sigma_x_kPa\n";
+  for (size_t k = 0; k < scene.sensors.positions.size(); ++k) {
+    const auto& p = scene.sensors.positions[k];
+    csv << k + 1 << "," << p[0] << "," << p[1] << "," << 1e3 * r.readings[2 * k] << ","
+        << 1e3 * r.readings[2 * k + 1] << "\n";
+    for (const auto& [mode, res] : results)
+      modes << k + 1 << "," << p[0] << "," << p[1] << "," << contact::to_string(mode) << ","
+            << 1e3 * res.readings[2 * k] << "," << 1e3 * res.readings[2 * k + 1] << "\n";
+  }
+  write_text_atomic(out_dir + "/sensors.csv", csv.str());
+  write_text_atomic(out_dir + "/modes.csv", modes.str());
+  wall["write"] = clock.seconds();
+
+  nlohmann::json summary = metrics_json(m, r);
+  summary["scene"] = scene_json(scene);
+  summary["indenter"] = scene.contact->indenter == IndenterKind::plane ? "plane" : "sphere";
+  summary["p0_kPa"] = 1e3 * m.p0_MPa;
+  summary["max_penetration_um"] = 1e3 * max_penetration;
+  summary["pressure_centroid_x_mm"] = m.pressure_centroid[0];
+  summary["readings_condensed_vs_reactions_rel"] = reading_scale > 0 ? reading_gap / reading_scale : 0.0;
+  summary["residual"] = x.residual;
+  for (const auto& [mode, res] : results)
+    summary["modes"][contact::to_string(mode)] = metrics_json(metrics[mode], res);
+  // What coupling changes: coupled − uncoupled at the same μ (the paper's assumption is "nothing").
+  const auto& cu = metrics[FrictionMode::coupled];
+  const auto& un = metrics[FrictionMode::uncoupled];
+  nlohmann::json coupling = {
+      {"mu", scene.contact->mu},
+      {"pressure_centroid_shift_mm", cu.pressure_centroid[0] - un.pressure_centroid[0]},
+      {"zone_centroid_shift_mm", cu.zone_centroid[0] - un.zone_centroid[0]},
+      {"front_back_peak_ratio_coupled", cu.front_back_peak_ratio},
+      {"front_back_peak_ratio_uncoupled", un.front_back_peak_ratio},
+      {"indentation_change_um",
+       1e3 * (results[FrictionMode::coupled].depth_mm - results[FrictionMode::uncoupled].depth_mm)}};
+  for (size_t k = 0; k < scene.sensors.positions.size(); ++k) {
+    const auto& a = results[FrictionMode::coupled].readings;
+    const auto& b = results[FrictionMode::uncoupled].readings;
+    coupling["sensors"].push_back({{"sensor", k + 1},
+                                   {"x_mm", scene.sensors.positions[k][0]},
+                                   {"dsigma_z_kPa", 1e3 * (a[2 * k] - b[2 * k])},
+                                   {"dsigma_x_kPa", 1e3 * (a[2 * k + 1] - b[2 * k + 1])}});
+  }
+  summary["coupled_minus_uncoupled"] = coupling;
+  summary["zone"] = {
+      {"radius_mm", setup->zone_radius}, {"h_mm", setup->zone_h}, {"multipliers", c.zone.size()}};
+  summary["dofs"] = setup->model->solver().free_dofs();
+  summary["nodes"] = mesh.num_nodes();
+  summary["elements"] = mesh.num_tets();
+  summary["block_solves"] = c.block_solves;
+  summary["wall_s"] = wall;
+  summary["wall_total_s"] = total.seconds();
+  summary["peak_rss_mb"] = peak_rss_mb();
+  write_json(out_dir + "/summary.json", summary);
+
+  std::printf(
+      "contact %s (%s): %.4f N normal, %.4f N tangential; a = %.4f mm, p0 = %.2f kPa, indentation %.3f um\n",
+      scene.name.c_str(), contact::to_string(chosen), r.force_N, r.tangential_force_N, m.contact_radius_mm,
+      1e3 * m.p0_MPa, 1e3 * r.depth_mm);
+  std::printf(
+      "  complementarity %.1e, min pressure %.2e kPa, max pointwise penetration %.3g um, condensed vs "
+      "reaction readings %.1e\n",
+      r.complementarity, 1e3 * r.min_lambda, 1e3 * max_penetration,
+      summary["readings_condensed_vs_reactions_rel"].get<double>());
+  std::printf(
+      "  coupled - uncoupled (mu %.3g): pressure centroid %+.4f mm, contact zone %+.4f mm, front/back peak "
+      "%.4f vs %.4f\n",
+      scene.contact->mu, coupling["pressure_centroid_shift_mm"].get<double>(),
+      coupling["zone_centroid_shift_mm"].get<double>(), cu.front_back_peak_ratio, un.front_back_peak_ratio);
+  std::printf(
+      "  %d DOFs, %d multipliers; mesh %.2f s, assemble %.2f s, factor %.2f s, condense %.2f s (%d rhs), "
+      "contact %.3f s; peak %.0f MB\n",
+      setup->model->solver().free_dofs(), c.zone.size(), wall["mesh"].get<double>(),
+      wall["assemble"].get<double>(), wall["factor"].get<double>(), wall["condense"].get<double>(),
+      c.block_solves, wall["contact_solves"].get<double>(), peak_rss_mb());
+  std::printf("  wrote %s/pressure.vtp, fields.vtu, sensors.csv, modes.csv, summary.json\n", out_dir.c_str());
+  return 0;
+}
+
+}  // namespace skinfem::app

@@ -1,0 +1,64 @@
+#include "app/contact_setup.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "app/common.hpp"
+#include "mesh/build.hpp"
+
+namespace skinfem::app {
+
+std::unique_ptr<ContactSetup> contact_setup(const Scene& scene) {
+  if (!scene.contact)
+    throw SceneError(scene.source_path + ": contact: missing; this command needs a \"contact\" section");
+  auto s = std::make_unique<ContactSetup>();
+  Stopwatch clock;
+  progress("meshing " + scene.name);
+  s->mesh = build_mesh(scene);
+  s->wall["mesh"] = clock.seconds();
+  progress("assembling and factoring (" + std::to_string(s->mesh.num_nodes()) + " nodes)");
+  s->model =
+      std::make_unique<ElasticModel>(s->mesh, scene.material, scene.geometry.side, std::vector<Punch>{});
+  s->wall["assemble"] = s->model->assemble_seconds();
+  s->wall["factor"] = s->model->solver().factor_seconds();
+  progress("factored " + std::to_string(s->model->solver().free_dofs()) + " DOFs in " +
+           std::to_string(s->model->solver().factor_seconds()) + " s");
+
+  clock = Stopwatch();
+  s->zone_radius = contact_zone_radius(scene);
+  s->zone_h = contact_zone_h(scene);
+  s->indenter = std::make_unique<contact::Indenter>(scene, s->mesh);
+  const auto zone = contact::mortar_zone(s->mesh, contact_center(scene), s->zone_radius);
+  Stopwatch condense_clock;
+  s->condensed = std::make_unique<contact::CondensedContact>(
+      contact::condense(*s->model, zone, *s->indenter, scene.sensors, scene.contact->direction,
+                        [&](double fraction, const std::string& what) {
+                          char buf[160];
+                          std::snprintf(buf, sizeof buf, "%s: %.0f %% (%.1f s)", what.c_str(), 100 * fraction,
+                                        condense_clock.seconds());
+                          progress(buf);
+                        }));
+  s->solver = std::make_unique<contact::ContactSolver>(*s->condensed, *scene.contact);
+  s->top = std::make_unique<PlanarFaceIndex>(s->mesh, kTop);
+  s->wall["condense"] = clock.seconds();
+  return s;
+}
+
+void check_zone(const Scene& scene, const ContactSetup& s, const contact::ContactResult& r) {
+  const auto& z = s.condensed->zone;
+  const Vec2 c = contact_center(scene);
+  double reach = 0;
+  for (int i = 0; i < z.size(); ++i)
+    if (r.lambda[i] > 0)
+      reach = std::max(
+          reach, std::hypot(s.mesh.nodes(z.vertices[i], 0) - c[0], s.mesh.nodes(z.vertices[i], 1) - c[1]));
+  // The outermost ring of multipliers lies within one element of the zone's edge: contact reaching it may be
+  // cut short by the zone.
+  if (reach > s.zone_radius - s.zone_h)
+    throw SceneError(scene.source_path + ": contact.zone_radius = " + std::to_string(s.zone_radius) +
+                     ": the " + contact::to_string(r.mode) + " contact reaches " + std::to_string(reach) +
+                     " mm from the centre, within one element (contact.h = " + std::to_string(s.zone_h) +
+                     ")" + " mm of the zone's edge; give a larger contact.zone_radius");
+}
+
+}  // namespace skinfem::app

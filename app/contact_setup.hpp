@@ -1,0 +1,32 @@
+// The common first half of `contact` and `defect`: mesh (with the contact zone and hole path refined),
+// one factorization of the bonded skin, and its condensation onto the contact multipliers (block
+// right-hand sides), each stage timed into `wall` (mesh, assemble, factor, condense).
+#pragma once
+
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "contact/contact_solver.hpp"
+#include "fem/face_index.hpp"
+
+namespace skinfem::app {
+
+struct ContactSetup {
+  TetMesh mesh;
+  std::unique_ptr<ElasticModel> model;  // refers to mesh
+  std::unique_ptr<contact::Indenter> indenter;
+  std::unique_ptr<contact::CondensedContact> condensed;
+  std::unique_ptr<contact::ContactSolver> solver;  // refers to condensed
+  std::unique_ptr<PlanarFaceIndex> top;
+  double zone_radius = 0, zone_h = 0;
+  nlohmann::json wall;
+};
+
+// Throws SceneError when the scene has no contact section.
+std::unique_ptr<ContactSetup> contact_setup(const Scene& scene);
+
+// Throws (one line, naming contact.zone_radius) when an active multiplier lies in the zone's outer ring:
+// the contact could be larger than the zone allows, so the answer would be wrong.
+void check_zone(const Scene& scene, const ContactSetup& setup, const contact::ContactResult& r);
+
+}  // namespace skinfem::app

@@ -1,0 +1,38 @@
+// The bonded skin condensed onto the contact multipliers: one factorization, block right-hand sides.
+//
+// With the mortar load of multipliers λ (contact/mortar.hpp) and a friction traction ratio·p along the
+// unit sliding direction t, the weighted gaps and the sensor readings are linear in λ:
+//   g = gap0 − δ·area + (C_zz + ratio·C_zt) λ,      readings = (S_p + ratio·S_t) λ.
+// C_zz(i, j) = −∫ψ_i u_z for the pressure of multiplier j (symmetric positive definite: the compliance of
+// the bonded skin), C_zt(i, j) = −∫ψ_i u_z for its tangential traction. Both come from the n_c solves of
+// the pressure loads alone: by Maxwell–Betti, C_zt = (D·[u_t of the pressure loads])ᵀ. S_p, S_t are the
+// sensor readings for each multiplier's pressure and traction, from one adjoint solve per reading
+// (reading = y·f, green/fe_green.hpp). Rows of S: sensor k's σ_z at 2k, σ_x at 2k + 1 (MPa per MPa).
+#pragma once
+
+#include <Eigen/Dense>
+#include <functional>
+#include <string>
+
+#include "contact/indenter.hpp"
+#include "contact/mortar.hpp"
+#include "fem/elastic_model.hpp"
+
+namespace skinfem::contact {
+
+struct CondensedContact {
+  MortarZone zone;
+  Eigen::Vector2d direction{1, 0};  // sliding direction t in the (x, y) plane
+  Eigen::MatrixXd C_zz, C_zt;       // n_c × n_c, mm³/MPa (weighted gap per unit multiplier)
+  Eigen::VectorXd gap0;             // n_c: ∫ψ_i (z_touch + φ − s) dx dy, mm³
+  Eigen::MatrixXd S_p, S_t;         // 2·sensors × n_c
+  double solve_seconds = 0;         // block solves (multipliers and adjoints)
+  int block_solves = 0;             // right-hand sides solved
+};
+
+// progress(fraction done, message) is called between blocks.
+CondensedContact condense(const ElasticModel& model, const MortarZone& zone, const Indenter& indenter,
+                          const Sensors& sensors, const Vec2& direction,
+                          const std::function<void(double, const std::string&)>& progress = {});
+
+}  // namespace skinfem::contact

@@ -1,0 +1,35 @@
+#include "contact/hole_sweep.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+namespace skinfem::contact {
+
+SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const HoleSweep& sweep,
+                       FrictionMode mode, const std::function<void(int, const ContactResult&)>& frame) {
+  const auto start = std::chrono::steady_clock::now();
+  SweepResult out;
+  out.mode = mode;
+  out.baseline = solver.solve(mode);
+  solver.set_reference(mode, out.baseline.active);
+  const int n = sweep.positions;
+  out.varsigma.resize(n, out.baseline.readings.size());
+  std::vector<int> warm = out.baseline.active;
+  for (int i = 0; i < n; ++i) {
+    const double s = n > 1 ? double(i) / (n - 1) : 0.0;
+    const Vec2 c{sweep.from[0] + s * (sweep.to[0] - sweep.from[0]),
+                 sweep.from[1] + s * (sweep.to[1] - sweep.from[1])};
+    out.centers.push_back(c);
+    const auto excluded = excluded_by_holes(solver.condensed().zone, mesh, {Hole{c, sweep.hole_diameter}});
+    const ContactResult r = solver.solve(mode, excluded, warm);
+    warm = r.active;
+    out.varsigma.row(i) = (r.readings - out.baseline.readings).transpose();
+    out.pivots.push_back(r.pivots);
+    out.max_complementarity = std::max(out.max_complementarity, r.complementarity);
+    if (frame) frame(i, r);
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+}  // namespace skinfem::contact

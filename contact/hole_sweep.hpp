@@ -1,0 +1,29 @@
+// A hole in the indenter swept along a path through the contact (the paper's §IV): at every position a
+// full contact solve, and the signal ς = reading with the hole − reading without, for every sensor.
+// Everything that does not depend on the hole's position is reused: the condensed skin, the LCP matrix,
+// the factorized principal system of the hole-free active set (low-rank updates, contact/lcp.hpp), and
+// the previous position's active set as warm start.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "contact/contact_solver.hpp"
+
+namespace skinfem::contact {
+
+struct SweepResult {
+  FrictionMode mode = FrictionMode::none;
+  std::vector<Vec2> centers;  // hole centre at each position, mm
+  ContactResult baseline;     // no hole
+  Eigen::MatrixXd varsigma;   // positions × 2·sensors, MPa (σ_z of sensor k in column 2k, σ_x in 2k + 1)
+  std::vector<int> pivots;    // LCP pivots per position
+  double max_complementarity = 0;
+  double seconds = 0;
+};
+
+// frame(i, result) is called after each position (to write its pressure map, report progress).
+SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const HoleSweep& sweep,
+                       FrictionMode mode, const std::function<void(int, const ContactResult&)>& frame = {});
+
+}  // namespace skinfem::contact

@@ -1,0 +1,83 @@
+#include "contact/metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace skinfem::contact {
+
+ContactMetrics contact_metrics(const CondensedContact& c, const TetMesh& m, const PlanarFaceIndex& top,
+                               const ContactResult& r, const Vec2& center) {
+  ContactMetrics out;
+  const MortarZone& z = c.zone;
+  const Eigen::Vector2d t = c.direction;
+  const auto xy = [&](int i) {
+    return Eigen::Vector2d(m.nodes(z.vertices[i], 0), m.nodes(z.vertices[i], 1));
+  };
+  const Eigen::Vector2d c0(center[0], center[1]);
+
+  double F = 0, area = 0, peak_front = 0, peak_back = 0;
+  Eigen::Vector2d moment = Eigen::Vector2d::Zero(), zone_moment = Eigen::Vector2d::Zero();
+  for (int i = 0; i < z.size(); ++i) {
+    const double p = r.lambda[i];
+    if (!(p > 0)) continue;
+    F += p * z.area[i];
+    moment += p * z.area[i] * xy(i);
+    area += z.area[i];
+    zone_moment += z.area[i] * xy(i);
+    out.p_max_MPa = std::max(out.p_max_MPa, p);
+    const double ahead = (xy(i) - c0).dot(t);
+    (ahead > 0 ? peak_front : peak_back) = std::max(ahead > 0 ? peak_front : peak_back, p);
+    out.front_edge_mm = std::max(out.front_edge_mm, ahead);
+    out.back_edge_mm = std::min(out.back_edge_mm, ahead);
+  }
+  if (F <= 0) return out;
+  const Eigen::Vector2d pc = moment / F;
+  out.pressure_centroid = {pc.x(), pc.y()};
+  out.zone_centroid = {zone_moment.x() / area, zone_moment.y() / area};
+  out.equivalent_radius_mm = std::sqrt(area / M_PI);
+  out.front_back_peak_ratio = peak_back > 0 ? peak_front / peak_back : 0.0;
+
+  double s, tt;
+  if (const int f = top.find(center[0], center[1], s, tt); f >= 0) {
+    const double psi[3] = {1 - s - tt, s, tt};
+    for (int a = 0; a < 3; ++a)
+      for (int i = 0; i < z.size(); ++i)
+        if (z.vertices[i] == m.faces(f, a)) out.p0_MPa += psi[a] * std::max(0.0, r.lambda[i]);
+  }
+
+  // Edge fit: p² = α + βr² + γr⁴ over the outer part of the contact, root nearest the last active ring.
+  double r_max = 0;
+  for (int i = 0; i < z.size(); ++i)
+    if (r.lambda[i] > 0) r_max = std::max(r_max, (xy(i) - pc).norm());
+  std::vector<Eigen::Vector3d> rows;
+  std::vector<double> rhs;
+  for (int i = 0; i < z.size(); ++i) {
+    const double rr = (xy(i) - pc).norm();
+    if (r.lambda[i] > 0 && rr >= 0.6 * r_max) {
+      const double X = rr * rr / (r_max * r_max);  // scaled for conditioning
+      rows.emplace_back(1.0, X, X * X);
+      rhs.push_back(r.lambda[i] * r.lambda[i]);
+    }
+  }
+  out.contact_radius_mm = out.equivalent_radius_mm;
+  if (rows.size() >= 6) {
+    Eigen::MatrixXd A(rows.size(), 3);
+    Eigen::VectorXd b(rows.size());
+    for (size_t k = 0; k < rows.size(); ++k) A.row(k) = rows[k].transpose(), b[k] = rhs[k];
+    const Eigen::Vector3d co = A.colPivHouseholderQr().solve(b);
+    // Root of α + βX + γX² nearest X = 1 (the last active ring).
+    double X = -co[0] / co[1];
+    if (std::abs(co[2]) > 1e-12 * std::abs(co[1])) {
+      const double disc = co[1] * co[1] - 4 * co[2] * co[0];
+      if (disc >= 0) {
+        const double q = -0.5 * (co[1] + std::copysign(std::sqrt(disc), co[1]));
+        const double X1 = q / co[2], X2 = co[0] / q;
+        X = std::abs(X1 - 1) < std::abs(X2 - 1) ? X1 : X2;
+      }
+    }
+    if (X > 0 && std::isfinite(X)) out.contact_radius_mm = r_max * std::sqrt(X);
+  }
+  return out;
+}
+
+}  // namespace skinfem::contact

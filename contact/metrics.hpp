@@ -1,0 +1,28 @@
+// What a contact solve says about the contact: its size, peak pressures and how sliding moves them.
+#pragma once
+
+#include "contact/contact_solver.hpp"
+#include "fem/face_index.hpp"
+
+namespace skinfem::contact {
+
+struct ContactMetrics {
+  // Sub-element contact radius: p² fitted by α + βr² + γr⁴ over the active vertices in the outer 40 % of
+  // the contact (r about the pressure centroid), then its root; exact for Hertz (p² ∝ a² − r²) and
+  // following the square-root vanishing of any smooth contact at its edge.
+  double contact_radius_mm = 0;
+  double equivalent_radius_mm = 0;  // sqrt(Σ_active ∫ψ_i / π): mesh-resolution estimate of the same
+  double p0_MPa = 0;                // pressure at the first-touch point (P1 interpolation)
+  double p_max_MPa = 0;
+  Vec2 pressure_centroid{0, 0};  // ∫p x dA / ∫p dA, mm
+  Vec2 zone_centroid{0, 0};      // centroid of the active vertices' hats, mm
+  double front_back_peak_ratio =
+      1;  // max p ahead of the first-touch point (along the sliding direction) / max p behind
+  double front_edge_mm = 0,
+         back_edge_mm = 0;  // farthest active vertex ahead / behind along the sliding direction
+};
+
+ContactMetrics contact_metrics(const CondensedContact& c, const TetMesh& mesh, const PlanarFaceIndex& top,
+                               const ContactResult& r, const Vec2& center);
+
+}  // namespace skinfem::contact

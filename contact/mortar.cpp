@@ -1,0 +1,76 @@
+#include "contact/mortar.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "mesh/surface_quadrature.hpp"
+
+namespace skinfem::contact {
+
+namespace {
+// P1 hats of the corner triangle at face parameters (s, t), in face-node order 0, 1, 2.
+Eigen::Vector3d hats(double s, double t) { return {1 - s - t, s, t}; }
+}  // namespace
+
+MortarZone mortar_zone(const TetMesh& m, const Vec2& center, double radius) {
+  MortarZone z;
+  std::vector<int> local(m.num_nodes(), -1);
+  for (int i = 0; i < m.num_vertices; ++i)
+    if ((m.node_marker(i) & kTop) && !(m.node_marker(i) & (kSide | kBase)) &&
+        std::hypot(m.nodes(i, 0) - center[0], m.nodes(i, 1) - center[1]) <= radius) {
+      local[i] = z.size();
+      z.vertices.push_back(i);
+    }
+  if (z.vertices.empty())
+    throw std::invalid_argument("contact zone of radius " + std::to_string(radius) +
+                                " mm holds no top vertex: refine the mesh there");
+  std::vector<Eigen::Triplet<double>> t;
+  z.area = Eigen::VectorXd::Zero(z.size());
+  for (int f = 0; f < m.faces.rows(); ++f) {
+    if (m.face_marker(f) != kTop) continue;
+    if (local[m.faces(f, 0)] < 0 && local[m.faces(f, 1)] < 0 && local[m.faces(f, 2)] < 0) continue;
+    z.faces.push_back(f);
+    for (const FacePoint& q : face_quadrature(m, f)) {
+      const Eigen::Vector3d psi = hats(q.s, q.t);
+      for (int a = 0; a < 3; ++a) {
+        const int i = local[m.faces(f, a)];
+        if (i < 0) continue;
+        z.area[i] += q.weight_xy * psi[a];
+        for (int b = 0; b < 6; ++b) t.emplace_back(i, m.faces(f, b), q.weight_xy * psi[a] * q.N[b]);
+      }
+    }
+  }
+  z.D.resize(z.size(), m.num_nodes());
+  z.D.setFromTriplets(t.begin(), t.end());
+  return z;
+}
+
+Eigen::VectorXd MortarZone::weighted(const TetMesh& m,
+                                     const std::function<double(const Eigen::Vector3d&)>& f) const {
+  std::vector<int> local(m.num_nodes(), -1);
+  for (int i = 0; i < size(); ++i) local[vertices[i]] = i;
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(size());
+  for (int face : faces)
+    for (const FacePoint& q : face_quadrature(m, face)) {
+      const Eigen::Vector3d psi = hats(q.s, q.t);
+      const double v = f(q.x);
+      for (int a = 0; a < 3; ++a)
+        if (const int i = local[m.faces(face, a)]; i >= 0) out[i] += q.weight_xy * psi[a] * v;
+    }
+  return out;
+}
+
+Eigen::VectorXd MortarZone::load(const Eigen::VectorXd& lambda, const Eigen::Vector2d& t_dir,
+                                 double ratio) const {
+  const Eigen::VectorXd nodal = D.transpose() * lambda;  // ∫ p φ_j
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * nodal.size());
+  for (int j = 0; j < nodal.size(); ++j) {
+    f[3 * j] = ratio * t_dir.x() * nodal[j];
+    f[3 * j + 1] = ratio * t_dir.y() * nodal[j];
+    f[3 * j + 2] = -nodal[j];
+  }
+  return f;
+}
+
+}  // namespace skinfem::contact

@@ -1,0 +1,86 @@
+// The mortar contact operator on P2 faces (contact/mortar.hpp): exact areas and moments, the consistent
+// load of a uniform pressure, and why P2 vertices need the linear multipliers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "contact/mortar.hpp"
+#include "fem/assembly.hpp"
+#include "mesh/build.hpp"
+#include "mesh/surface_quadrature.hpp"
+
+namespace skinfem::contact {
+namespace {
+
+// Cap (R = 20 mm, h = 3 mm, apex at the origin) cut at 6 mm: curved quadratic top faces.
+const TetMesh& cap() {
+  static const TetMesh m = [] {
+    Scene s;
+    s.geometry.kind = GeometryKind::cap;
+    s.geometry.cap = {20.0, 3.0, 0.0, 0.0, 6.0};
+    s.sensors.positions = {{0, 0}};
+    s.mesh.h_min = 0.3;
+    s.mesh.h_max = 1.0;
+    s.mesh.growth = 1.5;
+    return build_mesh(s);
+  }();
+  return m;
+}
+
+// With every top vertex a multiplier, the hats sum to 1: Σ ∫ψ_i is the projected area of the top (the
+// disc of radius 6, up to the polygonal rim: the rim vertices lie on the circle, so the error is the
+// inscribed polygon's, bounded by πr²(1 − sin(2π/n)/(2π/n)) for n rim edges) and Σ ∫ψ_i x = 0.
+TEST(Mortar, HatsPartitionTheProjectedTop) {
+  const TetMesh& m = cap();
+  const MortarZone z = mortar_zone(m, {0, 0}, 100.0);
+  int rim = 0;
+  for (int i = 0; i < m.num_vertices; ++i)
+    if ((m.node_marker(i) & kTop) && (m.node_marker(i) & kSide)) ++rim;
+  const double polygon = 0.5 * rim * 36.0 * std::sin(2 * M_PI / rim);
+  double area = 0;
+  for (int f = 0; f < m.faces.rows(); ++f)
+    if (m.face_marker(f) == kTop)
+      for (const FacePoint& q : face_quadrature(m, f)) area += q.weight_xy;
+  EXPECT_NEAR(z.area.sum(), area, 1e-12 * area);
+  EXPECT_NEAR(z.area.sum(), polygon, 1e-9 * polygon);
+  const Eigen::VectorXd x = z.weighted(m, [](const Eigen::Vector3d& p) { return p.x(); });
+  EXPECT_LT(std::abs(x.sum()), 1e-3);  // the rim polygon is not exactly symmetric
+  EXPECT_TRUE((z.area.array() > 0).all());
+}
+
+// A uniform multiplier field λ = 1 loads each P2 node with ∫φ_j dx dy, the consistent load of a unit
+// vertical pressure (compared with fem's traction_load on the projected normal component). That load is
+// zero (or negative) at vertices on straight faces; the mortar constraint never asks a vertex to carry it.
+TEST(Mortar, UniformPressureGivesTheConsistentP2Load) {
+  const TetMesh& m = cap();
+  const MortarZone z = mortar_zone(m, {0, 0}, 100.0);
+  const Eigen::VectorXd f = z.load(Eigen::VectorXd::Ones(z.size()), Eigen::Vector2d(1, 0), 0.0);
+  // traction −e_z per unit projected area = −e_z·|n_z| per unit true area on the top.
+  const Eigen::VectorXd g = traction_load(m, kTop, [](const Eigen::Vector3d&, const Eigen::Vector3d& n) {
+    return Eigen::Vector3d(0, 0, -std::abs(n.z()));
+  });
+  EXPECT_LT((f - g).norm(), 1e-12 * g.norm());
+  int vertices_with_no_load = 0;
+  for (int i = 0; i < m.num_vertices; ++i)
+    if ((m.node_marker(i) & kTop) && f[3 * i + 2] > -1e-6 * z.area.maxCoeff()) ++vertices_with_no_load;
+  EXPECT_GT(vertices_with_no_load, 0) << "P2 vertices carry no share of a uniform pressure";
+  // Friction traction: ratio·p along the sliding direction.
+  const Eigen::VectorXd ft = z.load(Eigen::VectorXd::Ones(z.size()), Eigen::Vector2d(0, 1), 0.5);
+  double fy = 0, fz = 0;
+  for (int j = 0; j < m.num_nodes(); ++j) fy += ft[3 * j + 1], fz += ft[3 * j + 2];
+  EXPECT_NEAR(fy, -0.5 * fz, 1e-12 * std::abs(fz));
+}
+
+TEST(Mortar, ZoneHoldsOnlyTopVerticesWithinItsRadius) {
+  const TetMesh& m = cap();
+  const MortarZone z = mortar_zone(m, {1.0, 0.5}, 2.0);
+  for (int v : z.vertices) {
+    EXPECT_LT(v, m.num_vertices);
+    EXPECT_TRUE(m.node_marker(v) & kTop);
+    EXPECT_LE(std::hypot(m.nodes(v, 0) - 1.0, m.nodes(v, 1) - 0.5), 2.0);
+  }
+  EXPECT_THROW(mortar_zone(m, {1.0, 0.5}, 1e-6), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace skinfem::contact
