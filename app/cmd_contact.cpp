@@ -4,7 +4,7 @@
 // small dense complementarity problem once the skin is condensed); the chosen one is written in full.
 //
 //   $ skinfem contact scenes/hertz_layer.json --out out/hertz
-//   contact hertz_layer (none): 0.8000 N, a = 2.318 mm, p0 = 83.5 kPa, indentation 23.1 µm; ...
+//   contact hertz_layer (none): 0.8000 N normal, 0.0000 N tangential; a = 2.4843 mm, p0 = 63.94 kPa, ...
 //
 // Writes DIR/pressure.vtp (contact zone: pressure_kPa, traction_kPa, gap_um, in_contact), DIR/fields.vtu
 // (the volume solution of the chosen mode), DIR/sensors.csv (sensor,x_mm,y_mm,sigma_z_kPa,sigma_x_kPa),

@@ -15,7 +15,9 @@ namespace skinfem {
 class SizingField {
  public:
   // Regions: mesh.regions, the sensor discs (if mesh.refine_sensors), every punch and traction patch, and
-  // with a contact: its candidate zone (size contact.h), its holes and the sweep path (size sweep.h).
+  // with a contact: the candidate zone (disc of radius contact_zone_radius about contact_center) and every
+  // hole disc, both of size contact_zone_h; the sweep path (every point within hole_diameter/2 + sweep.h of
+  // the segment from → to) of size sweep.h, if sweep.h > 0.
   explicit SizingField(const Scene& scene);
   double operator()(double x, double y) const;  // mm
   double h_max() const { return h_max_; }

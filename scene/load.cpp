@@ -14,19 +14,28 @@
 //   loads*        {"punches"*: [{"center", "diameter", "force" | "displacement"}],
 //                  "patches"*: [{"center", "diameter", "direction": [x, y, z], "force"}]}
 //   calibration*  {"punch_diameter"*, "scan_half_width"*, "spacing"*}
-//   contact*      {"indenter": {"type": "plane"} | {"type": "sphere", "R", "center": [x, y]},
-//                  "force" | "depth",                 N total normal force, or mm rigid approach (> 0)
-//                  "holes"*: [{"center": [x, y], "diameter"}],       discs where the indenter is absent
-//                  "zone_radius"*, "h"*,              candidate contact zone radius (default 1.25 × Hertz)
-//                                                     and its mesh size (default mesh.h_min)
-//                  "friction"*: {"mode"*: "none" | "static" | "uncoupled" | "coupled", "mu"*,
-//                  "static_ratio"*,
-//                                "direction"*: [dx, dy]},          sliding direction of the indenter
-//                  "sweep"*: {"from": [x, y], "to": [x, y], "positions"* (default 201),
-//                             "hole_diameter"* (default 0.5), "h"*}}  a hole swept for `skinfem defect`
-//                 A plane needs a cap (it touches a flat layer everywhere); holes, the sphere's centre and
-//                 the sweep must lie on the skin, and the candidate zone at least one thickness inside its
-//                 edge.
+//   contact*      {"indenter": {"type": "plane"} | {"type": "sphere", "R": <mm, > 0>, "center": [x, y]},
+//                  "force": <N> | "depth": <mm>,     exactly one, > 0: total normal force, or rigid approach
+//                                                    from first touch
+//                  "holes"*: [{"center": [x, y], "diameter": <mm, > 0>}],  discs where the indenter is absent
+//                  "zone_radius"*: <mm, > 0>,        candidate contact zone about the first touch; absent:
+//                                                    1.25 x Hertz's radius under a force, 1.25 x twice
+//                                                    Hertz's sqrt(R delta) at a depth (scene.hpp)
+//                  "h"*: <mm, > 0>,                  mesh size inside the zone; absent: mesh.h_min
+//                  "friction"*: {"mode"*: "none" (default) | "static" | "uncoupled" | "coupled",
+//                                "mu"*: >= 0 (default 0; 0 allowed with every mode),
+//                                "static_ratio"*: >= 0 (default 0; used by "static"),
+//                                "direction"*: [dx, dy] non-zero, normalised (default [1, 0])},
+//                  "sweep"*: {"from": [x, y], "to": [x, y],  a hole swept for `skinfem defect`
+//                             "positions"*: integer in [2, 100000] (default 201),
+//                             "hole_diameter"*: > 0 (default 0.5),
+//                             "h"*: > 0, mesh size along the path (absent: no refinement)}}
+//                 A plane needs a cap: it first touches at the apex (on a flat layer it touches everywhere at
+//                 once; an imported surface has no known apex). A sphere fits any geometry. On a cap or flat
+//                 layer, the sphere's centre, every hole disc and the swept hole at both ends of its path
+//                 must lie on the skin's footprint (cap: within truncation_radius of the apex; flat: |x|, |y|
+//                 <= half_width), and the candidate zone disc at least one skin thickness h (cap: h at the
+//                 apex) inside the footprint's edge, the truncated side. Not checked on an imported surface.
 // Unknown keys, duplicate keys, wrong types, missing required keys and out-of-range values are errors.
 // Every error is a SceneError whose what() is one line: "<file>: <json.path> = <value>: <what is allowed>".
 #include "scene/load.hpp"
@@ -515,109 +524,172 @@ double inside_margin(const Geometry& g, const Vec2& p) {
   return std::numeric_limits<double>::infinity();
 }
 
-ContactLoad read_contact(const Reader& r, const json& c, const Scene& scene) {
+// The footprint in words, with its numbers: "truncation_radius = 12 about the apex (0.5, 0)".
+std::string footprint_words(const Geometry& g) {
+  if (g.kind == GeometryKind::cap)
+    return "truncation_radius = " + fmt(g.cap.truncation_radius) + " about the apex " +
+           fmt(Vec2{g.cap.apex_x, g.cap.apex_y});
+  return "|x|, |y| <= half_width = " + fmt(g.flat.half_width);
+}
+
+// "" if the disc of radius `rad` about p lies on the skin's footprint (always, for an imported surface:
+// its footprint is not known before the file is read); else the rule it breaks, with the numbers.
+std::string off_footprint(const Geometry& g, const Vec2& p, double rad, const std::string& rad_name) {
+  const double margin = inside_margin(g, p);
+  if (!(rad > margin + 1e-9 * std::max(1.0, rad))) return "";
+  const std::string minus = rad > 0 ? " - " + rad_name : "";
+  if (g.kind == GeometryKind::cap) {
+    const double dist = g.cap.truncation_radius - margin;
+    return "its centre must be at most truncation_radius" + minus + " = " +
+           fmt(g.cap.truncation_radius - rad) + " from the apex " + fmt(Vec2{g.cap.apex_x, g.cap.apex_y}) +
+           ", got " + fmt(dist);
+  }
+  return "its centre must have |x|, |y| <= half_width" + minus + " = " + fmt(g.flat.half_width - rad) +
+         ", got " + fmt(std::max(std::abs(p[0]), std::abs(p[1])));
+}
+
+json point(const Vec2& p) { return json::array({p[0], p[1]}); }
+
+Hole read_hole(const Reader& r, const json& j, const std::string& path, std::size_t i, std::size_t n,
+               const Geometry& geo) {
+  r.object(j, path, {"center", "diameter"});
+  Hole h;
+  h.center = r.vec2(j, path, "center");
+  h.diameter = r.number(j, path, "diameter", positive());
+  const std::string off = off_footprint(geo, h.center, 0.5 * h.diameter, "diameter/2");
+  if (!off.empty())
+    r.fail(path, j,
+           "hole " + std::to_string(i + 1) + " of " + std::to_string(n) + " (centre " + fmt(h.center) +
+               ", diameter " + fmt(h.diameter) + ") is off the skin: it must lie on the skin's footprint; " +
+               off);
+  return h;
+}
+
+void read_friction(const Reader& r, const json& f, const std::string& path, ContactLoad& out) {
+  r.object(f, path, {"mode", "mu", "static_ratio", "direction"});
+  if (const json* mode = Reader::find(f, "mode")) {
+    if (*mode == "none")
+      out.friction = FrictionMode::none;
+    else if (*mode == "static")
+      out.friction = FrictionMode::static_residual;
+    else if (*mode == "uncoupled")
+      out.friction = FrictionMode::uncoupled;
+    else if (*mode == "coupled")
+      out.friction = FrictionMode::coupled;
+    else
+      r.fail(sub(path, "mode"), *mode, R"(must be one of "none", "static", "uncoupled", "coupled")");
+  }
+  // μ = 0 is allowed with every mode: coupled friction with μ = 0 must then reproduce frictionless contact.
+  out.mu = r.number_or(f, path, "mu", 0.0, non_negative());
+  out.static_ratio = r.number_or(f, path, "static_ratio", 0.0, non_negative());
+  if (const json* d = Reader::find(f, "direction")) {
+    const Vec2 v = r.vec<2>(*d, sub(path, "direction"));
+    const double n = std::hypot(v[0], v[1]);
+    if (!(n > 0) || !std::isfinite(n))
+      r.fail(sub(path, "direction"), *d, "must be a non-zero vector [dx, dy]");
+    out.direction = {v[0] / n, v[1] / n};
+  }
+}
+
+HoleSweep read_sweep(const Reader& r, const json& j, const std::string& path, const Geometry& geo) {
+  r.object(j, path, {"from", "to", "positions", "hole_diameter", "h"});
+  HoleSweep s;
+  s.from = r.vec2(j, path, "from");
+  s.to = r.vec2(j, path, "to");
+  if (const json* n = Reader::find(j, "positions"))
+    s.positions = static_cast<int>(r.integer(*n, sub(path, "positions"), 2, 100000));
+  s.hole_diameter = r.number_or(j, path, "hole_diameter", s.hole_diameter, positive());
+  s.h = r.number_or(j, path, "h", 0.0, positive());
+  // The footprint is convex: a hole on it at both ends stays on it all along the path.
+  for (const auto& [key, p] : {std::make_pair("from", s.from), std::make_pair("to", s.to)}) {
+    const std::string off = off_footprint(geo, p, 0.5 * s.hole_diameter, "hole_diameter/2");
+    if (!off.empty())
+      r.fail(
+          sub(path, key), point(p),
+          "the swept hole (diameter " + fmt(s.hole_diameter) + ") must stay on the skin's footprint; " + off);
+  }
+  return s;
+}
+
+ContactLoad read_contact(const Reader& r, const json& c, const Geometry& geo) {
   const std::string P = "contact";
   r.object(c, P, {"indenter", "force", "depth", "holes", "zone_radius", "h", "friction", "sweep"});
   ContactLoad out;
+
   const std::string PI = sub(P, "indenter");
-  const json& ind = r.need(c, P, "indenter", R"({"type": "plane"} or {"type": "sphere", "R", "center"})");
-  if (!ind.is_object()) r.fail(PI, ind, R"(must be {"type": "plane"} or {"type": "sphere", "R", "center"})");
+  const std::string kinds = R"({"type": "plane"} or {"type": "sphere", "R", "center": [x, y]})";
+  const json& ind = r.need(c, P, "indenter", kinds);
+  if (!ind.is_object()) r.fail(PI, ind, "must be " + kinds);
   const json& type = r.need(ind, PI, "type", R"("plane" or "sphere")");
   if (type == "plane") {
     r.object(ind, PI, {"type"});
     out.indenter = IndenterKind::plane;
-    if (scene.geometry.kind != GeometryKind::cap)
+    if (geo.kind == GeometryKind::flat)
       r.fail(sub(PI, "type"), type,
-             "a plane needs a cap geometry (on a flat layer it touches everywhere at once, on an imported "
-             "surface its first touch is not known); use a sphere");
+             "a plane on a flat layer touches it everywhere at once (no first-touch point, no contact zone); "
+             "a plane needs a cap geometry, or use a sphere on the flat layer");
+    if (geo.kind == GeometryKind::surface)
+      r.fail(
+          sub(PI, "type"), type,
+          "a plane needs a cap geometry (it first touches at the apex); on an imported surface use a sphere");
   } else if (type == "sphere") {
     r.object(ind, PI, {"type", "R", "center"});
     out.indenter = IndenterKind::sphere;
     out.sphere_R = r.number(ind, PI, "R", positive());
     out.center = r.vec2(ind, PI, "center");
-    if (inside_margin(scene.geometry, out.center) <= 0)
-      r.fail(sub(PI, "center"), json::array({out.center[0], out.center[1]}),
-             "must lie on the skin's footprint");
+    const std::string off = off_footprint(geo, out.center, 0, "");
+    if (!off.empty())
+      r.fail(sub(PI, "center"), point(out.center),
+             "the sphere's centre must lie on the skin's footprint; " + off);
   } else {
     r.fail(sub(PI, "type"), type, R"(must be "plane" or "sphere")");
   }
+
   const json* force = Reader::find(c, "force");
   const json* depth = Reader::find(c, "depth");
   if ((force != nullptr) == (depth != nullptr))
     r.fail(P, c, R"(must have exactly one of "force" (N) or "depth" (mm))");
   if (force) out.force = r.number(*force, sub(P, "force"), positive());
   if (depth) out.depth = r.number(*depth, sub(P, "depth"), positive());
+
   if (Reader::find(c, "holes")) {
-    const json& holes = r.array(c, P, "holes", R"(an array of holes {"center", "diameter"})");
-    for (std::size_t i = 0; i < holes.size(); ++i) {
-      const std::string PH = at(sub(P, "holes"), i);
-      r.object(holes[i], PH, {"center", "diameter"});
-      Hole h;
-      h.center = r.vec2(holes[i], PH, "center");
-      h.diameter = r.number(holes[i], PH, "diameter", positive());
-      if (inside_margin(scene.geometry, h.center) < 0.5 * h.diameter)
-        r.fail(PH, holes[i], "the hole (diameter " + fmt(h.diameter) + ") must lie on the skin's footprint");
-      out.holes.push_back(h);
-    }
+    const json& holes = r.array(c, P, "holes", R"(an array of holes {"center": [x, y], "diameter"})");
+    for (std::size_t i = 0; i < holes.size(); ++i)
+      out.holes.push_back(read_hole(r, holes[i], at(sub(P, "holes"), i), i, holes.size(), geo));
   }
   out.zone_radius = r.number_or(c, P, "zone_radius", 0.0, positive());
   out.h = r.number_or(c, P, "h", 0.0, positive());
-  if (const json* f = Reader::find(c, "friction")) {
-    const std::string PF = sub(P, "friction");
-    r.object(*f, PF, {"mode", "mu", "static_ratio", "direction"});
-    if (const json* mode = Reader::find(*f, "mode")) {
-      const std::string modes = R"(one of "none", "static", "uncoupled", "coupled")";
-      if (*mode == "none")
-        out.friction = FrictionMode::none;
-      else if (*mode == "static")
-        out.friction = FrictionMode::static_residual;
-      else if (*mode == "uncoupled")
-        out.friction = FrictionMode::uncoupled;
-      else if (*mode == "coupled")
-        out.friction = FrictionMode::coupled;
-      else
-        r.fail(sub(PF, "mode"), *mode, "must be " + modes);
-    }
-    out.mu = r.number_or(*f, PF, "mu", 0.0, non_negative());
-    out.static_ratio = r.number_or(*f, PF, "static_ratio", 0.0, non_negative());
-    if (const json* d = Reader::find(*f, "direction")) {
-      const Vec2 v = r.vec<2>(*d, sub(PF, "direction"));
-      const double n = std::hypot(v[0], v[1]);
-      if (!(n > 0) || !std::isfinite(n))
-        r.fail(sub(PF, "direction"), *d, "must be a non-zero vector [dx, dy]");
-      out.direction = {v[0] / n, v[1] / n};
-    }
-  }
-  if (const json* sw = Reader::find(c, "sweep")) {
-    const std::string PS = sub(P, "sweep");
-    r.object(*sw, PS, {"from", "to", "positions", "hole_diameter", "h"});
-    HoleSweep s;
-    s.from = r.vec2(*sw, PS, "from");
-    s.to = r.vec2(*sw, PS, "to");
-    if (const json* n = Reader::find(*sw, "positions"))
-      s.positions = static_cast<int>(r.integer(*n, sub(PS, "positions"), 2, 100000));
-    s.hole_diameter = r.number_or(*sw, PS, "hole_diameter", s.hole_diameter, positive());
-    s.h = r.number_or(*sw, PS, "h", 0.0, positive());
-    for (const auto& [key, p] : {std::make_pair("from", s.from), std::make_pair("to", s.to)})
-      if (inside_margin(scene.geometry, p) < 0.5 * s.hole_diameter)
-        r.fail(sub(PS, key), json::array({p[0], p[1]}),
-               "the swept hole (diameter " + fmt(s.hole_diameter) + ") must stay on the skin's footprint");
-    out.sweep = s;
-  }
+  if (const json* f = Reader::find(c, "friction")) read_friction(r, *f, sub(P, "friction"), out);
+  if (const json* sw = Reader::find(c, "sweep")) out.sweep = read_sweep(r, *sw, sub(P, "sweep"), geo);
   return out;
 }
 
-// The candidate contact zone must stay one skin thickness inside the footprint's edge (the truncated side).
-void check_contact_zone(const Reader& r, const Scene& scene) {
+// The candidate contact zone must stay one skin thickness inside the footprint: the truncated side is an
+// artificial boundary (free or clamped), and contact within about h of it would feel it. Not checked on an
+// imported surface (footprint and thickness unknown before the file is read).
+void check_contact_zone(const Reader& r, const json& j, const Scene& scene) {
   if (scene.geometry.kind == GeometryKind::surface) return;
+  const ContactLoad& load = *scene.contact;
   const Vec2 c = contact_center(scene);
   const double radius = contact_zone_radius(scene), h = nominal_thickness(scene);
   const double margin = inside_margin(scene.geometry, c);
-  if (radius + h > margin)
-    r.fail(scene.contact->zone_radius > 0 ? "contact.zone_radius" : "contact", json(radius),
-           "the candidate contact zone (radius " + fmt(radius) + " about " + fmt(c) +
-               ") must stay one skin thickness (" + fmt(h) + ") inside the skin's edge, which is " +
-               fmt(margin) + " away: it would reach the truncated side; load less or use a larger skin");
+  if (radius + h <= margin * (1 + 1e-12)) return;
+  // Name the field that sets the radius: zone_radius if given, else the load.
+  const bool given = load.zone_radius > 0;
+  const std::string key = given ? "zone_radius" : (load.force ? "force" : "depth");
+  const std::string what =
+      given ? "the candidate contact zone (zone_radius " + fmt(radius)
+            : std::string("the automatic candidate contact zone (") +
+                  (load.force ? "1.25 x Hertz radius" : "1.25 x 2 sqrt(R_eff depth), the thin-layer bound,") +
+                  " = " + fmt(radius);
+  const std::string thick = scene.geometry.kind == GeometryKind::cap ? "h at the apex" : "h";
+  const std::string fix = given ? "give a smaller contact.zone_radius or a larger skin"
+                                : "load less, give a smaller contact.zone_radius, or use a larger skin";
+  r.fail(sub("contact", key), j.at(key),
+         what + " about " + fmt(c) + ") must stay one skin thickness (" + thick + " = " + fmt(h) +
+             ") inside the skin's side (" + footprint_words(scene.geometry) + "): zone radius + h = " +
+             fmt(radius + h) + " > " + fmt(margin) + ", the distance from the zone's centre to the side; " +
+             "it would reach the truncated side; " + fix);
 }
 
 }  // namespace
@@ -643,8 +715,8 @@ Scene parse_scene(const std::string& json_text, const std::string& source_path) 
   if (const json* loads = Reader::find(root, "loads")) scene.loads = read_loads(r, *loads);
   if (const json* cal = Reader::find(root, "calibration")) scene.calibration = read_calibration(r, *cal);
   if (const json* contact = Reader::find(root, "contact")) {
-    scene.contact = read_contact(r, *contact, scene);
-    check_contact_zone(r, scene);
+    scene.contact = read_contact(r, *contact, scene.geometry);
+    check_contact_zone(r, *contact, scene);
   }
   return scene;
 }

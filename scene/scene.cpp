@@ -23,16 +23,40 @@ Vec2 contact_center(const Scene& scene) {
   return c.center;
 }
 
+// The automatic zone: 1.25 × an upper bound a of the contact radius, from the half-space Hertz solution of
+// the two bodies' relative curvature (Johnson 1985, §4.2): E* = E/(1 − ν²) (the indenter is rigid),
+// 1/R_eff = 1/R_sphere + 1/R_cap (a plane: 1/R_sphere = 0; a flat layer or imported surface: 1/R_cap = 0).
+//  - Force control: a = (3 F R_eff / (4 E*))^(1/3), Hertz's radius. A thin layer bonded to a rigid base is
+//    stiffer than the half-space (for ν = 1/2 its compliance at wavelengths beyond h falls as (h/a)³), and
+//    a stiffer body carries the same force on a smaller disc: the bonded-layer contact is smaller than
+//    Hertz's (thin-layer limit: a ∝ (F R h³/E)^(1/6), far below it).
+//  - Depth control: a = 2 sqrt(R_eff δ), twice Hertz's sqrt(R_eff δ). Here the bound goes the other way: at
+//    a given approach the incompressible layer, unable to spread sideways over the base, bulges up around
+//    the indenter and the contact is LARGER than Hertz's, already by more than the 25 % margin at h ≈ a.
+//    Its limit is the thin-layer (lubrication) one: w = 0 outside the contact, so the volume pushed down
+//    inside must come back up inside, ∫(δ − r²/2R) dA = 0 over r < a, a² = 4 R δ. Thicker layers lie between
+//    that and Hertz (a² = R δ); a compressible thin layer (Winkler-like) tends to the intersection, 2 R δ.
+// Why the 25 % margin: the multipliers must cover the whole contact and a ring of free vertices around it
+// (the command checks that the solved contact stays one element inside its edge, app/contact_setup.cpp);
+// sliding friction shifts the pressure forwards and enlarges the contact on the leading side.
 double contact_zone_radius(const Scene& scene) {
   const ContactLoad& c = *scene.contact;
   if (c.zone_radius > 0) return c.zone_radius;
   const bool cap = scene.geometry.kind == GeometryKind::cap;
-  double R = c.indenter == IndenterKind::plane ? scene.geometry.cap.R : c.sphere_R;
-  if (c.indenter == IndenterKind::sphere && cap) R = 1.0 / (1.0 / c.sphere_R + 1.0 / scene.geometry.cap.R);
+  double curvature = 0;  // 1/R_eff, 1/mm
+  if (c.indenter == IndenterKind::sphere) curvature += 1 / c.sphere_R;
+  if (cap) curvature += 1 / scene.geometry.cap.R;
+  if (!(curvature > 0))
+    throw SceneError(
+        scene.source_path +
+        ": contact.indenter: a plane on a flat layer or an imported surface has no Hertz radius; "
+        "use a sphere or give contact.zone_radius");
+  if (!c.force && !c.depth)
+    throw SceneError(scene.source_path +
+                     ": contact: needs \"force\" or \"depth\" for an automatic zone_radius");
+  const double R_eff = 1 / curvature;
   const double E_star = scene.material.E / (1 - scene.material.nu * scene.material.nu);
-  // Johnson (1985) §4.2: a³ = 3FR/(4E*) under a force, a² = Rδ at a depth.
-  const double a =
-      c.force ? std::cbrt(3 * *c.force * R / (4 * E_star)) : std::sqrt(R * c.depth.value_or(0.0));
+  const double a = c.force ? std::cbrt(3 * *c.force * R_eff / (4 * E_star)) : 2 * std::sqrt(R_eff * *c.depth);
   return 1.25 * a;
 }
 

@@ -167,9 +167,12 @@ double nominal_thickness(const Scene& scene);
 
 // Where the indenter first touches the skin: a plane on a cap touches at the apex, a sphere at its centre.
 Vec2 contact_center(const Scene& scene);
-// Radius of the candidate contact zone (the multipliers' disc): contact.zone_radius, else 1.25 × the
-// half-space Hertz radius. A bonded layer is stiffer than the half-space, so its contact is smaller than
-// Hertz's; the margin covers the shift of a sliding contact. Commands check the answer stays inside.
+// Radius of the candidate contact zone (the multipliers' disc): contact.zone_radius, else 1.25 × an upper
+// bound of the contact radius: under a force, the half-space Hertz radius (a bonded layer is stiffer than
+// the half-space, so its contact is smaller than Hertz's); at a depth, twice Hertz's sqrt(R δ) (there the
+// incompressible layer bulges around the indenter and its contact is larger than Hertz's, up to the
+// thin-layer limit 2 sqrt(R δ)). The margin covers the shift of a sliding contact. Commands check the
+// answer stays inside. Throws SceneError for a plane off a cap without contact.zone_radius.
 double contact_zone_radius(const Scene& scene);
 // Mesh size inside the candidate zone: contact.h, else mesh.h_min.
 double contact_zone_h(const Scene& scene);

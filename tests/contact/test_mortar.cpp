@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "contact/mortar.hpp"
 #include "fem/assembly.hpp"
@@ -27,24 +28,22 @@ const TetMesh& cap() {
   return m;
 }
 
-// With every top vertex a multiplier, the hats sum to 1: Σ ∫ψ_i is the projected area of the top (the
-// disc of radius 6, up to the polygonal rim: the rim vertices lie on the circle, so the error is the
-// inscribed polygon's, bounded by πr²(1 − sin(2π/n)/(2π/n)) for n rim edges) and Σ ∫ψ_i x = 0.
+// Inside the zone the hats sum to 1: Σ ∫ψ_i lies between the projected area of the faces with every corner in
+// the zone and that of all faces touching it; with the disc about the apex, Σ ∫ψ_i x is the moment of a
+// nearly symmetric patch.
 TEST(Mortar, HatsPartitionTheProjectedTop) {
   const TetMesh& m = cap();
-  const MortarZone z = mortar_zone(m, {0, 0}, 100.0);
-  int rim = 0;
-  for (int i = 0; i < m.num_vertices; ++i)
-    if ((m.node_marker(i) & kTop) && (m.node_marker(i) & kSide)) ++rim;
-  const double polygon = 0.5 * rim * 36.0 * std::sin(2 * M_PI / rim);
-  double area = 0;
-  for (int f = 0; f < m.faces.rows(); ++f)
-    if (m.face_marker(f) == kTop)
-      for (const FacePoint& q : face_quadrature(m, f)) area += q.weight_xy;
-  EXPECT_NEAR(z.area.sum(), area, 1e-12 * area);
-  EXPECT_NEAR(z.area.sum(), polygon, 1e-9 * polygon);
-  const Eigen::VectorXd x = z.weighted(m, [](const Eigen::Vector3d& p) { return p.x(); });
-  EXPECT_LT(std::abs(x.sum()), 1e-3);  // the rim polygon is not exactly symmetric
+  const MortarZone z = mortar_zone(m, {0, 0}, 4.0);
+  std::vector<char> in(m.num_nodes(), 0);
+  for (int v : z.vertices) in[v] = 1;
+  double inner = 0, outer = 0;
+  for (int f : z.faces)
+    for (const FacePoint& q : face_quadrature(m, f)) {
+      outer += q.weight_xy;
+      if (in[m.faces(f, 0)] && in[m.faces(f, 1)] && in[m.faces(f, 2)]) inner += q.weight_xy;
+    }
+  EXPECT_GT(z.area.sum(), inner);
+  EXPECT_LT(z.area.sum(), outer);
   EXPECT_TRUE((z.area.array() > 0).all());
 }
 
@@ -53,13 +52,17 @@ TEST(Mortar, HatsPartitionTheProjectedTop) {
 // zero (or negative) at vertices on straight faces; the mortar constraint never asks a vertex to carry it.
 TEST(Mortar, UniformPressureGivesTheConsistentP2Load) {
   const TetMesh& m = cap();
-  const MortarZone z = mortar_zone(m, {0, 0}, 100.0);
+  const MortarZone z = mortar_zone(m, {0, 0}, 4.0);
   const Eigen::VectorXd f = z.load(Eigen::VectorXd::Ones(z.size()), Eigen::Vector2d(1, 0), 0.0);
   // traction −e_z per unit projected area = −e_z·|n_z| per unit true area on the top.
   const Eigen::VectorXd g = traction_load(m, kTop, [](const Eigen::Vector3d&, const Eigen::Vector3d& n) {
     return Eigen::Vector3d(0, 0, -std::abs(n.z()));
   });
-  EXPECT_LT((f - g).norm(), 1e-12 * g.norm());
+  // Equal at nodes whose faces all lie inside the zone (elements are at most 1 mm: |xy| < 2 suffices).
+  for (int j = 0; j < m.num_nodes(); ++j)
+    if ((m.node_marker(j) & kTop) && std::hypot(m.nodes(j, 0), m.nodes(j, 1)) < 2.0) {
+      EXPECT_NEAR(f[3 * j + 2], g[3 * j + 2], 1e-12 * g.cwiseAbs().maxCoeff()) << j;
+    }
   int vertices_with_no_load = 0;
   for (int i = 0; i < m.num_vertices; ++i)
     if ((m.node_marker(i) & kTop) && f[3 * i + 2] > -1e-6 * z.area.maxCoeff()) ++vertices_with_no_load;

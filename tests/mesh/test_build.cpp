@@ -8,6 +8,7 @@
 #include "mesh/p2_tet.hpp"
 #include "mesh/quality.hpp"
 #include "mesh/shape.hpp"
+#include "mesh/sizing.hpp"
 #include "mesh/surface_quadrature.hpp"
 
 namespace skinfem {
@@ -140,6 +141,34 @@ TEST(MeshBuild, ElementsAreSmallNearRegionsOfInterestAndLargeFarAway) {
   // The sizing field bounds the longest edge at the centroid by h_min + (g − 1)·distance.
   EXPECT_LE(near_max, 0.2 + 0.5 * 0.2);
   EXPECT_GT(far_sum / far_n, 0.5 * 1.5);
+}
+
+// With a contact, the candidate zone (about the apex for a plate on a cap) gets contact.h and the sweep path
+// (radius hole_diameter/2 + sweep.h about the segment) gets sweep.h; the size grows as h + (g − 1)·distance.
+TEST(MeshBuild, ContactZoneAndSweepPathAreRegionsOfInterest) {
+  Scene s = small_cap(1.0);  // apex (0.5, 0), h_min 0.4, h_max 1.6, growth 1.5
+  s.mesh.refine_sensors = false;
+  ContactLoad c;
+  c.indenter = IndenterKind::plane;
+  c.force = 0.8;
+  c.zone_radius = 1.0;
+  c.h = 0.3;
+  c.sweep = HoleSweep{{-2, 2}, {2, 2}, 11, 0.5, 0.2};  // region radius 0.25 + 0.2 = 0.45 about y = 2
+  s.contact = c;
+  const SizingField size(s);
+  EXPECT_DOUBLE_EQ(size(0.5, 0), 0.3);                 // the zone's centre, the apex
+  EXPECT_DOUBLE_EQ(size(1.4, 0), 0.3);                 // inside the zone
+  EXPECT_DOUBLE_EQ(size(2.5, 0), 0.3 + 0.5 * 1.0);     // 1 mm outside it
+  EXPECT_DOUBLE_EQ(size(-1.5, 2.4), 0.2);              // on the sweep path
+  EXPECT_NEAR(size(0, 1.5), 0.2 + 0.5 * 0.05, 1e-12);  // 0.05 mm outside it
+  EXPECT_DOUBLE_EQ(size(-5, -5), 1.6);                 // far: h_max
+
+  c.sweep->h = 0;  // no refinement along the path; the zone's size then grows to it
+  c.h = 0;         // the zone takes mesh.h_min
+  s.contact = c;
+  const SizingField coarse(s);
+  EXPECT_DOUBLE_EQ(coarse(0.5, 0), 0.4);
+  EXPECT_NEAR(coarse(0.5, 2.4), 0.4 + 0.5 * 1.4, 1e-12);
 }
 
 TEST(MeshBuild, FlatLayerVolumeIsExact) {

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <initializer_list>
 #include <string>
+#include <utility>
 
 #include "scene/load.hpp"
 #include "scene/scene.hpp"
@@ -528,73 +529,326 @@ TEST(SceneLoad, EmptySourcePathIsNamedInMessages) {
   }
 }
 
-// The contact section: every field read, defaults, and each bad input with a message naming its field.
-TEST(SceneLoad, Contact) {
-  const auto contact = [](const std::string& body) {
-    return with(&Doc::extra, R"(, "contact": {)" + body + "}");
-  };
-  const Scene s =
-      parse_scene(contact(R"("indenter": {"type": "plane"}, "force": 0.8, "zone_radius": 3.0, "h": 0.2,
-                 "holes": [{"center": [1, 0], "diameter": 0.5}],
-                 "friction": {"mode": "coupled", "mu": 3, "static_ratio": 0.1, "direction": [2, 0]},
-                 "sweep": {"from": [-2, 0], "to": [3, 0], "positions": 11, "h": 0.1})"),
-                  kSource);
+// ---- The contact section ----------------------------------------------------------------------------
+
+namespace {
+
+// The default Doc (cap R = 129.7, h = 3.04, apex (0.5, 0), truncation_radius 12, E = 3, ν = 0.5) with a
+// contact section of this body.
+std::string contact(const std::string& body) { return with(&Doc::extra, R"(, "contact": {)" + body + "}"); }
+
+// Flat layer h = 3, half_width 10, with a contact section of this body.
+std::string flat_contact(const std::string& body) {
+  Doc d;
+  d.geometry = R"({"type": "flat", "h": 3, "half_width": 10})";
+  d.extra = R"(, "contact": {)" + body + "}";
+  return d.str();
+}
+
+// Half-space Hertz contact radius of a rigid body on an elastic one (Johnson 1985, eqs. 4.22–4.23), computed
+// here independently of scene.cpp: a³ = 3 F R / (4 E*), or a² = R δ.
+double hertz_force(double F, double R, double E, double nu) {
+  return std::pow(3.0 * F * R * (1.0 - nu * nu) / (4.0 * E), 1.0 / 3.0);
+}
+double hertz_depth(double delta, double R) { return std::sqrt(R * delta); }
+
+const std::string kPlane = R"("indenter": {"type": "plane"}, "force": 0.8)";
+
+}  // namespace
+
+TEST(SceneLoad, ShippedContactScenes) {
+  const Scene c = load_scene(std::string(SKINFEM_SOURCE_DIR) + "/scenes/candelier2011.json");
+  ASSERT_TRUE(c.contact);
+  EXPECT_EQ(c.contact->indenter, IndenterKind::plane);  // the paper's plate on the cap
+  EXPECT_EQ(contact_center(c), (Vec2{0.5, 0.0}));       // first touch at the apex
+  EXPECT_TRUE(c.contact->sweep);
+  const Scene h = load_scene(std::string(SKINFEM_SOURCE_DIR) + "/scenes/hertz_layer.json");
+  ASSERT_TRUE(h.contact);
+  EXPECT_EQ(h.contact->indenter, IndenterKind::sphere);
+  EXPECT_EQ(h.contact->friction, FrictionMode::none);
+}
+
+TEST(SceneLoad, ContactEveryFieldIsRead) {
+  const Scene s = parse_scene(contact(R"("indenter": {"type": "plane"}, "force": 0.8, "zone_radius": 3.0,
+                 "h": 0.2, "holes": [{"center": [1, 0], "diameter": 0.5}, {"center": [-1, 2], "diameter": 0.3}],
+                 "friction": {"mode": "coupled", "mu": 3, "static_ratio": 0.1, "direction": [3, -4]},
+                 "sweep": {"from": [-2, 0], "to": [3, 0], "positions": 11, "hole_diameter": 0.4, "h": 0.1})"),
+                              kSource);
   ASSERT_TRUE(s.contact);
   const ContactLoad& c = *s.contact;
   EXPECT_EQ(c.indenter, IndenterKind::plane);
+  ASSERT_TRUE(c.force);
   EXPECT_EQ(*c.force, 0.8);
   EXPECT_FALSE(c.depth);
   EXPECT_EQ(c.zone_radius, 3.0);
   EXPECT_EQ(c.h, 0.2);
-  ASSERT_EQ(c.holes.size(), 1u);
+  ASSERT_EQ(c.holes.size(), 2u);
+  EXPECT_EQ(c.holes[0].center, (Vec2{1, 0}));
   EXPECT_EQ(c.holes[0].diameter, 0.5);
+  EXPECT_EQ(c.holes[1].center, (Vec2{-1, 2}));
+  EXPECT_EQ(c.holes[1].diameter, 0.3);
   EXPECT_EQ(c.friction, FrictionMode::coupled);
   EXPECT_EQ(c.mu, 3.0);
   EXPECT_EQ(c.static_ratio, 0.1);
-  EXPECT_EQ(c.direction[0], 1.0);  // normalised
+  EXPECT_NEAR(c.direction[0], 0.6, 1e-15);  // normalised
+  EXPECT_NEAR(c.direction[1], -0.8, 1e-15);
   ASSERT_TRUE(c.sweep);
+  EXPECT_EQ(c.sweep->from, (Vec2{-2, 0}));
+  EXPECT_EQ(c.sweep->to, (Vec2{3, 0}));
   EXPECT_EQ(c.sweep->positions, 11);
-  EXPECT_EQ(c.sweep->hole_diameter, 0.5);  // default
-  EXPECT_EQ(contact_center(s)[0], 0.5);    // the cap's apex
+  EXPECT_EQ(c.sweep->hole_diameter, 0.4);
+  EXPECT_EQ(c.sweep->h, 0.1);
+  EXPECT_EQ(contact_center(s), (Vec2{0.5, 0.0}));  // a plane on a cap: the apex
+  EXPECT_EQ(contact_zone_radius(s), 3.0);          // given
   EXPECT_EQ(contact_zone_h(s), 0.2);
 
-  // Automatic zone: 1.25 × the half-space Hertz radius (Johnson §4.2), E* = E/(1 − ν²).
-  const Scene a = parse_scene(contact(R"("indenter": {"type": "plane"}, "force": 0.8)"), kSource);
-  EXPECT_NEAR(contact_zone_radius(a), 1.25 * std::cbrt(3 * 0.8 * 129.7 / (4 * 4.0)), 1e-12);
-  EXPECT_EQ(contact_zone_h(a), 0.25);  // mesh.h_min
-  EXPECT_EQ(a.contact->friction, FrictionMode::none);
-  const Scene d = parse_scene(
-      contact(R"("indenter": {"type": "sphere", "R": 50, "center": [0.5, 0]}, "depth": 0.02)"), kSource);
-  const double R = 1 / (1 / 50.0 + 1 / 129.7);
-  EXPECT_NEAR(contact_zone_radius(d), 1.25 * std::sqrt(R * 0.02), 1e-12);
+  // A sphere on a flat layer, depth-controlled; every friction mode name.
+  const Scene f = parse_scene(
+      flat_contact(R"("indenter": {"type": "sphere", "R": 100, "center": [1.5, -2]}, "depth": 0.02,
+                      "friction": {"mode": "static", "static_ratio": 0.2})"),
+      kSource);
+  ASSERT_TRUE(f.contact);
+  EXPECT_EQ(f.contact->indenter, IndenterKind::sphere);
+  EXPECT_EQ(f.contact->sphere_R, 100.0);
+  EXPECT_EQ(f.contact->center, (Vec2{1.5, -2}));
+  EXPECT_EQ(contact_center(f), (Vec2{1.5, -2}));  // a sphere: its centre
+  EXPECT_FALSE(f.contact->force);
+  ASSERT_TRUE(f.contact->depth);
+  EXPECT_EQ(*f.contact->depth, 0.02);
+  EXPECT_EQ(f.contact->friction, FrictionMode::static_residual);
+  EXPECT_EQ(f.contact->static_ratio, 0.2);
+  for (const auto& [name, mode] :
+       {std::make_pair("none", FrictionMode::none), std::make_pair("static", FrictionMode::static_residual),
+        std::make_pair("uncoupled", FrictionMode::uncoupled),
+        std::make_pair("coupled", FrictionMode::coupled)}) {
+    // μ = 0 is allowed with every mode (coupled with μ = 0 must reproduce frictionless contact).
+    const Scene m = parse_scene(
+        contact(kPlane + R"(, "friction": {"mode": ")" + std::string(name) + R"(", "mu": 0})"), kSource);
+    EXPECT_EQ(m.contact->friction, mode) << name;
+    EXPECT_EQ(m.contact->mu, 0.0) << name;
+  }
+}
 
+TEST(SceneLoad, ContactDefaults) {
+  EXPECT_FALSE(parse_scene(Doc{}.str(), kSource).contact);  // no section, no contact
+  const Scene s = parse_scene(contact(kPlane), kSource);
+  ASSERT_TRUE(s.contact);
+  const ContactLoad& c = *s.contact;
+  EXPECT_TRUE(c.holes.empty());
+  EXPECT_EQ(c.zone_radius, 0.0);  // automatic
+  EXPECT_EQ(c.h, 0.0);
+  EXPECT_EQ(contact_zone_h(s), 0.25);  // mesh.h_min
+  EXPECT_EQ(c.friction, FrictionMode::none);
+  EXPECT_EQ(c.mu, 0.0);
+  EXPECT_EQ(c.static_ratio, 0.0);
+  EXPECT_EQ(c.direction, (Vec2{1, 0}));
+  EXPECT_FALSE(c.sweep);
+
+  // An empty friction object keeps every default; a sweep with only its path takes the rest.
+  const Scene e =
+      parse_scene(contact(kPlane + R"(, "friction": {}, "sweep": {"from": [-1, 0], "to": [1, 0]})"), kSource);
+  EXPECT_EQ(e.contact->friction, FrictionMode::none);
+  EXPECT_EQ(e.contact->direction, (Vec2{1, 0}));
+  ASSERT_TRUE(e.contact->sweep);
+  EXPECT_EQ(e.contact->sweep->positions, 201);
+  EXPECT_EQ(e.contact->sweep->hole_diameter, 0.5);
+  EXPECT_EQ(e.contact->sweep->h, 0.0);  // no refinement along the path
+}
+
+// The automatic zone: 1.25 × Hertz under a force; 1.25 × 2 √(R δ), the thin incompressible layer's bound,
+// at a depth (there the bonded layer's contact exceeds Hertz's). E* = 3 / (1 − 0.25) = 4 MPa.
+TEST(SceneLoad, ContactZoneRadiusIsHertzWithMargin) {
+  const double E = 3.0, nu = 0.5, Rcap = 129.7;
+  // Plane on the cap: R_eff = the cap's radius.
+  const Scene plane = parse_scene(contact(kPlane), kSource);
+  EXPECT_NEAR(contact_zone_radius(plane), 1.25 * hertz_force(0.8, Rcap, E, nu), 1e-12);
+  EXPECT_NEAR(contact_zone_radius(plane), 1.25 * std::cbrt(3 * 0.8 * 129.7 / (4 * 4.0)), 1e-12);
+  const Scene plane_d = parse_scene(contact(R"("indenter": {"type": "plane"}, "depth": 0.03)"), kSource);
+  EXPECT_NEAR(contact_zone_radius(plane_d), 1.25 * 2 * hertz_depth(0.03, Rcap), 1e-12);
+
+  // Sphere on the cap: curvatures add, 1/R_eff = 1/R_s + 1/R_cap.
+  const double Rsc = 1 / (1 / 50.0 + 1 / Rcap);
+  const Scene sc = parse_scene(
+      contact(R"("indenter": {"type": "sphere", "R": 50, "center": [0.5, 0]}, "force": 0.5)"), kSource);
+  EXPECT_NEAR(contact_zone_radius(sc), 1.25 * hertz_force(0.5, Rsc, E, nu), 1e-12);
+  const Scene sc_d = parse_scene(
+      contact(R"("indenter": {"type": "sphere", "R": 50, "center": [0.5, 0]}, "depth": 0.02)"), kSource);
+  EXPECT_NEAR(contact_zone_radius(sc_d), 1.25 * 2 * hertz_depth(0.02, Rsc), 1e-12);
+
+  // Sphere on a flat layer, compressible material: R_eff = the sphere's radius, E* = E/(1 − ν²).
+  Doc d;
+  d.geometry = R"({"type": "flat", "h": 3, "half_width": 10})";
+  d.material = R"({"E": 2.0, "nu": 0.3})";
+  d.extra = R"(, "contact": {"indenter": {"type": "sphere", "R": 129.7, "center": [0, 0]}, "force": 0.8})";
+  EXPECT_NEAR(contact_zone_radius(parse_scene(d.str(), kSource)), 1.25 * hertz_force(0.8, 129.7, 2.0, 0.3),
+              1e-12);
+  const Scene flat_d = parse_scene(
+      flat_contact(R"("indenter": {"type": "sphere", "R": 129.7, "center": [0, 0]}, "depth": 0.0231)"),
+      kSource);
+  EXPECT_NEAR(contact_zone_radius(flat_d), 1.25 * 2 * hertz_depth(0.0231, 129.7), 1e-12);
+
+  // Sphere on an imported surface: R_eff = the sphere's radius; no footprint check (unknown before meshing).
+  const fs::path dir = tmp_dir();
+  write_file(dir / "dome.stl", "solid dome\nendsolid dome\n");
+  Doc s;
+  s.geometry = R"({"type": "surface", "path": "dome.stl"})";
+  s.extra = R"(, "contact": {"indenter": {"type": "sphere", "R": 40, "center": [100, 0]}, "force": 1})";
+  const Scene surf = parse_scene(s.str(), (dir / "x.json").string());
+  EXPECT_NEAR(contact_zone_radius(surf), 1.25 * hertz_force(1.0, 40, E, nu), 1e-12);
+
+  // Built in code: a plane off a cap has no Hertz radius unless the zone is given.
+  Scene coded = parse_scene(flat_contact(R"("indenter": {"type": "sphere", "R": 50, "center": [0, 0]},
+                                           "force": 1)"),
+                            kSource);
+  coded.contact->indenter = IndenterKind::plane;
+  EXPECT_THROW(contact_zone_radius(coded), SceneError);
+  coded.contact->zone_radius = 2;
+  EXPECT_EQ(contact_zone_radius(coded), 2.0);
+}
+
+TEST(SceneLoad, ContactPlaneNeedsACap) {
+  EXPECT_SCENE_ERROR(flat_contact(kPlane), "contact.indenter.type = \"plane\"", "on a flat layer",
+                     "touches it everywhere at once", "needs a cap");
+  const fs::path dir = tmp_dir();
+  write_file(dir / "dome.stl", "solid dome\nendsolid dome\n");
+  Doc s;
+  s.geometry = R"({"type": "surface", "path": "dome.stl"})";
+  s.extra = ", \"contact\": {" + kPlane + "}";
+  const std::string msg = error_of(s.str(), (dir / "x.json").string());
+  EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+  EXPECT_NE(msg.find("contact.indenter.type = \"plane\""), std::string::npos) << msg;
+  EXPECT_NE(msg.find("a plane needs a cap geometry"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("imported surface"), std::string::npos) << msg;
+  // A sphere fits every geometry.
+  EXPECT_NO_THROW(parse_scene(flat_contact(R"("indenter": {"type": "sphere", "R": 50, "center": [0, 0]},
+                                              "force": 1)"),
+                              kSource));
+}
+
+TEST(SceneLoad, ContactHoleOffTheSkin) {
+  // Cap: apex (0.5, 0), truncation_radius 12; a hole of diameter 0.5 needs its centre within 11.75.
+  EXPECT_SCENE_ERROR(
+      contact(kPlane +
+              R"(, "holes": [{"center": [1, 0], "diameter": 0.5}, {"center": [12.4, 0], "diameter": 0.5}])"),
+      "contact.holes[1] = {", "hole 2 of 2", "centre (12.4, 0)", "off the skin",
+      "must lie on the skin's footprint", "truncation_radius - diameter/2 = 11.75", "got 11.9");
+  EXPECT_NO_THROW(
+      parse_scene(contact(kPlane + R"(, "holes": [{"center": [12.25, 0], "diameter": 0.5}])"), kSource));
+  // Flat: |x|, |y| <= half_width - diameter/2.
+  EXPECT_SCENE_ERROR(flat_contact(R"("indenter": {"type": "sphere", "R": 50, "center": [0, 0]}, "force": 1,
+                                     "holes": [{"center": [0, -9.9], "diameter": 0.4}])"),
+                     "contact.holes[0] = {", "hole 1 of 1", "off the skin", "half_width - diameter/2 = 9.8",
+                     "got 9.9");
+  // The sphere's centre.
+  EXPECT_SCENE_ERROR(
+      flat_contact(R"("indenter": {"type": "sphere", "R": 100, "center": [10.5, 0]}, "force": 1)"),
+      "contact.indenter.center = [10.5,0.0]", "the sphere's centre must lie on the skin's footprint",
+      "half_width = 10", "got 10.5");
+  EXPECT_SCENE_ERROR(
+      contact(R"("indenter": {"type": "sphere", "R": 100, "center": [0.5, -12.5]}, "force": 1)"),
+      "contact.indenter.center = [0.5,-12.5]", "the sphere's centre must lie on the skin's footprint",
+      "truncation_radius = 12", "got 12.5");
+  // The swept hole, at either end of its path.
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "sweep": {"from": [-11.3, 0], "to": [0, 0]})"),
+                     "contact.sweep.from = [-11.3,0.0]", "the swept hole (diameter 0.5)",
+                     "must stay on the skin's footprint", "hole_diameter/2 = 11.75", "got 11.8");
+  EXPECT_NO_THROW(parse_scene(contact(kPlane + R"(, "sweep": {"from": [-11.2, 0], "to": [0, 0]})"), kSource));
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "sweep": {"from": [0, 0], "to": [0, 11], "hole_diameter": 2.5})"),
+                     "contact.sweep.to = [0.0,11.0]", "the swept hole (diameter 2.5)");
+  EXPECT_SCENE_ERROR(flat_contact(R"("indenter": {"type": "sphere", "R": 50, "center": [0, 0]}, "force": 1,
+                                     "sweep": {"from": [-9.9, 0], "to": [9, 0]})"),
+                     "contact.sweep.from = [-9.9,0.0]", "half_width - hole_diameter/2 = 9.75");
+}
+
+TEST(SceneLoad, ContactZoneMustStayOneThicknessInsideTheSide) {
+  // Given zone on the cap: 10 + 3.04 > 12 from the apex.
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "zone_radius": 10)"), "contact.zone_radius = 10",
+                     "must stay one skin thickness (h at the apex = 3.04)", "truncation_radius = 12",
+                     "zone radius + h = 13.04 > 12", "would reach the truncated side");
+  EXPECT_NO_THROW(parse_scene(contact(kPlane + R"(, "zone_radius": 8.9)"), kSource));
+  // Sphere off-centre on a flat layer: 2.5 + 3 > 10 − 5.
+  EXPECT_SCENE_ERROR(flat_contact(R"("indenter": {"type": "sphere", "R": 50, "center": [0, -5]}, "force": 1,
+                                     "zone_radius": 2.5)"),
+                     "contact.zone_radius = 2.5", "about (0, -5)", "half_width = 10",
+                     "zone radius + h = 5.5 > 5", "would reach the truncated side");
+  EXPECT_NO_THROW(parse_scene(flat_contact(R"("indenter": {"type": "sphere", "R": 50, "center": [0, -5]},
+                                             "force": 1, "zone_radius": 1.9)"),
+                              kSource));
+  // The automatic zone names the load that sets it: 1.25 × Hertz at 100 N is 16.8 mm.
+  EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "plane"}, "force": 100)"), "contact.force = 100",
+                     "automatic candidate contact zone (1.25 x Hertz radius = 16.8",
+                     "would reach the truncated side");
+  EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "plane"}, "depth": 0.5)"), "contact.depth = 0.5",
+                     "automatic candidate contact zone (1.25 x 2 sqrt(R_eff depth)",
+                     "would reach the truncated side");
+}
+
+TEST(SceneLoad, ContactErrors) {
+  EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "contact": 1)"),
+                     "contact = 1: must be an object with keys indenter");
   EXPECT_SCENE_ERROR(contact(R"("force": 0.8)"), "contact.indenter: required key is missing");
+  EXPECT_SCENE_ERROR(contact(R"("indenter": "plane", "force": 0.8)"),
+                     "contact.indenter = \"plane\": must be");
+  EXPECT_SCENE_ERROR(contact(R"("indenter": {}, "force": 0.8)"),
+                     "contact.indenter.type: required key is missing");
+  EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "cone"}, "force": 1)"),
+                     "contact.indenter.type = \"cone\": must be \"plane\" or \"sphere\"");
+  EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "plane", "R": 3}, "force": 1)"),
+                     "contact.indenter.R: unknown key; allowed: type");
+  EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "sphere", "center": [0, 0]}, "force": 1)"),
+                     "contact.indenter.R: required key is missing");
+  EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "sphere", "R": 0, "center": [0, 0]}, "force": 1)"),
+                     "contact.indenter.R = 0: must be a number > 0");
+  EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "sphere", "R": 5}, "force": 1)"),
+                     "contact.indenter.center: required key is missing");
   EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "plane"})"), "contact = {",
                      "must have exactly one of \"force\" (N) or \"depth\" (mm)");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "depth": 0.01)"), "contact = {", "exactly one of");
   EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "plane"}, "force": 0)"),
                      "contact.force = 0: must be a number > 0");
-  EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "cone"}, "force": 1)"),
-                     "contact.indenter.type = \"cone\"");
-  EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "plane"}, "force": 1, "friction": {"mu": -1})"),
+  EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "plane"}, "depth": -0.1)"),
+                     "contact.depth = -0.1: must be a number > 0");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "holes": {"center": [0, 0]})"), "contact.holes = {",
+                     "must be an array of holes");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "holes": [{"center": [0, 0]}])"),
+                     "contact.holes[0].diameter: required key is missing");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "holes": [{"center": [0, 0], "diameter": 0}])"),
+                     "contact.holes[0].diameter = 0: must be a number > 0");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "holes": [{"center": [0], "diameter": 1}])"),
+                     "contact.holes[0].center = [0]: must be a point [x, y]");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "zone_radius": 0)"),
+                     "contact.zone_radius = 0: must be a number > 0");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "h": -1)"), "contact.h = -1: must be a number > 0");
+  EXPECT_SCENE_ERROR(
+      contact(kPlane + R"(, "friction": {"mode": "kinetic"})"),
+      "contact.friction.mode = \"kinetic\": must be one of \"none\", \"static\", \"uncoupled\", "
+      "\"coupled\"");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "friction": {"mu": -1})"),
                      "contact.friction.mu = -1: must be a number >= 0");
-  EXPECT_SCENE_ERROR(
-      contact(R"("indenter": {"type": "plane"}, "force": 1, "friction": {"direction": [0, 0]})"),
-      "contact.friction.direction = [0,0]: must be a non-zero vector");
-  EXPECT_SCENE_ERROR(
-      contact(
-          R"("indenter": {"type": "plane"}, "force": 1, "holes": [{"center": [12.4, 0], "diameter": 0.5}])"),
-      "contact.holes[0]", "must lie on the skin's footprint");
-  EXPECT_SCENE_ERROR(
-      contact(R"("indenter": {"type": "plane"}, "force": 1, "sweep": {"from": [-20, 0], "to": [0, 0]})"),
-      "contact.sweep.from = [-20.0,0.0]", "must stay on the skin's footprint");
-  EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "plane"}, "force": 1, "zone_radius": 10)"),
-                     "contact.zone_radius = 10", "would reach the truncated side");
-  EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "plane"}, "force": 1, "colour": 1)"), "contact.colour",
-                     "unknown key");
-  Doc flat;
-  flat.geometry = R"({"type": "flat", "h": 3, "half_width": 10})";
-  flat.extra = R"(, "contact": {"indenter": {"type": "plane"}, "force": 1})";
-  EXPECT_SCENE_ERROR(flat.str(), "contact.indenter.type = \"plane\"", "a plane needs a cap geometry");
-  flat.extra = R"(, "contact": {"indenter": {"type": "sphere", "R": 100, "center": [10.5, 0]}, "force": 1})";
-  EXPECT_SCENE_ERROR(flat.str(), "contact.indenter.center = [10.5,0.0]", "must lie on the skin's footprint");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "friction": {"static_ratio": -0.1})"),
+                     "contact.friction.static_ratio = -0.1: must be a number >= 0");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "friction": {"direction": [0, 0]})"),
+                     "contact.friction.direction = [0,0]: must be a non-zero vector");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "friction": {"direction": [1, 0, 0]})"),
+                     "contact.friction.direction = [1,0,0]: must be a point [x, y]");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "friction": {"mu": 1, "speed": 2})"),
+                     "contact.friction.speed: unknown key; allowed: mode, mu, static_ratio, direction");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "sweep": {"to": [1, 0]})"),
+                     "contact.sweep.from: required key is missing");
+  for (const char* n : {"1", "2.5", "100001", "\"5\""})
+    EXPECT_SCENE_ERROR(
+        contact(kPlane + R"(, "sweep": {"from": [0, 0], "to": [1, 0], "positions": )" + n + "}"),
+        "contact.sweep.positions = " + std::string(n) + ": must be an integer in [2, 100000]");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "sweep": {"from": [0, 0], "to": [1, 0], "hole_diameter": 0})"),
+                     "contact.sweep.hole_diameter = 0: must be a number > 0");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "sweep": {"from": [0, 0], "to": [1, 0], "h": 0})"),
+                     "contact.sweep.h = 0: must be a number > 0");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "sweep": {"from": [0, 0], "to": [1, 0], "step": 1})"),
+                     "contact.sweep.step: unknown key; allowed: from, to, positions, hole_diameter, h");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "colour": 1)"), "contact.colour: unknown key; allowed: indenter");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "force": 1)"), "contact.force: duplicate key");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "friction": {"mu": 1, "mu": 2})"),
+                     "contact.friction.mu: duplicate key");
+  EXPECT_SCENE_ERROR(with(&Doc::extra, ", \"contact\": {" + kPlane + R"(}, "contact": {})"),
+                     "contact: duplicate key");
 }
