@@ -24,18 +24,20 @@ CondensedContact condense(const ElasticModel& model, const MortarZone& zone, con
   c.gap0 = zone.weighted(
       m, [&](const Eigen::Vector3d& x) { return indenter.z_touch() + indenter.phi(x.x(), x.y()) - x.z(); });
 
-  // Components of a 3N displacement block, weighted by the hats: D·u_z and D·u_t.
-  const auto weighted_z = [&](const Eigen::MatrixXd& U) {
-    Eigen::MatrixXd uz(N, U.cols());
-    for (int j = 0; j < N; ++j) uz.row(j) = U.row(3 * j + 2);
-    return Eigen::MatrixXd(zone.D * uz);
-  };
-  const auto weighted_t = [&](const Eigen::MatrixXd& U) {
-    Eigen::MatrixXd ut(N, U.cols());
-    for (int j = 0; j < N; ++j)
-      ut.row(j) = c.direction.x() * U.row(3 * j) + c.direction.y() * U.row(3 * j + 1);
-    return Eigen::MatrixXd(zone.D * ut);
-  };
+  // D acting on one displacement component of a 3N vector: D_z picks u_z, D_t the slip direction's u_t.
+  using RowSparse = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+  std::vector<Eigen::Triplet<double>> tz, tt;
+  for (int i = 0; i < nc; ++i)
+    for (RowSparse::InnerIterator it(zone.D, i); it; ++it) {
+      tz.emplace_back(i, 3 * it.col() + 2, it.value());
+      tt.emplace_back(i, 3 * it.col(), c.direction.x() * it.value());
+      tt.emplace_back(i, 3 * it.col() + 1, c.direction.y() * it.value());
+    }
+  RowSparse D_z(nc, 3 * N), D_t(nc, 3 * N);
+  D_z.setFromTriplets(tz.begin(), tz.end());
+  D_t.setFromTriplets(tt.begin(), tt.end());
+  const auto weighted_z = [&](const Eigen::MatrixXd& U) { return Eigen::MatrixXd(D_z * U); };
+  const auto weighted_t = [&](const Eigen::MatrixXd& U) { return Eigen::MatrixXd(D_t * U); };
 
   // Adjoints of the sensor readings: base displacement −w, no load (green/fe_green.hpp).
   const ReadingFunctionals functional(m);
@@ -59,8 +61,7 @@ CondensedContact condense(const ElasticModel& model, const MortarZone& zone, con
     if (progress) progress(double(j0) / nc, "condensing onto " + std::to_string(nc) + " contact multipliers");
     Eigen::MatrixXd F = Eigen::MatrixXd::Zero(3 * N, k);
     for (int j = 0; j < k; ++j)
-      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(zone.D, j0 + j); it; ++it)
-        F(3 * it.col() + 2, j) = -it.value();
+      for (RowSparse::InnerIterator it(D_z, j0 + j); it; ++it) F(it.col(), j) = -it.value();
     const Eigen::MatrixXd U = model.solver().solve_block(F);
     c.C_zz.middleCols(j0, k) = -weighted_z(U);
     c.C_zt.middleRows(j0, k) = weighted_t(U).transpose();

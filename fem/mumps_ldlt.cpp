@@ -47,8 +47,9 @@ MumpsLdlt::MumpsLdlt(const Eigen::SparseMatrix<double>& K) : impl_(new Impl) {
   s.id.icntl[1] = -1;
   s.id.icntl[2] = -1;
   s.id.icntl[3] = 0;
-  // ICNTL(7) = 2, approximate minimum fill: as fast here as SCOTCH/METIS (measured on the flat
-  // layer, 165k DOFs: AMF 23.6 s, SCOTCH 21.7 s, PORD 27.4 s) and, unlike SCOTCH, bitwise reproducible.
+  // ICNTL(7) = 2, approximate minimum fill. METIS (ICNTL(7) = 5) factors the 188k-DOF contact mesh
+  // faster (22 s against 26 s) but two factorizations of one matrix in one process differ in the last bits
+  // (its generator's state carries over); SCOTCH is not reproducible either. AMF is bitwise reproducible.
   s.id.icntl[6] = 2;
   s.id.icntl[13] = 60;  // ICNTL(14): +60 % working-space relaxation for delayed pivots
   s.id.n = static_cast<MUMPS_INT>(K.rows());

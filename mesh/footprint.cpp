@@ -38,7 +38,7 @@ class GradedCriteria : public virtual CGAL::Delaunay_mesh_criteria_2<CDT> {
   };
   class Is_bad : public Base::Is_bad {
    public:
-    Is_bad(double aspect, const SizingField* size) : Base::Is_bad(aspect, K()), size_(size) {}
+    Is_bad(double aspect, const Size2d* size) : Base::Is_bad(aspect, K()), size_(size) {}
     CGAL::Mesh_2::Face_badness operator()(const Quality q) const {
       if (q.size() > 1) return CGAL::Mesh_2::IMPERATIVELY_BAD;
       return q.sine() < this->B ? CGAL::Mesh_2::BAD : CGAL::Mesh_2::NOT_BAD;
@@ -63,17 +63,17 @@ class GradedCriteria : public virtual CGAL::Delaunay_mesh_criteria_2<CDT> {
     }
 
    private:
-    const SizingField* size_;
+    const Size2d* size_;
   };
-  explicit GradedCriteria(const SizingField& size) : Base(0.125), size_(&size) {}  // min angle ≈ 20.7°
+  explicit GradedCriteria(const Size2d& size) : Base(0.125), size_(&size) {}  // min angle ≈ 20.7°
   Is_bad is_bad_object() const { return Is_bad(this->bound(), size_); }
 
  private:
-  const SizingField* size_;
+  const Size2d* size_;
 };
 
 // Points along a → b, spaced by the sizing field, then stretched to end exactly at b (b excluded).
-void append_graded_edge(const Vec2& a, const Vec2& b, const SizingField& size, std::vector<Vec2>& out) {
+void append_graded_edge(const Vec2& a, const Vec2& b, const Size2d& size, std::vector<Vec2>& out) {
   const double len = std::hypot(b[0] - a[0], b[1] - a[1]);
   std::vector<double> s{0.0};
   while (s.back() < len) {
@@ -88,7 +88,7 @@ void append_graded_edge(const Vec2& a, const Vec2& b, const SizingField& size, s
 }
 }  // namespace
 
-std::vector<Vec2> circle_loop(const Vec2& centre, double radius, const SizingField& size) {
+std::vector<Vec2> circle_loop(const Vec2& centre, double radius, const Size2d& size) {
   std::vector<double> theta{0.0};
   while (theta.back() < 2 * M_PI) {
     const double t = theta.back();
@@ -109,14 +109,14 @@ std::vector<Vec2> circle_loop(const Vec2& centre, double radius, const SizingFie
   return loop;
 }
 
-std::vector<Vec2> square_loop(double w, const SizingField& size) {
+std::vector<Vec2> square_loop(double w, const Size2d& size) {
   const Vec2 corners[4] = {{-w, -w}, {w, -w}, {w, w}, {-w, w}};
   std::vector<Vec2> loop;
   for (int i = 0; i < 4; ++i) append_graded_edge(corners[i], corners[(i + 1) % 4], size, loop);
   return loop;
 }
 
-Footprint mesh_footprint(const std::vector<Vec2>& loop, const SizingField& size,
+Footprint mesh_footprint(const std::vector<Vec2>& loop, const Size2d& size,
                          const std::vector<Circle>& circles) {
   CDT cdt;
   auto insert_loop = [&](const std::vector<Vec2>& pts) {

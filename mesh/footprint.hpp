@@ -3,12 +3,16 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <functional>
 #include <vector>
 
 #include "mesh/sizing.hpp"
 #include "mesh/tet_mesh.hpp"
 
 namespace skinfem {
+
+// Target edge length (mm) at a point (x, y) of the footprint.
+using Size2d = std::function<double(double, double)>;
 
 struct Footprint {
   Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor> points;  // V×2, mm
@@ -23,11 +27,11 @@ struct Circle {
 
 // loop: closed polygon, counter-clockwise, first point not repeated; every edge is split as needed.
 // circles: interior curves the triangulation must follow (a punch's edge), their vertices on the circle.
-Footprint mesh_footprint(const std::vector<Vec2>& loop, const SizingField& size,
+Footprint mesh_footprint(const std::vector<Vec2>& loop, const Size2d& size,
                          const std::vector<Circle>& circles = {});
 
 // Boundary loops that follow the sizing field: a circle (cap) and a square (flat).
-std::vector<Vec2> circle_loop(const Vec2& centre, double radius, const SizingField& size);
-std::vector<Vec2> square_loop(double half_width, const SizingField& size);
+std::vector<Vec2> circle_loop(const Vec2& centre, double radius, const Size2d& size);
+std::vector<Vec2> square_loop(double half_width, const Size2d& size);
 
 }  // namespace skinfem

@@ -16,32 +16,46 @@ double distance_to_segment(double x, double y, const Vec2& a, const Vec2& b) {
 }  // namespace
 
 SizingField::SizingField(const Scene& scene)
-    : regions_(scene.mesh.regions), growth_(scene.mesh.growth), h_max_(scene.mesh.h_max) {
+    : through_(scene.mesh.regions), growth_(scene.mesh.growth), h_max_(scene.mesh.h_max) {
   const double h_min = scene.mesh.h_min;
-  for (auto& r : regions_)
+  for (auto& r : through_)
     if (r.h <= 0) r.h = h_min;
   if (scene.mesh.refine_sensors)
     for (const auto& s : scene.sensors.positions)
-      regions_.push_back({s, s, 0.5 * scene.sensors.disc_diameter, h_min});
-  for (const auto& p : scene.loads.punches) regions_.push_back({p.center, p.center, 0.5 * p.diameter, h_min});
-  for (const auto& p : scene.loads.patches) regions_.push_back({p.center, p.center, 0.5 * p.diameter, h_min});
+      through_.push_back({s, s, 0.5 * scene.sensors.disc_diameter, h_min});
+  for (const auto& p : scene.loads.punches) through_.push_back({p.center, p.center, 0.5 * p.diameter, h_min});
+  for (const auto& p : scene.loads.patches) through_.push_back({p.center, p.center, 0.5 * p.diameter, h_min});
   if (scene.contact) {
     const Vec2 c = contact_center(scene);
-    regions_.push_back({c, c, contact_zone_radius(scene), contact_zone_h(scene)});
+    top_.push_back({c, c, contact_zone_radius(scene), contact_zone_h(scene)});
     for (const auto& hole : scene.contact->holes)
-      regions_.push_back({hole.center, hole.center, 0.5 * hole.diameter, contact_zone_h(scene)});
+      top_.push_back({hole.center, hole.center, 0.5 * hole.diameter, contact_zone_h(scene)});
     if (const auto& s = scene.contact->sweep; s && s->h > 0)
-      regions_.push_back({s->from, s->to, 0.5 * s->hole_diameter + s->h, s->h});
+      top_.push_back({s->from, s->to, 0.5 * s->hole_diameter + s->h, s->h});
+    // The readings see the contact through the layer: its resolution is carried down to every sensor.
+    for (const auto& p : scene.sensors.positions)
+      through_.push_back({p, p, 0.5 * scene.sensors.disc_diameter, contact_zone_h(scene)});
   }
+  if (scene.geometry.kind != GeometryKind::surface) shape_.emplace(scene.geometry);
 }
 
-double SizingField::operator()(double x, double y) const {
+double SizingField::at(double x, double y, double depth) const {
   double size = h_max_;
-  for (const auto& r : regions_) {
+  for (const auto& r : through_) {
     const double d = std::max(0.0, distance_to_segment(x, y, r.a, r.b) - r.radius);
     size = std::min(size, r.h + (growth_ - 1.0) * d);
   }
+  for (const auto& r : top_) {
+    const double d = std::hypot(std::max(0.0, distance_to_segment(x, y, r.a, r.b) - r.radius), depth);
+    size = std::min(size, r.h + (growth_ - 1.0) * d);
+  }
   return size;
+}
+
+double SizingField::on_base(double x, double y) const { return at(x, y, shape_ ? shape_->top_z(x, y) : 0.0); }
+
+double SizingField::in_volume(double x, double y, double z) const {
+  return at(x, y, shape_ ? std::max(0.0, shape_->top_z(x, y) - z) : 0.0);
 }
 
 }  // namespace skinfem

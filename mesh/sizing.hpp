@@ -1,30 +1,44 @@
-// Target edge length over the (x, y) plane, from the scene's regions of interest.
+// Target edge length in the skin, from the scene's regions of interest.
 //
 // Inside a region the size is its h (default mesh.h_min). Elements then grow geometrically by the
 // growth rate g from one to the next; summing h₀, h₀g, h₀g², … shows that after a distance d the
-// element size is h₀ + (g − 1)·d. So size(p) = min(h_max, min over regions of h_r + (g − 1)·dist(p, r)).
-// Regions are extruded through the thickness: thin skins need the same size at every z.
+// element size is h₀ + (g − 1)·d. So size = min(h_max, min over regions of h_r + (g − 1)·dist(p, r)).
+// Two kinds of region:
+//  - through the thickness (mesh.regions, sensor discs, punches, traction patches): dist is the
+//    horizontal distance, the same at every z — a thin skin's Green maps need it at every depth;
+//  - at the top (the contact zone, holes, the hole's path): dist also counts the depth below the top
+//    surface, so the mesh coarsens towards the base. Contact needs its resolution where the pressure
+//    acts; sensors read it through the layer, smoothed over ~h. Imported surfaces have no exact top,
+//    so there these regions are extruded like the others.
 #pragma once
 
+#include <optional>
 #include <vector>
 
+#include "mesh/shape.hpp"
 #include "scene/scene.hpp"
 
 namespace skinfem {
 
 class SizingField {
  public:
-  // Regions: mesh.regions, the sensor discs (if mesh.refine_sensors), every punch and traction patch, and
-  // with a contact: the candidate zone (disc of radius contact_zone_radius about contact_center) and every
-  // hole disc, both of size contact_zone_h; the sweep path (every point within hole_diameter/2 + sweep.h of
-  // the segment from → to) of size sweep.h, if sweep.h > 0.
+  // Through regions: mesh.regions, the sensor discs (if mesh.refine_sensors), every punch and traction
+  // patch. Top regions, with a contact: the candidate zone (disc of radius contact_zone_radius about
+  // contact_center) and every hole disc, both of size contact_zone_h; the sweep path (every point within
+  // hole_diameter/2 + sweep.h of the segment from → to) of size sweep.h, if sweep.h > 0; and then every
+  // sensor disc becomes a through region of size contact_zone_h (at most).
   explicit SizingField(const Scene& scene);
-  double operator()(double x, double y) const;  // mm
+  double operator()(double x, double y) const { return at(x, y, 0.0); }  // on the top surface, mm
+  double on_base(double x, double y) const;                              // on the base z = 0, mm
+  double in_volume(double x, double y, double z) const;                  // at a point of the skin, mm
   double h_max() const { return h_max_; }
+  bool graded_in_depth() const { return shape_.has_value() && !top_.empty(); }
 
  private:
-  std::vector<RegionOfInterest> regions_;
+  double at(double x, double y, double depth) const;  // depth below the top surface, mm
+  std::vector<RegionOfInterest> through_, top_;
   double growth_, h_max_;
+  std::optional<SkinShape> shape_;  // generated skins only
 };
 
 }  // namespace skinfem

@@ -73,64 +73,116 @@ void check_watertight(const SurfaceMesh& surface, const std::string& what) {
     throw MeshError(what + ": surface encloses no volume or is inward oriented");
 }
 
+namespace {
+// The footprint of the top or the base face; the outer rim goes back onto the truncation circle.
+Footprint face_footprint(const Geometry& geometry, const std::vector<Vec2>& loop, const Size2d& size,
+                         const std::vector<Circle>& circles) {
+  Footprint fp = mesh_footprint(loop, size, circles);
+  // Refinement splits boundary chords at their midpoints; put those vertices back on the circle.
+  if (geometry.kind == GeometryKind::cap) {
+    const SkinShape shape(geometry);
+    for (int b : fp.boundary) {
+      const Vec3 p = shape.on_side({fp.points(b, 0), fp.points(b, 1), 0.0});
+      fp.points.row(b) << p[0], p[1];
+    }
+  }
+  return fp;
+}
+
+// Whether the base footprint's rim is the top's, point for point (to round-off); if so, rotates its
+// boundary list to start where the top's does and copies the top's rim coordinates.
+bool align_rim(Footprint& base, const Footprint& top) {
+  const size_t n = top.boundary.size();
+  if (base.boundary.size() != n) return false;
+  auto same = [&](int b, int t) { return (base.points.row(b) - top.points.row(t)).norm() < 1e-9; };
+  size_t shift = n;
+  for (size_t k = 0; k < n && shift == n; ++k)
+    if (same(base.boundary[k], top.boundary[0])) shift = k;
+  if (shift == n) return false;
+  std::rotate(base.boundary.begin(), base.boundary.begin() + shift, base.boundary.end());
+  for (size_t k = 0; k < n; ++k)
+    if (!same(base.boundary[k], top.boundary[k])) return false;
+  for (size_t k = 0; k < n; ++k) base.points.row(base.boundary[k]) = top.points.row(top.boundary[k]);
+  return true;
+}
+}  // namespace
+
 SurfaceMesh layer_surface(const Scene& scene, const SizingField& size) {
   const Geometry& geometry = scene.geometry;
   const SkinShape shape(geometry);
   const Vec2 centre =
       geometry.kind == GeometryKind::cap ? Vec2{geometry.cap.apex_x, geometry.cap.apex_y} : Vec2{0, 0};
+  const Size2d top_size = [&](double x, double y) { return size(x, y); };
   const auto loop = geometry.kind == GeometryKind::cap
-                        ? circle_loop(centre, geometry.cap.truncation_radius, size)
-                        : square_loop(geometry.flat.half_width, size);
+                        ? circle_loop(centre, geometry.cap.truncation_radius, top_size)
+                        : square_loop(geometry.flat.half_width, top_size);
   std::vector<Circle> circles;
   for (const auto& p : scene.loads.punches) circles.push_back({p.center, 0.5 * p.diameter});
-  Footprint fp = mesh_footprint(loop, size, circles);
-  // Refinement splits boundary chords at their midpoints; put those vertices back on the circle.
-  if (geometry.kind == GeometryKind::cap)
-    for (int b : fp.boundary) {
-      const Vec3 p = shape.on_side({fp.points(b, 0), fp.points(b, 1), 0.0});
-      fp.points.row(b) << p[0], p[1];
+  // The base gets its own, coarser triangulation when contact regions grade with depth. The side band needs
+  // both rims to be the same points; refinement splits rim chords differently on each face, so each face
+  // is remeshed on the other's rim until they agree (else the base takes the top's triangulation).
+  auto rim_of = [](const Footprint& fp) {
+    std::vector<Vec2> rim;
+    for (int b : fp.boundary) rim.push_back({fp.points(b, 0), fp.points(b, 1)});
+    return rim;
+  };
+  Footprint top = face_footprint(geometry, loop, top_size, circles);
+  Footprint base = top;
+  for (int round = 0; size.graded_in_depth() && round < 4; ++round) {
+    Footprint own = face_footprint(
+        geometry, rim_of(top), [&](double x, double y) { return size.on_base(x, y); }, circles);
+    if (align_rim(own, top)) {
+      base = std::move(own);
+      break;
     }
-  const int nv = fp.points.rows(), nb = static_cast<int>(fp.boundary.size());
+    top = face_footprint(geometry, rim_of(own), top_size, circles);
+  }
+  const int nvb = base.points.rows(), nvt = top.points.rows(), nb = static_cast<int>(top.boundary.size());
 
   // Side band: as many layers as the rim's sizing asks for, at least one.
   double rim_size = 0, rim_height = 0;
-  for (int b : fp.boundary) {
-    rim_size += size(fp.points(b, 0), fp.points(b, 1)) / nb;
-    rim_height = std::max(rim_height, shape.top_z(fp.points(b, 0), fp.points(b, 1)));
+  for (int b : top.boundary) {
+    rim_size += size(top.points(b, 0), top.points(b, 1)) / nb;
+    rim_height = std::max(rim_height, shape.top_z(top.points(b, 0), top.points(b, 1)));
   }
   const int layers = std::max(1, static_cast<int>(std::ceil(rim_height / rim_size - 1e-9)));
 
   SurfaceMesh s;
-  s.vertices.resize(2 * nv + (layers - 1) * nb, 3);
-  for (int i = 0; i < nv; ++i) {
-    const double x = fp.points(i, 0), y = fp.points(i, 1);
-    s.vertices.row(i) << x, y, 0.0;
-    s.vertices.row(nv + i) << x, y, shape.top_z(x, y);
+  s.vertices.resize(nvb + nvt + (layers - 1) * nb, 3);
+  for (int i = 0; i < nvb; ++i) s.vertices.row(i) << base.points(i, 0), base.points(i, 1), 0.0;
+  for (int i = 0; i < nvt; ++i) {
+    const double x = top.points(i, 0), y = top.points(i, 1);
+    s.vertices.row(nvb + i) << x, y, shape.top_z(x, y);
   }
   // vertex of boundary position k on side layer j (0 = base, layers = top)
   auto side_vertex = [&](int k, int j) {
-    const int b = fp.boundary[k % nb];
-    if (j == 0) return b;
-    if (j == layers) return nv + b;
-    return 2 * nv + (j - 1) * nb + k % nb;
+    if (j == 0) return base.boundary[k % nb];
+    if (j == layers) return nvb + top.boundary[k % nb];
+    return nvb + nvt + (j - 1) * nb + k % nb;
   };
   for (int j = 1; j < layers; ++j)
     for (int k = 0; k < nb; ++k) {
-      const int b = fp.boundary[k];
-      const double x = fp.points(b, 0), y = fp.points(b, 1);
+      const int b = top.boundary[k];
+      const double x = top.points(b, 0), y = top.points(b, 1);
       s.vertices.row(side_vertex(k, j)) << x, y, shape.top_z(x, y) * j / layers;
     }
 
-  const int nt = fp.triangles.rows();
-  s.triangles.resize(2 * nt + 2 * nb * layers, 3);
+  const int ntb = base.triangles.rows(), ntt = top.triangles.rows();
+  s.triangles.resize(ntb + ntt + 2 * nb * layers, 3);
   s.marker.resize(s.triangles.rows());
   int f = 0;
-  for (int t = 0; t < nt; ++t) {
-    const int a = fp.triangles(t, 0), b = fp.triangles(t, 1), c = fp.triangles(t, 2);
-    s.triangles.row(f) << a, c, b;  // base: outward normal −z
-    s.marker(f++) = kBase;
-    s.triangles.row(f) << nv + a, nv + b, nv + c;
-    s.marker(f++) = kTop | (inside_circle(fp, a, b, c, circles) ? kKeepOutline : 0);
+  // Interleaved base/top as long as both have triangles: the order TetGen saw before the base had its own.
+  for (int t = 0; t < std::max(ntb, ntt); ++t) {
+    if (t < ntb) {
+      const int a = base.triangles(t, 0), b = base.triangles(t, 1), c = base.triangles(t, 2);
+      s.triangles.row(f) << a, c, b;  // base: outward normal −z
+      s.marker(f++) = kBase;
+    }
+    if (t < ntt) {
+      const int a = top.triangles(t, 0), b = top.triangles(t, 1), c = top.triangles(t, 2);
+      s.triangles.row(f) << nvb + a, nvb + b, nvb + c;
+      s.marker(f++) = kTop | (inside_circle(top, a, b, c, circles) ? kKeepOutline : 0);
+    }
   }
   for (int k = 0; k < nb; ++k)
     for (int j = 0; j < layers; ++j) {  // counter-clockwise rim × up = outward

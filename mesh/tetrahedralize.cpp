@@ -29,7 +29,8 @@ bool too_big(REAL* a, REAL* b, REAL* c, REAL* d, REAL*, REAL) {
       for (int k = 0; k < 3; ++k) l2 += (p[i][k] - p[j][k]) * (p[i][k] - p[j][k]);
       longest2 = std::max(longest2, l2);
     }
-  const double size = (*active_size)((a[0] + b[0] + c[0] + d[0]) / 4, (a[1] + b[1] + c[1] + d[1]) / 4);
+  const double size = active_size->in_volume((a[0] + b[0] + c[0] + d[0]) / 4, (a[1] + b[1] + c[1] + d[1]) / 4,
+                                             (a[2] + b[2] + c[2] + d[2]) / 4);
   return longest2 > size * size;
 }
 

@@ -139,7 +139,8 @@ TEST(ContactFe, HoleOutsideTheContactChangesNothing) {
   const auto excluded = excluded_by_holes(f.condensed->zone, f.mesh, {Hole{{0.0, 3.0}, 0.3}});
   ASSERT_GT(std::count(excluded.begin(), excluded.end(), 1), 0);
   const ContactResult r = f.solver->solve(FrictionMode::coupled, excluded);
-  EXPECT_EQ((r.readings - base.readings).cwiseAbs().maxCoeff(), 0.0);
+  // Removing an inactive multiplier changes the LCP's size, hence its round-off, nothing else.
+  EXPECT_LE((r.readings - base.readings).cwiseAbs().maxCoeff(), 1e-12 * base.readings.cwiseAbs().maxCoeff());
   EXPECT_EQ(r.active, base.active);
 }
 
@@ -185,6 +186,33 @@ TEST(ContactFe, DepthAndForceControlAgree) {
   // F(δ) is increasing.
   load.depth = 1.1 * r.depth_mm;
   EXPECT_GT(ContactSolver(*f.condensed, load).solve(FrictionMode::none).force_N, 0.8);
+}
+
+// F(δ) by depth control follows the exact bonded-layer law (contact/layer_hertz.hpp) over ±25 % of the
+// paper's indentation: increasing, with the exact local exponent d ln F / d ln δ — above Hertz's 3/2 at
+// h/a ≈ 1.2; the thick-layer limit 3/2 itself is checked on the exact solution (test_layer_hertz.cpp).
+// Bound: the FE indentation at 0.8 N is within 0.2 % (test above), so F at a given δ is within n·0.2 % ≈
+// 0.6 %; an exponent from two such forces a factor 1.25 apart in δ is then within 2·0.006/ln 1.25 ≈ 0.05.
+TEST(ContactFe, ForceFollowsTheExactLayerLawInDepth) {
+  Fixture& f = layer();
+  const double delta0 = layer_hertz_force(0.8, 129.7, 3.04, 3.0, 0.5).delta_mm;
+  const double scales[] = {0.8, 1.0, 1.25};
+  double F_fe[3], F_ex[3];
+  for (int k = 0; k < 3; ++k) {
+    ContactLoad load = *f.scene.contact;
+    load.force.reset();
+    load.depth = scales[k] * delta0;
+    F_fe[k] = ContactSolver(*f.condensed, load).solve(FrictionMode::none).force_N;
+    F_ex[k] = layer_hertz_depth(scales[k] * delta0, 129.7, 3.04, 3.0, 0.5).force_N;
+    EXPECT_NEAR(F_fe[k] / F_ex[k], 1.0, 0.006) << "delta scale " << scales[k];
+  }
+  for (int k = 0; k < 2; ++k) {
+    const double lr = std::log(scales[k + 1] / scales[k]);
+    const double n_fe = std::log(F_fe[k + 1] / F_fe[k]) / lr, n_ex = std::log(F_ex[k + 1] / F_ex[k]) / lr;
+    EXPECT_GT(F_fe[k + 1], F_fe[k]);
+    EXPECT_GT(n_ex, 1.6);  // the bonded layer stiffens faster than Hertz
+    EXPECT_NEAR(n_fe, n_ex, 0.05) << "between delta scales " << scales[k] << " and " << scales[k + 1];
+  }
 }
 
 // Sweeping a hole reuses the hole-free factorization (low-rank updates) and warm starts: the same answer as

@@ -143,11 +143,14 @@ TEST(MeshBuild, ElementsAreSmallNearRegionsOfInterestAndLargeFarAway) {
   EXPECT_GT(far_sum / far_n, 0.5 * 1.5);
 }
 
+double size_top_z(const Scene& s, double x, double y) { return SkinShape(s.geometry).top_z(x, y); }
+
 // With a contact, the candidate zone (about the apex for a plate on a cap) gets contact.h and the sweep path
 // (radius hole_diameter/2 + sweep.h about the segment) gets sweep.h; the size grows as h + (g − 1)·distance.
 TEST(MeshBuild, ContactZoneAndSweepPathAreRegionsOfInterest) {
   Scene s = small_cap(1.0);  // apex (0.5, 0), h_min 0.4, h_max 1.6, growth 1.5
   s.mesh.refine_sensors = false;
+  s.sensors.positions = {{-4.0, 0.0}};  // away from the probes below
   ContactLoad c;
   c.indenter = IndenterKind::plane;
   c.force = 0.8;
@@ -162,6 +165,11 @@ TEST(MeshBuild, ContactZoneAndSweepPathAreRegionsOfInterest) {
   EXPECT_DOUBLE_EQ(size(-1.5, 2.4), 0.2);              // on the sweep path
   EXPECT_NEAR(size(0, 1.5), 0.2 + 0.5 * 0.05, 1e-12);  // 0.05 mm outside it
   EXPECT_DOUBLE_EQ(size(-5, -5), 1.6);                 // far: h_max
+  // Contact regions sit at the top: below it the distance counts the depth (the top is at z = 3 on the apex).
+  EXPECT_NEAR(size.in_volume(0.5, 0, 2.0), 0.3 + 0.5 * 1.0, 1e-12);
+  EXPECT_NEAR(size.in_volume(2.5, 0, size_top_z(s, 2.5, 0) - 1.0), 0.3 + 0.5 * std::sqrt(2.0), 1e-12);
+  EXPECT_DOUBLE_EQ(size.on_base(0.5, 0), 1.6);   // 0.3 + 0.5·3 = 1.8 exceeds h_max
+  EXPECT_DOUBLE_EQ(size.on_base(-4.0, 0), 0.3);  // a sensor: the contact's size is carried down to it
 
   c.sweep->h = 0;  // no refinement along the path; the zone's size then grows to it
   c.h = 0;         // the zone takes mesh.h_min
@@ -169,6 +177,36 @@ TEST(MeshBuild, ContactZoneAndSweepPathAreRegionsOfInterest) {
   const SizingField coarse(s);
   EXPECT_DOUBLE_EQ(coarse(0.5, 0), 0.4);
   EXPECT_NEAR(coarse(0.5, 2.4), 0.4 + 0.5 * 1.4, 1e-12);
+}
+
+// The contact zone refines the top face only: the base under it gets its own, coarser triangulation, and
+// the sensor discs (through the thickness) still refine the base.
+TEST(MeshBuild, ContactRefinementGradesWithDepth) {
+  Scene s = small_cap(1.0);
+  ContactLoad c;
+  c.indenter = IndenterKind::plane;
+  c.force = 0.8;
+  c.zone_radius = 2.0;
+  c.h = 0.25;
+  s.contact = c;
+  const TetMesh m = build_mesh(s);
+  auto mean_edge = [&](int marker) {
+    double sum = 0;
+    int n = 0;
+    for (int f = 0; f < m.faces.rows(); ++f) {
+      if (m.face_marker(f) != marker) continue;
+      const Eigen::Vector3d a = m.nodes.row(m.faces(f, 0)), b = m.nodes.row(m.faces(f, 1)),
+                            d = m.nodes.row(m.faces(f, 2));
+      const Eigen::Vector3d g = (a + b + d) / 3;
+      if (std::hypot(g.x() - 0.5, g.y()) > 1.5 || std::hypot(g.x(), g.y()) < 0.6) continue;
+      sum += ((a - b).norm() + (b - d).norm() + (d - a).norm()) / 3, ++n;
+    }
+    return sum / n;
+  };
+  // Sizes bound the longest edge: top ≤ 0.25; base, 3 mm below, 0.25 + 0.5·3 (or the sensor disc's 0.4 +
+  // 0.5·d, at least 0.65 in this ring). Means sit at about 0.6–0.8 of the bound.
+  EXPECT_LT(mean_edge(kTop), 0.25);
+  EXPECT_GT(mean_edge(kBase), 2 * mean_edge(kTop));
 }
 
 TEST(MeshBuild, FlatLayerVolumeIsExact) {
