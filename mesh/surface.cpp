@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 #include "mesh/footprint.hpp"
 
@@ -127,16 +128,16 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size) {
     return rim;
   };
   Footprint top = face_footprint(geometry, loop, top_size, circles);
-  Footprint base = top;
-  for (int round = 0; size.graded_in_depth() && round < 4; ++round) {
+  std::optional<Footprint> own_base;
+  for (int round = 0; size.graded_in_depth() && round < 4 && !own_base; ++round) {
     Footprint own = face_footprint(
         geometry, rim_of(top), [&](double x, double y) { return size.on_base(x, y); }, circles);
-    if (align_rim(own, top)) {
-      base = std::move(own);
-      break;
-    }
-    top = face_footprint(geometry, rim_of(own), top_size, circles);
+    if (align_rim(own, top))
+      own_base = std::move(own);
+    else
+      top = face_footprint(geometry, rim_of(own), top_size, circles);
   }
+  const Footprint base = own_base ? std::move(*own_base) : top;
   const int nvb = base.points.rows(), nvt = top.points.rows(), nb = static_cast<int>(top.boundary.size());
 
   // Side band: as many layers as the rim's sizing asks for, at least one.

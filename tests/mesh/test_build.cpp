@@ -10,6 +10,7 @@
 #include "mesh/shape.hpp"
 #include "mesh/sizing.hpp"
 #include "mesh/surface_quadrature.hpp"
+#include "scene/load.hpp"
 
 namespace skinfem {
 namespace {
@@ -207,6 +208,17 @@ TEST(MeshBuild, ContactRefinementGradesWithDepth) {
   // 0.5·d, at least 0.65 in this ring). Means sit at about 0.6–0.8 of the bound.
   EXPECT_LT(mean_edge(kTop), 0.25);
   EXPECT_GT(mean_edge(kBase), 2 * mean_edge(kTop));
+}
+
+// Top and base are triangulated separately under a contact and must meet on the same rim: for every zone
+// size the surface is closed (else TetGen is never reached) and the volume exact (a flat layer).
+TEST(MeshBuild, TopAndBaseRimsAgreeForEveryContactSize) {
+  Scene s = load_scene(std::string(SKINFEM_SOURCE_DIR) + "/scenes/hertz_layer.json");
+  for (double h : {0.8, 0.6, 0.5, 0.4}) {
+    s.contact->h = h;
+    const MeshQuality q = assess_quality(build_mesh(s));
+    EXPECT_NEAR(q.volume_mm3, 30.0 * 30.0 * 3.04, 1e-9 * q.volume_mm3) << "contact.h " << h;
+  }
 }
 
 TEST(MeshBuild, FlatLayerVolumeIsExact) {
