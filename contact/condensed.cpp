@@ -36,8 +36,6 @@ CondensedContact condense(const ElasticModel& model, const MortarZone& zone, con
   RowSparse D_z(nc, 3 * N), D_t(nc, 3 * N);
   D_z.setFromTriplets(tz.begin(), tz.end());
   D_t.setFromTriplets(tt.begin(), tt.end());
-  const auto weighted_z = [&](const Eigen::MatrixXd& U) { return Eigen::MatrixXd(D_z * U); };
-  const auto weighted_t = [&](const Eigen::MatrixXd& U) { return Eigen::MatrixXd(D_t * U); };
 
   // Adjoints of the sensor readings: base displacement −w, no load (green/fe_green.hpp).
   const ReadingFunctionals functional(m);
@@ -50,8 +48,8 @@ CondensedContact condense(const ElasticModel& model, const MortarZone& zone, con
   if (progress) progress(0.0, "adjoint solves for " + std::to_string(ns) + " sensors");
   const Eigen::MatrixXd Y = model.solver().solve_block(Eigen::MatrixXd::Zero(3 * N, 2 * ns), W);
   // reading = y·f: the pressure of multiplier i loads −e_z·(Dᵀe_i), its traction t·(Dᵀe_i).
-  c.S_p = -weighted_z(Y).transpose();
-  c.S_t = weighted_t(Y).transpose();
+  c.S_p = -(D_z * Y).transpose();
+  c.S_t = (D_t * Y).transpose();
   c.block_solves += 2 * ns;
 
   c.C_zz.resize(nc, nc);
@@ -63,8 +61,8 @@ CondensedContact condense(const ElasticModel& model, const MortarZone& zone, con
     for (int j = 0; j < k; ++j)
       for (RowSparse::InnerIterator it(D_z, j0 + j); it; ++it) F(it.col(), j) = -it.value();
     const Eigen::MatrixXd U = model.solver().solve_block(F);
-    c.C_zz.middleCols(j0, k) = -weighted_z(U);
-    c.C_zt.middleRows(j0, k) = weighted_t(U).transpose();
+    c.C_zz.middleCols(j0, k) = -(D_z * U);
+    c.C_zt.middleRows(j0, k) = (D_t * U).transpose();
     c.block_solves += k;
   }
   // Symmetric by reciprocity up to the solver's round-off; make it exactly so for the LCP.

@@ -29,6 +29,16 @@ std::string sci(double x) {
   return buf;
 }
 
+// Throws unless the LU of a principal system is regular to working precision: "<who>: singular principal
+// system (N unknowns, reciprocal condition r)<context>".
+void require_regular(const Eigen::PartialPivLU<MatrixXd>& lu, const std::string& who,
+                     const std::string& context) {
+  const double rcond = lu.rcond(), unknowns = static_cast<double>(lu.rows());
+  if (!(rcond > kEps * unknowns))
+    throw std::runtime_error(who + ": singular principal system (" + std::to_string(lu.rows()) +
+                             " unknowns, reciprocal condition " + sci(rcond) + ")" + context);
+}
+
 // Principal systems live on extended indices: 0..n−1 the multipliers, n the scaled approach δ/σ. The
 // extended matrix is K = [M, −σm; σmᵀ, 0] and the right-hand side b = [−q + δm (depth only); σF (force)].
 struct System {
@@ -133,11 +143,7 @@ class Principal {
     }
     const MatrixXd K = sys_.block(B, B);
     own_.lu.compute(K);
-    const double rcond = own_.lu.rcond();
-    if (!(rcond > kEps * static_cast<double>(B.size())))
-      throw std::runtime_error("contact LCP: singular principal system (" + std::to_string(B.size()) +
-                               " unknowns, reciprocal condition " + sci(rcond) + ") at pivot " +
-                               std::to_string(pivot) + ": M is not a P-matrix");
+    require_regular(own_.lu, "contact LCP", " at pivot " + std::to_string(pivot) + ": M is not a P-matrix");
     own_.assign(B, sys_.n + 1);
     has_own_ = true;
     base_ = &own_;
@@ -277,11 +283,7 @@ void ContactLcp::set_reference(const std::vector<int>& active) {
   set.push_back(n);
   const System sys{M_, q_, m_, sigma_, true, 1.0, n};
   const Eigen::PartialPivLU<MatrixXd> lu(sys.block(set, set));
-  const double rcond = lu.rcond();
-  if (!(rcond > kEps * static_cast<double>(set.size())))
-    throw std::runtime_error("ContactLcp::set_reference: singular principal system (" +
-                             std::to_string(set.size()) + " unknowns, reciprocal condition " + sci(rcond) +
-                             ")");
+  require_regular(lu, "ContactLcp::set_reference", "");
   Z_ = lu.inverse();
   ref_active_ = std::move(a);
   ref_set_ = std::move(set);

@@ -4,8 +4,6 @@
 #include <Eigen/SparseCholesky>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 #include "fem/mumps_ldlt.hpp"
 
@@ -49,6 +47,14 @@ struct MixedSolver::Impl {
   std::unique_ptr<MumpsLdlt> ldlt;
 
   explicit Impl(const MixedMatrices& m) : M(m) {}
+
+  // ‖[A_ff u + B_fᵀ p − b; B_f u − C p − g]‖ of the constrained system.
+  double residual_norm(const Eigen::VectorXd& uf, const Eigen::VectorXd& p, const Eigen::VectorXd& bf,
+                       const Eigen::VectorXd& g) const {
+    const Eigen::VectorXd r1 = Aff * uf + Bf.transpose() * p - bf;
+    const Eigen::VectorXd r2 = Bf * uf - C * p - g;
+    return std::sqrt(r1.squaredNorm() + r2.squaredNorm());
+  }
 };
 
 MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const std::vector<bool>& fixed,
@@ -167,10 +173,8 @@ MixedSolution MixedSolver::solve(const Eigen::VectorXd& f, const Eigen::VectorXd
     p = x.tail(s.np);
   }
   // Residual of the full constrained system.
-  const Eigen::VectorXd r1 = s.Aff * uf + s.Bf.transpose() * p - bf;
-  const Eigen::VectorXd r2 = s.Bf * uf - s.C * p - g;
   const double bnorm = std::sqrt(bf.squaredNorm() + g.squaredNorm());
-  out.residual = bnorm > 0 ? std::sqrt(r1.squaredNorm() + r2.squaredNorm()) / bnorm : 0.0;
+  out.residual = bnorm > 0 ? s.residual_norm(uf, p, bf, g) / bnorm : 0.0;
   if (!std::isfinite(out.residual) || out.residual > s.tolerance)
     throw SolverError(std::string(to_string(kind_)) + " solve missed its tolerance: relative residual " +
                       std::to_string(out.residual) + " > " + std::to_string(s.tolerance));
@@ -216,9 +220,8 @@ Eigen::MatrixXd MixedSolver::solve_block(const Eigen::MatrixXd& F, const Eigen::
   }
   if (!x.allFinite()) throw SolverError("direct_ldlt block solve returned non-finite values");
   const Eigen::VectorXd xw = x * w, bw = b * w;
-  const Eigen::VectorXd r1 = s.Aff * xw.head(s.nf) + s.Bf.transpose() * xw.tail(s.np) - bw.head(s.nf);
-  const Eigen::VectorXd r2 = s.Bf * xw.head(s.nf) - s.C * xw.tail(s.np) - bw.tail(s.np);
-  const double res = bound > 0 ? std::sqrt(r1.squaredNorm() + r2.squaredNorm()) / bound : 0.0;
+  const double res =
+      bound > 0 ? s.residual_norm(xw.head(s.nf), xw.tail(s.np), bw.head(s.nf), bw.tail(s.np)) / bound : 0.0;
   if (!std::isfinite(res) || res > s.tolerance)
     throw SolverError("direct_ldlt block solve missed its tolerance: relative residual " +
                       std::to_string(res) + " > " + std::to_string(s.tolerance) +

@@ -6,8 +6,8 @@
 #include <functional>
 #include <vector>
 
-#include "mesh/sizing.hpp"
 #include "mesh/tet_mesh.hpp"
+#include "scene/scene.hpp"
 
 namespace skinfem {
 

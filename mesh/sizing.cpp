@@ -41,14 +41,12 @@ SizingField::SizingField(const Scene& scene)
 
 double SizingField::at(double x, double y, double depth) const {
   double size = h_max_;
-  for (const auto& r : through_) {
+  const auto grow = [&](const RegionOfInterest& r, double depth_counted) {
     const double d = std::max(0.0, distance_to_segment(x, y, r.a, r.b) - r.radius);
-    size = std::min(size, r.h + (growth_ - 1.0) * d);
-  }
-  for (const auto& r : top_) {
-    const double d = std::hypot(std::max(0.0, distance_to_segment(x, y, r.a, r.b) - r.radius), depth);
-    size = std::min(size, r.h + (growth_ - 1.0) * d);
-  }
+    size = std::min(size, r.h + (growth_ - 1.0) * std::hypot(d, depth_counted));
+  };
+  for (const auto& r : through_) grow(r, 0.0);
+  for (const auto& r : top_) grow(r, depth);
   return size;
 }
 

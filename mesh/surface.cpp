@@ -76,12 +76,11 @@ void check_watertight(const SurfaceMesh& surface, const std::string& what) {
 
 namespace {
 // The footprint of the top or the base face; the outer rim goes back onto the truncation circle.
-Footprint face_footprint(const Geometry& geometry, const std::vector<Vec2>& loop, const Size2d& size,
+Footprint face_footprint(const SkinShape& shape, const std::vector<Vec2>& loop, const Size2d& size,
                          const std::vector<Circle>& circles) {
   Footprint fp = mesh_footprint(loop, size, circles);
   // Refinement splits boundary chords at their midpoints; put those vertices back on the circle.
-  if (geometry.kind == GeometryKind::cap) {
-    const SkinShape shape(geometry);
+  if (shape.kind() == GeometryKind::cap) {
     for (int b : fp.boundary) {
       const Vec3 p = shape.on_side({fp.points(b, 0), fp.points(b, 1), 0.0});
       fp.points.row(b) << p[0], p[1];
@@ -127,15 +126,15 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size) {
     for (int b : fp.boundary) rim.push_back({fp.points(b, 0), fp.points(b, 1)});
     return rim;
   };
-  Footprint top = face_footprint(geometry, loop, top_size, circles);
+  Footprint top = face_footprint(shape, loop, top_size, circles);
   std::optional<Footprint> own_base;
   for (int round = 0; size.graded_in_depth() && round < 4 && !own_base; ++round) {
     Footprint own = face_footprint(
-        geometry, rim_of(top), [&](double x, double y) { return size.on_base(x, y); }, circles);
+        shape, rim_of(top), [&](double x, double y) { return size.on_base(x, y); }, circles);
     if (align_rim(own, top))
       own_base = std::move(own);
     else
-      top = face_footprint(geometry, rim_of(own), top_size, circles);
+      top = face_footprint(shape, rim_of(own), top_size, circles);
   }
   const Footprint base = own_base ? std::move(*own_base) : top;
   const int nvb = base.points.rows(), nvt = top.points.rows(), nb = static_cast<int>(top.boundary.size());
