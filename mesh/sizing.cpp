@@ -29,7 +29,8 @@ SizingField::SizingField(const Scene& scene)
     const Vec2 c = contact_center(scene);
     top_.push_back({c, c, contact_zone_radius(scene), contact_zone_h(scene)});
     for (const auto& hole : scene.contact->holes)
-      top_.push_back({hole.center, hole.center, 0.5 * hole.diameter, contact_zone_h(scene)});
+      top_.push_back(
+          {hole.center, hole.center, 0.5 * hole.diameter, hole.h > 0 ? hole.h : contact_zone_h(scene)});
     if (const auto& s = scene.contact->sweep; s && s->h > 0)
       top_.push_back({s->from, s->to, 0.5 * s->hole_diameter + s->h, s->h});
     // The readings see the contact through the layer: its resolution is carried down to every sensor.

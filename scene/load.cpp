@@ -17,7 +17,8 @@
 //   contact*      {"indenter": {"type": "plane"} | {"type": "sphere", "R": <mm, > 0>, "center": [x, y]},
 //                  "force": <N> | "depth": <mm>,     exactly one, > 0: total normal force, or rigid approach
 //                                                    from first touch
-//                  "holes"*: [{"center": [x, y], "diameter": <mm, > 0>}],  discs where the indenter is absent
+//                  "holes"*: [{"center": [x, y], "diameter": <mm, > 0>,  discs where the indenter is absent
+//                              "h"*: <mm, > 0>}],  mesh size over the disc (absent: the zone's h)
 //                  "zone_radius"*: <mm, > 0>,        candidate contact zone about the first touch; absent:
 //                                                    1.25 x Hertz's radius under a force, 1.25 x twice
 //                                                    Hertz's sqrt(R delta) at a depth (scene.hpp)
@@ -552,10 +553,11 @@ json point(const Vec2& p) { return json::array({p[0], p[1]}); }
 
 Hole read_hole(const Reader& r, const json& j, const std::string& path, std::size_t i, std::size_t n,
                const Geometry& geo) {
-  r.object(j, path, {"center", "diameter"});
+  r.object(j, path, {"center", "diameter", "h"});
   Hole h;
   h.center = r.vec2(j, path, "center");
   h.diameter = r.number(j, path, "diameter", positive());
+  h.h = r.number_or(j, path, "h", 0.0, positive());
   const std::string off = off_footprint(geo, h.center, 0.5 * h.diameter, "diameter/2");
   if (!off.empty())
     r.fail(path, j,

@@ -117,6 +117,7 @@ enum class FrictionMode { none, static_residual, uncoupled, coupled };
 struct Hole {
   Vec2 center{0, 0};
   double diameter = 0.5;  // mm
+  double h = 0;           // mm, mesh size over the hole's disc; 0 → the contact zone's (contact_zone_h)
 };
 
 // A hole swept along a straight path: `positions` solves with the hole centre evenly spaced from `from`

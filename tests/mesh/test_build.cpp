@@ -146,8 +146,9 @@ TEST(MeshBuild, ElementsAreSmallNearRegionsOfInterestAndLargeFarAway) {
 
 double size_top_z(const Scene& s, double x, double y) { return SkinShape(s.geometry).top_z(x, y); }
 
-// With a contact, the candidate zone (about the apex for a plate on a cap) gets contact.h and the sweep path
-// (radius hole_diameter/2 + sweep.h about the segment) gets sweep.h; the size grows as h + (g − 1)·distance.
+// With a contact, the candidate zone (about the apex for a plate on a cap) gets contact.h, a hole its h (or
+// contact.h), and the sweep path (radius hole_diameter/2 + sweep.h about the segment) gets sweep.h; the size
+// grows as h + (g − 1)·distance.
 TEST(MeshBuild, ContactZoneAndSweepPathAreRegionsOfInterest) {
   Scene s = small_cap(1.0);  // apex (0.5, 0), h_min 0.4, h_max 1.6, growth 1.5
   s.mesh.refine_sensors = false;
@@ -157,7 +158,8 @@ TEST(MeshBuild, ContactZoneAndSweepPathAreRegionsOfInterest) {
   c.force = 0.8;
   c.zone_radius = 1.0;
   c.h = 0.3;
-  c.sweep = HoleSweep{{-2, 2}, {2, 2}, 11, 0.5, 0.2};  // region radius 0.25 + 0.2 = 0.45 about y = 2
+  c.sweep = HoleSweep{{-2, 2}, {2, 2}, 11, 0.5, 0.2};           // region radius 0.25 + 0.2 = 0.45 about y = 2
+  c.holes = {Hole{{-2, -2}, 0.4, 0.1}, Hole{{2, -2}, 0.4, 0}};  // its own size; the zone's
   s.contact = c;
   const SizingField size(s);
   EXPECT_DOUBLE_EQ(size(0.5, 0), 0.3);                 // the zone's centre, the apex
@@ -166,6 +168,8 @@ TEST(MeshBuild, ContactZoneAndSweepPathAreRegionsOfInterest) {
   EXPECT_DOUBLE_EQ(size(-1.5, 2.4), 0.2);              // on the sweep path
   EXPECT_NEAR(size(0, 1.5), 0.2 + 0.5 * 0.05, 1e-12);  // 0.05 mm outside it
   EXPECT_DOUBLE_EQ(size(-5, -5), 1.6);                 // far: h_max
+  EXPECT_DOUBLE_EQ(size(-2, -2), 0.1);                 // a hole with its own size
+  EXPECT_DOUBLE_EQ(size(2.1, -2), 0.3);                // a hole with the zone's
   // Contact regions sit at the top: below it the distance counts the depth (the top is at z = 3 on the apex).
   EXPECT_NEAR(size.in_volume(0.5, 0, 2.0), 0.3 + 0.5 * 1.0, 1e-12);
   EXPECT_NEAR(size.in_volume(2.5, 0, size_top_z(s, 2.5, 0) - 1.0), 0.3 + 0.5 * std::sqrt(2.0), 1e-12);

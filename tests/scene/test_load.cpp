@@ -570,7 +570,7 @@ TEST(SceneLoad, ShippedContactScenes) {
 
 TEST(SceneLoad, ContactEveryFieldIsRead) {
   const Scene s = parse_scene(contact(R"("indenter": {"type": "plane"}, "force": 0.8, "zone_radius": 3.0,
-                 "h": 0.2, "holes": [{"center": [1, 0], "diameter": 0.5}, {"center": [-1, 2], "diameter": 0.3}],
+                 "h": 0.2, "holes": [{"center": [1, 0], "diameter": 0.5}, {"center": [-1, 2], "diameter": 0.3, "h": 0.05}],
                  "friction": {"mode": "coupled", "mu": 3, "static_ratio": 0.1, "direction": [3, -4]},
                  "sweep": {"from": [-2, 0], "to": [3, 0], "positions": 11, "hole_diameter": 0.4, "h": 0.1})"),
                               kSource);
@@ -587,6 +587,8 @@ TEST(SceneLoad, ContactEveryFieldIsRead) {
   EXPECT_EQ(c.holes[0].diameter, 0.5);
   EXPECT_EQ(c.holes[1].center, (Vec2{-1, 2}));
   EXPECT_EQ(c.holes[1].diameter, 0.3);
+  EXPECT_EQ(c.holes[0].h, 0.0);  // the zone's size
+  EXPECT_EQ(c.holes[1].h, 0.05);
   EXPECT_EQ(c.friction, FrictionMode::coupled);
   EXPECT_EQ(c.mu, 3.0);
   EXPECT_EQ(c.static_ratio, 0.1);
@@ -734,6 +736,8 @@ TEST(SceneLoad, ContactHoleOffTheSkin) {
       "must lie on the skin's footprint", "truncation_radius - diameter/2 = 11.75", "got 11.9");
   EXPECT_NO_THROW(
       parse_scene(contact(kPlane + R"(, "holes": [{"center": [12.25, 0], "diameter": 0.5}])"), kSource));
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "holes": [{"center": [1, 0], "diameter": 0.5, "h": 0}])"),
+                     "contact.holes[0].h = 0", "must be a number > 0");
   // Flat: |x|, |y| <= half_width - diameter/2.
   EXPECT_SCENE_ERROR(flat_contact(R"("indenter": {"type": "sphere", "R": 50, "center": [0, 0]}, "force": 1,
                                      "holes": [{"center": [0, -9.9], "diameter": 0.4}])"),
