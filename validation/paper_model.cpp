@@ -1,0 +1,162 @@
+#include "validation/paper_model.hpp"
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "fem/face_index.hpp"
+#include "mesh/surface_quadrature.hpp"
+
+namespace skinfem::validation {
+
+namespace {
+// Gauss–Legendre nodes and weights on [0, 1] (Golub–Welsch would be overkill: Newton on P_n).
+void gauss_legendre(int n, std::vector<double>& x, std::vector<double>& w) {
+  x.resize(n);
+  w.resize(n);
+  for (int i = 0; i < n; ++i) {
+    double z = std::cos(M_PI * (i + 0.75) / (n + 0.5)), dp = 0;
+    for (int it = 0; it < 100; ++it) {
+      double p0 = 1, p1 = z;
+      for (int k = 2; k <= n; ++k) {
+        const double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
+        p0 = p1;
+        p1 = p2;
+      }
+      dp = n * (z * p1 - p0) / (z * z - 1);
+      const double dz = p1 / dp;
+      z -= dz;
+      if (std::abs(dz) < 1e-15) break;
+    }
+    x[i] = 0.5 * (1 - z);
+    w[i] = 1.0 / ((1 - z * z) * dp * dp);  // 2/((1 − z²)P'²) on [−1, 1], halved for [0, 1]
+  }
+}
+}  // namespace
+
+GreenKernel rescaled_halfspace_kernel(std::vector<double> thickness, double k) {
+  return [h = std::move(thickness), k](int sensor, double ox, double oy) {
+    return green::rescaled_green(ox, oy, h.at(sensor), k);
+  };
+}
+
+GreenKernel layer_exact_kernel(double h, double nu, double reach, double step) {
+  // g_zz, g_zx, g_xz depend on r (times x/r); g_xx = C0(r) − cos2θ·C2(r): the values on the x axis and on
+  // the y axis give all four.
+  const green::LayerGreen layer(h, nu);
+  const int n = static_cast<int>(std::ceil(reach / step)) + 1;
+  auto on_x = std::make_shared<std::vector<green::GreenSample>>(n);
+  auto on_y = std::make_shared<std::vector<double>>(n);
+  for (int i = 0; i < n; ++i) {
+    const double r = i * step;
+    (*on_x)[i] = layer.at(std::max(r, 1e-9), 0);
+    (*on_y)[i] = layer.at(0, std::max(r, 1e-9)).xx;
+  }
+  return [on_x, on_y, step, n, reach](int, double ox, double oy) {
+    const double r = std::hypot(ox, oy);
+    if (r > reach) throw std::out_of_range("layer_exact_kernel: offset beyond the tabulated reach");
+    const double f = r / step;
+    const int i = std::min(static_cast<int>(f), n - 2);
+    const double t = f - i;
+    const auto lerp = [t](double a, double b) { return (1 - t) * a + t * b; };
+    const green::GreenSample &a = (*on_x)[i], &b = (*on_x)[i + 1];
+    const double zz = lerp(a.zz, b.zz), zx_r = lerp(a.zx, b.zx), xz_r = lerp(a.xz, b.xz);
+    const double xx_x = lerp(a.xx, b.xx), xx_y = lerp((*on_y)[i], (*on_y)[i + 1]);
+    const double c = r > 0 ? ox / r : 0, cos2 = r > 0 ? (ox * ox - oy * oy) / (r * r) : 0;
+    green::GreenSample g;
+    g.zz = zz;
+    g.zx = c * zx_r;
+    g.xz = c * xz_r;
+    // On the x axis xx = C0 − C2, on the y axis C0 + C2.
+    g.xx = 0.5 * (xx_x + xx_y) - cos2 * 0.5 * (xx_y - xx_x);
+    return g;
+  };
+}
+
+GreenKernel fe_kernel(const green::FeGreen& fe) {
+  return [&fe](int sensor, double ox, double oy) {
+    return fe.at(sensor, true, ox, oy, green::LayerLoad::point, 0);
+  };
+}
+
+double Tractions::force() const {
+  double f = 0;
+  for (const auto& p : points) f += p[2];
+  return f;
+}
+
+Tractions axisymmetric_tractions(std::function<double(double)> p_of_r, const Vec2& center, double a,
+                                 double ratio, int n_theta, int n_phi) {
+  Tractions t;
+  t.ratio = ratio;
+  t.pressure = [p_of_r, center, a](double x, double y) {
+    const double r = std::hypot(x - center[0], y - center[1]);
+    return r < a ? p_of_r(r) : 0.0;
+  };
+  std::vector<double> s, w;
+  gauss_legendre(n_theta, s, w);
+  for (int i = 0; i < n_theta; ++i) {
+    const double theta = 0.5 * M_PI * s[i];
+    const double r = a * std::sin(theta), dr = a * std::cos(theta) * 0.5 * M_PI * w[i];
+    const double pr = p_of_r(r) * r * dr * 2 * M_PI / n_phi;
+    for (int j = 0; j < n_phi; ++j) {
+      const double phi = 2 * M_PI * (j + 0.5) / n_phi;
+      t.points.push_back({center[0] + r * std::cos(phi), center[1] + r * std::sin(phi), pr});
+    }
+  }
+  return t;
+}
+
+Tractions fe_tractions(const contact::CondensedContact& c, const TetMesh& mesh, const Eigen::VectorXd& lambda,
+                       double ratio) {
+  Tractions t;
+  t.ratio = ratio;
+  const auto& zone = c.zone;
+  auto nodal = std::make_shared<std::vector<double>>(mesh.num_nodes(), 0.0);
+  for (int i = 0; i < zone.size(); ++i) (*nodal)[zone.vertices[i]] = lambda[i];
+  for (int f : zone.faces)
+    for (const FacePoint& q : face_quadrature(mesh, f)) {
+      const double p = (1 - q.s - q.t) * (*nodal)[mesh.faces(f, 0)] + q.s * (*nodal)[mesh.faces(f, 1)] +
+                       q.t * (*nodal)[mesh.faces(f, 2)];
+      if (p != 0) t.points.push_back({q.x.x(), q.x.y(), q.weight_xy * p});
+    }
+  auto top = std::make_shared<PlanarFaceIndex>(mesh, kTop);
+  t.pressure = [top, nodal, &mesh](double x, double y) {
+    double s = 0, tt = 0;
+    const int f = top->find(x, y, s, tt);
+    if (f < 0) return 0.0;
+    return (1 - s - tt) * (*nodal)[mesh.faces(f, 0)] + s * (*nodal)[mesh.faces(f, 1)] +
+           tt * (*nodal)[mesh.faces(f, 2)];
+  };
+  return t;
+}
+
+Eigen::VectorXd convolve(const Tractions& t, const GreenKernel& g, const Sensors& sensors) {
+  const int ns = static_cast<int>(sensors.positions.size());
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(2 * ns);
+  for (int k = 0; k < ns; ++k)
+    for (const auto& p : t.points) {
+      const green::GreenSample G = g(k, p[0] - sensors.positions[k][0], p[1] - sensors.positions[k][1]);
+      out[2 * k] += p[2] * (G.zz + t.ratio * G.xz);
+      out[2 * k + 1] += p[2] * (G.zx + t.ratio * G.xx);
+    }
+  return out;
+}
+
+Eigen::MatrixXd first_order_hole(const Tractions& t, const GreenKernel& g, const Sensors& sensors,
+                                 const std::vector<Vec2>& centers, double hole_area) {
+  const int ns = static_cast<int>(sensors.positions.size());
+  Eigen::MatrixXd out(centers.size(), 2 * ns);
+  for (size_t i = 0; i < centers.size(); ++i) {
+    const double pz = t.pressure(centers[i][0], centers[i][1]), px = t.ratio * pz;
+    for (int k = 0; k < ns; ++k) {
+      const green::GreenSample G =
+          g(k, centers[i][0] - sensors.positions[k][0], centers[i][1] - sensors.positions[k][1]);
+      out(i, 2 * k) = -(px * G.xz + pz * G.zz) * hole_area;
+      out(i, 2 * k + 1) = -(px * G.xx + pz * G.zx) * hole_area;
+    }
+  }
+  return out;
+}
+
+}  // namespace skinfem::validation
