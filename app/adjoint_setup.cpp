@@ -3,23 +3,14 @@
 #include <algorithm>
 
 #include "app/common.hpp"
-#include "mesh/build.hpp"
 #include "mesh/shape.hpp"
 
 namespace skinfem::app {
 
-std::unique_ptr<AdjointSetup> adjoint_setup(const Scene& scene) {
-  auto s = std::make_unique<AdjointSetup>();
+std::unique_ptr<AdjointSetup> adjoint_setup(const Scene& scene, std::shared_ptr<Skin> skin) {
+  auto s = std::make_unique<AdjointSetup>(skin ? std::move(skin) : skin_setup(scene));
+  s->wall = s->skin->wall;
   Stopwatch clock;
-  progress("meshing " + scene.name);
-  s->mesh = build_mesh(scene);
-  s->wall["mesh"] = clock.seconds();
-  progress("assembling and factoring");
-  s->model =
-      std::make_unique<ElasticModel>(s->mesh, scene.material, scene.geometry.side, std::vector<Punch>{});
-  s->wall["assemble"] = s->model->assemble_seconds();
-  s->wall["factor"] = s->model->solver().factor_seconds();
-  clock = Stopwatch();
   s->fe = std::make_unique<green::FeGreen>(*s->model, scene.sensors, progress);
   s->wall["adjoint_solves"] = clock.seconds();
   return s;

@@ -1,24 +1,27 @@
-// The common first half of `green` and `kfit`: mesh, factor, and the adjoint solves of every sensor,
-// each stage timed into `wall` (mesh, assemble, factor, adjoint_solves).
+// The common first half of `green` and `kfit`: a meshed and factored skin (shared, app/skin_setup.hpp) and
+// the adjoint solves of every sensor, each stage timed into `wall` (mesh, assemble, factor, adjoint_solves).
 #pragma once
 
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "app/skin_setup.hpp"
 #include "green/fe_green.hpp"
-#include "mesh/tet_mesh.hpp"
-#include "scene/scene.hpp"
 
 namespace skinfem::app {
 
 struct AdjointSetup {
-  TetMesh mesh;
-  std::unique_ptr<ElasticModel> model;  // refers to mesh
-  std::unique_ptr<green::FeGreen> fe;   // refers to model
+  explicit AdjointSetup(std::shared_ptr<Skin> s)
+      : skin(std::move(s)), mesh(skin->mesh), model(skin->model.get()) {}
+  std::shared_ptr<Skin> skin;
+  const TetMesh& mesh;
+  const ElasticModel* model;
+  std::unique_ptr<green::FeGreen> fe;  // refers to model
   nlohmann::json wall;
 };
 
-std::unique_ptr<AdjointSetup> adjoint_setup(const Scene& scene);
+// skin: an already factored skin of this scene, or null to mesh and factor one.
+std::unique_ptr<AdjointSetup> adjoint_setup(const Scene& scene, std::shared_ptr<Skin> skin = nullptr);
 
 // Skin thickness above a sensor (exact shapes) or the scene's nominal thickness.
 double thickness_at(const Scene& scene, const Vec2& sensor);

@@ -19,6 +19,7 @@
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "app/contact_setup.hpp"
+#include "app/stages.hpp"
 #include "contact/metrics.hpp"
 #include "contact/pressure_map.hpp"
 #include "fem/fields.hpp"
@@ -51,18 +52,9 @@ nlohmann::json metrics_json(const contact::ContactMetrics& m, const ContactResul
 }
 }  // namespace
 
-int run_contact(const Scene& scene, const std::string& out_dir, const std::string& friction) {
-  Stopwatch total;
-  if (!scene.contact)
-    throw SceneError(scene.source_path + ": contact: missing; skinfem contact needs a \"contact\" section");
-  FrictionMode chosen = scene.contact->friction;
-  if (friction == "none") chosen = FrictionMode::none;
-  if (friction == "static") chosen = FrictionMode::static_residual;
-  if (friction == "uncoupled") chosen = FrictionMode::uncoupled;
-  if (friction == "coupled") chosen = FrictionMode::coupled;
-  check_output_dir(out_dir);
-
-  const auto setup = contact_setup(scene);
+nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup_ref, const std::string& out_dir,
+                             FrictionMode chosen) {
+  const ContactSetup* setup = &setup_ref;
   const TetMesh& mesh = setup->mesh;
   nlohmann::json wall = setup->wall;
   Stopwatch clock;
@@ -174,7 +166,7 @@ int run_contact(const Scene& scene, const std::string& out_dir, const std::strin
   summary["elements"] = mesh.num_tets();
   summary["block_solves"] = c.block_solves;
   summary["wall_s"] = wall;
-  summary["wall_total_s"] = total.seconds();
+  summary["wall_total_s"] = total_seconds(wall);
   summary["peak_rss_mb"] = peak_rss_mb();
   write_json(out_dir + "/summary.json", summary);
 
@@ -199,6 +191,19 @@ int run_contact(const Scene& scene, const std::string& out_dir, const std::strin
       wall["assemble"].get<double>(), wall["factor"].get<double>(), wall["condense"].get<double>(),
       c.block_solves, wall["contact_solves"].get<double>(), peak_rss_mb());
   std::printf("  wrote %s/pressure.vtp, fields.vtu, sensors.csv, modes.csv, summary.json\n", out_dir.c_str());
+  return summary;
+}
+
+int run_contact(const Scene& scene, const std::string& out_dir, const std::string& friction) {
+  if (!scene.contact)
+    throw SceneError(scene.source_path + ": contact: missing; skinfem contact needs a \"contact\" section");
+  FrictionMode chosen = scene.contact->friction;
+  if (friction == "none") chosen = FrictionMode::none;
+  if (friction == "static") chosen = FrictionMode::static_residual;
+  if (friction == "uncoupled") chosen = FrictionMode::uncoupled;
+  if (friction == "coupled") chosen = FrictionMode::coupled;
+  check_output_dir(out_dir);
+  contact_stage(scene, *contact_setup(scene), out_dir, chosen);
   return 0;
 }
 

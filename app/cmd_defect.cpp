@@ -17,20 +17,15 @@
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "app/contact_setup.hpp"
+#include "app/stages.hpp"
 #include "contact/hole_sweep.hpp"
 #include "contact/pressure_map.hpp"
 
 namespace skinfem::app {
 
-int run_defect(const Scene& scene, const std::string& out_dir) {
-  Stopwatch total;
-  if (!scene.contact || !scene.contact->sweep)
-    throw SceneError(scene.source_path +
-                     ": contact.sweep: missing; skinfem defect needs a \"contact\" section with a \"sweep\"");
+DefectStage defect_stage(const Scene& scene, const ContactSetup& setup_ref, const std::string& out_dir) {
+  const ContactSetup* setup = &setup_ref;
   const HoleSweep& sweep = *scene.contact->sweep;
-  check_output_dir(out_dir);
-
-  const auto setup = contact_setup(scene);
   nlohmann::json wall = setup->wall;
   const std::vector<std::pair<std::string, FrictionMode>> cases{{"static", FrictionMode::static_residual},
                                                                 {"sliding", FrictionMode::coupled}};
@@ -111,7 +106,7 @@ int run_defect(const Scene& scene, const std::string& out_dir) {
   summary["multipliers"] = setup->condensed->zone.size();
   summary["block_solves"] = setup->condensed->block_solves;
   summary["wall_s"] = wall;
-  summary["wall_total_s"] = total.seconds();
+  summary["wall_total_s"] = total_seconds(wall);
   summary["peak_rss_mb"] = peak_rss_mb();
   write_json(out_dir + "/summary.json", summary);
 
@@ -124,7 +119,7 @@ int run_defect(const Scene& scene, const std::string& out_dir) {
   for (size_t ci = 0; ci < cases.size(); ++ci)
     std::printf(" %s %.2f s (%.2f ms/position)", cases[ci].first.c_str(), results[ci].seconds,
                 1e3 * results[ci].seconds / sweep.positions);
-  std::printf("; total %.1f s, peak %.0f MB\n", total.seconds(), peak_rss_mb());
+  std::printf("; total %.1f s, peak %.0f MB\n", total_seconds(wall), peak_rss_mb());
   for (size_t ci = 0; ci < cases.size(); ++ci) {
     std::printf("  %s: peak |varsigma_z| per sensor (kPa):", cases[ci].first.c_str());
     for (int k = 0; k < ns; ++k)
@@ -132,6 +127,15 @@ int run_defect(const Scene& scene, const std::string& out_dir) {
     std::printf("\n");
   }
   std::printf("  wrote %s/defect.csv, defect.pvd (+ frames/), summary.json\n", out_dir.c_str());
+  return {summary, std::move(results), std::move(frames)};
+}
+
+int run_defect(const Scene& scene, const std::string& out_dir) {
+  if (!scene.contact || !scene.contact->sweep)
+    throw SceneError(scene.source_path +
+                     ": contact.sweep: missing; skinfem defect needs a \"contact\" section with a \"sweep\"");
+  check_output_dir(out_dir);
+  defect_stage(scene, *contact_setup(scene), out_dir);
   return 0;
 }
 

@@ -17,21 +17,21 @@
 #include "app/adjoint_setup.hpp"
 #include "app/commands.hpp"
 #include "app/common.hpp"
+#include "app/stages.hpp"
 #include "green/calibration.hpp"
 #include "mesh/vtu.hpp"
 
 namespace skinfem::app {
 
-int run_green(const Scene& scene, const std::string& out_dir) {
+nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const std::string& out_dir) {
   using green::GreenSample;
   using green::LayerLoad;
   const double radius = 0.5 * scene.calibration.punch_diameter;
-  Stopwatch total, clock;
-  const auto setup = adjoint_setup(scene);
-  const TetMesh& mesh = setup->mesh;
-  const ElasticModel& model = *setup->model;
-  const green::FeGreen& fe = *setup->fe;
-  nlohmann::json wall = setup->wall;
+  Stopwatch clock;
+  const TetMesh& mesh = setup.mesh;
+  const ElasticModel& model = *setup.model;
+  const green::FeGreen& fe = *setup.fe;
+  nlohmann::json wall = setup.wall;
 
   // Reciprocity check: a direct solve with a point force at 1 mm from sensor 1 against the adjoint value.
   clock = Stopwatch();
@@ -105,17 +105,23 @@ int run_green(const Scene& scene, const std::string& out_dir) {
       {"load_model", "rigid-punch half-space profile F/(2πa√(a²−r²)), normal and tangential"},
       {"punch_diameter_mm", scene.calibration.punch_diameter},
       {"wall_s", wall},
-      {"wall_total_s", total.seconds()},
+      {"wall_total_s", total_seconds(wall)},
       {"peak_rss_mb", peak_rss_mb()}};
   write_json(out_dir + "/summary.json", summary);
   std::printf(
       "green %s: %zu sensors × 4 components, %d adjoint solves on %d DOFs; %.1f s (factor %.1f s), peak %.0f "
       "MB\n",
       scene.name.c_str(), scene.sensors.positions.size(), fe.adjoint_solves(), model.solver().free_dofs(),
-      total.seconds(), wall["factor"].get<double>(), peak_rss_mb());
+      total_seconds(wall), wall["factor"].get<double>(), peak_rss_mb());
   std::printf("  reciprocity check (direct solve vs adjoint, sensor 1, offset 1 mm): %.1e relative\n",
               reciprocity_rel);
   std::printf("  wrote %s/green.csv, green_maps.vtp, summary.json\n", out_dir.c_str());
+  return summary;
+}
+
+int run_green(const Scene& scene, const std::string& out_dir) {
+  check_output_dir(out_dir);
+  green_stage(scene, *adjoint_setup(scene), out_dir);
   return 0;
 }
 

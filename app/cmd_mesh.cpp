@@ -9,6 +9,7 @@
 
 #include "app/commands.hpp"
 #include "app/common.hpp"
+#include "app/stages.hpp"
 #include "mesh/build.hpp"
 #include "mesh/quality.hpp"
 #include "mesh/shape.hpp"
@@ -36,11 +37,8 @@ nlohmann::json quality_json(const MeshQuality& q, const Scene& scene) {
   return j;
 }
 
-int run_mesh(const Scene& scene, const std::string& out_dir) {
-  Stopwatch clock;
-  progress("meshing " + scene.name);
-  const TetMesh mesh = build_mesh(scene);
-  const double mesh_s = clock.seconds();
+nlohmann::json mesh_stage(const Scene& scene, const TetMesh& mesh, double mesh_s,
+                          const std::string& out_dir) {
   const MeshQuality q = assess_quality(mesh);
 
   prepare_output_dir(out_dir);
@@ -60,6 +58,14 @@ int run_mesh(const Scene& scene, const std::string& out_dir) {
     std::printf(" (exact %.4f, rel. error %.1e)", summary["exact_volume_mm3"].get<double>(),
                 summary["volume_rel_error"].get<double>());
   std::printf("; %.2f s\n  wrote %s/mesh.vtu, boundary.vtu, summary.json\n", mesh_s, out_dir.c_str());
+  return summary;
+}
+
+int run_mesh(const Scene& scene, const std::string& out_dir) {
+  Stopwatch clock;
+  progress("meshing " + scene.name);
+  const TetMesh mesh = build_mesh(scene);
+  mesh_stage(scene, mesh, clock.seconds(), out_dir);
   return 0;
 }
 

@@ -15,6 +15,7 @@ int run_green(const Scene& scene, const std::string& out_dir);
 int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& load);
 int run_contact(const Scene& scene, const std::string& out_dir, const std::string& friction);
 int run_defect(const Scene& scene, const std::string& out_dir);
+int run_report(const Scene& scene, const std::string& out_dir);
 int run_study(const Scene& scene, const std::string& out_dir, const std::vector<double>& scales);
 
 }  // namespace skinfem::app

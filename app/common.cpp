@@ -59,4 +59,11 @@ nlohmann::json scene_json(const Scene& scene) {
           {"sensors", scene.sensors.positions.size()}};
 }
 
+double total_seconds(const nlohmann::json& wall) {
+  double t = 0;
+  for (const auto& [stage, seconds] : wall.items())
+    if (seconds.is_number()) t += seconds.get<double>();
+  return t;
+}
+
 }  // namespace skinfem::app

@@ -18,6 +18,8 @@ void write_text_atomic(const std::string& path, const std::string& text);
 void write_json(const std::string& path, const nlohmann::json& j);
 
 double peak_rss_mb();
+// Sum of the numbers in a {"stage": seconds} object.
+double total_seconds(const nlohmann::json& wall);
 
 class Stopwatch {
  public:

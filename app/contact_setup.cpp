@@ -4,27 +4,15 @@
 #include <cstdio>
 
 #include "app/common.hpp"
-#include "mesh/build.hpp"
 
 namespace skinfem::app {
 
-std::unique_ptr<ContactSetup> contact_setup(const Scene& scene) {
+std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<Skin> skin) {
   if (!scene.contact)
     throw SceneError(scene.source_path + ": contact: missing; this command needs a \"contact\" section");
-  auto s = std::make_unique<ContactSetup>();
+  auto s = std::make_unique<ContactSetup>(skin ? std::move(skin) : skin_setup(scene));
+  s->wall = s->skin->wall;
   Stopwatch clock;
-  progress("meshing " + scene.name);
-  s->mesh = build_mesh(scene);
-  s->wall["mesh"] = clock.seconds();
-  progress("assembling and factoring (" + std::to_string(s->mesh.num_nodes()) + " nodes)");
-  s->model =
-      std::make_unique<ElasticModel>(s->mesh, scene.material, scene.geometry.side, std::vector<Punch>{});
-  s->wall["assemble"] = s->model->assemble_seconds();
-  s->wall["factor"] = s->model->solver().factor_seconds();
-  progress("factored " + std::to_string(s->model->solver().free_dofs()) + " DOFs in " +
-           std::to_string(s->model->solver().factor_seconds()) + " s");
-
-  clock = Stopwatch();
   s->zone_radius = contact_zone_radius(scene);
   s->zone_h = contact_zone_h(scene);
   s->indenter = std::make_unique<contact::Indenter>(scene, s->mesh);

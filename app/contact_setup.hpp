@@ -1,19 +1,23 @@
-// The common first half of `contact` and `defect`: mesh (with the contact zone and hole path refined),
-// one factorization of the bonded skin, and its condensation onto the contact multipliers (block
+// The common first half of `contact` and `defect`: a meshed and factored skin (shared, app/skin_setup.hpp;
+// the contact zone and hole path refined), and its condensation onto the contact multipliers (block
 // right-hand sides), each stage timed into `wall` (mesh, assemble, factor, condense).
 #pragma once
 
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "app/skin_setup.hpp"
 #include "contact/contact_solver.hpp"
 #include "fem/face_index.hpp"
 
 namespace skinfem::app {
 
 struct ContactSetup {
-  TetMesh mesh;
-  std::unique_ptr<ElasticModel> model;  // refers to mesh
+  explicit ContactSetup(std::shared_ptr<Skin> s)
+      : skin(std::move(s)), mesh(skin->mesh), model(skin->model.get()) {}
+  std::shared_ptr<Skin> skin;
+  const TetMesh& mesh;
+  const ElasticModel* model;
   std::unique_ptr<contact::Indenter> indenter;
   std::unique_ptr<contact::CondensedContact> condensed;
   std::unique_ptr<contact::ContactSolver> solver;  // refers to condensed
@@ -22,8 +26,9 @@ struct ContactSetup {
   nlohmann::json wall;
 };
 
-// Throws SceneError when the scene has no contact section.
-std::unique_ptr<ContactSetup> contact_setup(const Scene& scene);
+// Throws SceneError when the scene has no contact section. skin: an already factored skin of this scene, or
+// null to mesh and factor one.
+std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<Skin> skin = nullptr);
 
 // Throws (one line, naming contact.zone_radius) when an active multiplier lies in the zone's outer ring:
 // the contact could be larger than the zone allows, so the answer would be wrong.

@@ -1,6 +1,6 @@
 // skinfem — finite-element verification toolkit for tactile sensors under an elastomer skin.
-// Subcommands: mesh, solve, study, kfit, green, contact, defect (see each cmd_*.cpp for what it computes and
-// writes). Exit codes: 0 success, 2 bad input (scene or arguments), 1 any other failure.
+// Subcommands: mesh, solve, study, kfit, green, contact, defect, report (see each cmd_*.cpp for what it
+// computes and writes). Exit codes: 0 success, 2 bad input (scene or arguments), 1 any other failure.
 #include <CLI/CLI.hpp>
 #include <iostream>
 
@@ -45,9 +45,14 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   auto* defect = cli.add_subcommand(
       "defect", "hole swept through the contact, static and sliding (defect.csv, defect.pvd, summary.json)");
-  for (auto* sub : {mesh, solve, study, kfit, green_cmd, contact_cmd, defect}) {
+  auto* report = cli.add_subcommand(
+      "report",
+      "the whole chain on one factorization and the paper's model against it (index.html, report.json)");
+  for (auto* sub : {mesh, solve, study, kfit, green_cmd, contact_cmd, defect, report}) {
     sub->add_option("scene", scene_path, "scene JSON file")->required();
-    sub->add_option("--out", out_dir, "output directory")->capture_default_str();
+    sub->add_option("--out", out_dir,
+                    sub == report ? "output directory (default: out/<scene name>)" : "output directory")
+        ->capture_default_str();
   }
   try {
     cli.parse(argc, argv);
@@ -67,6 +72,8 @@ int main(int argc, char** argv) {
     if (contact_cmd->parsed()) return skinfem::app::run_contact(scene, out_dir, friction);
     if (defect->parsed()) return skinfem::app::run_defect(scene, out_dir);
     if (study->parsed()) return skinfem::app::run_study(scene, out_dir, scales);
+    if (report->parsed())
+      return skinfem::app::run_report(scene, report->count("--out") ? out_dir : "out/" + scene.name);
   } catch (const skinfem::SceneError& e) {
     std::cerr << "skinfem: " << e.what() << std::endl;
     return 2;

@@ -7,6 +7,9 @@
 
 namespace skinfem::green {
 
+// The paper's k (§III (iii), fig. 4).
+inline constexpr double kPaperK = 1.48;
+
 struct KFit {
   double k = 0;                       ///< best rescaling factor in [0.5, 4]
   double rms_residual_over_peak = 0;  ///< √(mean (model − g)²) / max|g|

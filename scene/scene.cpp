@@ -39,14 +39,20 @@ Vec2 contact_center(const Scene& scene) {
 // Why the 25 % margin: the multipliers must cover the whole contact and a ring of free vertices around it
 // (the command checks that the solved contact stays one element inside its edge, app/contact_setup.cpp);
 // sliding friction shifts the pressure forwards and enlarges the contact on the leading side.
+std::optional<double> equivalent_sphere_radius(const Scene& scene) {
+  const ContactLoad& c = *scene.contact;
+  double curvature = 0;  // 1/R_eff, 1/mm
+  if (c.indenter == IndenterKind::sphere) curvature += 1 / c.sphere_R;
+  if (scene.geometry.kind == GeometryKind::cap) curvature += 1 / scene.geometry.cap.R;
+  if (!(curvature > 0)) return std::nullopt;
+  return 1 / curvature;
+}
+
 double contact_zone_radius(const Scene& scene) {
   const ContactLoad& c = *scene.contact;
   if (c.zone_radius > 0) return c.zone_radius;
-  const bool cap = scene.geometry.kind == GeometryKind::cap;
-  double curvature = 0;  // 1/R_eff, 1/mm
-  if (c.indenter == IndenterKind::sphere) curvature += 1 / c.sphere_R;
-  if (cap) curvature += 1 / scene.geometry.cap.R;
-  if (!(curvature > 0))
+  const std::optional<double> R = equivalent_sphere_radius(scene);
+  if (!R)
     throw SceneError(
         scene.source_path +
         ": contact.indenter: a plane on a flat layer or an imported surface has no Hertz radius; "
@@ -54,7 +60,7 @@ double contact_zone_radius(const Scene& scene) {
   if (!c.force && !c.depth)
     throw SceneError(scene.source_path +
                      ": contact: needs \"force\" or \"depth\" for an automatic zone_radius");
-  const double R_eff = 1 / curvature;
+  const double R_eff = *R;
   const double E_star = scene.material.E / (1 - scene.material.nu * scene.material.nu);
   const double a = c.force ? std::cbrt(3 * *c.force * R_eff / (4 * E_star)) : 2 * std::sqrt(R_eff * *c.depth);
   return 1.25 * a;

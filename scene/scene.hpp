@@ -168,6 +168,9 @@ double nominal_thickness(const Scene& scene);
 
 // Where the indenter first touches the skin: a plane on a cap touches at the apex, a sphere at its centre.
 Vec2 contact_center(const Scene& scene);
+// The sphere-on-flat equivalent of the contact's relative curvature, 1/R = 1/R_sphere + 1/R_cap (a plane:
+// no sphere term, a flat layer or imported surface: no cap term); none when both vanish.
+std::optional<double> equivalent_sphere_radius(const Scene& scene);
 // Radius of the candidate contact zone (the multipliers' disc): contact.zone_radius, else 1.25 × an upper
 // bound of the contact radius: under a force, the half-space Hertz radius (a bonded layer is stiffer than
 // the half-space, so its contact is smaller than Hertz's); at a depth, twice Hertz's sqrt(R δ) (there the

@@ -120,10 +120,12 @@ Tractions fe_tractions(const contact::CondensedContact& c, const TetMesh& mesh, 
                        q.t * (*nodal)[mesh.faces(f, 2)];
       if (p != 0) t.points.push_back({q.x.x(), q.x.y(), q.weight_xy * p});
     }
-  auto top = std::make_shared<PlanarFaceIndex>(mesh, kTop);
+  // The face index is built on the first pointwise query only: sweeps convolve many of these and never ask.
+  auto top = std::make_shared<std::unique_ptr<PlanarFaceIndex>>();
   t.pressure = [top, nodal, &mesh](double x, double y) {
+    if (!*top) *top = std::make_unique<PlanarFaceIndex>(mesh, kTop);
     double s = 0, tt = 0;
-    const int f = top->find(x, y, s, tt);
+    const int f = (*top)->find(x, y, s, tt);
     if (f < 0) return 0.0;
     return (1 - s - tt) * (*nodal)[mesh.faces(f, 0)] + s * (*nodal)[mesh.faces(f, 1)] +
            tt * (*nodal)[mesh.faces(f, 2)];

@@ -1,0 +1,301 @@
+// skinfem report — the main job: the whole chain on one mesh and one factorization, and the paper's
+// convolution model checked against it assumption by assumption (validation/crosscheck.hpp).
+//
+//   $ skinfem report scenes/candelier2011.json
+//   report candelier2011: 188,439 DOFs, one factorization; green, kfit, contact, defect, crosscheck in 150 s
+//
+// Stages, each writing its own folder under DIR (default out/<scene name>): mesh/ (mesh.vtu, boundary.vtu),
+// green/ (green.csv, green_maps.vtp), kfit/ (kfit.json), and with a contact: contact/ (pressure.vtp,
+// fields.vtu, sensors.csv, modes.csv), defect/ (defect.csv, defect.pvd + frames/) and crosscheck/
+// (readings.csv, defect.csv, pressure.csv, attribution.csv: case,variant,sensor,component,amplitude_ratio,
+// peak_shift_mm,shape_error). Then figures/*.png (scripts/figures.py, matplotlib) and DIR/report.json (the
+// headline numbers with units, wall seconds per stage, peak memory) and DIR/index.html (figures, tables,
+// links to every VTK file).
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <optional>
+#include <sstream>
+
+#include "app/commands.hpp"
+#include "app/common.hpp"
+#include "app/stages.hpp"
+#include "green/kfit.hpp"
+#include "validation/crosscheck.hpp"
+
+namespace skinfem::app {
+
+namespace {
+// The paper's measured excess of the front sensors' hole signals over its model (§IV: "up to 4 times").
+constexpr double kPaperFrontExcess = 4.0;
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+void write_crosscheck(const validation::Crosscheck& x, const Sensors& sensors, const std::string& dir) {
+  prepare_output_dir(dir);
+  const char* cases[2] = {"static", "sliding"};
+  const int ns = static_cast<int>(sensors.positions.size());
+  std::ostringstream r, d, p, a;
+  for (auto* s : {&r, &d, &p, &a}) s->precision(10);
+  r << "case,variant,sensor,x_mm,sigma_z_kPa,sigma_x_kPa\n";
+  for (size_t v = 0; v < x.readings.size(); ++v)
+    for (int c = 0; c < 2; ++c)
+      for (int k = 0; k < ns; ++k)
+        r << cases[c] << "," << x.reading_variants[v].name << "," << k + 1 << "," << sensors.positions[k][0]
+          << "," << 1e3 * x.readings[v][c][2 * k] << "," << 1e3 * x.readings[v][c][2 * k + 1] << "\n";
+  d << "case,variant,u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa\n";
+  for (size_t v = 0; v < x.signals.size(); ++v)
+    for (int c = 0; c < 2; ++c)
+      for (size_t i = 0; i < x.u.size(); ++i)
+        for (int k = 0; k < ns; ++k)
+          d << cases[c] << "," << x.signal_variants[v].name << "," << x.u[i] << "," << k + 1 << ","
+            << 1e3 * x.signals[v][c](i, 2 * k) << "," << 1e3 * x.signals[v][c](i, 2 * k + 1) << "\n";
+  p << "x_mm,p_hertz_halfspace_kPa,p_layer_exact_kPa,p_fe_frictionless_kPa,p_fe_coupled_kPa,q_fe_coupled_"
+       "kPa\n";
+  for (const auto& row : x.pressure_profile) {
+    p << row[0];
+    for (int j = 1; j < 6; ++j) {
+      p << ",";
+      if (std::isfinite(row[j])) p << 1e3 * row[j];
+    }
+    p << "\n";
+  }
+  a << "case,variant,sensor,component,amplitude_ratio,peak_shift_mm,shape_error\n";
+  for (size_t v = 0; v < x.metrics.size(); ++v)
+    for (int c = 0; c < 2; ++c)
+      for (int k = 0; k < ns; ++k)
+        for (int b = 0; b < 2; ++b) {
+          const auto& m = x.metrics[v][c][k][b];
+          a << cases[c] << "," << x.signal_variants[v].name << "," << k + 1 << "," << (b ? "x" : "z") << ","
+            << m.amplitude_ratio << "," << m.peak_shift_mm << "," << m.shape_error << "\n";
+        }
+  write_text_atomic(dir + "/readings.csv", r.str());
+  write_text_atomic(dir + "/defect.csv", d.str());
+  write_text_atomic(dir + "/pressure.csv", p.str());
+  write_text_atomic(dir + "/attribution.csv", a.str());
+}
+
+int variant_index(const std::vector<validation::Variant>& v, const std::string& name) {
+  for (size_t i = 0; i < v.size(); ++i)
+    if (v[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+// Does coupling explain the front sensors' excess? FE coupled against FE uncoupled sliding signals on the
+// sensors at or ahead of the contact centre along x.
+nlohmann::json front_sensor_answer(const validation::Crosscheck& x, const Sensors& sensors, double center_x) {
+  const int unc = variant_index(x.signal_variants, "uncoupled"),
+            paper = variant_index(x.signal_variants, "paper_model");
+  nlohmann::json j;
+  double lo[2] = {1e300, 1e300}, hi[2] = {0, 0}, plo[2] = {1e300, 1e300}, phi[2] = {0, 0};
+  std::string front;
+  for (size_t k = 0; k < sensors.positions.size(); ++k) {
+    if (sensors.positions[k][0] < center_x - 1e-9) continue;
+    front += (front.empty() ? "#" : ", #") + std::to_string(k + 1);
+    for (int b = 0; b < 2; ++b) {
+      // FE coupled / FE uncoupled is 1 / (uncoupled / FE).
+      const double coupling = 1 / x.metrics[unc][1][k][b].amplitude_ratio;
+      lo[b] = std::min(lo[b], coupling);
+      hi[b] = std::max(hi[b], coupling);
+      if (paper >= 0) {
+        const double fe_over_model = 1 / x.metrics[paper][1][k][b].amplitude_ratio;
+        plo[b] = std::min(plo[b], fe_over_model);
+        phi[b] = std::max(phi[b], fe_over_model);
+      }
+    }
+  }
+  if (front.empty()) return j;
+  j["front_sensors"] = front;
+  j["coupling_amplitude_factor_z"] = {lo[0], hi[0]};
+  j["coupling_amplitude_factor_x"] = {lo[1], hi[1]};
+  const double best = std::max(hi[0], hi[1]);
+  std::string text = "Coupled against uncoupled friction, the front sensors' (" + front +
+                     ") sliding hole-signal amplitudes change by x" + fmt("%.2f", lo[0]) + "-" +
+                     fmt("%.2f", hi[0]) + " (varsigma_z) and x" + fmt("%.2f", lo[1]) + "-" +
+                     fmt("%.2f", hi[1]) + " (varsigma_x); the paper measured up to x" +
+                     fmt("%.0f", kPaperFrontExcess) + " over its model, so coupling " +
+                     (best >= kPaperFrontExcess ? std::string("is large enough to explain it")
+                                                : "explains at most x" + fmt("%.2f", best) + " of it");
+  if (paper >= 0) {
+    j["fe_over_paper_model_amplitude_z"] = {plo[0], phi[0]};
+    j["fe_over_paper_model_amplitude_x"] = {plo[1], phi[1]};
+    text += "; full FE over the paper's model on these sensors: x" + fmt("%.3g", plo[0]) + "-" +
+            fmt("%.3g", phi[0]) + " (z), x" + fmt("%.3g", plo[1]) + "-" + fmt("%.3g", phi[1]) + " (x)";
+  }
+  j["answer"] = text;
+  return j;
+}
+
+std::string html_escape(const std::string& s) {
+  std::string o;
+  for (char c : s) o += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
+  return o;
+}
+
+void write_index(const std::string& dir, const Scene& scene, const nlohmann::json& report,
+                 const validation::Crosscheck* x) {
+  namespace fs = std::filesystem;
+  std::ostringstream h;
+  h << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>skinfem report: "
+    << html_escape(scene.name)
+    << "</"
+       "title><style>body{font-family:sans-serif;max-width:1100px;margin:auto}table{border-collapse:collapse}"
+       "td,th{border:1px solid #bbb;padding:2px "
+       "6px;text-align:right}img{max-width:100%}</style></head><body>\n";
+  h << "<h1>skinfem report: " << html_escape(scene.name) << "</h1>\n<p>Units: mm, N, MPa (stresses in kPa). "
+    << report["dofs"].get<int>() << " DOFs, one factorization; total "
+    << fmt("%.1f", report["wall_total_s"].get<double>()) << " s, peak memory "
+    << fmt("%.0f", report["peak_rss_mb"].get<double>()) << " MB.</p>\n";
+  h << "<h2>Time per stage</h2><table><tr><th>stage</th><th>seconds</th></tr>\n";
+  for (const auto& [stage, s] : report["wall_s"].items())
+    h << "<tr><td style=\"text-align:left\">" << stage << "</td><td>" << fmt("%.2f", s.get<double>())
+      << "</td></tr>\n";
+  h << "</table>\n";
+  h << "<h2>k</h2><p>" << html_escape(report["kfit"]["verdict"].get<std::string>()) << "</p>\n";
+  if (report.contains("front_sensors") && report["front_sensors"].contains("answer"))
+    h << "<h2>Does friction-pressure coupling explain the front sensors?</h2><p>"
+      << html_escape(report["front_sensors"]["answer"].get<std::string>()) << "</p>\n";
+  if (x) {
+    const int ns = static_cast<int>(scene.sensors.positions.size());
+    h << "<h2>Mean sensor stresses (kPa), each variant swaps one assumption into full FE</h2>\n";
+    for (int c = 0; c < 2; ++c) {
+      h << "<h3>" << (c ? "sliding" : "static") << " (p_x/p_z = " << fmt("%.3g", x->ratio[c])
+        << ")</h3><table><tr><th>variant</th>";
+      for (int k = 0; k < ns; ++k) h << "<th>#" << k + 1 << " σz</th><th>σx</th>";
+      h << "</tr>\n";
+      for (size_t v = 0; v < x->readings.size(); ++v) {
+        h << "<tr><td style=\"text-align:left\" title=\"" << html_escape(x->reading_variants[v].what) << "\">"
+          << x->reading_variants[v].name << "</td>";
+        for (int k = 0; k < 2 * ns; ++k) h << "<td>" << fmt("%.2f", 1e3 * x->readings[v][c][k]) << "</td>";
+        h << "</tr>\n";
+      }
+      h << "</table>\n";
+    }
+    h << "<h2>Hole signals: amplitude of each variant over full FE (sliding), "
+         "attribution</h2>\n<table><tr><th>sensor</th>"
+         "<th>FE max|ςz| kPa</th>";
+    for (size_t v = 1; v < x->signals.size(); ++v) h << "<th>" << x->signal_variants[v].name << " z</th>";
+    h << "<th>FE max|ςx| kPa</th>";
+    for (size_t v = 1; v < x->signals.size(); ++v) h << "<th>" << x->signal_variants[v].name << " x</th>";
+    h << "</tr>\n";
+    for (int k = 0; k < ns; ++k) {
+      h << "<tr><td>#" << k + 1 << "</td>";
+      for (int b = 0; b < 2; ++b) {
+        h << "<td>" << fmt("%.4f", 1e3 * x->signals[0][1].col(2 * k + b).cwiseAbs().maxCoeff()) << "</td>";
+        for (size_t v = 1; v < x->signals.size(); ++v)
+          h << "<td>" << fmt("%.3g", x->metrics[v][1][k][b].amplitude_ratio) << "</td>";
+      }
+      h << "</tr>\n";
+    }
+    h << "</table><p>Variants:</p><ul>\n";
+    for (const auto& v : x->signal_variants)
+      h << "<li><b>" << v.name << "</b>: " << html_escape(v.what) << "</li>\n";
+    h << "</ul><p>Peak shifts and shape errors of every variant, case and sensor: <a "
+         "href=\"crosscheck/attribution.csv\">"
+         "crosscheck/attribution.csv</a>.</p>\n";
+  }
+  h << "<h2>Figures</h2>\n";
+  if (fs::is_directory(dir + "/figures"))
+    for (const auto& e : fs::directory_iterator(dir + "/figures"))
+      if (e.path().extension() == ".png")
+        h << "<h3>" << e.path().stem().string() << "</h3><img src=\"figures/" << e.path().filename().string()
+          << "\">\n";
+  h << "<h2>Files</h2><ul>\n";
+  for (const char* f :
+       {"mesh/mesh.vtu", "mesh/boundary.vtu", "green/green_maps.vtp", "green/green.csv", "kfit/kfit.json",
+        "contact/pressure.vtp", "contact/fields.vtu", "contact/modes.csv", "defect/defect.pvd",
+        "defect/defect.csv", "crosscheck/readings.csv", "crosscheck/defect.csv", "crosscheck/pressure.csv",
+        "crosscheck/attribution.csv", "report.json"})
+    if (fs::exists(dir + "/" + f)) h << "<li><a href=\"" << f << "\">" << f << "</a></li>\n";
+  h << "</ul></body></html>\n";
+  write_text_atomic(dir + "/index.html", h.str());
+}
+}  // namespace
+
+int run_report(const Scene& scene, const std::string& out_dir) {
+  check_output_dir(out_dir);
+  Stopwatch total;
+  nlohmann::json report, wall;
+  const auto skin = skin_setup(scene);
+  wall = skin->wall;
+  report["mesh"] = mesh_stage(scene, skin->mesh, skin->wall["mesh"].get<double>(), out_dir + "/mesh");
+
+  Stopwatch clock;
+  const auto adjoints = adjoint_setup(scene, skin);
+  wall["green_adjoints"] = adjoints->wall["adjoint_solves"];
+  clock = Stopwatch();
+  report["green"] = green_stage(scene, *adjoints, out_dir + "/green");
+  report["kfit"] = kfit_stage(scene, *adjoints, out_dir + "/kfit", "punch");
+  wall["green_kfit_profiles"] = clock.seconds();
+
+  std::unique_ptr<ContactSetup> contact;
+  std::optional<DefectStage> defect;
+  std::optional<validation::Crosscheck> x;
+  if (scene.contact) {
+    contact = contact_setup(scene, skin);
+    wall["condense"] = contact->wall["condense"];
+    clock = Stopwatch();
+    report["contact"] = contact_stage(scene, *contact, out_dir + "/contact", scene.contact->friction);
+    wall["contact"] = clock.seconds();
+    if (scene.contact->sweep) {
+      clock = Stopwatch();
+      defect = defect_stage(scene, *contact, out_dir + "/defect");
+      wall["defect"] = clock.seconds();
+      clock = Stopwatch();
+      progress("crosscheck: the paper's model against FE, one assumption at a time");
+      validation::CrosscheckInput in;
+      in.mesh = &skin->mesh;
+      in.solver = contact->solver.get();
+      in.fe = adjoints->fe.get();
+      in.sensors = scene.sensors;
+      for (const auto& s : scene.sensors.positions) in.thickness.push_back(thickness_at(scene, s));
+      in.E = scene.material.E;
+      in.nu = scene.material.nu;
+      in.force = scene.contact->force.value_or(report["contact"]["force_N"].get<double>());
+      in.center = contact_center(scene);
+      in.center_thickness = thickness_at(scene, in.center);
+      in.equivalent_radius = equivalent_sphere_radius(scene);
+      in.k_paper = green::kPaperK;
+      in.k_best = report["kfit"]["k_lsq_line"].get<double>();
+      in.sweeps = &defect->sweeps;
+      in.frames = &defect->frames;
+      in.sweep = *scene.contact->sweep;
+      x = validation::crosscheck(in);
+      write_crosscheck(*x, scene.sensors, out_dir + "/crosscheck");
+      report["front_sensors"] = front_sensor_answer(*x, scene.sensors, in.center[0]);
+      wall["crosscheck"] = clock.seconds();
+    }
+  }
+
+  clock = Stopwatch();
+  const std::string script = std::string(SKINFEM_SOURCE_DIR) + "/scripts/figures.py";
+  const std::string cmd = "/usr/bin/python3 '" + script + "' '" + out_dir + "' 1>&2";
+  progress("figures: " + script);
+  const int rc = std::system(cmd.c_str());
+  report["figures_exit_code"] = rc;
+  wall["figures"] = clock.seconds();
+
+  report["scene"] = scene_json(scene);
+  report["dofs"] = skin->model->solver().free_dofs();
+  report["wall_s"] = wall;
+  report["wall_total_s"] = total.seconds();
+  report["peak_rss_mb"] = peak_rss_mb();
+  report["units"] = {{"length", "mm"}, {"force", "N"}, {"stress", "kPa in tables and CSV, MPa in the model"}};
+  write_json(out_dir + "/report.json", report);
+  write_index(out_dir, scene, report, x ? &*x : nullptr);
+  std::printf("report %s: %d DOFs, one factorization; %.1f s, peak %.0f MB\n", scene.name.c_str(),
+              report["dofs"].get<int>(), total.seconds(), peak_rss_mb());
+  if (report.contains("front_sensors") && report["front_sensors"].contains("answer"))
+    std::printf("  %s\n", report["front_sensors"]["answer"].get<std::string>().c_str());
+  if (rc != 0)
+    std::printf("  figures: scripts/figures.py exited with %d; index.html lists the figures written\n", rc);
+  std::printf("  wrote %s/index.html, report.json\n", out_dir.c_str());
+  return 0;
+}
+
+}  // namespace skinfem::app

@@ -1,0 +1,23 @@
+// One meshed and factored skin, shared by every stage of a run (green, kfit, contact, defect, report):
+// meshing and the factorization are done once per scene.
+#pragma once
+
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "fem/elastic_model.hpp"
+#include "mesh/tet_mesh.hpp"
+#include "scene/scene.hpp"
+
+namespace skinfem::app {
+
+struct Skin {
+  TetMesh mesh;
+  std::unique_ptr<ElasticModel> model;  // refers to mesh; bonded base, no punches
+  nlohmann::json wall;                  // seconds: mesh, assemble, factor
+};
+
+// Meshes the scene (with its contact zone and hole path refined when it has a contact) and factors it.
+std::shared_ptr<Skin> skin_setup(const Scene& scene);
+
+}  // namespace skinfem::app

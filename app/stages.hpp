@@ -1,0 +1,32 @@
+// The stages of a run, each on an already set-up skin: compute, write DIR, print its summary lines and
+// return its summary.json. The single-purpose subcommands (green, kfit, contact, defect) set up a skin and
+// run one stage; `report` sets up one skin and runs them all on it.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "app/adjoint_setup.hpp"
+#include "app/contact_setup.hpp"
+#include "contact/hole_sweep.hpp"
+
+namespace skinfem::app {
+
+nlohmann::json mesh_stage(const Scene& scene, const TetMesh& mesh, double mesh_seconds,
+                          const std::string& out_dir);
+nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const std::string& out_dir);
+nlohmann::json kfit_stage(const Scene& scene, const AdjointSetup& setup, const std::string& out_dir,
+                          const std::string& load_name);
+nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, const std::string& out_dir,
+                             FrictionMode chosen);
+
+// Both sweeps of `defect` (static, then coupled sliding) with every position's contact solution.
+struct DefectStage {
+  nlohmann::json summary;
+  std::vector<contact::SweepResult> sweeps;
+  std::vector<std::vector<contact::ContactResult>> frames;  // [sweep][position]
+};
+DefectStage defect_stage(const Scene& scene, const ContactSetup& setup, const std::string& out_dir);
+
+}  // namespace skinfem::app

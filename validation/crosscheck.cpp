@@ -1,0 +1,168 @@
+#include "validation/crosscheck.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "contact/layer_hertz.hpp"
+
+namespace skinfem::validation {
+
+namespace {
+const FrictionMode kModes[2] = {FrictionMode::static_residual, FrictionMode::coupled};
+
+Eigen::VectorXd readings_of(const contact::CondensedContact& c, const Eigen::VectorXd& lambda, double ratio) {
+  Eigen::VectorXd r = c.S_p * lambda;
+  if (ratio != 0) r += ratio * (c.S_t * lambda);
+  return r;
+}
+}  // namespace
+
+SignalMetrics compare_signals(const std::vector<double>& u, const Eigen::VectorXd& model,
+                              const Eigen::VectorXd& reference) {
+  SignalMetrics m;
+  Eigen::Index im = 0, ir = 0;
+  const double am = model.cwiseAbs().maxCoeff(&im), ar = reference.cwiseAbs().maxCoeff(&ir);
+  m.amplitude_ratio = ar > 0 ? am / ar : std::numeric_limits<double>::infinity();
+  m.peak_shift_mm = u[im] - u[ir];
+  const double nm = model.norm(), nr = reference.norm();
+  m.shape_error = nm > 0 && nr > 0 ? (model / nm - reference / nr).norm() : std::sqrt(2.0);
+  return m;
+}
+
+Crosscheck crosscheck(const CrosscheckInput& in) {
+  if (!in.mesh || !in.solver || !in.fe || !in.sweeps || !in.frames || in.sweeps->size() != 2 ||
+      in.frames->size() != 2)
+    throw std::invalid_argument("crosscheck: needs the mesh, solver, FE Green maps and both FE sweeps");
+  const contact::ContactSolver& solver = *in.solver;
+  const contact::CondensedContact& cc = solver.condensed();
+  const int ns = static_cast<int>(in.sensors.positions.size());
+  Crosscheck out;
+  for (int c = 0; c < 2; ++c) out.ratio[c] = solver.ratio(kModes[c]);
+  const GreenKernel fe = fe_kernel(*in.fe);
+  const GreenKernel k_paper = rescaled_halfspace_kernel(in.thickness, in.k_paper);
+  const GreenKernel k_best = rescaled_halfspace_kernel(in.thickness, in.k_best);
+
+  // Hole-free contact of each case, and the frictionless one (the paper's pressure).
+  const contact::ContactResult none = solver.solve(FrictionMode::none);
+  std::array<contact::ContactResult, 2> full;
+  for (int c = 0; c < 2; ++c) full[c] = solver.solve(kModes[c]);
+
+  // Analytic pressures with the same force.
+  std::optional<contact::HertzHalfspace> hertz;
+  std::optional<contact::LayerHertzResult> layer;
+  if (in.equivalent_radius) {
+    hertz = contact::hertz_halfspace(in.force, *in.equivalent_radius, in.E, in.nu);
+    layer = contact::layer_hertz_force(in.force, *in.equivalent_radius, in.center_thickness, in.E, in.nu);
+  }
+  const auto hertz_tractions = [&](double ratio) {
+    const double a = hertz->a_mm, p0 = hertz->p0_MPa;
+    return axisymmetric_tractions(
+        [a, p0](double r) { return p0 * std::sqrt(std::max(0.0, 1 - r * r / (a * a))); }, in.center, a,
+        ratio);
+  };
+  const auto layer_tractions = [&](double ratio) {
+    const contact::LayerHertzResult l = *layer;
+    return axisymmetric_tractions([l](double r) { return l.pressure_MPa(r); }, in.center, l.a_mm, ratio);
+  };
+
+  // Mean stresses.
+  const auto add_reading = [&](std::string name, std::string what, auto per_case) {
+    out.reading_variants.push_back({std::move(name), std::move(what)});
+    std::array<Eigen::VectorXd, 2> r;
+    for (int c = 0; c < 2; ++c) r[c] = per_case(c);
+    out.readings.push_back(r);
+  };
+  add_reading("fe", "full FE: contact, friction and Green maps", [&](int c) { return full[c].readings; });
+  add_reading("green_k_paper", "FE tractions, half-space Green rescaled by the paper's k", [&](int c) {
+    return convolve(fe_tractions(cc, *in.mesh, full[c].lambda, out.ratio[c]), k_paper, in.sensors);
+  });
+  add_reading("green_k_best", "FE tractions, half-space Green rescaled by the best-fit k", [&](int c) {
+    return convolve(fe_tractions(cc, *in.mesh, full[c].lambda, out.ratio[c]), k_best, in.sensors);
+  });
+  add_reading("uncoupled", "frictionless FE pressure with p_x = ratio p_z added, FE Green",
+              [&](int c) { return readings_of(cc, none.lambda, out.ratio[c]); });
+  if (hertz) {
+    add_reading("pressure_hertz", "half-space Hertz pressure (uncoupled friction), FE Green",
+                [&](int c) { return convolve(hertz_tractions(out.ratio[c]), fe, in.sensors); });
+    add_reading("pressure_layer", "exact bonded-layer Hertz pressure (uncoupled friction), FE Green",
+                [&](int c) { return convolve(layer_tractions(out.ratio[c]), fe, in.sensors); });
+    add_reading("paper_model", "exact-layer pressure, uncoupled friction, Green rescaled by the paper's k",
+                [&](int c) { return convolve(layer_tractions(out.ratio[c]), k_paper, in.sensors); });
+  }
+
+  // Hole signals.
+  const auto& sweeps = *in.sweeps;
+  const auto& frames = *in.frames;
+  for (const Vec2& c : sweeps[0].centers) out.u.push_back(c[0]);
+  const int n = static_cast<int>(out.u.size());
+  const double S = M_PI * 0.25 * in.sweep.hole_diameter * in.sweep.hole_diameter;
+  const auto add_signal = [&](std::string name, std::string what, auto per_case) {
+    out.signal_variants.push_back({std::move(name), std::move(what)});
+    std::array<Eigen::MatrixXd, 2> s;
+    for (int c = 0; c < 2; ++c) s[c] = per_case(c);
+    out.signals.push_back(s);
+  };
+  add_signal("fe", "a full FE contact solve per hole position", [&](int c) { return sweeps[c].varsigma; });
+  add_signal("green_k_paper", "each position's FE tractions, Green rescaled by the paper's k", [&](int c) {
+    const Eigen::VectorXd base =
+        convolve(fe_tractions(cc, *in.mesh, sweeps[c].baseline.lambda, out.ratio[c]), k_paper, in.sensors);
+    Eigen::MatrixXd s(n, 2 * ns);
+    for (int i = 0; i < n; ++i)
+      s.row(i) =
+          (convolve(fe_tractions(cc, *in.mesh, frames[c][i].lambda, out.ratio[c]), k_paper, in.sensors) -
+           base)
+              .transpose();
+    return s;
+  });
+  // One frictionless sweep serves both cases' uncoupled friction.
+  std::vector<Eigen::VectorXd> free_lambda;
+  const contact::SweepResult free_sweep =
+      contact::hole_sweep(solver, *in.mesh, in.sweep, FrictionMode::none,
+                          [&](int, const contact::ContactResult& r) { free_lambda.push_back(r.lambda); });
+  add_signal("uncoupled", "frictionless FE sweep with p_x = ratio p_z added", [&](int c) {
+    const Eigen::VectorXd base = readings_of(cc, free_sweep.baseline.lambda, out.ratio[c]);
+    Eigen::MatrixXd s(n, 2 * ns);
+    for (int i = 0; i < n; ++i) s.row(i) = (readings_of(cc, free_lambda[i], out.ratio[c]) - base).transpose();
+    return s;
+  });
+  std::vector<Vec2> centers(sweeps[0].centers.begin(), sweeps[0].centers.end());
+  add_signal("first_order_hole", "eqs. (2)-(3) with the FE tractions and FE Green maps", [&](int c) {
+    return first_order_hole(fe_tractions(cc, *in.mesh, full[c].lambda, out.ratio[c]), fe, in.sensors, centers,
+                            S);
+  });
+  if (layer)
+    add_signal("paper_model",
+               "eqs. (2)-(3), exact-layer pressure, uncoupled, Green rescaled by the paper's k", [&](int c) {
+                 return first_order_hole(layer_tractions(out.ratio[c]), k_paper, in.sensors, centers, S);
+               });
+
+  for (size_t v = 0; v < out.signals.size(); ++v) {
+    std::array<std::vector<std::array<SignalMetrics, 2>>, 2> m;
+    for (int c = 0; c < 2; ++c)
+      for (int k = 0; k < ns; ++k)
+        m[c].push_back(
+            {compare_signals(out.u, out.signals[v][c].col(2 * k), out.signals[0][c].col(2 * k)),
+             compare_signals(out.u, out.signals[v][c].col(2 * k + 1), out.signals[0][c].col(2 * k + 1))});
+    out.metrics.push_back(m);
+  }
+
+  // Pressure profiles through the contact along x.
+  const Tractions fe_none = fe_tractions(cc, *in.mesh, none.lambda, 0);
+  const Tractions fe_coupled = fe_tractions(cc, *in.mesh, full[Crosscheck::kSliding].lambda, 0);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double reach = hertz ? 1.3 * std::max(hertz->a_mm, layer->a_mm) : 4.0;
+  for (int i = 0; i <= 400; ++i) {
+    const double x = in.center[0] - reach + 2 * reach * i / 400.0, y = in.center[1];
+    const double r = std::abs(x - in.center[0]);
+    const double ph =
+        hertz ? hertz->p0_MPa * std::sqrt(std::max(0.0, 1 - r * r / (hertz->a_mm * hertz->a_mm))) : nan;
+    const double pl = layer ? layer->pressure_MPa(r) : nan;
+    const double pc = fe_coupled.pressure(x, y);
+    out.pressure_profile.push_back(
+        {x, ph, pl, fe_none.pressure(x, y), pc, out.ratio[Crosscheck::kSliding] * pc});
+  }
+  return out;
+}
+
+}  // namespace skinfem::validation
