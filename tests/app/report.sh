@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# skinfem report on a coarse cap with a plate, friction and a short hole sweep: every stage runs on one
+# factorization, index.html links and shows only files that exist, report.json carries the headline numbers
+# (names end with their unit), and the crosscheck CSVs have their documented columns.
+set -u
+skinfem=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cat >"$tmp/scene.json" <<'JSON'
+{"name": "coarse_cap",
+ "geometry": {"type": "cap", "R": 129.7, "h": 3.04, "apex": [0.5, 0.0], "truncation_radius": 18.0},
+ "material": {"E": 3.0, "nu": 0.5},
+ "sensors": {"positions": [[-1.5, 0.0], [0.5, 0.0], [2.5, 0.0]], "disc_diameter": 0.2},
+ "mesh": {"h_min": 0.6, "growth": 1.7, "h_max": 3.0},
+ "calibration": {"punch_diameter": 0.5, "spacing": 0.2},
+ "contact": {"indenter": {"type": "plane"}, "force": 0.8, "zone_radius": 4.0, "h": 0.8,
+             "friction": {"mode": "coupled", "mu": 3.0, "static_ratio": 0.1},
+             "sweep": {"from": [-2.0, 0.0], "to": [3.0, 0.0], "positions": 11, "hole_diameter": 0.5}}}
+JSON
+fail=0
+"$skinfem" report "$tmp/scene.json" --out "$tmp/out" >"$tmp/stdout" 2>"$tmp/stderr"
+code=$?
+if [ $code -ne 0 ]; then echo "FAIL report: exit $code"; cat "$tmp/stderr"; exit 1; fi
+/usr/bin/python3 - "$tmp/out" <<'PY' || fail=1
+import csv, json, os, re, sys
+out = sys.argv[1]
+bad = []
+html = open(os.path.join(out, "index.html"), encoding="utf-8").read()
+links = re.findall(r'(?:href|src)="([^"#]+)"', html)
+if not links: bad.append("index.html links nothing")
+bad += [f"index.html links missing {l}" for l in links if not os.path.exists(os.path.join(out, l))]
+for f in ["mesh/mesh.vtu", "green/green_maps.vtp", "contact/pressure.vtp", "defect/defect.pvd", "crosscheck/attribution.csv"]:
+    if f not in links: bad.append(f"index.html does not link {f}")
+r = json.load(open(os.path.join(out, "report.json")))
+for path in ["dofs", "wall_total_s", "peak_rss_mb", "units", "kfit/k_lsq_line", "kfit/k_central", "kfit/verdict",
+             "contact/contact_radius_mm", "contact/p0_kPa", "contact/indentation_um", "front_sensors/answer"]:
+    node = r
+    for key in path.split("/"):
+        if not isinstance(node, dict) or key not in node:
+            bad.append(f"report.json lacks {path}"); break
+        node = node[key]
+for stage in ["mesh", "assemble", "factor", "green_adjoints", "condense", "defect", "crosscheck"]:
+    if stage not in r.get("wall_s", {}): bad.append(f"report.json wall_s lacks {stage}")
+# Headline numbers name their unit (or are counts, ratios or flags).
+unitless = {"dofs", "nodes", "elements", "multipliers", "positions", "adjoint_solves", "block_solves", "k_central",
+            "k_lsq_line", "k", "nu", "paper_k", "ratio", "complementarity", "pivots", "mu", "active_multipliers",
+            "residual"}
+def walk(node, where):
+    if isinstance(node, dict):
+        for k, v in node.items():
+            if isinstance(v, (int, float)) and not isinstance(v, bool) and where in ("", "contact") and \
+               not re.search(r"_(mm|um|kPa|MPa|N|s|mb|mm3|per_mm2)$", k) and k not in unitless and \
+               not k.endswith(("ratio", "_rel", "_code", "_error")):
+                bad.append(f"report.json {where}/{k} has no unit")
+            walk(v, k if where == "" else where + "/" + k)
+walk(r, "")
+heads = {"readings.csv": "case,variant,sensor,x_mm,sigma_z_kPa,sigma_x_kPa",
+         "defect.csv": "case,variant,u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa",
+         "attribution.csv": "case,variant,sensor,component,amplitude_ratio,peak_shift_mm,shape_error"}
+for f, h in heads.items():
+    first = open(os.path.join(out, "crosscheck", f)).readline().strip()
+    if first != h: bad.append(f"crosscheck/{f} header {first!r}")
+rows = list(csv.DictReader(open(os.path.join(out, "crosscheck", "defect.csv"))))
+if len({r["u_mm"] for r in rows}) != 11: bad.append("crosscheck/defect.csv does not hold the 11 positions")
+for b in bad: print("FAIL", b)
+sys.exit(1 if bad else 0)
+PY
+exit $fail
