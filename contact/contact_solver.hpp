@@ -44,6 +44,7 @@ class ContactSolver {
   // From now on solves of `mode` reuse the factorized principal system of this active set (sweeps).
   void set_reference(FrictionMode mode, const std::vector<int>& active) const;
   double ratio(FrictionMode mode) const;
+  bool force_controlled() const { return load_.force.has_value(); }
   const CondensedContact& condensed() const { return c_; }
 
  private:

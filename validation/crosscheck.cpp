@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "contact/layer_hertz.hpp"
+#include "contact/small_hole.hpp"
 
 namespace skinfem::validation {
 
@@ -131,6 +132,13 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
     return first_order_hole(fe_tractions(cc, *in.mesh, full[c].lambda, out.ratio[c]), fe, in.sensors, centers,
                             S);
   });
+  const PlanarFaceIndex top(*in.mesh, kTop);
+  add_signal("small_hole",
+             "the hole as its penny-crack bulge in the intact FE contact (contact/small_hole.hpp)",
+             [&](int c) {
+               return contact::small_hole_signals(solver, kModes[c], *in.mesh, top, centers,
+                                                  in.sweep.hole_diameter, in.E, in.nu);
+             });
   if (layer)
     add_signal("paper_model",
                "eqs. (2)-(3), exact-layer pressure, uncoupled, Green rescaled by the paper's k", [&](int c) {

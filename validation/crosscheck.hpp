@@ -16,6 +16,8 @@
 //     green_k_paper      each position's FE tractions convolved with the rescaled half-space;
 //     uncoupled          the frictionless FE sweep with p_x = ratio·p_z added;
 //     first_order_hole   eqs. (2)–(3) with the FE hole-free tractions and the FE Green maps;
+//     small_hole         the hole as the penny-crack bulge it lets into it, in the intact FE contact
+//                        (contact/small_hole.hpp): the first-order formula with the right physics;
 //     paper_model        eqs. (2)–(3), exact-layer pressure, uncoupled, Green rescaled by the paper's k.
 // Metrics of a signal against FE per sensor and component: amplitude ratio max|ς| / max|ς_FE|, peak shift
 // u(max|ς|) − u(max|ς_FE|) and shape error ‖ς/‖ς‖ − ς_FE/‖ς_FE‖‖ (L2 over u: 0 same shape, √2 orthogonal,

@@ -18,6 +18,7 @@
 #include <memory>
 
 #include "contact/contact_solver.hpp"
+#include "contact/small_hole.hpp"
 #include "mesh/build.hpp"
 
 namespace skinfem::contact {
@@ -142,6 +143,24 @@ TEST(Hole, SignalScalesAsTheBulgeVolumeNotTheArea) {
       sxx += (std::log(r.S) - mx) * (std::log(r.S) - mx);
     }
     EXPECT_NEAR(sxy / sxx, 1.5, 0.1) << "sensor " << sensor;
+  }
+}
+
+// The small-hole model (contact/small_hole.hpp: the crack's volume as a dimple in the intact contact)
+// against the resolved holes: the signal per unit bulge volume, and the full prediction. The model's V is
+// the crack's, the FE's is 0.4 kHoleH/ε low at most (above), and the dimple stands for the bulge up to the
+// next multipole ((ε/d)² < 1 %): tolerance 0.4 kHoleH/ε + 2 %, against the model evaluated at the hole's
+// centre with the hole's diameter.
+TEST(Hole, SmallHoleModelPredictsTheResolvedSignal) {
+  Fixture& f = layer_with_hole();
+  const PlanarFaceIndex top(f.mesh, kTop);
+  for (double eps : kRadii) {
+    const HoleResponse h = hole_response(eps);
+    const Eigen::MatrixXd model =
+        small_hole_signals(*f.solver, FrictionMode::none, f.mesh, top, {{0, 0}}, 2 * h.eps_h, kE, kNu);
+    for (int sensor = 0; sensor < 2; ++sensor)
+      EXPECT_NEAR(h.signal[2 * sensor] / model(0, 2 * sensor), 1.0, 0.4 * kHoleH / eps + 0.02)
+          << "ε " << eps << ", sensor " << sensor;
   }
 }
 

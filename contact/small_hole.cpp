@@ -1,0 +1,51 @@
+#include "contact/small_hole.hpp"
+
+#include <Eigen/LU>
+
+namespace skinfem::contact {
+
+Eigen::MatrixXd small_hole_signals(const ContactSolver& solver, FrictionMode mode, const TetMesh& mesh,
+                                   const PlanarFaceIndex& top, const std::vector<Vec2>& centers,
+                                   double hole_diameter, double E, double nu) {
+  const CondensedContact& c = solver.condensed();
+  const ContactResult r = solver.solve(mode);
+  const double solved_ratio = mode == FrictionMode::uncoupled ? 0.0 : r.ratio;
+  const std::vector<int>& A = r.active;
+  const int na = static_cast<int>(A.size()), nr = static_cast<int>(c.S_p.rows());
+  // Force control borders the active block with the force row and the unknown approach δ.
+  const bool force = solver.force_controlled();
+  const int n = na + (force ? 1 : 0);
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n), rhs = Eigen::MatrixXd::Zero(n, nr);
+  for (int a = 0; a < na; ++a) {
+    for (int b = 0; b < na; ++b)
+      K(a, b) = c.C_zz(A[a], A[b]) + (solved_ratio != 0 ? solved_ratio * c.C_zt(A[a], A[b]) : 0.0);
+    if (force) {
+      K(a, na) = -c.zone.area[A[a]];
+      K(na, a) = c.zone.area[A[a]];
+    }
+    rhs.row(a) = c.S_p.col(A[a]).transpose() + r.ratio * c.S_t.col(A[a]).transpose();
+  }
+  const Eigen::MatrixXd W = K.transpose().partialPivLu().solve(rhs);  // n × readings
+
+  std::vector<int> active_slot(mesh.num_nodes(), -1);
+  for (int a = 0; a < na; ++a) active_slot[c.zone.vertices[A[a]]] = a;
+  std::vector<double> pressure(mesh.num_nodes(), 0.0);
+  for (int i = 0; i < c.zone.size(); ++i) pressure[c.zone.vertices[i]] = r.lambda[i];
+  const double eps = 0.5 * hole_diameter;
+  const double volume_per_pressure = 8 * (1 - nu * nu) * eps * eps * eps / (3 * E);
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(centers.size(), nr);
+  for (size_t i = 0; i < centers.size(); ++i) {
+    double s = 0, t = 0;
+    const int f = top.find(centers[i][0], centers[i][1], s, t);
+    if (f < 0) continue;
+    const double psi[3] = {1 - s - t, s, t};
+    double p = 0;
+    for (int k = 0; k < 3; ++k) p += psi[k] * pressure[mesh.faces(f, k)];
+    const double V = volume_per_pressure * p;
+    for (int k = 0; k < 3; ++k)
+      if (const int a = active_slot[mesh.faces(f, k)]; a >= 0) out.row(i) -= V * psi[k] * W.row(a);
+  }
+  return out;
+}
+
+}  // namespace skinfem::contact
