@@ -1,0 +1,495 @@
+#!/usr/bin/python3
+# scripts/figures.py — the figures of `skinfem report`, drawn from the CSV/JSON files it writes under DIR.
+#
+#   $ /usr/bin/python3 scripts/figures.py out/candelier2011
+#   figures: wrote figures/fig1_calibration.png
+#   ...
+#   figures: skipped pareto.png: missing study/study.csv
+#   figures: 6 written, 1 skipped
+#
+# Needs only the standard library, numpy and matplotlib (Debian's /usr/bin/python3; Agg backend). No
+# randomness and no version string in the PNGs (savefig metadata Software=None): same inputs, same bytes.
+#
+# Inputs (under DIR; numbers in plain decimal or exponent notation, finite):
+#   green/green.csv          sensor,component,offset_x_mm,offset_y_mm,g_point_per_mm2,g_disc_per_mm2
+#                            [,g_exact_point_per_mm2,g_exact_disc_per_mm2]; component in zz, zx, xz, xx
+#                            (force direction, then reading); offset = load position − sensor position;
+#                            only the rows with offset_y_mm = 0 are drawn.
+#   kfit/kfit.json           numbers "h_mm" (thickness above sensor #1), "k_lsq_line", "paper_k".
+#   crosscheck/readings.csv  case,variant,sensor,x_mm,sigma_z_kPa,sigma_x_kPa; case in static, sliding.
+#   crosscheck/defect.csv    case,variant,u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa; case in static, sliding.
+#   crosscheck/pressure.csv  x_mm,p_hertz_halfspace_kPa,p_layer_exact_kPa,p_fe_frictionless_kPa,
+#                            p_fe_coupled_kPa,q_fe_coupled_kPa; an empty cell (not x_mm) = no value there.
+#   study/study.csv          stage,level,dofs,seconds,error (error relative, > 0; seconds > 0). Optional.
+#   Sensors are numbered 1, 2, ...; extra columns are ignored.
+#
+# Outputs (DIR/figures/, 120 dpi), each written only if all its inputs exist:
+#   fig1_calibration.png     green.csv, kfit.json: g_disc vs offset for every sensor, 2×2 (zz, zx, xz, xx),
+#                            with the half-space Green tensor at sensor #1's depth h rescaled as
+#                            g_k(x) = k·g_half(√k·x) for k = paper_k (dashed) and k = k_lsq_line (dotted).
+#   fig2_static_sliding.png  readings.csv: σ_z and σ_x vs sensor x, static and sliding, one line per variant.
+#   fig3_varsigma_z.png      defect.csv, readings.csv (sensor x): ς_z vs hole position u per sensor, one row
+#   fig4_varsigma_x.png      per case (sliding, then static): FE | paper_model | FE × s against the model for
+#                            sensors #5, #7, s = max|model| / max|FE| over all sensors of that row.
+#   pressure_profiles.png    pressure.csv: every column with a value vs x (q dotted).
+#   green_vs_halfspace.png   green.csv, kfit.json: sensor #1 g_zz, g_xx (disc) against the rescaled
+#                            half-space for both k (and the exact layer if given), and (model − FE) / FE peak.
+#   pareto.png               study.csv: error vs seconds (log-log), one series per stage, points labelled by DOFs.
+# Each PNG is written to a hidden temporary name in DIR/figures and renamed into place. A figure whose inputs
+# are missing prints `figures: skipped <name>.png: missing <file>`. The seven PNGs above are deleted first,
+# so DIR/figures never keeps one from an earlier run that this run skipped or did not reach.
+# Prints `figures: wrote figures/<name>.png` per figure and `figures: N written, M skipped`; exit 0.
+# Malformed input (unreadable, empty, missing column or key, wrong field count, bad or non-finite value, a
+# case/component outside the lists above): one line `figures: error: <file>: line N, column 'c': ...` on
+# stderr and exit 2 at once; the figures drawn before it stay, that one and the later ones are not written.
+# Colours: sensor #n is tab10 colour n (#1 blue ... #10 cyan) in every figure.
+import csv
+import json
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")  # before pyplot: no display
+import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
+import numpy as np  # noqa: E402
+
+plt.rcParams.update({"axes.grid": True, "grid.alpha": 0.3, "legend.fontsize": 9, "figure.dpi": 120})
+COMPONENTS = ("zz", "zx", "xz", "xx")
+COMPONENT_TEXT = {"zz": "normal force → σ_z", "zx": "normal force → σ_x",
+                  "xz": "tangential force (x) → σ_z", "xx": "tangential force (x) → σ_x"}
+CASES = ("static", "sliding")
+G_UNIT = "g (mm⁻² = MPa/N)"
+
+
+class InputError(Exception):
+    pass
+
+
+# ---- input ----------------------------------------------------------------------------------------------
+def number(s):
+    try:
+        v = float(s)
+    except ValueError:
+        raise ValueError(f"{s!r} is not a number") from None
+    if not math.isfinite(v):
+        raise ValueError(f"{s!r} is not a finite number")
+    return v
+
+
+def number_or_nan(s):
+    return math.nan if s == "" else number(s)
+
+
+def positive(s):
+    v = number(s)
+    if v <= 0:
+        raise ValueError(f"{s!r} is not > 0")
+    return v
+
+
+def integer(s):
+    v = number(s)
+    if v != int(v):
+        raise ValueError(f"{s!r} is not an integer")
+    return int(v)
+
+
+def sensor_number(s):
+    v = integer(s)
+    if v < 1:
+        raise ValueError(f"{s!r} is not a sensor number (1, 2, ...)")
+    return v
+
+
+def text(s):
+    if s == "":
+        raise ValueError("empty")
+    return s
+
+
+def one_of(*choices):
+    def parse(s):
+        if s not in choices:
+            raise ValueError(f"{s!r} is not one of {', '.join(choices)}")
+        return s
+    return parse
+
+
+def read_csv(path, spec, optional=()):
+    """Columns of `path` as numpy arrays: `spec` maps each required column to its parser; `optional` columns
+    (numbers, empty = NaN) are returned when present. Raises InputError naming the file, line and column."""
+    try:
+        with open(path, newline="") as f:
+            rows = csv.reader(f)
+            header = [h.strip() for h in next(rows, [])]
+            if not header:
+                raise InputError(f"{path}: empty file (no header)")
+            for c in spec:
+                if c not in header:
+                    raise InputError(f"{path}: missing column '{c}' (header: {','.join(header)})")
+            parsers = dict(spec, **{c: number_or_nan for c in optional if c in header})
+            index = {c: header.index(c) for c in parsers}
+            data = {c: [] for c in parsers}
+            for row in rows:
+                if not row:
+                    continue
+                if len(row) != len(header):
+                    raise InputError(f"{path}: line {rows.line_num}: {len(row)} fields, header has {len(header)}")
+                for c, parse in parsers.items():
+                    try:
+                        data[c].append(parse(row[index[c]].strip()))
+                    except ValueError as e:
+                        raise InputError(f"{path}: line {rows.line_num}, column '{c}': {e}") from None
+    except (OSError, UnicodeDecodeError, csv.Error) as e:
+        raise InputError(f"{path}: {e}") from None
+    if not data[next(iter(spec))]:
+        raise InputError(f"{path}: no data rows")
+    return {c: np.array(v) for c, v in data.items()}
+
+
+def read_json_numbers(path, keys):
+    try:
+        with open(path) as f:
+            obj = json.load(f)
+    except (OSError, UnicodeDecodeError, ValueError) as e:
+        raise InputError(f"{path}: {e}") from None
+    out = {}
+    for k in keys:
+        v = obj.get(k) if isinstance(obj, dict) else None
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+            raise InputError(f"{path}: key '{k}' is missing or not a finite number")
+        out[k] = float(v)
+    return out
+
+
+def read_green(d):
+    return read_csv(os.path.join(d, "green/green.csv"),
+                    {"sensor": sensor_number, "component": one_of(*COMPONENTS), "offset_x_mm": number,
+                     "offset_y_mm": number, "g_point_per_mm2": number, "g_disc_per_mm2": number},
+                    optional=("g_exact_point_per_mm2", "g_exact_disc_per_mm2"))
+
+
+def read_kfit(d):
+    return read_json_numbers(os.path.join(d, "kfit/kfit.json"), ("h_mm", "k_lsq_line", "paper_k"))
+
+
+def read_readings(d):
+    return read_csv(os.path.join(d, "crosscheck/readings.csv"),
+                    {"case": one_of(*CASES), "variant": text, "sensor": sensor_number, "x_mm": number,
+                     "sigma_z_kPa": number, "sigma_x_kPa": number})
+
+
+# ---- helpers --------------------------------------------------------------------------------------------
+def sensor_color(s):
+    return plt.get_cmap("tab10")((s - 1) % 10)
+
+
+def g_half(component, x, h, k=1.0):
+    """Half-space Green tensor at depth h for a unit force at offset x (y = 0), rescaled: k·g_half(√k·x)."""
+    x = np.sqrt(k) * np.asarray(x, dtype=float)
+    rho5 = (x * x + h * h) ** 2.5
+    num = {"zz": 3 * h**3, "zx": -3 * x * h * h, "xz": -3 * x * h * h, "xx": 3 * x * x * h}[component]
+    return k * num / (2 * np.pi * rho5)
+
+
+def scan(g, sensor, component, column):
+    """(offset_x, values) of one sensor's calibration scan along y = 0, sorted by offset."""
+    m = (g["sensor"] == sensor) & (g["component"] == component) & (np.abs(g["offset_y_mm"]) < 1e-9)
+    o = np.argsort(g["offset_x_mm"][m], kind="stable")
+    return g["offset_x_mm"][m][o], g[column][m][o]
+
+
+def series(table, mask, xcol, ycol):
+    o = np.argsort(table[xcol][mask], kind="stable")
+    return table[xcol][mask][o], table[ycol][mask][o]
+
+
+def in_order(values):
+    """Distinct values in order of first appearance (deterministic legend order)."""
+    return list(dict.fromkeys(values.tolist()))
+
+
+def no_data(ax, message):
+    ax.text(0.5, 0.5, message, transform=ax.transAxes, ha="center", va="center", color="0.4")
+
+
+def model_labels(kf):
+    return (f"half-space, k = paper_k = {kf['paper_k']:.3g}", f"half-space, k = k_lsq_line = {kf['k_lsq_line']:.4g}")
+
+
+# ---- figures --------------------------------------------------------------------------------------------
+def fig1_calibration(d):
+    g, kf = read_green(d), read_kfit(d)
+    sensors = sorted(set(g["sensor"].tolist()))
+    x = np.linspace(g["offset_x_mm"].min(), g["offset_x_mm"].max(), 801)
+    lab_paper, lab_lsq = model_labels(kf)
+    fig, axes = plt.subplots(2, 2, figsize=(14, 9.5), sharex=True)
+    for ax, c in zip(axes.flat, COMPONENTS):
+        for s in sensors:
+            ax.plot(*scan(g, s, c, "g_disc_per_mm2"), color=sensor_color(s), lw=1.3, label=f"FE sensor #{s}")
+        ax.plot(x, g_half(c, x, kf["h_mm"], kf["paper_k"]), "k--", lw=1.6, zorder=3, label=lab_paper)
+        ax.plot(x, g_half(c, x, kf["h_mm"], kf["k_lsq_line"]), "k:", lw=1.8, zorder=3, label=lab_lsq)
+        ax.set_title(f"g_{c}: {COMPONENT_TEXT[c]}")
+        ax.set_ylabel(G_UNIT)
+    for ax in axes[1]:
+        ax.set_xlabel("offset x = load position − sensor position (mm)")
+    handles, labels = axes[0, 0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="center right", title="FE: disc mean, solid")
+    fig.suptitle("Calibration scans (paper fig. 1): FE Green tensor of every sensor along y = 0, against the\n"
+                 f"rescaled half-space model at sensor #1's depth h = {kf['h_mm']:.3f} mm")
+    fig.tight_layout(rect=(0, 0, 0.8, 1))
+    return fig
+
+
+def variant_style(v, i):
+    fixed = {"fe": dict(color="k", ls="-", marker="o"), "paper_model": dict(color="tab:red", ls="--", marker="s")}
+    others = [("tab:blue", "-."), ("tab:green", ":"), ("tab:orange", "-."), ("tab:purple", ":"),
+              ("tab:brown", "-."), ("tab:cyan", ":"), ("tab:olive", "-."), ("tab:pink", ":")]
+    markers = "^vD<>PXh*"
+    color, ls = others[i % len(others)]
+    return fixed.get(v, dict(color=color, ls=ls, marker=markers[i % len(markers)]))
+
+
+def fig2_static_sliding(d):
+    r = read_readings(d)
+    variants = in_order(r["variant"])
+    others = [v for v in variants if v not in ("fe", "paper_model")]
+    fig, axes = plt.subplots(2, 2, figsize=(13, 9), sharex=True)
+    for row, (comp, col) in enumerate((("σ_z", "sigma_z_kPa"), ("σ_x", "sigma_x_kPa"))):
+        for j, case in enumerate(CASES):
+            ax = axes[row, j]
+            for v in variants:
+                m = (r["case"] == case) & (r["variant"] == v)
+                if m.any():
+                    style = variant_style(v, others.index(v) if v in others else 0)
+                    ax.plot(*series(r, m, "x_mm", col), lw=2 if v == "fe" else 1.3, ms=5, label=v,
+                            zorder=3 if v == "fe" else 2, **style)
+            if not (r["case"] == case).any():
+                no_data(ax, f"no {case} rows")
+            ax.set_title(f"{comp}, {case}")
+            ax.set_ylabel(f"mean sensor {comp} (kPa)")
+            if row == 1:
+                ax.set_xlabel("sensor position x (mm)")
+            if row == 0:
+                first = {}
+                for s, xs in zip(r["sensor"].tolist(), r["x_mm"].tolist()):
+                    first.setdefault(s, xs)
+                top = ax.secondary_xaxis("top")
+                top.set_xticks(list(first.values()), [f"#{s}" for s in first])
+    handles = {}
+    for ax in axes.flat:
+        for h, lab in zip(*ax.get_legend_handles_labels()):
+            handles.setdefault(lab, h)
+    fig.legend(list(handles.values()), list(handles), loc="lower center", ncol=min(len(handles), 7),
+               title="variant (fe: full FE; paper_model: the paper's convolution model)")
+    fig.suptitle("Mean sensor stresses under the plate, static and sliding (paper fig. 2): FE and model variants")
+    fig.tight_layout(rect=(0, 0.08, 1, 1))
+    return fig
+
+
+def fig_varsigma(d, comp):
+    path = os.path.join(d, "crosscheck/defect.csv")
+    col = f"varsigma_{comp}_kPa"
+    t = read_csv(path, {"case": one_of(*CASES), "variant": text, "u_mm": number, "sensor": sensor_number,
+                        "varsigma_z_kPa": number, "varsigma_x_kPa": number})
+    r = read_readings(d)
+    xpos = {}
+    for s, xs in zip(r["sensor"].tolist(), r["x_mm"].tolist()):
+        xpos.setdefault(s, xs)
+    sensors = sorted(set(t["sensor"].tolist()))
+    cases = [c for c in ("sliding", "static") if (t["case"] == c).any()]
+    sym = f"ς_{comp}"
+    fig, axes = plt.subplots(len(cases), 3, figsize=(18, 5.2 * len(cases) + 1.2), squeeze=False)
+    for row, case in enumerate(cases):
+        ax_fe, ax_model, ax_both = axes[row]
+        peak = {}
+        for ax, variant, what in ((ax_fe, "fe", "FE"), (ax_model, "paper_model", "paper's model")):
+            m = (t["case"] == case) & (t["variant"] == variant)
+            peak[variant] = np.abs(t[col][m]).max() if m.any() else 0.0
+            for s in sensors:
+                ms = m & (t["sensor"] == s)
+                if ms.any():
+                    ax.plot(*series(t, ms, "u_mm", col), color=sensor_color(s), lw=1.4,
+                            label=f"#{s}" + (f" (x = {xpos[s]:.2g} mm)" if s in xpos else ""))
+                if s in xpos:
+                    ax.plot([xpos[s]], [0.03], "o", ms=8, color=sensor_color(s), mec="k", mew=0.5,
+                            transform=ax.get_xaxis_transform(), clip_on=False)
+            if not m.any():
+                no_data(ax, f"no {case} rows of variant {variant}")
+            ax.set_title(f"{sym}, {case}: {what} (variant {variant})")
+        scale = peak["paper_model"] / peak["fe"] if peak["fe"] > 0 and peak["paper_model"] > 0 else None
+        for s in (5, 7):
+            for variant, ls, f, lab in (("fe", "-", scale, f"#{s} FE × {scale:.3g}" if scale else ""),
+                                        ("paper_model", "--", 1.0, f"#{s} paper's model")):
+                ms = (t["case"] == case) & (t["variant"] == variant) & (t["sensor"] == s)
+                if ms.any() and f:
+                    u, v = series(t, ms, "u_mm", col)
+                    ax_both.plot(u, f * v, ls=ls, color=sensor_color(s), lw=1.6, label=lab)
+            if s in xpos:
+                ax_both.plot([xpos[s]], [0.03], "o", ms=8, color=sensor_color(s), mec="k", mew=0.5,
+                             transform=ax_both.get_xaxis_transform(), clip_on=False)
+        if ax_both.lines and scale:
+            ax_both.legend(loc="best")
+            ax_both.set_title(f"{sym}, {case}: #5, #7, FE × (max|model| / max|FE|)")
+        else:
+            no_data(ax_both, "needs non-zero fe and paper_model signals")
+            ax_both.set_title(f"{sym}, {case}: #5, #7, FE × (max|model| / max|FE|)")
+        for ax in axes[row]:
+            ax.margins(y=0.1)
+            ax.set_xlabel("hole position u (mm)")
+            ax.set_ylabel(f"{sym} (kPa)")
+    handles, labels = axes[0, 0].get_legend_handles_labels()
+    if not handles:
+        handles, labels = axes[0, 1].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="center right", title="sensor (dot: its x)")
+    fig.suptitle(f"Hole signals {sym}(u) as the hole in the plate crosses the contact (paper fig. "
+                 f"{3 if comp == 'z' else 4}); FE and model panels have their own y scales")
+    fig.tight_layout(rect=(0, 0, 0.89, 1))
+    return fig
+
+
+def pressure_profiles(d):
+    cols = {"p_hertz_halfspace_kPa": ("p, Hertz on a half-space", "tab:gray", "--"),
+            "p_layer_exact_kPa": ("p, Hertz on the bonded layer (exact)", "tab:red", "-."),
+            "p_fe_frictionless_kPa": ("p, FE frictionless", "tab:blue", "-"),
+            "p_fe_coupled_kPa": ("p, FE with coupled friction", "k", "-"),
+            "q_fe_coupled_kPa": ("q (tangential), FE with coupled friction", "k", ":")}
+    t = read_csv(os.path.join(d, "crosscheck/pressure.csv"), dict({"x_mm": number}, **{c: number_or_nan for c in cols}))
+    fig, ax = plt.subplots(figsize=(10, 6))
+    o = np.argsort(t["x_mm"], kind="stable")
+    for c, (label, color, ls) in cols.items():
+        v = t[c][o]
+        if np.isfinite(v).any():
+            ax.plot(t["x_mm"][o], v, ls=ls, color=color, lw=1.8, label=label)
+    if not ax.lines:
+        no_data(ax, "no values")
+    else:
+        ax.legend()
+    ax.axhline(0, color="0.5", lw=0.8)
+    ax.set_xlabel("x (mm), along y = 0")
+    ax.set_ylabel("contact traction (kPa)")
+    ax.set_title("Contact pressure p (and tangential traction q) along the line y = 0 through the contact")
+    fig.tight_layout()
+    return fig
+
+
+def green_vs_halfspace(d):
+    g, kf = read_green(d), read_kfit(d)
+    lab_paper, lab_lsq = model_labels(kf)
+    fig, axes = plt.subplots(2, 2, figsize=(13, 8.5), sharex="col", gridspec_kw={"height_ratios": (2.2, 1)})
+    for j, c in enumerate(("zz", "xx")):
+        x, fe = scan(g, 1, c, "g_disc_per_mm2")
+        top, bottom = axes[0, j], axes[1, j]
+        if not len(x):
+            no_data(top, f"no sensor #1 {c} rows")
+            continue
+        models = [(lab_paper, g_half(c, x, kf["h_mm"], kf["paper_k"]), "--", "tab:red"),
+                  (lab_lsq, g_half(c, x, kf["h_mm"], kf["k_lsq_line"]), ":", "tab:blue")]
+        if "g_exact_disc_per_mm2" in g:
+            exact = scan(g, 1, c, "g_exact_disc_per_mm2")[1]
+            if np.isfinite(exact).any():
+                models.append(("exact bonded layer (disc mean)", exact, "-.", "tab:green"))
+        top.plot(x, fe, "k-", lw=2, label="FE sensor #1 (disc mean)")
+        peak = np.abs(fe).max()
+        for label, v, ls, color in models:
+            top.plot(x, v, ls=ls, color=color, lw=1.8, label=label)
+            bottom.plot(x, 100 * (v - fe) / peak if peak > 0 else v * np.nan, ls=ls, color=color, lw=1.6,
+                        label=label)
+        top.set_title(f"sensor #1, g_{c}: {COMPONENT_TEXT[c]}")
+        top.set_ylabel(G_UNIT)
+        top.legend()
+        bottom.axhline(0, color="0.5", lw=0.8)
+        bottom.set_ylabel("(model − FE) / FE peak (%)")
+        bottom.set_xlabel("offset x = load position − sensor position (mm)")
+    fig.suptitle(f"FE Green tensor of sensor #1 against the rescaled half-space k·g_half(√k·x) at h = "
+                 f"{kf['h_mm']:.3f} mm")
+    fig.tight_layout()
+    return fig
+
+
+def pareto(d):
+    t = read_csv(os.path.join(d, "study/study.csv"),
+                 {"stage": text, "level": number, "dofs": integer, "seconds": positive, "error": positive})
+    fig, ax = plt.subplots(figsize=(10, 7))
+    markers = "osD^vPX*h"
+    for i, stage in enumerate(in_order(t["stage"])):
+        m = t["stage"] == stage
+        o = np.argsort(t["level"][m], kind="stable")
+        sec, err, dofs = t["seconds"][m][o], t["error"][m][o], t["dofs"][m][o]
+        ax.plot(sec, err, marker=markers[i % len(markers)], ms=8, lw=1, color=plt.get_cmap("Dark2")(i % 8),
+                label=stage)
+        for s, e, n in zip(sec, err, dofs):
+            ax.annotate(f"{n:,}", (s, e), textcoords="offset points", xytext=(6, 5), fontsize=8)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.margins(0.1)
+    plain = matplotlib.ticker.FuncFormatter(lambda v, _: f"{v:g}")
+    for axis in (ax.xaxis, ax.yaxis):  # ticks at 1, 2, 5 × 10^n in plain numbers: a study spans few decades
+        axis.set_minor_locator(matplotlib.ticker.LogLocator(subs=(2, 5)))
+        axis.set_major_formatter(plain)
+        axis.set_minor_formatter(plain)
+    ax.set_xlabel("wall time (s)")
+    ax.set_ylabel("relative error (–)")
+    ax.legend(title="stage (labels: DOFs)")
+    ax.set_title("Cost against accuracy of each stage over the refinement levels")
+    fig.tight_layout()
+    return fig
+
+
+FIGURES = [
+    ("fig1_calibration.png", ("green/green.csv", "kfit/kfit.json"), fig1_calibration),
+    ("fig2_static_sliding.png", ("crosscheck/readings.csv",), fig2_static_sliding),
+    ("fig3_varsigma_z.png", ("crosscheck/defect.csv", "crosscheck/readings.csv"), lambda d: fig_varsigma(d, "z")),
+    ("fig4_varsigma_x.png", ("crosscheck/defect.csv", "crosscheck/readings.csv"), lambda d: fig_varsigma(d, "x")),
+    ("pressure_profiles.png", ("crosscheck/pressure.csv",), pressure_profiles),
+    ("green_vs_halfspace.png", ("green/green.csv", "kfit/kfit.json"), green_vs_halfspace),
+    ("pareto.png", ("study/study.csv",), pareto),
+]
+
+
+def save(fig, path):
+    tmp = os.path.join(os.path.dirname(path), "." + os.path.basename(path) + ".tmp")
+    try:
+        fig.savefig(tmp, dpi=120, format="png", metadata={"Software": None})
+        os.replace(tmp, path)
+    finally:
+        plt.close(fig)
+        if os.path.exists(tmp):
+            os.remove(tmp)
+
+
+def main(argv):
+    if len(argv) != 2 or not os.path.isdir(argv[1]):
+        print("usage: /usr/bin/python3 scripts/figures.py DIR  (DIR: a `skinfem report` output folder)",
+              file=sys.stderr)
+        return 2
+    d = argv[1]
+    out = os.path.join(d, "figures")
+    os.makedirs(out, exist_ok=True)
+    for name, _, _ in FIGURES:  # figures/ then holds exactly what this run drew, nothing from an earlier one
+        if os.path.exists(os.path.join(out, name)):
+            os.remove(os.path.join(out, name))
+    written = skipped = 0
+    for name, inputs, draw in FIGURES:
+        path = os.path.join(out, name)
+        missing = [f for f in inputs if not os.path.isfile(os.path.join(d, f))]
+        if missing:
+            print(f"figures: skipped {name}: missing {', '.join(missing)}")
+            skipped += 1
+            continue
+        try:
+            save(draw(d), path)
+        except InputError as e:
+            print(f"figures: error: {e}", file=sys.stderr)
+            return 2
+        print(f"figures: wrote figures/{name}")
+        written += 1
+    print(f"figures: {written} written, {skipped} skipped")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
