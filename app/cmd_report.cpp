@@ -5,7 +5,8 @@
 //   report candelier2011: 188,439 DOFs, one factorization; green, kfit, contact, defect, crosscheck in 150 s
 //
 // Stages, each writing its own folder under DIR (default out/<scene name>): mesh/ (mesh.vtu, boundary.vtu),
-// green/ (green.csv, green_maps.vtp), kfit/ (kfit.json), and with a contact: contact/ (pressure.vtp,
+// green/ (green.csv, green_maps.vtp), kfit/ (kfit.json, and k_sweep.csv: the exact layer's k as each reading
+// of the calibration protocol changes, validation/k_sweep.hpp), and with a contact: contact/ (pressure.vtp,
 // fields.vtu, sensors.csv, modes.csv), defect/ (defect.csv, defect.pvd + frames/) and crosscheck/
 // (readings.csv, defect.csv, pressure.csv, attribution.csv: case,variant,sensor,component,amplitude_ratio,
 // peak_shift_mm,shape_error). Then figures/*.png (scripts/figures.py, matplotlib) and DIR/report.json (the
@@ -23,6 +24,7 @@
 #include "app/stages.hpp"
 #include "green/kfit.hpp"
 #include "validation/crosscheck.hpp"
+#include "validation/k_sweep.hpp"
 
 namespace skinfem::app {
 
@@ -131,6 +133,50 @@ nlohmann::json front_sensor_answer(const validation::Crosscheck& x, const Sensor
   return j;
 }
 
+// Which single change of the calibration protocol gives the paper's k: the exact layer's k under each
+// reading (validation/k_sweep.hpp), written to DIR/k_sweep.csv, and the readings within ±0.01 of it.
+nlohmann::json k_paper_answer(const Scene& scene, double h, const std::string& dir) {
+  validation::KProtocol base;
+  base.h = h;
+  base.nu = scene.material.nu;
+  base.punch_diameter = scene.calibration.punch_diameter;
+  const auto pts = validation::k_sweep(base);
+  std::ostringstream csv;
+  csv.precision(10);
+  csv << "parameter,value,k_central,k_lsq_line\n";
+  for (const auto& p : pts)
+    csv << p.parameter << "," << p.value << "," << p.k_central << "," << p.k_lsq_line << "\n";
+  write_text_atomic(dir + "/k_sweep.csv", csv.str());
+  const char* loads[3] = {"point", "uniform disc", "punch"};
+  nlohmann::json j;
+  std::string near, cross;
+  for (const auto& p : pts)
+    for (const char* crit : {"k_central", "k_lsq_line"}) {
+      const double k = std::string(crit) == "k_central" ? p.k_central : p.k_lsq_line;
+      if (std::abs(k - green::kPaperK) <= 0.01) {
+        const std::string what = p.parameter == "load"
+                                     ? std::string("load ") + loads[static_cast<int>(p.value)]
+                                     : p.parameter + " = " + fmt("%.3g", p.value);
+        near += (near.empty() ? "" : "; ") + what + ": " + crit + " " + fmt("%.4f", k);
+        j["within_0.01"].push_back(
+            {{"parameter", p.parameter}, {"value", p.value}, {"criterion", crit}, {"k", k}});
+      }
+    }
+  for (const char* param : {"nu", "punch_diameter_mm", "disc_diameter_mm", "h_mm"})
+    for (const char* crit : {"k_central", "k_lsq_line"})
+      for (double v : validation::crossings(pts, param, crit, green::kPaperK)) {
+        cross += (cross.empty() ? "" : "; ") + std::string(crit) + " = " + fmt("%.2f", green::kPaperK) +
+                 " at " + param + " = " + fmt("%.3g", v);
+        j["crossings"].push_back({{"parameter", param}, {"criterion", crit}, {"value", v}});
+      }
+  j["answer"] = "Exact layer (h " + fmt("%.3g", h) + " mm) with one protocol reading changed at a time: " +
+                (near.empty() ? std::string("no reading in the sweep gives k within 0.01 of ") +
+                                    fmt("%.2f", green::kPaperK)
+                              : "within 0.01 of " + fmt("%.2f", green::kPaperK) + ": " + near) +
+                (cross.empty() ? std::string("; no parameter's range crosses it") : "; crossings: " + cross);
+  return j;
+}
+
 std::string html_escape(const std::string& s) {
   std::string o;
   for (char c : s) o += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
@@ -156,7 +202,9 @@ void write_index(const std::string& dir, const Scene& scene, const nlohmann::jso
     h << "<tr><td style=\"text-align:left\">" << stage << "</td><td>" << fmt("%.2f", s.get<double>())
       << "</td></tr>\n";
   h << "</table>\n";
-  h << "<h2>k</h2><p>" << html_escape(report["kfit"]["verdict"].get<std::string>()) << "</p>\n";
+  h << "<h2>k</h2><p>" << html_escape(report["kfit"]["verdict"].get<std::string>()) << "</p>\n<p>"
+    << html_escape(report["k_paper"]["answer"].get<std::string>())
+    << " (<a href=\"kfit/k_sweep.csv\">kfit/k_sweep.csv</a>)</p>\n";
   if (report.contains("front_sensors") && report["front_sensors"].contains("answer"))
     h << "<h2>Does friction-pressure coupling explain the front sensors?</h2><p>"
       << html_escape(report["front_sensors"]["answer"].get<std::string>()) << "</p>\n";
@@ -232,6 +280,10 @@ int run_report(const Scene& scene, const std::string& out_dir) {
   report["green"] = green_stage(scene, *adjoints, out_dir + "/green");
   report["kfit"] = kfit_stage(scene, *adjoints, out_dir + "/kfit", "punch");
   wall["green_kfit_profiles"] = clock.seconds();
+  clock = Stopwatch();
+  progress("k sweep: which protocol reading gives the paper's k");
+  report["k_paper"] = k_paper_answer(scene, report["kfit"]["h_mm"].get<double>(), out_dir + "/kfit");
+  wall["k_sweep"] = clock.seconds();
 
   std::unique_ptr<ContactSetup> contact;
   std::optional<DefectStage> defect;
@@ -290,6 +342,7 @@ int run_report(const Scene& scene, const std::string& out_dir) {
   write_index(out_dir, scene, report, x ? &*x : nullptr);
   std::printf("report %s: %d DOFs, one factorization; %.1f s, peak %.0f MB\n", scene.name.c_str(),
               report["dofs"].get<int>(), total.seconds(), peak_rss_mb());
+  std::printf("  %s\n", report["k_paper"]["answer"].get<std::string>().c_str());
   if (report.contains("front_sensors") && report["front_sensors"].contains("answer"))
     std::printf("  %s\n", report["front_sensors"]["answer"].get<std::string>().c_str());
   if (rc != 0)

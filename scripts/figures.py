@@ -34,9 +34,11 @@
 #   pressure_profiles.png    pressure.csv: every column with a value vs x (q dotted).
 #   green_vs_halfspace.png   green.csv, kfit.json: sensor #1 g_zz, g_xx (disc) against the rescaled
 #                            half-space for both k (and the exact layer if given), and (model − FE) / FE peak.
+#   k_sweep.png              kfit/k_sweep.csv (parameter,value,k_central,k_lsq_line), kfit.json: the exact
+#                            layer's k as one protocol reading changes at a time, against the paper's k ± 0.01.
 #   pareto.png               study.csv: error vs seconds (log-log), one series per stage, points labelled by DOFs.
 # Each PNG is written to a hidden temporary name in DIR/figures and renamed into place. A figure whose inputs
-# are missing prints `figures: skipped <name>.png: missing <file>`. The seven PNGs above are deleted first,
+# are missing prints `figures: skipped <name>.png: missing <file>`. The PNGs above are deleted first,
 # so DIR/figures never keeps one from an earlier run that this run skipped or did not reach.
 # Prints `figures: wrote figures/<name>.png` per figure and `figures: N written, M skipped`; exit 0.
 # Malformed input (unreadable, empty, missing column or key, wrong field count, bad or non-finite value, a
@@ -410,6 +412,30 @@ def green_vs_halfspace(d):
     return fig
 
 
+def k_sweep(d):
+    t = read_csv(os.path.join(d, "kfit/k_sweep.csv"),
+                 {"parameter": text, "value": number, "k_central": number, "k_lsq_line": number})
+    paper = read_json_numbers(os.path.join(d, "kfit/kfit.json"), ("paper_k",))["paper_k"]
+    groups = [("nu", "Poisson's ratio ν"), ("punch_diameter_mm", "punch diameter (mm)"),
+              ("disc_diameter_mm", "sensor averaging disc (mm)"), ("h_mm", "layer thickness h (mm)"),
+              ("load", "load model (0 point, 1 uniform disc, 2 punch)")]
+    fig, axes = plt.subplots(1, len(groups), figsize=(18, 4.5), sharey=True)
+    for ax, (name, label) in zip(axes, groups):
+        m = t["parameter"] == name
+        o = np.argsort(t["value"][m], kind="stable")
+        for crit, style in (("k_central", "o-"), ("k_lsq_line", "s--")):
+            ax.plot(t["value"][m][o], t[crit][m][o], style, label=crit)
+        ax.axhspan(paper - 0.01, paper + 0.01, color="tab:red", alpha=0.15)
+        ax.axhline(paper, color="tab:red", lw=1, label=f"paper k = {paper:g} ± 0.01")
+        ax.set_xlabel(label)
+        ax.grid(alpha=0.3)
+    axes[0].set_ylabel("k (exact bonded layer)")
+    axes[0].legend(fontsize=8)
+    fig.suptitle("Which reading of the calibration protocol gives the paper's k: one parameter at a time")
+    fig.tight_layout()
+    return fig
+
+
 def pareto(d):
     t = read_csv(os.path.join(d, "study/study.csv"),
                  {"stage": text, "level": number, "dofs": integer, "seconds": positive, "error": positive})
@@ -446,6 +472,7 @@ FIGURES = [
     ("fig4_varsigma_x.png", ("crosscheck/defect.csv", "crosscheck/readings.csv"), lambda d: fig_varsigma(d, "x")),
     ("pressure_profiles.png", ("crosscheck/pressure.csv",), pressure_profiles),
     ("green_vs_halfspace.png", ("green/green.csv", "kfit/kfit.json"), green_vs_halfspace),
+    ("k_sweep.png", ("kfit/k_sweep.csv", "kfit/kfit.json"), k_sweep),
     ("pareto.png", ("study/study.csv",), pareto),
 ]
 

@@ -1,0 +1,78 @@
+#include "validation/k_sweep.hpp"
+
+#include <cmath>
+
+#include "green/calibration.hpp"
+
+namespace skinfem::validation {
+
+KSweepPoint k_of(const KProtocol& p, double spacing) {
+  const int n = static_cast<int>(std::floor(3 * p.h / spacing + 1e-9));
+  std::vector<double> x;
+  for (int i = -n; i <= n; ++i) x.push_back(i * spacing);
+  const green::LayerGreen layer(p.h, p.nu, p.load, 0.5 * p.punch_diameter);
+  const green::KReport r = green::fit_profile(x, green::exact_profile(layer, x, p.disc_diameter), p.h);
+  return {"", 0, r.k_central, r.k_lsq_line};
+}
+
+namespace {
+KSweepPoint evaluate(const KProtocol& p, const std::string& parameter, double value, double spacing) {
+  KSweepPoint k = k_of(p, spacing);
+  k.parameter = parameter;
+  k.value = value;
+  return k;
+}
+}  // namespace
+
+std::vector<KSweepPoint> k_sweep(const KProtocol& base, double spacing) {
+  std::vector<KSweepPoint> out;
+  for (double nu : {0.30, 0.35, 0.40, 0.45, 0.48, 0.50}) {
+    KProtocol p = base;
+    p.nu = nu;
+    out.push_back(evaluate(p, "nu", nu, spacing));
+  }
+  for (double d : {0.1, 0.25, 0.5, 0.75, 1.0, 1.25, 1.5}) {
+    KProtocol p = base;
+    p.punch_diameter = d;
+    out.push_back(evaluate(p, "punch_diameter_mm", d, spacing));
+  }
+  for (int l = 0; l < 3; ++l) {
+    KProtocol p = base;
+    p.load = l == 0 ? green::LayerLoad::point : l == 1 ? green::LayerLoad::uniform : green::LayerLoad::punch;
+    out.push_back(evaluate(p, "load", l, spacing));
+  }
+  for (double d : {0.0, 0.2, 0.4, 0.6, 1.0}) {
+    KProtocol p = base;
+    p.disc_diameter = d;
+    out.push_back(evaluate(p, "disc_diameter_mm", d, spacing));
+  }
+  for (double h : {2.5, 2.75, 3.04, 3.25, 3.5}) {
+    KProtocol p = base;
+    p.h = h;
+    out.push_back(evaluate(p, "h_mm", h, spacing));
+  }
+  return out;
+}
+
+std::vector<double> crossings(const std::vector<KSweepPoint>& points, const std::string& parameter,
+                              const std::string& criterion, double target) {
+  std::vector<double> out;
+  const KSweepPoint* prev = nullptr;
+  for (const auto& p : points) {
+    if (p.parameter != parameter) continue;
+    if (prev) {
+      const double a = (criterion == "k_central" ? prev->k_central : prev->k_lsq_line) - target;
+      const double b = (criterion == "k_central" ? p.k_central : p.k_lsq_line) - target;
+      if (a == 0)
+        out.push_back(prev->value);
+      else if (a * b < 0)
+        out.push_back(prev->value + (p.value - prev->value) * a / (a - b));
+    }
+    prev = &p;
+  }
+  if (prev && (criterion == "k_central" ? prev->k_central : prev->k_lsq_line) == target)
+    out.push_back(prev->value);
+  return out;
+}
+
+}  // namespace skinfem::validation

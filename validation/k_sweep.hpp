@@ -1,0 +1,40 @@
+// What would make the paper's k = 1.48: both k criteria (green/kfit.hpp) of the exact bonded layer
+// (green/layer_exact.hpp) as each reading of the paper's calibration protocol is varied alone about a base
+// case: Poisson's ratio, the punch diameter (0.5 mm read as a diameter or as a radius), the load model
+// (point, uniform disc, rigid punch), the sensor's averaging disc, and the layer's thickness. The FE's own
+// error on these numbers is the kfit one (0.1 % on the flat layer, README).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "green/layer_exact.hpp"
+
+namespace skinfem::validation {
+
+struct KProtocol {
+  double h = 3.04;  // layer thickness, mm
+  double nu = 0.5;
+  double punch_diameter = 0.5;  // mm
+  green::LayerLoad load = green::LayerLoad::punch;
+  double disc_diameter = 0;  // sensor averaging disc, mm (0: point value)
+};
+
+struct KSweepPoint {
+  std::string parameter;  // nu, punch_diameter_mm, load, disc_diameter_mm, h_mm
+  double value = 0;       // the parameter's value (load: 0 point, 1 uniform, 2 punch)
+  double k_central = 0, k_lsq_line = 0;
+};
+
+// Both criteria for one protocol.
+KSweepPoint k_of(const KProtocol& p, double spacing = 0.05);
+// Every parameter over its range (nu 0.30–0.50, punch 0.1–1.5 mm, disc 0–0.6 mm, h 2.5–3.5 mm, the three
+// loads), the others at `base`. Offsets every `spacing` mm over |x| ≤ 3h (the fit's range).
+std::vector<KSweepPoint> k_sweep(const KProtocol& base, double spacing = 0.05);
+
+// Where k of `criterion` ("k_central" or "k_lsq_line") crosses `target` along one parameter's points, by
+// linear interpolation between neighbours; empty when it never does.
+std::vector<double> crossings(const std::vector<KSweepPoint>& points, const std::string& parameter,
+                              const std::string& criterion, double target);
+
+}  // namespace skinfem::validation
