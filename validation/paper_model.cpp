@@ -5,34 +5,10 @@
 #include <stdexcept>
 
 #include "fem/face_index.hpp"
+#include "mesh/gauss_legendre.hpp"
 #include "mesh/surface_quadrature.hpp"
 
 namespace skinfem::validation {
-
-namespace {
-// Gauss–Legendre nodes and weights on [0, 1] (Golub–Welsch would be overkill: Newton on P_n).
-void gauss_legendre(int n, std::vector<double>& x, std::vector<double>& w) {
-  x.resize(n);
-  w.resize(n);
-  for (int i = 0; i < n; ++i) {
-    double z = std::cos(M_PI * (i + 0.75) / (n + 0.5)), dp = 0;
-    for (int it = 0; it < 100; ++it) {
-      double p0 = 1, p1 = z;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (z * p1 - p0) / (z * z - 1);
-      const double dz = p1 / dp;
-      z -= dz;
-      if (std::abs(dz) < 1e-15) break;
-    }
-    x[i] = 0.5 * (1 - z);
-    w[i] = 1.0 / ((1 - z * z) * dp * dp);  // 2/((1 − z²)P'²) on [−1, 1], halved for [0, 1]
-  }
-}
-}  // namespace
 
 GreenKernel rescaled_halfspace_kernel(std::vector<double> thickness, double k) {
   return [h = std::move(thickness), k](int sensor, double ox, double oy) {
@@ -93,11 +69,10 @@ Tractions axisymmetric_tractions(std::function<double(double)> p_of_r, const Vec
     const double r = std::hypot(x - center[0], y - center[1]);
     return r < a ? p_of_r(r) : 0.0;
   };
-  std::vector<double> s, w;
-  gauss_legendre(n_theta, s, w);
+  const GaussRule1d g = gauss_legendre01(n_theta);
   for (int i = 0; i < n_theta; ++i) {
-    const double theta = 0.5 * M_PI * s[i];
-    const double r = a * std::sin(theta), dr = a * std::cos(theta) * 0.5 * M_PI * w[i];
+    const double theta = 0.5 * M_PI * g.x[i];
+    const double r = a * std::sin(theta), dr = a * std::cos(theta) * 0.5 * M_PI * g.w[i];
     const double pr = p_of_r(r) * r * dr * 2 * M_PI / n_phi;
     for (int j = 0; j < n_phi; ++j) {
       const double phi = 2 * M_PI * (j + 0.5) / n_phi;
