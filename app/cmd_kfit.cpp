@@ -10,6 +10,7 @@
 //                uniform weight in x, with g_half the Boussinesq value at depth h.
 // The FE Green tensor comes from adjoint solves (reciprocity) on the scene's mesh for each sensor;
 // flat scenes are also compared with the exact layer solution (Hankel transforms). Writes DIR/kfit.json.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -116,11 +117,13 @@ nlohmann::json kfit_stage(const Scene& scene, const AdjointSetup& setup, const s
   const double kc = first["k_central"], kl = first["k_lsq_line"];
   const bool reproduced = std::abs(kc - paper_k) < 0.01 * paper_k || std::abs(kl - paper_k) < 0.01 * paper_k;
   summary["paper_k_reproduced_within_1pct"] = reproduced;
-  char verdict[512];
+  char verdict[640];
   std::snprintf(verdict, sizeof verdict,
-                "paper k = %.2f %s: k_central = %.4f (%+.1f%%), k_lsq_line = %.4f (%+.1f%%); "
+                "sensor #1 at (%.3g, %.3g) mm: paper k = %.2f %s: k_central = %.4f (%+.1f%%), k_lsq_line = "
+                "%.4f (%+.1f%%); "
                 "one k for all four components: zz %.3f, zx %.3f, xz %.3f, xx %.3f",
-                paper_k, reproduced ? "reproduced" : "NOT reproduced", kc, 100 * (kc / paper_k - 1), kl,
+                first["x_mm"].get<double>(), first["y_mm"].get<double>(), paper_k,
+                reproduced ? "reproduced" : "NOT reproduced", kc, 100 * (kc / paper_k - 1), kl,
                 100 * (kl / paper_k - 1), first["components"]["zz"]["k"].get<double>(),
                 first["components"]["zx"]["k"].get<double>(), first["components"]["xz"]["k"].get<double>(),
                 first["components"]["xx"]["k"].get<double>());
@@ -133,23 +136,40 @@ nlohmann::json kfit_stage(const Scene& scene, const AdjointSetup& setup, const s
                                std::pair{"punch", LayerLoad::punch}})
       models[name] = green::k_central(green::LayerGreen(h, scene.material.nu, model, radius).at(0, 0).zz, h);
     summary["k_central_exact_by_load_model"] = models;
-    char why[512];
+    // The FE error widens what the exact values could be; the verdict follows from the numbers.
+    const double fe_err = std::abs(first["k_central_rel_error"].get<double>());
+    double closest = first["k_lsq_line_exact"].get<double>();
+    for (const auto& [name, k] : models.items())
+      if (std::abs(k.get<double>() - paper_k) < std::abs(closest - paper_k)) closest = k.get<double>();
+    const bool reaches = std::abs(closest - paper_k) <= 0.01 + fe_err * closest;
+    char why[640];
     std::snprintf(
         why, sizeof why,
         "exact layer k_central: point %.4f, uniform disc %.4f, punch %.4f; k_lsq_line %.4f; FE error "
-        "%.2f%%: no criterion, load model or resolution reaches %.2f",
+        "%.2f%%: %s %.2f ± 0.01 (closest %.4f) with this punch size and nu",
         models["point"].get<double>(), models["uniform"].get<double>(), models["punch"].get<double>(),
-        first["k_lsq_line_exact"].get<double>(), 100 * std::abs(first["k_central_rel_error"].get<double>()),
-        paper_k);
+        first["k_lsq_line_exact"].get<double>(), 100 * fe_err,
+        reaches ? "a criterion or load model reaches" : "no criterion, load model or FE error reaches",
+        paper_k, closest);
     summary["explanation"] = why;
   }
 
   prepare_output_dir(out_dir);
   write_json(out_dir + "/kfit.json", summary);
+  double kc_lo = 1e300, kc_hi = -1e300, kl_lo = 1e300, kl_hi = -1e300;
+  for (const auto& js : sensors) {
+    kc_lo = std::min(kc_lo, js["k_central"].get<double>());
+    kc_hi = std::max(kc_hi, js["k_central"].get<double>());
+    kl_lo = std::min(kl_lo, js["k_lsq_line"].get<double>());
+    kl_hi = std::max(kl_hi, js["k_lsq_line"].get<double>());
+  }
+  summary["k_central_range_over_sensors"] = {kc_lo, kc_hi};
+  summary["k_lsq_line_range_over_sensors"] = {kl_lo, kl_hi};
   std::printf(
-      "kfit %s: h %.3f mm, nu %.3g, %s load; %d DOFs, %.2f s (mesh %.2f, assemble %.2f, factor %.2f, adjoint "
+      "kfit %s, headline sensor #1 of %zu: h %.3f mm, nu %.3g, %s load; %d DOFs, %.2f s (mesh %.2f, assemble "
+      "%.2f, factor %.2f, adjoint "
       "%.2f)\n",
-      scene.name.c_str(), first["h_mm"].get<double>(), scene.material.nu,
+      scene.name.c_str(), sensors.size(), first["h_mm"].get<double>(), scene.material.nu,
       summary["load"].get<std::string>().c_str(), model.solver().free_dofs(), total_seconds(wall),
       wall["mesh"].get<double>(), wall["assemble"].get<double>(), wall["factor"].get<double>(),
       wall["adjoint_solves"].get<double>());
@@ -162,6 +182,9 @@ nlohmann::json kfit_stage(const Scene& scene, const AdjointSetup& setup, const s
                 first["fe_vs_exact_max_err_over_peak"]["xz"].get<double>(),
                 first["fe_vs_exact_max_err_over_peak"]["xx"].get<double>());
   std::printf("\n  %s\n", verdict);
+  if (sensors.size() > 1)
+    std::printf("  over all %zu sensors: k_central %.4f–%.4f, k_lsq_line %.4f–%.4f\n", sensors.size(), kc_lo,
+                kc_hi, kl_lo, kl_hi);
   if (summary.contains("explanation"))
     std::printf("  %s\n", summary["explanation"].get<std::string>().c_str());
   std::printf("  wrote %s/kfit.json\n", out_dir.c_str());
