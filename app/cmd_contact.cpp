@@ -52,22 +52,21 @@ nlohmann::json metrics_json(const contact::ContactMetrics& m, const ContactResul
 }
 }  // namespace
 
-nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup_ref, const std::string& out_dir,
+nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, const std::string& out_dir,
                              FrictionMode chosen) {
-  const ContactSetup* setup = &setup_ref;
-  const TetMesh& mesh = setup->mesh;
-  nlohmann::json wall = setup->wall;
+  const TetMesh& mesh = setup.mesh;
+  nlohmann::json wall = setup.wall;
   Stopwatch clock;
-  const contact::ContactSolver& solver = *setup->solver;
-  const auto excluded = contact::excluded_by_holes(setup->condensed->zone, mesh, scene.contact->holes);
+  const contact::ContactSolver& solver = *setup.solver;
+  const auto excluded = contact::excluded_by_holes(setup.condensed->zone, mesh, scene.contact->holes);
   std::map<FrictionMode, ContactResult> results;
   std::map<FrictionMode, contact::ContactMetrics> metrics;
   const Vec2 centre = contact_center(scene);
   for (FrictionMode mode :
        {FrictionMode::none, FrictionMode::static_residual, FrictionMode::uncoupled, FrictionMode::coupled}) {
     results[mode] = solver.solve(mode, excluded);
-    check_zone(scene, *setup, results[mode]);
-    metrics[mode] = contact::contact_metrics(*setup->condensed, mesh, *setup->top, results[mode], centre);
+    check_zone(scene, setup, results[mode]);
+    metrics[mode] = contact::contact_metrics(*setup.condensed, mesh, *setup.top, results[mode], centre);
   }
   wall["contact_solves"] = clock.seconds();
   const ContactResult& r = results[chosen];
@@ -75,18 +74,18 @@ nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup_ref, 
 
   // The volume solution of the chosen mode: one more solve with the contact load.
   clock = Stopwatch();
-  const auto& c = *setup->condensed;
+  const auto& c = *setup.condensed;
   const Eigen::VectorXd f = c.zone.load(r.lambda, c.direction, r.ratio);
-  const MixedSolution x = setup->model->solver().solve(f);
-  const Eigen::VectorXd reactions = setup->model->solver().reactions(x, f);
+  const MixedSolution x = setup.model->solver().solve(f);
+  const Eigen::VectorXd reactions = setup.model->solver().reactions(x, f);
   const BaseTraction base(mesh, reactions);
   // Pointwise gap at every node of the zone's faces (the constraint holds it ≥ 0 in the hat-weighted mean).
   double max_penetration = 0;
   for (int face : c.zone.faces)
     for (int k = 0; k < 6; ++k) {
       const int n = mesh.faces(face, k);
-      const double gap = setup->indenter->z_touch() - r.depth_mm +
-                         setup->indenter->phi(mesh.nodes(n, 0), mesh.nodes(n, 1)) - mesh.nodes(n, 2) -
+      const double gap = setup.indenter->z_touch() - r.depth_mm +
+                         setup.indenter->phi(mesh.nodes(n, 0), mesh.nodes(n, 1)) - mesh.nodes(n, 2) -
                          x.u[3 * n + 2];
       const bool under_hole = [&] {
         for (const Hole& h : scene.contact->holes)
@@ -110,7 +109,7 @@ nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup_ref, 
 
   clock = Stopwatch();
   prepare_output_dir(out_dir);
-  write_fields_vtu(out_dir + "/fields.vtu", mesh, setup->model->lame(), x);
+  write_fields_vtu(out_dir + "/fields.vtu", mesh, setup.model->lame(), x);
   contact::write_pressure_vtp(out_dir + "/pressure.vtp", mesh, c, r);
   std::ostringstream csv, modes;
   csv.precision(10);
@@ -160,8 +159,8 @@ nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup_ref, 
   }
   summary["coupled_minus_uncoupled"] = coupling;
   summary["zone"] = {
-      {"radius_mm", setup->zone_radius}, {"h_mm", setup->zone_h}, {"multipliers", c.zone.size()}};
-  summary["dofs"] = setup->model->solver().free_dofs();
+      {"radius_mm", setup.zone_radius}, {"h_mm", setup.zone_h}, {"multipliers", c.zone.size()}};
+  summary["dofs"] = setup.model->solver().free_dofs();
   summary["nodes"] = mesh.num_nodes();
   summary["elements"] = mesh.num_tets();
   summary["block_solves"] = c.block_solves;
@@ -187,7 +186,7 @@ nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup_ref, 
   std::printf(
       "  %d DOFs, %d multipliers; mesh %.2f s, assemble %.2f s, factor %.2f s, condense %.2f s (%d rhs), "
       "contact %.3f s; peak %.0f MB\n",
-      setup->model->solver().free_dofs(), c.zone.size(), wall["mesh"].get<double>(),
+      setup.model->solver().free_dofs(), c.zone.size(), wall["mesh"].get<double>(),
       wall["assemble"].get<double>(), wall["factor"].get<double>(), wall["condense"].get<double>(),
       c.block_solves, wall["contact_solves"].get<double>(), peak_rss_mb());
   std::printf("  wrote %s/pressure.vtp, fields.vtu, sensors.csv, modes.csv, summary.json\n", out_dir.c_str());

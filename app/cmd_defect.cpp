@@ -23,20 +23,19 @@
 
 namespace skinfem::app {
 
-DefectStage defect_stage(const Scene& scene, const ContactSetup& setup_ref, const std::string& out_dir) {
-  const ContactSetup* setup = &setup_ref;
+DefectStage defect_stage(const Scene& scene, const ContactSetup& setup, const std::string& out_dir) {
   const HoleSweep& sweep = *scene.contact->sweep;
-  nlohmann::json wall = setup->wall;
+  nlohmann::json wall = setup.wall;
   const std::vector<std::pair<std::string, FrictionMode>> cases{{"static", FrictionMode::static_residual},
                                                                 {"sliding", FrictionMode::coupled}};
   std::vector<contact::SweepResult> results;
   std::vector<std::vector<contact::ContactResult>> frames(cases.size());
-  for (const auto& c : cases) check_zone(scene, *setup, setup->solver->solve(c.second));
+  for (const auto& c : cases) check_zone(scene, setup, setup.solver->solve(c.second));
   for (size_t ci = 0; ci < cases.size(); ++ci) {
     const auto& [name, mode] = cases[ci];
     Stopwatch clock;
     results.push_back(contact::hole_sweep(
-        *setup->solver, setup->mesh, sweep, mode, [&](int i, const contact::ContactResult& r) {
+        *setup.solver, setup.mesh, sweep, mode, [&](int i, const contact::ContactResult& r) {
           frames[ci].push_back(r);
           if ((i + 1) % 50 == 0 || i + 1 == sweep.positions) {
             char buf[128];
@@ -56,7 +55,7 @@ DefectStage defect_stage(const Scene& scene, const ContactSetup& setup_ref, cons
     for (size_t i = 0; i < frames[ci].size(); ++i) {
       char file[64];
       std::snprintf(file, sizeof file, "%s_%03zu.vtp", cases[ci].first.c_str(), i);
-      contact::write_pressure_vtp(out_dir + "/frames/" + file, setup->mesh, *setup->condensed, frames[ci][i]);
+      contact::write_pressure_vtp(out_dir + "/frames/" + file, setup.mesh, *setup.condensed, frames[ci][i]);
       pvd << "<DataSet timestep=\"" << results[ci].centers[i][0] << "\" part=\"" << ci << "\" file=\"frames/"
           << file << "\"/>\n";
     }
@@ -74,7 +73,7 @@ DefectStage defect_stage(const Scene& scene, const ContactSetup& setup_ref, cons
             << 1e3 * res.varsigma(i, 2 * k) << "," << 1e3 * res.varsigma(i, 2 * k + 1) << "\n";
     nlohmann::json c;
     c["friction"] = contact::to_string(res.mode);
-    c["ratio"] = setup->solver->ratio(res.mode);
+    c["ratio"] = setup.solver->ratio(res.mode);
     c["seconds"] = res.seconds;
     c["ms_per_position"] = 1e3 * res.seconds / sweep.positions;
     c["max_complementarity"] = res.max_complementarity;
@@ -102,17 +101,16 @@ DefectStage defect_stage(const Scene& scene, const ContactSetup& setup_ref, cons
   summary["hole_diameter_mm"] = sweep.hole_diameter;
   summary["from_mm"] = {sweep.from[0], sweep.from[1]};
   summary["to_mm"] = {sweep.to[0], sweep.to[1]};
-  summary["dofs"] = setup->model->solver().free_dofs();
-  summary["multipliers"] = setup->condensed->zone.size();
-  summary["block_solves"] = setup->condensed->block_solves;
+  summary["dofs"] = setup.model->solver().free_dofs();
+  summary["multipliers"] = setup.condensed->zone.size();
+  summary["block_solves"] = setup.condensed->block_solves;
   summary["wall_s"] = wall;
   summary["wall_total_s"] = total_seconds(wall);
   summary["peak_rss_mb"] = peak_rss_mb();
   write_json(out_dir + "/summary.json", summary);
 
   std::printf("defect %s: %zu cases x %d positions; %d DOFs, %d multipliers\n", scene.name.c_str(),
-              cases.size(), sweep.positions, setup->model->solver().free_dofs(),
-              setup->condensed->zone.size());
+              cases.size(), sweep.positions, setup.model->solver().free_dofs(), setup.condensed->zone.size());
   std::printf("  mesh %.2f s, assemble %.2f s, factor %.2f s, condense %.2f s; sweeps",
               wall["mesh"].get<double>(), wall["assemble"].get<double>(), wall["factor"].get<double>(),
               wall["condense"].get<double>());
