@@ -58,7 +58,16 @@ int main(int argc, char** argv) {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return cli.exit(e);  // --help
-    std::cerr << "skinfem: " << e.what() << std::endl;
+    std::string names;
+    bool known = false;
+    for (const auto* sub : cli.get_subcommands({})) {
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+      known = known || (argc > 1 && sub->get_name() == argv[1]);
+    }
+    if (argc > 1 && argv[1][0] != '-' && !known)
+      std::cerr << "skinfem: unknown subcommand '" << argv[1] << "'; one of: " << names << std::endl;
+    else
+      std::cerr << "skinfem: " << e.what() << std::endl;
     return 2;
   }
   try {

@@ -35,5 +35,6 @@ sed 's/{"type": "plane"}/{"type": "sphere", "R": 50, "center": [0, 0]}, "holes":
 check hole_off_skin 'contact.holes.0. = .*hole 1 of 1.*off the skin' "$skinfem" mesh "$tmp/hole.json" --out "$tmp/out"
 sed 's/{"type": "plane"}/{"type": "sphere", "R": 50, "center": [0, 0]}/' "$tmp/plane.json" >"$tmp/zone.json"
 check zone_at_side 'contact.force = 1: .*would reach the truncated side' "$skinfem" mesh "$tmp/zone.json" --out "$tmp/out"
+check unknown_subcommand "unknown subcommand 'frobnicate'; one of: mesh" "$skinfem" frobnicate "$tmp/nu.json" --out "$tmp/out"
 if [ $fail -eq 0 ]; then echo "8 passed, 0 failed"; fi
 exit $fail
