@@ -25,7 +25,8 @@ std::unique_ptr<AdjointSetup> adjoint_setup(const Scene& scene, std::shared_ptr<
 
 // Skin thickness above a sensor (exact shapes) or the scene's nominal thickness.
 double thickness_at(const Scene& scene, const Vec2& sensor);
-// Half-width of the calibration scan: at least 4h, more if the scene asks.
-double scan_half_width(const Scene& scene, double h);
+// Half-width of the calibration scan along x through a sensor: calibration.scan_half_width if given, else 4h,
+// shortened so that the loaded disc stays on the skin's footprint on both sides (flat and cap skins).
+double scan_half_width(const Scene& scene, double h, const Vec2& sensor);
 
 }  // namespace skinfem::app

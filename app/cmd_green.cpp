@@ -5,7 +5,7 @@
 //
 // The scene's calibration load (a disc of calibration.punch_diameter with the rigid-punch profile,
 // pressed normally or sheared along +x) is scanned along x through each sensor (y offset 0) at
-// calibration.spacing over |offset| ≤ max(4h, calibration.scan_half_width).
+// calibration.spacing over |offset| ≤ calibration.scan_half_width (default 4h), kept on the skin's footprint.
 // Writes DIR/green.csv (sensor,component,offset_x_mm,offset_y_mm,g_point_per_mm2,g_disc_per_mm2, and
 // g_exact_point_per_mm2, g_exact_disc_per_mm2 for flat layers: the exact layer values), DIR/green_maps.vtp
 // (top surface; point data g_<ab>_sensorNN_per_mm2: the sensor-disc reading for a unit point force at that
@@ -55,7 +55,7 @@ nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const 
   for (size_t s = 0; s < scene.sensors.positions.size(); ++s) {
     const auto& pos = scene.sensors.positions[s];
     const double h = thickness_at(scene, pos);
-    const auto prof = green::scan_profile(fe, s, LayerLoad::punch, radius, scan_half_width(scene, h),
+    const auto prof = green::scan_profile(fe, s, LayerLoad::punch, radius, scan_half_width(scene, h, pos),
                                           scene.calibration.spacing);
     std::vector<GreenSample> exact, exact_disc;
     if (flat) {
@@ -70,7 +70,7 @@ nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const 
         if (flat) csv << "," << green::component(exact[i], c) << "," << green::component(exact_disc[i], c);
         csv << "\n";
       }
-    nlohmann::json js = {{"sensor", s + 1}, {"h_mm", h}};
+    nlohmann::json js = {{"sensor", s + 1}, {"h_mm", h}, {"scan_half_width_mm", prof.offset_x.back()}};
     if (flat) {
       const auto err = green::max_error_over_peak(prof.disc, exact_disc);
       for (size_t c = 0; c < 4; ++c)

@@ -53,12 +53,13 @@ nlohmann::json kfit_stage(const Scene& scene, const AdjointSetup& setup, const s
     const auto& pos = scene.sensors.positions[s];
     const double h = thickness_at(scene, pos);
     const auto prof =
-        green::scan_profile(fe, s, load, radius, scan_half_width(scene, h), scene.calibration.spacing);
+        green::scan_profile(fe, s, load, radius, scan_half_width(scene, h, pos), scene.calibration.spacing);
     const green::KReport fe_k = green::fit_profile(prof.offset_x, prof.point, h);
     nlohmann::json js = {{"sensor", s + 1},
                          {"x_mm", pos[0]},
                          {"y_mm", pos[1]},
                          {"h_mm", h},
+                         {"scan_half_width_mm", prof.offset_x.back()},
                          {"k_central", fe_k.k_central},
                          {"k_lsq_line", fe_k.k_lsq_line},
                          {"components", components_json(fe_k)}};
