@@ -99,7 +99,7 @@ struct Loads {
 // diameter, unit total force, scanned along x through the sensors.
 struct Calibration {
   double punch_diameter = 0.5;  // mm
-  double scan_half_width = 0;   // mm, |offset| range; 0 → 4 h
+  double scan_half_width = 0;   // mm, |offset| range; 0 → 4 h; kept on the skin (app/adjoint_setup.hpp)
   double spacing = 0.05;        // mm
 };
 
