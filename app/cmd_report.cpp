@@ -258,7 +258,7 @@ void write_index(const std::string& dir, const Scene& scene, const nlohmann::jso
        {"mesh/mesh.vtu", "mesh/boundary.vtu", "green/green_maps.vtp", "green/green.csv", "kfit/kfit.json",
         "contact/pressure.vtp", "contact/fields.vtu", "contact/modes.csv", "defect/defect.pvd",
         "defect/defect.csv", "crosscheck/readings.csv", "crosscheck/defect.csv", "crosscheck/pressure.csv",
-        "crosscheck/attribution.csv", "report.json"})
+        "crosscheck/attribution.csv", "study/chain_study.csv", "report.json"})
     if (fs::exists(dir + "/" + f)) h << "<li><a href=\"" << f << "\">" << f << "</a></li>\n";
   h << "</ul></body></html>\n";
   write_text_atomic(dir + "/index.html", h.str());

@@ -17,5 +17,6 @@ int run_contact(const Scene& scene, const std::string& out_dir, const std::strin
 int run_defect(const Scene& scene, const std::string& out_dir);
 int run_report(const Scene& scene, const std::string& out_dir);
 int run_study(const Scene& scene, const std::string& out_dir, const std::vector<double>& scales);
+int run_chain_study(const Scene& scene, const std::string& out_dir, const std::vector<double>& scales);
 
 }  // namespace skinfem::app

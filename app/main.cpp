@@ -24,6 +24,10 @@ int main(int argc, char** argv) {
   auto* study = cli.add_subcommand(
       "study", "refinement study of the scene's load with both solvers (study.json, study.csv)");
   std::vector<double> scales{2.0, 1.41, 1.0};
+  bool chain = false;
+  study->add_flag(
+      "--chain", chain,
+      "the whole chain (Green maps and k, contact, hole sweep) per level: chain_study.csv, .json");
   study->add_option("--scales", scales, "factors applied to h_min and h_max, coarse to fine")
       ->delimiter(',')
       ->check(CLI::PositiveNumber)
@@ -80,7 +84,9 @@ int main(int argc, char** argv) {
     if (kfit->parsed()) return skinfem::app::run_kfit(scene, out_dir, load_name);
     if (contact_cmd->parsed()) return skinfem::app::run_contact(scene, out_dir, friction);
     if (defect->parsed()) return skinfem::app::run_defect(scene, out_dir);
-    if (study->parsed()) return skinfem::app::run_study(scene, out_dir, scales);
+    if (study->parsed())
+      return chain ? skinfem::app::run_chain_study(scene, out_dir, scales)
+                   : skinfem::app::run_study(scene, out_dir, scales);
     if (report->parsed())
       return skinfem::app::run_report(scene, report->count("--out") ? out_dir : "out/" + scene.name);
   } catch (const skinfem::SceneError& e) {

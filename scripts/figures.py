@@ -4,7 +4,7 @@
 #   $ /usr/bin/python3 scripts/figures.py out/candelier2011
 #   figures: wrote figures/fig1_calibration.png
 #   ...
-#   figures: skipped pareto.png: missing study/study.csv
+#   figures: skipped pareto.png: missing study/chain_study.csv
 #   figures: 6 written, 1 skipped
 #
 # Needs only the standard library, numpy and matplotlib (Debian's /usr/bin/python3; Agg backend). No
@@ -20,7 +20,7 @@
 #   crosscheck/defect.csv    case,variant,u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa; case in static, sliding.
 #   crosscheck/pressure.csv  x_mm,p_hertz_halfspace_kPa,p_layer_exact_kPa,p_fe_frictionless_kPa,
 #                            p_fe_coupled_kPa,q_fe_coupled_kPa; an empty cell (not x_mm) = no value there.
-#   study/study.csv          stage,level,dofs,seconds,error (error relative, > 0; seconds > 0). Optional.
+#   study/chain_study.csv    stage,level,dofs,seconds,error (error relative, > 0; seconds > 0). Optional.
 #   Sensors are numbered 1, 2, ...; extra columns are ignored.
 #
 # Outputs (DIR/figures/, 120 dpi), each written only if all its inputs exist:
@@ -36,7 +36,7 @@
 #                            half-space for both k (and the exact layer if given), and (model − FE) / FE peak.
 #   k_sweep.png              kfit/k_sweep.csv (parameter,value,k_central,k_lsq_line), kfit.json: the exact
 #                            layer's k as one protocol reading changes at a time, against the paper's k ± 0.01.
-#   pareto.png               study.csv: error vs seconds (log-log), one series per stage, points labelled by DOFs.
+#   pareto.png               chain_study.csv (skinfem study --chain --out DIR/study): error vs seconds (log-log), one series per stage, points labelled by DOFs.
 # Each PNG is written to a hidden temporary name in DIR/figures and renamed into place. A figure whose inputs
 # are missing prints `figures: skipped <name>.png: missing <file>`. The PNGs above are deleted first,
 # so DIR/figures never keeps one from an earlier run that this run skipped or did not reach.
@@ -437,7 +437,7 @@ def k_sweep(d):
 
 
 def pareto(d):
-    t = read_csv(os.path.join(d, "study/study.csv"),
+    t = read_csv(os.path.join(d, "study/chain_study.csv"),
                  {"stage": text, "level": number, "dofs": integer, "seconds": positive, "error": positive})
     fig, ax = plt.subplots(figsize=(10, 7))
     markers = "osD^vPX*h"
@@ -473,7 +473,7 @@ FIGURES = [
     ("pressure_profiles.png", ("crosscheck/pressure.csv",), pressure_profiles),
     ("green_vs_halfspace.png", ("green/green.csv", "kfit/kfit.json"), green_vs_halfspace),
     ("k_sweep.png", ("kfit/k_sweep.csv", "kfit/kfit.json"), k_sweep),
-    ("pareto.png", ("study/study.csv",), pareto),
+    ("pareto.png", ("study/chain_study.csv",), pareto),
 ]
 
 
