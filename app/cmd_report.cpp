@@ -12,6 +12,8 @@
 // peak_shift_mm,shape_error). Then figures/*.png (scripts/figures.py, matplotlib) and DIR/report.json (the
 // headline numbers with units, wall seconds per stage, peak memory) and DIR/index.html (figures, tables,
 // links to every VTK file).
+#include <sys/wait.h>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -328,7 +330,8 @@ int run_report(const Scene& scene, const std::string& out_dir) {
   const std::string script = std::string(SKINFEM_SOURCE_DIR) + "/scripts/figures.py";
   const std::string cmd = "/usr/bin/python3 '" + script + "' '" + out_dir + "' 1>&2";
   progress("figures: " + script);
-  const int rc = std::system(cmd.c_str());
+  const int status = std::system(cmd.c_str());
+  const int rc = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   report["figures_exit_code"] = rc;
   wall["figures"] = clock.seconds();
 
