@@ -14,6 +14,7 @@
 // links to every VTK file).
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -21,6 +22,7 @@
 #include <optional>
 #include <sstream>
 
+#include "app/chain_level.hpp"
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "app/stages.hpp"
@@ -137,12 +139,15 @@ nlohmann::json front_sensor_answer(const validation::Crosscheck& x, const Sensor
 
 // Which single change of the calibration protocol gives the paper's k: the exact layer's k under each
 // reading (validation/k_sweep.hpp), written to DIR/k_sweep.csv, and the readings within ±0.01 of it.
-nlohmann::json k_paper_answer(const Scene& scene, double h, const std::string& dir) {
+// mesh_rows: the FE k of sensor #1 per mesh scale (parameter mesh_scale), the sweep's mesh-resolution axis.
+nlohmann::json k_paper_answer(const Scene& scene, double h,
+                              const std::vector<validation::KSweepPoint>& mesh_rows, const std::string& dir) {
   validation::KProtocol base;
   base.h = h;
   base.nu = scene.material.nu;
   base.punch_diameter = scene.calibration.punch_diameter;
-  const auto pts = validation::k_sweep(base);
+  auto pts = validation::k_sweep(base);
+  pts.insert(pts.end(), mesh_rows.begin(), mesh_rows.end());
   std::ostringstream csv;
   csv.precision(10);
   csv << "parameter,value,k_central,k_lsq_line\n";
@@ -171,12 +176,59 @@ nlohmann::json k_paper_answer(const Scene& scene, double h, const std::string& d
                  " at " + param + " = " + fmt("%.3g", v);
         j["crossings"].push_back({{"parameter", param}, {"criterion", crit}, {"value", v}});
       }
-  j["answer"] = "Exact layer (h " + fmt("%.3g", h) + " mm) with one protocol reading changed at a time: " +
+  j["answer"] = "Exact layer (h " + fmt("%.3g", h) + " mm) with one protocol reading changed at a time" +
+                (mesh_rows.empty() ? std::string() : ", and the FE mesh scale") + ": " +
                 (near.empty() ? std::string("no reading in the sweep gives k within 0.01 of ") +
                                     fmt("%.2f", green::kPaperK)
                               : "within 0.01 of " + fmt("%.2f", green::kPaperK) + ": " + near) +
                 (cross.empty() ? std::string("; no parameter's range crosses it") : "; crossings: " + cross);
   return j;
+}
+
+// The chain's quantities with their error bars (app/chain_level.hpp), in display units.
+nlohmann::json error_bars(const std::vector<ChainError>& errors, const std::vector<double>& coarse_scales) {
+  struct Display {
+    const char* name;
+    const char* what;
+    const char* unit;
+    double factor;
+  };
+  const Display table[] = {
+      {"k_central", "k, central criterion (sensor #1)", "", 1},
+      {"k_lsq_line", "k, line fit (sensor #1)", "", 1},
+      {"contact_radius", "contact radius (coupled friction)", "mm", 1},
+      {"contact_p0", "central pressure (coupled friction)", "kPa", 1e3},
+      {"indentation", "indentation (coupled friction)", "um", 1e3},
+      {"hole_signal", "largest sliding |varsigma_z| over sensors and hole positions", "kPa", 1e3}};
+  std::string levels;
+  for (double s : coarse_scales) levels += fmt("%g", s) + ", ";
+  levels += "1";
+  nlohmann::json j = nlohmann::json::array();
+  for (const ChainError& e : errors)
+    for (const Display& d : table)
+      if (e.name == d.name)
+        j.push_back(
+            {{"quantity", e.name},
+             {"what", d.what},
+             {"unit", d.unit},
+             {"value", d.factor * e.value},
+             {"error", d.factor * e.error},
+             {"relative_error", e.error / std::abs(e.value)},
+             {"method", e.asymptotic ? "|value - Richardson limit| over mesh scales " + levels +
+                                           ", observed order " + fmt("%.2f", e.order)
+                                     : "last change between mesh scales " + fmt("%g", coarse_scales.back()) +
+                                           " and 1; no asymptotic regime over " + levels +
+                                           ", so an order of magnitude only"}});
+  return j;
+}
+
+// "value ± error" with the value rounded to the error's second significant digit.
+std::string with_error(double value, double error) {
+  if (!(error > 0)) return fmt("%.6g", value);
+  const int decimals = std::max(0, 1 - static_cast<int>(std::floor(std::log10(error))));
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%.*f +- %.*f", decimals, value, decimals, error);
+  return buf;
 }
 
 std::string html_escape(const std::string& s) {
@@ -196,9 +248,20 @@ void write_index(const std::string& dir, const Scene& scene, const nlohmann::jso
        "td,th{border:1px solid #bbb;padding:2px "
        "6px;text-align:right}img{max-width:100%}</style></head><body>\n";
   h << "<h1>skinfem report: " << html_escape(scene.name) << "</h1>\n<p>Units: mm, N, MPa (stresses in kPa). "
-    << report["dofs"].get<int>() << " DOFs, one factorization; total "
+    << report["dofs"].get<int>() << " DOFs, one factorization for the chain"
+    << (report.contains("error_bars") ? " (and one per coarser level for the error bars)" : "") << "; total "
     << fmt("%.1f", report["wall_total_s"].get<double>()) << " s, peak memory "
     << fmt("%.0f", report["peak_rss_mb"].get<double>()) << " MB.</p>\n";
+  if (report.contains("error_bars")) {
+    h << "<h2>Headline numbers and their discretization error</h2><table><tr><th>quantity</th><th>value</th>"
+         "<th>error</th><th>unit</th><th>how the error is estimated</th></tr>\n";
+    for (const auto& e : report["error_bars"])
+      h << "<tr><td style=\"text-align:left\">" << html_escape(e["what"].get<std::string>()) << "</td><td>"
+        << html_escape(with_error(e["value"].get<double>(), e["error"].get<double>())) << "</td><td>"
+        << e["unit"].get<std::string>() << "</td><td style=\"text-align:left\">"
+        << html_escape(e["method"].get<std::string>()) << "</td></tr>\n";
+    h << "</table>\n";
+  }
   h << "<h2>Time per stage</h2><table><tr><th>stage</th><th>seconds</th></tr>\n";
   for (const auto& [stage, s] : report["wall_s"].items())
     h << "<tr><td style=\"text-align:left\">" << stage << "</td><td>" << fmt("%.2f", s.get<double>())
@@ -267,25 +330,28 @@ void write_index(const std::string& dir, const Scene& scene, const nlohmann::jso
 }
 }  // namespace
 
-int run_report(const Scene& scene, const std::string& out_dir) {
+int run_report(const Scene& scene, const std::string& out_dir, const std::vector<double>& error_scales) {
+  if (error_scales.size() == 1)
+    throw SceneError("--error-scales: one coarser level given; Richardson needs two (e.g. 2,1.41)");
+  for (double e : error_scales)
+    if (!(e > 1))
+      throw SceneError("--error-scales: " + fmt("%g", e) +
+                       ": the error levels are coarser than the scene, so each scale must be > 1");
   check_output_dir(out_dir);
   Stopwatch total;
   nlohmann::json report, wall;
-  const auto skin = skin_setup(scene);
+  auto skin = skin_setup(scene);
   wall = skin->wall;
+  report["dofs"] = skin->model->solver().free_dofs();
   report["mesh"] = mesh_stage(scene, skin->mesh, skin->wall["mesh"].get<double>(), out_dir + "/mesh");
 
   Stopwatch clock;
-  const auto adjoints = adjoint_setup(scene, skin);
+  auto adjoints = adjoint_setup(scene, skin);
   wall["green_adjoints"] = adjoints->wall["adjoint_solves"];
   clock = Stopwatch();
   report["green"] = green_stage(scene, *adjoints, out_dir + "/green");
   report["kfit"] = kfit_stage(scene, *adjoints, out_dir + "/kfit", "punch");
   wall["green_kfit_profiles"] = clock.seconds();
-  clock = Stopwatch();
-  progress("k sweep: which protocol reading gives the paper's k");
-  report["k_paper"] = k_paper_answer(scene, report["kfit"]["h_mm"].get<double>(), out_dir + "/kfit");
-  wall["k_sweep"] = clock.seconds();
 
   std::unique_ptr<ContactSetup> contact;
   std::optional<DefectStage> defect;
@@ -326,6 +392,32 @@ int run_report(const Scene& scene, const std::string& out_dir) {
     }
   }
 
+  // Error bars: the chain's headline quantities on this mesh and on coarser ones (every mesh size scaled),
+  // Richardson through the three finest. The coarse levels come after this level's memory is released.
+  std::vector<validation::KSweepPoint> mesh_rows;
+  if (!error_scales.empty()) {
+    clock = Stopwatch();
+    std::vector<ChainLevel> levels{chain_values(scene, *adjoints, contact.get())};
+    contact.reset();
+    adjoints.reset();
+    skin.reset();
+    std::vector<double> scales = error_scales;
+    std::sort(scales.begin(), scales.end(), std::greater<>());
+    for (size_t i = 0; i < scales.size(); ++i) {
+      progress("error bars: level " + std::to_string(i + 1) + " of " + std::to_string(scales.size()) +
+               " (mesh sizes x" + fmt("%g", scales[i]) + ")");
+      levels.insert(levels.end() - 1, chain_level(scene, scales[i]));
+    }
+    report["error_bars"] = error_bars(write_chain_study(scene, levels, out_dir + "/study"), scales);
+    for (const ChainLevel& l : levels) mesh_rows.push_back({"mesh_scale", l.scale, l.value[0], l.value[1]});
+    wall["error_levels"] = clock.seconds();
+  }
+  clock = Stopwatch();
+  progress("k sweep: which protocol reading gives the paper's k");
+  report["k_paper"] =
+      k_paper_answer(scene, report["kfit"]["h_mm"].get<double>(), mesh_rows, out_dir + "/kfit");
+  wall["k_sweep"] = clock.seconds();
+
   clock = Stopwatch();
   const std::string script = std::string(SKINFEM_SOURCE_DIR) + "/scripts/figures.py";
   const std::string cmd = "/usr/bin/python3 '" + script + "' '" + out_dir + "' 1>&2";
@@ -336,15 +428,24 @@ int run_report(const Scene& scene, const std::string& out_dir) {
   wall["figures"] = clock.seconds();
 
   report["scene"] = scene_json(scene);
-  report["dofs"] = skin->model->solver().free_dofs();
   report["wall_s"] = wall;
   report["wall_total_s"] = total.seconds();
   report["peak_rss_mb"] = peak_rss_mb();
   report["units"] = {{"length", "mm"}, {"force", "N"}, {"stress", "kPa in tables and CSV, MPa in the model"}};
   write_json(out_dir + "/report.json", report);
   write_index(out_dir, scene, report, x ? &*x : nullptr);
-  std::printf("report %s: %d DOFs, one factorization; %.1f s, peak %.0f MB\n", scene.name.c_str(),
-              report["dofs"].get<int>(), total.seconds(), peak_rss_mb());
+  std::printf("report %s: %d DOFs, one factorization for the chain%s; %.1f s, peak %.0f MB\n",
+              scene.name.c_str(), report["dofs"].get<int>(),
+              report.contains("error_bars")
+                  ? (" and " + std::to_string(error_scales.size()) + " coarser for the error bars").c_str()
+                  : "",
+              total.seconds(), peak_rss_mb());
+  if (report.contains("error_bars"))
+    for (const auto& e : report["error_bars"])
+      std::printf("  %s: %s%s%s (%s)\n", e["what"].get<std::string>().c_str(),
+                  with_error(e["value"].get<double>(), e["error"].get<double>()).c_str(),
+                  e["unit"].get<std::string>().empty() ? "" : " ", e["unit"].get<std::string>().c_str(),
+                  e["method"].get<std::string>().c_str());
   std::printf("  %s\n", report["k_paper"]["answer"].get<std::string>().c_str());
   if (report.contains("front_sensors") && report["front_sensors"].contains("answer"))
     std::printf("  %s\n", report["front_sensors"]["answer"].get<std::string>().c_str());

@@ -32,7 +32,8 @@ int run_solve(const Scene& scene, const std::string& out_dir, SolverKind solver)
   wall["mesh"] = clock.seconds();
 
   progress("assembling and factoring (" + std::string(to_string(solver)) + ")");
-  const ElasticModel model(mesh, scene.material, scene.geometry.side, scene.loads.punches, {solver});
+  const ElasticModel model(mesh, scene.material, scene.geometry.side, scene.loads.punches,
+                           {solver, 1e-10, {}});
   wall["assemble"] = model.assemble_seconds();
   wall["factor"] = model.solver().factor_seconds();
 

@@ -15,7 +15,9 @@ int run_green(const Scene& scene, const std::string& out_dir);
 int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& load);
 int run_contact(const Scene& scene, const std::string& out_dir, const std::string& friction);
 int run_defect(const Scene& scene, const std::string& out_dir);
-int run_report(const Scene& scene, const std::string& out_dir);
+// error_scales: coarser mesh levels (every size × s, s > 1) for the headline numbers' error bars; empty:
+// none.
+int run_report(const Scene& scene, const std::string& out_dir, const std::vector<double>& error_scales);
 int run_study(const Scene& scene, const std::string& out_dir, const std::vector<double>& scales);
 int run_chain_study(const Scene& scene, const std::string& out_dir, const std::vector<double>& scales);
 

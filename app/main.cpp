@@ -52,6 +52,14 @@ int main(int argc, char** argv) {
   auto* report = cli.add_subcommand(
       "report",
       "the whole chain on one factorization and the paper's model against it (index.html, report.json)");
+  std::vector<double> error_scales{2.0, 1.41};
+  bool no_error_bars = false;
+  report
+      ->add_option("--error-scales", error_scales,
+                   "coarser levels (mesh sizes x s, s > 1) for the headline numbers' error bars")
+      ->delimiter(',')
+      ->capture_default_str();
+  report->add_flag("--no-error-bars", no_error_bars, "skip the coarser levels (no error bars)");
   for (auto* sub : {mesh, solve, study, kfit, green_cmd, contact_cmd, defect, report}) {
     sub->add_option("scene", scene_path, "scene JSON file")->required();
     sub->add_option("--out", out_dir,
@@ -88,7 +96,8 @@ int main(int argc, char** argv) {
       return chain ? skinfem::app::run_chain_study(scene, out_dir, scales)
                    : skinfem::app::run_study(scene, out_dir, scales);
     if (report->parsed())
-      return skinfem::app::run_report(scene, report->count("--out") ? out_dir : "out/" + scene.name);
+      return skinfem::app::run_report(scene, report->count("--out") ? out_dir : "out/" + scene.name,
+                                      no_error_bars ? std::vector<double>{} : error_scales);
   } catch (const skinfem::SceneError& e) {
     std::cerr << "skinfem: " << e.what() << std::endl;
     return 2;

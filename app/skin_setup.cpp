@@ -12,8 +12,19 @@ std::shared_ptr<Skin> skin_setup(const Scene& scene) {
   s->mesh = build_mesh(scene);
   s->wall["mesh"] = clock.seconds();
   progress("assembling and factoring (" + std::to_string(s->mesh.num_nodes()) + " nodes)");
-  s->model =
-      std::make_unique<ElasticModel>(s->mesh, scene.material, scene.geometry.side, std::vector<Punch>{});
+  ModelOptions options;
+  options.factor_progress = [](const FactorStatus& f) {
+    char buf[160];
+    if (f.fraction < 1)
+      std::snprintf(buf, sizeof buf, "factoring: ~%.0f %% (%.0f s of ~%.0f s estimated from %.3g flops)",
+                    100 * f.fraction, f.elapsed_s, f.estimated_s, f.estimated_flops);
+    else
+      std::snprintf(buf, sizeof buf, "factoring: done in %.1f s (%.3g flops, estimated %.0f s)", f.elapsed_s,
+                    f.estimated_flops, f.estimated_s);
+    progress(buf);
+  };
+  s->model = std::make_unique<ElasticModel>(s->mesh, scene.material, scene.geometry.side,
+                                            std::vector<Punch>{}, options);
   s->wall["assemble"] = s->model->assemble_seconds();
   s->wall["factor"] = s->model->solver().factor_seconds();
   char buf[128];

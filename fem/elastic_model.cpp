@@ -50,7 +50,8 @@ ElasticModel::ElasticModel(const TetMesh& mesh, const Material& material, SideCo
     for (int i : punch_nodes_.back()) fixed_[3 * i + 2] = true;
   }
   top_index_ = std::make_unique<PlanarFaceIndex>(mesh, kTop);
-  solver_ = std::make_unique<MixedSolver>(matrices_, lame_, fixed_, options.solver, options.tolerance);
+  solver_ = std::make_unique<MixedSolver>(matrices_, lame_, fixed_, options.solver, options.tolerance,
+                                          options.factor_progress);
 }
 
 LoadCaseResult ElasticModel::solve(const Eigen::VectorXd& f, const std::vector<Punch>& punches) const {

@@ -17,6 +17,7 @@ namespace skinfem {
 struct ModelOptions {
   SolverKind solver = SolverKind::direct_ldlt;
   double tolerance = 1e-10;
+  FactorProgress factor_progress;  // hears from a long factorization (fem/factor_progress.hpp); may be empty
 };
 
 // The nodes a rigid flat punch holds: top corner nodes with (x, y) within its radius and the mid-edge

@@ -58,7 +58,7 @@ struct MixedSolver::Impl {
 };
 
 MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const std::vector<bool>& fixed,
-                         SolverKind kind, double tolerance)
+                         SolverKind kind, double tolerance, const FactorProgress& progress)
     : impl_(new Impl(matrices)), kind_(kind) {
   const auto start = std::chrono::steady_clock::now();
   Impl& s = *impl_;
@@ -109,7 +109,7 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
     SparseMatrixd K(s.nf + s.np, s.nf + s.np);
     K.setFromTriplets(t.begin(), t.end());
     try {
-      s.ldlt = std::make_unique<MumpsLdlt>(K);
+      s.ldlt = std::make_unique<MumpsLdlt>(K, progress);
     } catch (const std::runtime_error& e) {
       throw SolverError(std::string("cannot factor the saddle-point matrix: ") + e.what());
     }
@@ -118,6 +118,8 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
 }
 
 MixedSolver::~MixedSolver() = default;
+
+double MixedSolver::factor_flops() const { return impl_->ldlt ? impl_->ldlt->estimated_flops() : 0; }
 
 int MixedSolver::free_dofs() const { return impl_->nf + impl_->np; }
 int MixedSolver::pinned_pressures() const { return impl_->pinned_pressures; }

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "fem/assembly.hpp"
+#include "fem/factor_progress.hpp"
 
 namespace skinfem {
 
@@ -36,9 +37,10 @@ struct MixedSolution {
 
 class MixedSolver {
  public:
-  // fixed: 3N flags, true where the displacement DOF is prescribed. Factors immediately.
+  // fixed: 3N flags, true where the displacement DOF is prescribed. Factors immediately; progress (may be
+  // empty) hears from the direct_ldlt factorization every few seconds.
   MixedSolver(const MixedMatrices& matrices, const Lame& lame, const std::vector<bool>& fixed,
-              SolverKind kind, double tolerance = 1e-10);
+              SolverKind kind, double tolerance = 1e-10, const FactorProgress& progress = {});
   ~MixedSolver();
 
   // f: 3N load vector (entries at fixed DOFs ignored); u_fixed: 3N prescribed values (only fixed DOFs
@@ -55,7 +57,8 @@ class MixedSolver {
   Eigen::VectorXd reactions(const MixedSolution& x, const Eigen::VectorXd& f) const;
 
   double factor_seconds() const { return factor_seconds_; }
-  int free_dofs() const;  // free displacement DOFs + pressure DOFs
+  double factor_flops() const;  // the direct factorization's estimated flops (0 for schur_cg)
+  int free_dofs() const;        // free displacement DOFs + pressure DOFs
   // Pressures coupled to no free displacement (all-held corner tets at ν = 0.5), fixed at 0.
   int pinned_pressures() const;
   SolverKind kind() const { return kind_; }

@@ -2,10 +2,17 @@
 
 #include <dmumps_c.h>
 
+#include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <exception>
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
+
+#include "fem/dense_rate.hpp"
 
 namespace skinfem {
 
@@ -29,7 +36,58 @@ struct MumpsLdlt::Impl {
   }
 };
 
-MumpsLdlt::MumpsLdlt(const Eigen::SparseMatrix<double>& K) : impl_(new Impl) {
+namespace {
+// MUMPS's factorization rate over Eigen's single-threaded dense Cholesky rate, measured on the 2-core
+// development machine: 1.5 on the flat layer (1.7e11 flops, 6.7 s), 2.0 on the paper's cap (7.1e11, 20 s).
+constexpr double kMumpsOverDenseRate = 1.75;
+
+// Calls `progress` every `every_s` seconds from its own thread until destroyed.
+class Watcher {
+ public:
+  Watcher(const FactorProgress& progress, double flops, double every_s)
+      : progress_(progress), start_(std::chrono::steady_clock::now()) {
+    status_.estimated_flops = flops;
+    status_.estimated_s = flops / (kMumpsOverDenseRate * dense_flop_rate());
+    if (progress_) thread_ = std::thread([this, every_s] { run(every_s); });
+  }
+  ~Watcher() {
+    {
+      std::lock_guard<std::mutex> lock(m_);
+      done_ = true;
+    }
+    cv_.notify_all();
+    if (thread_.joinable()) thread_.join();
+    if (progress_ && std::uncaught_exceptions() == 0) {
+      status_.fraction = 1;
+      status_.elapsed_s = elapsed();
+      progress_(status_);
+    }
+  }
+
+ private:
+  double elapsed() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+  void run(double every_s) {
+    std::unique_lock<std::mutex> lock(m_);
+    while (!cv_.wait_for(lock, std::chrono::duration<double>(every_s), [this] { return done_; })) {
+      status_.elapsed_s = elapsed();
+      status_.fraction = std::min(0.99, status_.elapsed_s / status_.estimated_s);
+      progress_(status_);
+    }
+  }
+  const FactorProgress& progress_;
+  std::chrono::steady_clock::time_point start_;
+  FactorStatus status_;
+  std::mutex m_;
+  std::condition_variable cv_;
+  bool done_ = false;
+  std::thread thread_;
+};
+}  // namespace
+
+MumpsLdlt::MumpsLdlt(const Eigen::SparseMatrix<double>& K, const FactorProgress& progress, double every_s)
+    : impl_(new Impl) {
   std::lock_guard<std::mutex> lock(mumps_mutex);
   Impl& s = *impl_;
   for (int c = 0; c < K.outerSize(); ++c)
@@ -58,7 +116,9 @@ MumpsLdlt::MumpsLdlt(const Eigen::SparseMatrix<double>& K) : impl_(new Impl) {
   s.id.jcn = s.jcn.data();
   s.id.a = s.a.data();
   try {
-    s.call(4);  // analysis + factorization
+    s.call(1);  // analysis: ordering, symbolic factorization, flop estimate
+    Watcher watcher(progress, s.id.rinfog[0], every_s);
+    s.call(2);
   } catch (...) {
     s.id.job = -2;
     dmumps_c(&s.id);
@@ -103,5 +163,7 @@ double MumpsLdlt::factor_entries() const {
   const auto& id = impl_->id;
   return id.infog[28];  // INFOG(29); negative would mean millions (×−10⁶), not reached here
 }
+
+double MumpsLdlt::estimated_flops() const { return impl_->id.rinfog[0]; }
 
 }  // namespace skinfem

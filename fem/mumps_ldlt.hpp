@@ -5,13 +5,17 @@
 #include <Eigen/Sparse>
 #include <memory>
 
+#include "fem/factor_progress.hpp"
+
 namespace skinfem {
 
 class MumpsLdlt {
  public:
   // K: symmetric matrix; only its lower triangle is read. Throws std::runtime_error on failure
-  // (with MUMPS's INFOG(1) code: −9/−13 out of memory, −10 singular).
-  explicit MumpsLdlt(const Eigen::SparseMatrix<double>& K);
+  // (with MUMPS's INFOG(1) code: −9/−13 out of memory, −10 singular). progress (may be empty) is called
+  // every `every_s` seconds during the factorization phase, and once at its end.
+  explicit MumpsLdlt(const Eigen::SparseMatrix<double>& K, const FactorProgress& progress = {},
+                     double every_s = 5);
   ~MumpsLdlt();
   MumpsLdlt(const MumpsLdlt&) = delete;
   MumpsLdlt& operator=(const MumpsLdlt&) = delete;
@@ -20,7 +24,8 @@ class MumpsLdlt {
   // Many right-hand sides at once (B: n×k, dense): MUMPS blocks them (ICNTL(27)), so each column costs
   // far less than a separate solve. Same results as column-by-column solves up to round-off.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
-  double factor_entries() const;  // entries in the factors (INFOG(29))
+  double factor_entries() const;   // entries in the factors (INFOG(29))
+  double estimated_flops() const;  // the analysis's estimate of the factorization's flops (RINFOG(1))
 
  private:
   struct Impl;

@@ -35,8 +35,10 @@
 #   green_vs_halfspace.png   green.csv, kfit.json: sensor #1 g_zz, g_xx (disc) against the rescaled
 #                            half-space for both k (and the exact layer if given), and (model − FE) / FE peak.
 #   k_sweep.png              kfit/k_sweep.csv (parameter,value,k_central,k_lsq_line), kfit.json: the exact
-#                            layer's k as one protocol reading changes at a time, against the paper's k ± 0.01.
-#   pareto.png               chain_study.csv (skinfem study --chain --out DIR/study): error vs seconds (log-log), one series per stage, points labelled by DOFs.
+#                            layer's k as one protocol reading changes at a time, against the paper's k ± 0.01,
+#                            and the FE k per mesh scale (rows mesh_scale) when the report computed error bars.
+#   pareto.png               study/chain_study.csv (the report's error levels, or skinfem study --chain --out
+#                            DIR/study): error vs seconds (log-log), one series per stage, labelled by DOFs.
 # Each PNG is written to a hidden temporary name in DIR/figures and renamed into place. A figure whose inputs
 # are missing prints `figures: skipped <name>.png: missing <file>`. The PNGs above are deleted first,
 # so DIR/figures never keeps one from an earlier run that this run skipped or did not reach.
@@ -419,7 +421,9 @@ def k_sweep(d):
     groups = [("nu", "Poisson's ratio ν"), ("punch_diameter_mm", "punch diameter (mm)"),
               ("disc_diameter_mm", "sensor averaging disc (mm)"), ("h_mm", "layer thickness h (mm)"),
               ("load", "load model (0 point, 1 uniform disc, 2 punch)")]
-    fig, axes = plt.subplots(1, len(groups), figsize=(18, 4.5), sharey=True)
+    if np.any(t["parameter"] == "mesh_scale"):
+        groups.append(("mesh_scale", "FE mesh scale (sensor #1 of the scene)"))
+    fig, axes = plt.subplots(1, len(groups), figsize=(3.6 * len(groups), 4.5), sharey=True)
     for ax, (name, label) in zip(axes, groups):
         m = t["parameter"] == name
         o = np.argsort(t["value"][m], kind="stable")

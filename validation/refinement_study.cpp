@@ -49,7 +49,8 @@ StudyResult refinement_study(const Scene& base_scene, const std::vector<double>&
     level.elements = mesh.num_tets();
     for (SolverKind kind : solvers) {
       if (progress) progress("level " + std::to_string(out.levels.size() + 1) + ": " + to_string(kind));
-      const ElasticModel model(mesh, scene.material, scene.geometry.side, scene.loads.punches, {kind});
+      const ElasticModel model(mesh, scene.material, scene.geometry.side, scene.loads.punches,
+                               {kind, 1e-10, {}});
       SolverTiming timing{kind};
       timing.rss_mb = current_rss_mb();
       timing.factor_s = model.solver().factor_seconds();

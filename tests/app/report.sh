@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # skinfem report on a coarse cap with a plate, friction and a short hole sweep: every stage runs on one
 # factorization, index.html links and shows only files that exist, report.json carries the headline numbers
-# (names end with their unit), and the crosscheck CSVs have their documented columns. The cap is cut at 14 mm,
+# (names end with their unit) with their error bars from two coarser levels, and the crosscheck CSVs have their
+# documented columns. The cap is cut at 14 mm,
 # so the ±4h calibration scan through sensor #1 would leave the skin: it is shortened to the footprint.
 set -u
 skinfem=$1
@@ -66,6 +67,24 @@ if len({r["u_mm"] for r in rows}) != 11: bad.append("crosscheck/defect.csv does 
 # Sensor #1 at x = −1.5, apex 0.5, cut at 14, punch radius 0.25: the scan may reach 14 − 0.25 − 2 = 11.75 mm.
 w = r["kfit"]["sensors"][0]["scan_half_width_mm"]
 if not 11.75 - 0.2 < w <= 11.75: bad.append(f"sensor 1 scan half-width {w}, expected within a step below 11.75")
+# Error bars (default coarser levels 2 and 1.41): each headline quantity once, a finite value with a
+# non-negative finite error, and the scene level's value is the stage's own (computed twice, one path each).
+import math
+eb = {e["quantity"]: e for e in r.get("error_bars", [])}
+for q in ["k_central", "k_lsq_line", "contact_radius", "contact_p0", "indentation", "hole_signal"]:
+    if q not in eb: bad.append(f"report.json error_bars lacks {q}"); continue
+    v, e = eb[q]["value"], eb[q]["error"]
+    if not (math.isfinite(v) and math.isfinite(e) and e >= 0): bad.append(f"error_bars {q}: {v} +- {e}")
+    if not eb[q].get("method"): bad.append(f"error_bars {q} does not say how its error was estimated")
+def same(a, b, what):
+    if abs(a - b) > 1e-9 * abs(b): bad.append(f"{what}: error_bars {a} against the stage's {b}")
+if "k_central" in eb: same(eb["k_central"]["value"], r["kfit"]["sensors"][0]["k_central"], "k_central #1")
+if "contact_radius" in eb: same(eb["contact_radius"]["value"], r["contact"]["contact_radius_mm"], "contact radius")
+if "indentation" in eb: same(eb["indentation"]["value"], r["contact"]["indentation_um"], "indentation")
+mesh_rows = [row for row in csv.DictReader(open(os.path.join(out, "kfit", "k_sweep.csv"))) if row["parameter"] == "mesh_scale"]
+if sorted(float(row["value"]) for row in mesh_rows) != [1.0, 1.41, 2.0]:
+    bad.append(f"kfit/k_sweep.csv mesh_scale rows {[row['value'] for row in mesh_rows]}")
+if "study/chain_study.csv" not in links: bad.append("index.html does not link study/chain_study.csv")
 for b in bad: print("FAIL", b)
 sys.exit(1 if bad else 0)
 PY

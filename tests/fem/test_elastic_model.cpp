@@ -160,7 +160,7 @@ TEST(ElasticModel, FlatPunchStiffnessApproachesJohnsonFromAbove) {
     const TetMesh m = build_mesh(s);
     // One load per mesh: the Schur-CG road (CHOLMOD on A only) is the cheaper one here.
     const ElasticModel model(m, Material{kE, 0.5}, SideCondition::free, s.loads.punches,
-                             ModelOptions{SolverKind::schur_cg, 1e-10});
+                             ModelOptions{SolverKind::schur_cg, 1e-10, {}});
     const double delta = 0.01;
     const LoadCaseResult res = model.solve(Eigen::VectorXd::Zero(3 * m.num_nodes()), {depth_punch(delta)});
     ratio.push_back(res.punches[0].force_N / delta / johnson);

@@ -1,0 +1,49 @@
+// The chain's headline quantities at one mesh level, shared by `study --chain` (every level) and `report`
+// (error bars: the scene's own level plus coarser ones): k of sensor #1 (central and line criteria), the
+// coupled contact (radius mm, central pressure MPa, indentation mm) and the sliding hole sweep's largest
+// |ς_z| over sensors and positions (MPa).
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "app/adjoint_setup.hpp"
+#include "app/contact_setup.hpp"
+
+namespace skinfem::app {
+
+// Every mesh size of the scene scaled by s (h_min, h_max, growth − 1, regions, contact zone, holes, path).
+Scene scaled_scene(const Scene& base, double s);
+
+struct ChainLevel {
+  double scale = 1;
+  int dofs = 0;
+  std::vector<std::string> names;
+  std::vector<double> value;    // per name, units above
+  std::vector<double> seconds;  // per name: every stage the quantity needs (mesh, factor, adjoints, ...)
+  nlohmann::json wall;          // seconds per stage
+  double peak_rss_mb = 0;
+};
+
+// On an already set-up skin (contact null when the scene has none).
+ChainLevel chain_values(const Scene& scene, const AdjointSetup& adjoints, const ContactSetup* contact);
+// Meshes and factors the scene scaled by `scale`, then chain_values.
+ChainLevel chain_level(const Scene& base, double scale);
+
+// Per quantity, over the three finest levels (validation/richardson.hpp): the finest value, its error
+// estimate (|Q − Q∞| in the asymptotic regime; else the last change |Q₃ − Q₂|, only an order of magnitude
+// since the changes do not yet shrink with one sign) and how it was obtained.
+struct ChainError {
+  std::string name;
+  double value = 0, error = 0, reference = 0, order = 0;
+  bool asymptotic = false;
+};
+std::vector<ChainError> chain_errors(const std::vector<ChainLevel>& levels);
+
+// Prints each quantity's order and errors, writes DIR/chain_study.csv (stage,level,dofs,seconds,error; the
+// Pareto plot of scripts/figures.py) and DIR/chain_study.json, and returns chain_errors.
+std::vector<ChainError> write_chain_study(const Scene& scene, const std::vector<ChainLevel>& levels,
+                                          const std::string& out_dir);
+
+}  // namespace skinfem::app
