@@ -433,7 +433,7 @@ def k_sweep(d):
         ax.axhline(paper, color="tab:red", lw=1, label=f"paper k = {paper:g} ± 0.01")
         ax.set_xlabel(label)
         ax.grid(alpha=0.3)
-    axes[0].set_ylabel("k (exact bonded layer)")
+    axes[0].set_ylabel("k (exact bonded layer; mesh-scale panel: FE)")
     axes[0].legend(fontsize=8)
     fig.suptitle("Which reading of the calibration protocol gives the paper's k: one parameter at a time")
     fig.tight_layout()
