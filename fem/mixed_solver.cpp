@@ -188,7 +188,8 @@ MixedSolution MixedSolver::solve(const Eigen::VectorXd& f, const Eigen::VectorXd
   return out;
 }
 
-Eigen::MatrixXd MixedSolver::solve_block(const Eigen::MatrixXd& F, const Eigen::MatrixXd& U_fixed) const {
+Eigen::MatrixXd MixedSolver::solve_block(const Eigen::MatrixXd& F, const Eigen::MatrixXd& U_fixed,
+                                         double* residual) const {
   const Impl& s = *impl_;
   const int n3 = s.M.A.rows(), k = F.cols();
   Eigen::MatrixXd U = Eigen::MatrixXd::Zero(n3, k);
@@ -196,7 +197,13 @@ Eigen::MatrixXd MixedSolver::solve_block(const Eigen::MatrixXd& F, const Eigen::
     for (int d = 0; d < n3; ++d)
       if (s.free_index[d] < 0) U.row(d) = U_fixed.row(d);
   if (kind_ == SolverKind::schur_cg) {
-    for (int j = 0; j < k; ++j) U.col(j) = solve(F.col(j), U.col(j)).u;
+    double worst = 0;
+    for (int j = 0; j < k; ++j) {
+      const MixedSolution x = solve(F.col(j), U.col(j));
+      U.col(j) = x.u;
+      worst = std::max(worst, x.residual);
+    }
+    if (residual) *residual = worst;
     return U;
   }
   // Lift the prescribed values as in solve(): b_f = f_f − A_fc u_c, g = −B_c u_c.
@@ -228,6 +235,7 @@ Eigen::MatrixXd MixedSolver::solve_block(const Eigen::MatrixXd& F, const Eigen::
     throw SolverError("direct_ldlt block solve missed its tolerance: relative residual " +
                       std::to_string(res) + " > " + std::to_string(s.tolerance) +
                       " (weighted combination of " + std::to_string(k) + " columns)");
+  if (residual) *residual = res;
   for (int j = 0; j < k; ++j)
     for (int i = 0; i < s.nf; ++i) U(s.free_dofs[i], j) = x(i, j);
   return U;

@@ -49,8 +49,10 @@ class MixedSolver {
 
   // Displacements (3N×k) for k load vectors F (3N×k) and prescribed values U_fixed (3N×k, only fixed
   // DOFs read; empty for zero), solved as one block (direct_ldlt; schur_cg goes column by column).
-  // Same residual check as solve().
-  Eigen::MatrixXd solve_block(const Eigen::MatrixXd& F, const Eigen::MatrixXd& U_fixed = {}) const;
+  // Same residual check as solve(), on a weighted combination of the columns; `residual`, if given,
+  // receives that combination's relative residual.
+  Eigen::MatrixXd solve_block(const Eigen::MatrixXd& F, const Eigen::MatrixXd& U_fixed = {},
+                              double* residual = nullptr) const;
 
   // Reactions at the fixed DOFs, K x − f restricted to them (3N vector, zero at free DOFs): the force
   // the supports exert on the body, N.

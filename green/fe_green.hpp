@@ -28,7 +28,7 @@ std::vector<std::array<double, 3>> load_quadrature(LayerLoad load, double radius
 class FeGreen {
  public:
   // One adjoint solve per sensor, reading component (z, x) and reading kind (point value at the
-  // sensor centre, mean over its disc): 4 solves per sensor on the model's factorization.
+  // sensor centre, mean over its disc): 4 per sensor on the model's factorization, all in one block solve.
   // The model must carry no punch constraints.
   FeGreen(const ElasticModel& model, const Sensors& sensors,
           const std::function<void(const std::string&)>& progress = {});
@@ -41,6 +41,7 @@ class FeGreen {
   // nodal values give the point-load Green map there.
   const Eigen::VectorXd& adjoint(int sensor, char reading, bool disc) const;
   int adjoint_solves() const { return static_cast<int>(adjoint_.size()); }
+  // The block solve's checked relative residual (fem/mixed_solver.hpp, solve_block).
   double max_adjoint_residual() const { return max_residual_; }
 
  private:
