@@ -45,14 +45,16 @@ nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const 
   wall["reciprocity_check"] = clock.seconds();
 
   clock = Stopwatch();
-  progress("scanning the calibration load");
+
   const bool flat = scene.geometry.kind == GeometryKind::flat;
   std::ostringstream csv;
   csv.precision(10);
   csv << "sensor,component,offset_x_mm,offset_y_mm,g_point_per_mm2,g_disc_per_mm2"
       << (flat ? ",g_exact_point_per_mm2,g_exact_disc_per_mm2" : "") << "\n";
   nlohmann::json per_sensor = nlohmann::json::array();
-  for (size_t s = 0; s < scene.sensors.positions.size(); ++s) {
+  const int ns = static_cast<int>(scene.sensors.positions.size());
+  for (int s = 0; s < ns; ++s) {
+    progress_step("green: calibration scans", s, ns, clock.seconds());
     const auto& pos = scene.sensors.positions[s];
     const double h = thickness_at(scene, pos);
     const auto prof = green::scan_profile(fe, s, LayerLoad::punch, radius, scan_half_width(scene, h, pos),

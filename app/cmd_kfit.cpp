@@ -49,7 +49,9 @@ nlohmann::json kfit_stage(const Scene& scene, const AdjointSetup& setup, const s
   const bool flat = scene.geometry.kind == GeometryKind::flat;
   nlohmann::json sensors = nlohmann::json::array();
   nlohmann::json summary;
-  for (size_t s = 0; s < scene.sensors.positions.size(); ++s) {
+  const int ns = static_cast<int>(scene.sensors.positions.size());
+  for (int s = 0; s < ns; ++s) {
+    progress_step("kfit: calibration scans", s, ns, clock.seconds());
     const auto& pos = scene.sensors.positions[s];
     const double h = thickness_at(scene, pos);
     const auto prof =

@@ -3,6 +3,8 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -50,6 +52,13 @@ double peak_rss_mb() {
 }
 
 void progress(const std::string& message) { std::cerr << "[skinfem] " << message << std::endl; }
+
+void progress_step(const std::string& stage, int done, int total, double elapsed_s) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, ": %d/%d (%.0f %%, %.1f s)", done, total, 100.0 * done / std::max(total, 1),
+                elapsed_s);
+  progress(stage + buf);
+}
 
 nlohmann::json scene_json(const Scene& scene) {
   return {{"name", scene.name},

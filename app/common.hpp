@@ -34,6 +34,8 @@ class Stopwatch {
 
 // "[skinfem] stage…" on stderr, so stdout stays the human summary.
 void progress(const std::string& message);
+// "[skinfem] stage: done/total (P %, S s)".
+void progress_step(const std::string& stage, int done, int total, double elapsed_s);
 
 nlohmann::json scene_json(const Scene& scene);
 

@@ -35,9 +35,8 @@ FeGreen::FeGreen(const ElasticModel& model, const Sensors& sensors,
   for (int s = 0; s < ns; ++s)
     for (bool disc : {false, true})
       for (char reading : {'z', 'x'})
-        W.col(4 * s + 2 * disc + (reading == 'x')) =
-            -functional(sensors.positions[s][0], sensors.positions[s][1], disc ? sensors.disc_diameter : 0.0,
-                        reading);
+        W.col(4 * s + 2 * disc + (reading == 'x')) = -functional(
+            sensors.positions[s][0], sensors.positions[s][1], disc ? sensors.disc_diameter : 0.0, reading);
   if (progress) progress("adjoint solves: " + std::to_string(4 * ns) + " readings as one block");
   const Eigen::MatrixXd Y =
       model.solver().solve_block(Eigen::MatrixXd::Zero(W.rows(), W.cols()), W, &max_residual_);
