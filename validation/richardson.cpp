@@ -28,4 +28,21 @@ Richardson richardson(const std::array<double, 3>& q, const std::array<double, 3
   return r;
 }
 
+double loglog_slope(const std::vector<double>& x, const std::vector<double>& y) {
+  const size_t n = x.size();
+  if (n < 2 || y.size() != n) return std::nan("");
+  double mx = 0, my = 0;
+  for (size_t i = 0; i < n; ++i) {
+    if (!(x[i] > 0 && y[i] > 0)) return std::nan("");
+    mx += std::log(x[i]) / n;
+    my += std::log(y[i]) / n;
+  }
+  double sxy = 0, sxx = 0;
+  for (size_t i = 0; i < n; ++i) {
+    sxy += (std::log(x[i]) - mx) * (std::log(y[i]) - my);
+    sxx += (std::log(x[i]) - mx) * (std::log(x[i]) - mx);
+  }
+  return sxx > 0 ? sxy / sxx : std::nan("");
+}
+
 }  // namespace skinfem::validation

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 namespace skinfem::validation {
 
@@ -16,5 +17,9 @@ struct Richardson {
 };
 
 Richardson richardson(const std::array<double, 3>& q, const std::array<double, 3>& scales);
+
+// Least-squares slope of log y against log x (y ≈ C xᵉ: the exponent e), over ≥ 2 points with x, y > 0;
+// NaN otherwise. Used for the time-vs-DOFs exponent of each stage.
+double loglog_slope(const std::vector<double>& x, const std::vector<double>& y);
 
 }  // namespace skinfem::validation

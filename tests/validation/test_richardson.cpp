@@ -37,5 +37,15 @@ TEST(Richardson, RefusesANonAsymptoticSequence) {
   EXPECT_EQ(richardson({1.0, 1.2, 1.1}, {2, 1.41, 1}).limit, 1.1);
 }
 
+TEST(LogLogSlope, RecoversThePowerOfAPowerLawAndRefusesBadInput) {
+  const std::vector<double> x{1e4, 3e4, 1e5, 2e5};
+  std::vector<double> y;
+  for (double v : x) y.push_back(2.5e-7 * std::pow(v, 1.7));
+  EXPECT_NEAR(loglog_slope(x, y), 1.7, 1e-12);
+  EXPECT_TRUE(std::isnan(loglog_slope({1e4}, {1.0})));
+  EXPECT_TRUE(std::isnan(loglog_slope({1e4, 2e4}, {1.0, 0.0})));
+  EXPECT_TRUE(std::isnan(loglog_slope({1e4, 1e4}, {1.0, 2.0})));
+}
+
 }  // namespace
 }  // namespace skinfem::validation
