@@ -62,6 +62,7 @@ nlohmann::json mesh_stage(const Scene& scene, const TetMesh& mesh, double mesh_s
 }
 
 int run_mesh(const Scene& scene, const std::string& out_dir) {
+  check_output_dir(out_dir);
   Stopwatch clock;
   progress("meshing " + scene.name);
   const TetMesh mesh = build_mesh(scene);

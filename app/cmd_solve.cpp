@@ -24,6 +24,7 @@ namespace skinfem::app {
 int run_solve(const Scene& scene, const std::string& out_dir, SolverKind solver) {
   if (scene.loads.punches.empty() && scene.loads.patches.empty())
     throw SceneError(scene.source_path + ": loads = {}: solve needs at least one punch or patch");
+  check_output_dir(out_dir);
   Stopwatch total;
   nlohmann::json wall;
   Stopwatch clock;

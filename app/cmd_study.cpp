@@ -17,6 +17,7 @@
 namespace skinfem::app {
 
 int run_study(const Scene& scene, const std::string& out_dir, const std::vector<double>& scales) {
+  check_output_dir(out_dir);
   const std::vector<SolverKind> solvers{SolverKind::direct_ldlt, SolverKind::schur_cg};
   const StudyResult study = refinement_study(scene, scales, solvers, progress);
 

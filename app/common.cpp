@@ -24,11 +24,11 @@ void check_output_dir(const std::string& dir) {
   std::error_code ec;
   fs::path p = fs::absolute(dir, ec);
   if (fs::exists(p, ec) && !fs::is_directory(p, ec))
-    throw std::runtime_error("--out " + dir + ": exists and is not a directory");
+    throw SceneError("--out " + dir + ": exists and is not a directory; must be a directory or a new path");
   while (!p.empty() && !fs::exists(p, ec)) p = p.parent_path();
   if (p.empty() || !fs::is_directory(p, ec) || access(p.c_str(), W_OK) != 0)
-    throw std::runtime_error("--out " + dir + ": cannot create or write the output directory (" + p.string() +
-                             " is not a writable directory)");
+    throw SceneError("--out " + dir + ": cannot create or write the output directory (" + p.string() +
+                     " is not a writable directory)");
 }
 
 void write_text_atomic(const std::string& path, const std::string& text) {

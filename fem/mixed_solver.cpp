@@ -38,6 +38,7 @@ struct MixedSolver::Impl {
   std::vector<int> p_index;     // vertex → pressure unknown, −1 when pinned
   int nf = 0, np = 0, pinned_pressures = 0;
   double tolerance = 1e-10;
+  double sigma = 1;  // 2μ, MPa: the unknowns' scale (residual_norm)
   SparseMatrixd Aff, Bf, C;
   // schur_cg
   Eigen::CholmodSupernodalLLT<SparseMatrixd> chol;
@@ -48,11 +49,14 @@ struct MixedSolver::Impl {
 
   explicit Impl(const MixedMatrices& m) : M(m) {}
 
-  // ‖[A_ff u + B_fᵀ p − b; B_f u − C p − g]‖ of the constrained system.
-  double residual_norm(const Eigen::VectorXd& uf, const Eigen::VectorXd& p, const Eigen::VectorXd& bf,
-                       const Eigen::VectorXd& g) const {
-    const Eigen::VectorXd r1 = Aff * uf + Bf.transpose() * p - bf;
-    const Eigen::VectorXd r2 = Bf * uf - C * p - g;
+  // The system is solved in the scaled unknowns (σu, p), σ = 2μ: [A_ff/σ  B_fᵀ; B_f  −σC] [σu; p] =
+  // [b; σg] has O(1) entries for any E, where the unscaled one spans E and 1/E (MUMPS fails beyond about
+  // E ∈ [1e-5, 1e8] MPa unscaled). Its residual, ‖[A_ff u + B_fᵀ p − b; σ(B_f u − C p − g)]‖, is in force
+  // units in both rows. us = σu, gs = σg.
+  double residual_norm(const Eigen::VectorXd& us, const Eigen::VectorXd& p, const Eigen::VectorXd& bf,
+                       const Eigen::VectorXd& gs) const {
+    const Eigen::VectorXd r1 = Aff * us / sigma + Bf.transpose() * p - bf;
+    const Eigen::VectorXd r2 = Bf * us - sigma * (C * p) - gs;
     return std::sqrt(r1.squaredNorm() + r2.squaredNorm());
   }
 };
@@ -86,6 +90,7 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
   s.Bf = restrict(matrices.B, s.p_index, s.np, s.free_index, s.nf);
   const SparseMatrixd Mp = restrict(matrices.Mp, s.p_index, s.np, s.p_index, s.np);
   s.C = lame.inv_lambda * Mp;
+  s.sigma = 2 * lame.mu;
 
   if (kind == SolverKind::schur_cg) {
     s.chol.compute(s.Aff);
@@ -100,12 +105,12 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
     t.reserve(s.Aff.nonZeros() / 2 + s.nf + s.Bf.nonZeros() + s.C.nonZeros());
     for (int c = 0; c < s.Aff.outerSize(); ++c)
       for (SparseMatrixd::InnerIterator it(s.Aff, c); it; ++it)
-        if (it.row() >= c) t.emplace_back(it.row(), c, it.value());
+        if (it.row() >= c) t.emplace_back(it.row(), c, it.value() / s.sigma);
     for (int c = 0; c < s.Bf.outerSize(); ++c)
       for (SparseMatrixd::InnerIterator it(s.Bf, c); it; ++it) t.emplace_back(s.nf + it.row(), c, it.value());
     for (int c = 0; c < s.C.outerSize(); ++c)
       for (SparseMatrixd::InnerIterator it(s.C, c); it; ++it)
-        if (it.row() >= c) t.emplace_back(s.nf + it.row(), s.nf + c, -it.value());
+        if (it.row() >= c) t.emplace_back(s.nf + it.row(), s.nf + c, -s.sigma * it.value());
     SparseMatrixd K(s.nf + s.np, s.nf + s.np);
     K.setFromTriplets(t.begin(), t.end());
     try {
@@ -169,14 +174,14 @@ MixedSolution MixedSolver::solve(const Eigen::VectorXd& f, const Eigen::VectorXd
     uf = s.chol.solve(bf - s.Bf.transpose() * p);
   } else {
     Eigen::VectorXd b(s.nf + s.np);
-    b << bf, g;
+    b << bf, s.sigma * g;
     const Eigen::VectorXd x = s.ldlt->solve(b);
-    uf = x.head(s.nf);
+    uf = x.head(s.nf) / s.sigma;
     p = x.tail(s.np);
   }
-  // Residual of the full constrained system.
-  const double bnorm = std::sqrt(bf.squaredNorm() + g.squaredNorm());
-  out.residual = bnorm > 0 ? s.residual_norm(uf, p, bf, g) / bnorm : 0.0;
+  // Residual of the full constrained system (scaled, residual_norm).
+  const double bnorm = std::sqrt(bf.squaredNorm() + s.sigma * s.sigma * g.squaredNorm());
+  out.residual = bnorm > 0 ? s.residual_norm(s.sigma * uf, p, bf, s.sigma * g) / bnorm : 0.0;
   if (!std::isfinite(out.residual) || out.residual > s.tolerance)
     throw SolverError(std::string(to_string(kind_)) + " solve missed its tolerance: relative residual " +
                       std::to_string(out.residual) + " > " + std::to_string(s.tolerance));
@@ -206,7 +211,7 @@ Eigen::MatrixXd MixedSolver::solve_block(const Eigen::MatrixXd& F, const Eigen::
     if (residual) *residual = worst;
     return U;
   }
-  // Lift the prescribed values as in solve(): b_f = f_f − A_fc u_c, g = −B_c u_c.
+  // Lift the prescribed values as in solve(): b_f = f_f − A_fc u_c, g = −B_c u_c; rows of g scaled by σ.
   Eigen::MatrixXd b = Eigen::MatrixXd::Zero(s.nf + s.np, k);
   for (int j = 0; j < k; ++j)  // column by column: the blocks are column-major and large
     for (int i = 0; i < s.nf; ++i) b(i, j) = F(s.free_dofs[i], j);
@@ -214,7 +219,7 @@ Eigen::MatrixXd MixedSolver::solve_block(const Eigen::MatrixXd& F, const Eigen::
     const Eigen::MatrixXd AU = s.M.A * U, BU = s.M.B * U;
     for (int i = 0; i < s.nf; ++i) b.row(i) -= AU.row(s.free_dofs[i]);
     for (size_t q = 0; q < s.p_index.size(); ++q)
-      if (s.p_index[q] >= 0) b.row(s.nf + s.p_index[q]) = -BU.row(q);
+      if (s.p_index[q] >= 0) b.row(s.nf + s.p_index[q]) = -s.sigma * BU.row(q);
   }
   const Eigen::MatrixXd x = s.ldlt->solve(b);
   // The residual of every column would cost as much as the solve itself (a sparse product per column);
@@ -237,7 +242,7 @@ Eigen::MatrixXd MixedSolver::solve_block(const Eigen::MatrixXd& F, const Eigen::
                       " (weighted combination of " + std::to_string(k) + " columns)");
   if (residual) *residual = res;
   for (int j = 0; j < k; ++j)
-    for (int i = 0; i < s.nf; ++i) U(s.free_dofs[i], j) = x(i, j);
+    for (int i = 0; i < s.nf; ++i) U(s.free_dofs[i], j) = x(i, j) / s.sigma;
   return U;
 }
 

@@ -107,8 +107,14 @@ struct Rule {
   std::string desc;
   std::function<bool(double)> ok;
 };
-Rule positive() {
-  return {"a number > 0", [](double x) { return x > 0; }};
+// Lengths (mm) and forces (N) are bounded so that every derived number stays far from overflow: 10 m and
+// 1 MN are beyond any tactile skin.
+constexpr double kMaxLength = 1e4, kMaxForce = 1e6;
+Rule length() {
+  return {"a length in (0, " + fmt(kMaxLength) + "] mm", [](double x) { return x > 0 && x <= kMaxLength; }};
+}
+Rule force_rule() {
+  return {"a force in (0, " + fmt(kMaxForce) + "] N", [](double x) { return x > 0 && x <= kMaxForce; }};
 }
 Rule non_negative() {
   return {"a number >= 0", [](double x) { return x >= 0; }};
@@ -299,7 +305,7 @@ Geometry read_geometry(const Reader& r, const json& g, const fs::path& base_dir)
     r.object(g, P, {"type", "R", "h", "apex", "truncation_radius", "side"});
     CapGeometry& c = geo.cap;
     geo.kind = GeometryKind::cap;
-    c.R = r.number(g, P, "R", positive());
+    c.R = r.number(g, P, "R", length());
     const double R = c.R;
     c.h =
         r.number(g, P, "h",
@@ -317,8 +323,8 @@ Geometry read_geometry(const Reader& r, const json& g, const fs::path& base_dir)
   } else if (t == "flat") {
     r.object(g, P, {"type", "h", "half_width", "side"});
     geo.kind = GeometryKind::flat;
-    geo.flat.h = r.number(g, P, "h", positive());
-    geo.flat.half_width = r.number(g, P, "half_width", positive());
+    geo.flat.h = r.number(g, P, "h", length());
+    geo.flat.half_width = r.number(g, P, "half_width", length());
   } else if (t == "surface") {
     r.object(g, P, {"type", "path", "side"});
     geo.kind = GeometryKind::surface;
@@ -353,7 +359,8 @@ Material read_material(const Reader& r, const json& m) {
   const std::string P = "material";
   r.object(m, P, {"E", "nu"});
   Material mat;
-  mat.E = r.number(m, P, "E", positive());
+  mat.E = r.number(m, P, "E",
+                   Rule{"a Young's modulus in (0, 1e12] MPa", [](double x) { return x > 0 && x <= 1e12; }});
   mat.nu = r.number(m, P, "nu", closed_interval(0, 0.5));
   return mat;
 }
@@ -373,7 +380,7 @@ Sensors read_sensors(const Reader& r, const json& s, std::vector<SensorSource>& 
   if ((positions != nullptr) == (line != nullptr))
     r.fail(P, s,
            R"(must have exactly one of "positions" ([[x, y], ...]) or "line" ({"start", "step", "count"}))");
-  out.disc_diameter = r.number(s, P, "disc_diameter", positive());
+  out.disc_diameter = r.number(s, P, "disc_diameter", length());
 
   if (positions) {
     const std::string PP = sub(P, "positions");
@@ -397,6 +404,12 @@ Sensors read_sensors(const Reader& r, const json& s, std::vector<SensorSource>& 
       sources.push_back({PL + " (sensor " + std::to_string(i + 1) + " of " + std::to_string(count) + ")", p});
     }
   }
+  // Two sensors in one place read the same thing twice; a scene that does so is mistyped.
+  for (std::size_t i = 0; i < sources.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (std::hypot(sources[i].p[0] - sources[j].p[0], sources[i].p[1] - sources[j].p[1]) < 1e-9)
+        r.fail(sources[i].path, json::array({sources[i].p[0], sources[i].p[1]}),
+               "a sensor in the same place as " + sources[j].path + "; sensors must be distinct");
   return out;
 }
 
@@ -433,7 +446,7 @@ MeshControls read_mesh(const Reader& r, const json& m) {
   r.object(m, P,
            {"h_min", "growth", "h_max", "refine_sensors", "min_dihedral_deg", "max_radius_edge", "regions"});
   MeshControls mc;
-  mc.h_min = r.number(m, P, "h_min", positive());
+  mc.h_min = r.number(m, P, "h_min", length());
   mc.growth = r.number(m, P, "growth", greater(1));
   mc.h_max = r.number(m, P, "h_max", at_least(mc.h_min, "mesh.h_min = " + fmt(mc.h_min)));
   if (const json* v = Reader::find(m, "refine_sensors"))
@@ -454,7 +467,7 @@ MeshControls read_mesh(const Reader& r, const json& m) {
       roi.a = r.vec2(g, PR, "from");
       roi.b = r.vec2(g, PR, "to");
       roi.radius = r.number(g, PR, "radius", non_negative());
-      roi.h = r.number_or(g, PR, "h", 0.0, positive());
+      roi.h = r.number_or(g, PR, "h", 0.0, length());
       mc.regions.push_back(roi);
     }
   }
@@ -474,13 +487,13 @@ Loads read_loads(const Reader& r, const json& l) {
       r.object(j, PP, {"center", "diameter", "force", "displacement"});
       Punch punch;
       punch.center = r.vec2(j, PP, "center");
-      punch.diameter = r.number(j, PP, "diameter", positive());
+      punch.diameter = r.number(j, PP, "diameter", length());
       const json* force = Reader::find(j, "force");
       const json* disp = Reader::find(j, "displacement");
       if ((force != nullptr) == (disp != nullptr))
         r.fail(PP, j, R"(must have exactly one of "force" (N) or "displacement" (mm))");
-      if (force) punch.force = r.number(*force, sub(PP, "force"), positive());
-      if (disp) punch.displacement = r.number(*disp, sub(PP, "displacement"), positive());
+      if (force) punch.force = r.number(*force, sub(PP, "force"), force_rule());
+      if (disp) punch.displacement = r.number(*disp, sub(PP, "displacement"), length());
       loads.punches.push_back(punch);
     }
   }
@@ -493,14 +506,14 @@ Loads read_loads(const Reader& r, const json& l) {
       r.object(j, PP, {"center", "diameter", "direction", "force"});
       TractionPatch patch;
       patch.center = r.vec2(j, PP, "center");
-      patch.diameter = r.number(j, PP, "diameter", positive());
+      patch.diameter = r.number(j, PP, "diameter", length());
       const json& dir = r.need(j, PP, "direction", "a non-zero vector [x, y, z]");
       const Vec3 d = r.vec<3>(dir, sub(PP, "direction"));
       const double norm = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
       if (!(norm > 0) || !std::isfinite(norm))
         r.fail(sub(PP, "direction"), dir, "must be a non-zero vector [x, y, z]");
       patch.direction = {d[0] / norm, d[1] / norm, d[2] / norm};
-      patch.force = r.number(j, PP, "force", positive());
+      patch.force = r.number(j, PP, "force", force_rule());
       loads.patches.push_back(patch);
     }
   }
@@ -511,9 +524,9 @@ Calibration read_calibration(const Reader& r, const json& c) {
   const std::string P = "calibration";
   r.object(c, P, {"punch_diameter", "scan_half_width", "spacing"});
   Calibration cal;
-  cal.punch_diameter = r.number_or(c, P, "punch_diameter", cal.punch_diameter, positive());
+  cal.punch_diameter = r.number_or(c, P, "punch_diameter", cal.punch_diameter, length());
   cal.scan_half_width = r.number_or(c, P, "scan_half_width", cal.scan_half_width, non_negative());
-  cal.spacing = r.number_or(c, P, "spacing", cal.spacing, positive());
+  cal.spacing = r.number_or(c, P, "spacing", cal.spacing, length());
   return cal;
 }
 
@@ -556,8 +569,8 @@ Hole read_hole(const Reader& r, const json& j, const std::string& path, std::siz
   r.object(j, path, {"center", "diameter", "h"});
   Hole h;
   h.center = r.vec2(j, path, "center");
-  h.diameter = r.number(j, path, "diameter", positive());
-  h.h = r.number_or(j, path, "h", 0.0, positive());
+  h.diameter = r.number(j, path, "diameter", length());
+  h.h = r.number_or(j, path, "h", 0.0, length());
   const std::string off = off_footprint(geo, h.center, 0.5 * h.diameter, "diameter/2");
   if (!off.empty())
     r.fail(path, j,
@@ -565,6 +578,47 @@ Hole read_hole(const Reader& r, const json& j, const std::string& path, std::siz
                ", diameter " + fmt(h.diameter) + ") is off the skin: it must lie on the skin's footprint; " +
                off);
   return h;
+}
+
+// Punches and patches: on the skin with at least mesh.h_min of skin around them (a load disc touching the
+// footprint's edge would put its circle on the side wall), punches apart from each other by mesh.h_min
+// (overlapping punches would hold the same nodes twice), and a punch depth below the skin's thickness (strain
+// below 1). Forces are not bounded by E: the problem is linear, and unit loads are the norm.
+void check_loads(const Reader& r, const Scene& scene) {
+  const Geometry& g = scene.geometry;
+  const double gap = scene.mesh.h_min;
+  const double thickness = g.kind == GeometryKind::cap    ? g.cap.h
+                           : g.kind == GeometryKind::flat ? g.flat.h
+                                                          : 0;
+  const auto check_disc = [&](const std::string& path, const Vec2& c, double d) {
+    const std::string off = off_footprint(g, c, 0.5 * d + gap, "diameter/2 - mesh.h_min");
+    if (!off.empty())
+      r.fail(path, point(c),
+             "the load disc (diameter " + fmt(d) + ") must lie on the skin with mesh.h_min = " + fmt(gap) +
+                 " to spare; " + off);
+  };
+  const auto& punches = scene.loads.punches;
+  for (std::size_t i = 0; i < punches.size(); ++i) {
+    const std::string PP = at("loads.punches", i);
+    check_disc(PP + ".center", punches[i].center, punches[i].diameter);
+    if (punches[i].displacement && thickness > 0 && *punches[i].displacement >= thickness)
+      r.fail(sub(PP, "displacement"), json(*punches[i].displacement),
+             "must be < the skin's thickness " + fmt(thickness) + " mm (strain below 1)");
+    for (std::size_t j = 0; j < i; ++j) {
+      const double dist = std::hypot(punches[i].center[0] - punches[j].center[0],
+                                     punches[i].center[1] - punches[j].center[1]);
+      const double need = 0.5 * (punches[i].diameter + punches[j].diameter) + gap;
+      if (dist < need)
+        r.fail(PP + ".center", point(punches[i].center),
+               "punches " + std::to_string(j + 1) + " and " + std::to_string(i + 1) +
+                   " overlap or touch: centres " + fmt(dist) +
+                   " apart, must be at least the sum of the radii + mesh.h_min = " + fmt(need));
+    }
+  }
+  for (std::size_t i = 0; i < scene.loads.patches.size(); ++i) {
+    const auto& p = scene.loads.patches[i];
+    check_disc(at("loads.patches", i) + ".center", p.center, p.diameter);
+  }
 }
 
 void read_friction(const Reader& r, const json& f, const std::string& path, ContactLoad& out) {
@@ -600,8 +654,8 @@ HoleSweep read_sweep(const Reader& r, const json& j, const std::string& path, co
   s.to = r.vec2(j, path, "to");
   if (const json* n = Reader::find(j, "positions"))
     s.positions = static_cast<int>(r.integer(*n, sub(path, "positions"), 2, 100000));
-  s.hole_diameter = r.number_or(j, path, "hole_diameter", s.hole_diameter, positive());
-  s.h = r.number_or(j, path, "h", 0.0, positive());
+  s.hole_diameter = r.number_or(j, path, "hole_diameter", s.hole_diameter, length());
+  s.h = r.number_or(j, path, "h", 0.0, length());
   // The footprint is convex: a hole on it at both ends stays on it all along the path.
   for (const auto& [key, p] : {std::make_pair("from", s.from), std::make_pair("to", s.to)}) {
     const std::string off = off_footprint(geo, p, 0.5 * s.hole_diameter, "hole_diameter/2");
@@ -637,7 +691,7 @@ ContactLoad read_contact(const Reader& r, const json& c, const Geometry& geo) {
   } else if (type == "sphere") {
     r.object(ind, PI, {"type", "R", "center"});
     out.indenter = IndenterKind::sphere;
-    out.sphere_R = r.number(ind, PI, "R", positive());
+    out.sphere_R = r.number(ind, PI, "R", length());
     out.center = r.vec2(ind, PI, "center");
     const std::string off = off_footprint(geo, out.center, 0, "");
     if (!off.empty())
@@ -651,16 +705,16 @@ ContactLoad read_contact(const Reader& r, const json& c, const Geometry& geo) {
   const json* depth = Reader::find(c, "depth");
   if ((force != nullptr) == (depth != nullptr))
     r.fail(P, c, R"(must have exactly one of "force" (N) or "depth" (mm))");
-  if (force) out.force = r.number(*force, sub(P, "force"), positive());
-  if (depth) out.depth = r.number(*depth, sub(P, "depth"), positive());
+  if (force) out.force = r.number(*force, sub(P, "force"), force_rule());
+  if (depth) out.depth = r.number(*depth, sub(P, "depth"), length());
 
   if (Reader::find(c, "holes")) {
     const json& holes = r.array(c, P, "holes", R"(an array of holes {"center": [x, y], "diameter"})");
     for (std::size_t i = 0; i < holes.size(); ++i)
       out.holes.push_back(read_hole(r, holes[i], at(sub(P, "holes"), i), i, holes.size(), geo));
   }
-  out.zone_radius = r.number_or(c, P, "zone_radius", 0.0, positive());
-  out.h = r.number_or(c, P, "h", 0.0, positive());
+  out.zone_radius = r.number_or(c, P, "zone_radius", 0.0, length());
+  out.h = r.number_or(c, P, "h", 0.0, length());
   if (const json* f = Reader::find(c, "friction")) read_friction(r, *f, sub(P, "friction"), out);
   if (const json* sw = Reader::find(c, "sweep")) out.sweep = read_sweep(r, *sw, sub(P, "sweep"), geo);
   return out;
@@ -714,8 +768,22 @@ Scene parse_scene(const std::string& json_text, const std::string& source_path) 
   scene.sensors = read_sensors(r, r.need(root, "", "sensors", "an object"), sources);
   check_sensor_footprint(r, scene.geometry, scene.sensors, sources);
   scene.mesh = read_mesh(r, r.need(root, "", "mesh", "an object"));
-  if (const json* loads = Reader::find(root, "loads")) scene.loads = read_loads(r, *loads);
-  if (const json* cal = Reader::find(root, "calibration")) scene.calibration = read_calibration(r, *cal);
+  if (const json* loads = Reader::find(root, "loads")) {
+    scene.loads = read_loads(r, *loads);
+    check_loads(r, scene);
+  }
+  if (const json* cal = Reader::find(root, "calibration")) {
+    scene.calibration = read_calibration(r, *cal);
+    // The scan's length over its spacing is the number of Green evaluations per sensor.
+    const Geometry& g = scene.geometry;
+    const double h = g.kind == GeometryKind::cap ? g.cap.h : g.kind == GeometryKind::flat ? g.flat.h : 0;
+    const double w = scene.calibration.scan_half_width > 0 ? scene.calibration.scan_half_width : 4 * h;
+    constexpr double kMaxScanPoints = 1e4;
+    if (2 * w / scene.calibration.spacing > kMaxScanPoints)
+      r.fail("calibration.spacing", json(scene.calibration.spacing),
+             "must be >= 2 x scan half-width / " + fmt(kMaxScanPoints) + " = " + fmt(2 * w / kMaxScanPoints) +
+                 " mm (scan half-width " + fmt(w) + " mm)");
+  }
   if (const json* contact = Reader::find(root, "contact")) {
     scene.contact = read_contact(r, *contact, scene.geometry);
     check_contact_zone(r, *contact, scene);

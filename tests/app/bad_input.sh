@@ -1,40 +1,123 @@
 #!/usr/bin/env bash
-# The skinfem command on bad input: one line naming the field, the value and what is allowed,
-# exit code 2, and no output directory written.
+# The bad-input catalogue: each case goes through the skinfem command line and must give one line on stderr
+# naming the field (and value) and what is allowed, exit code 2, no crash, no hang (each run is given 60 s),
+# and nothing written to --out. Base scene: a 16 mm wide, 3 mm flat layer, one 0.5 mm punch, 1 N.
 set -u
 skinfem=$1
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-fail=0
-check() {  # name, expected substring, command...
+fail=0 passed=0
+check() {  # name, expected substring (grep -E), command...
   local name=$1 expect=$2
   shift 2
-  "$@" >"$tmp/stdout" 2>"$tmp/stderr"
-  local code=$?
-  if [ $code -ne 2 ]; then echo "FAIL $name: exit $code, expected 2"; fail=1; fi
-  if ! grep -q -- "$expect" "$tmp/stderr"; then echo "FAIL $name: stderr lacks '$expect':"; cat "$tmp/stderr"; fail=1; fi
-  if [ "$(grep -vc '^\[skinfem\]' "$tmp/stderr")" -ne 1 ]; then echo "FAIL $name: not one line"; cat "$tmp/stderr"; fail=1; fi
-  if [ -e "$tmp/out" ]; then echo "FAIL $name: output written"; fail=1; fi
+  timeout 60 "$@" >"$tmp/stdout" 2>"$tmp/stderr"
+  local code=$? bad=0
+  if [ $code -ne 2 ]; then echo "FAIL $name: exit $code, expected 2"; bad=1; fi
+  if ! grep -Eq -- "$expect" "$tmp/stderr"; then echo "FAIL $name: stderr lacks '$expect':"; cat "$tmp/stderr"; bad=1; fi
+  if [ "$(grep -vc '^\[skinfem\]' "$tmp/stderr")" -ne 1 ]; then echo "FAIL $name: not one line"; cat "$tmp/stderr"; bad=1; fi
+  if [ -e "$tmp/out" ]; then echo "FAIL $name: output written"; rm -rf "$tmp/out"; bad=1; fi
+  if [ $bad -eq 0 ]; then passed=$((passed + 1)); else fail=$((fail + 1)); fi
 }
-echo '{"geometry": {"type": "flat", "h": 3, "half_width": 5}, "material": {"E": 3, "nu": 0.7},
-       "sensors": {"positions": [[0, 0]], "disc_diameter": 0.2}, "mesh": {"h_min": 0.5, "growth": 1.5, "h_max": 2}}' >"$tmp/nu.json"
-check bad_nu "material.nu = 0.7" "$skinfem" mesh "$tmp/nu.json" --out "$tmp/out"
-sed 's/"E": 3/"E": 3, "colour": 1/; s/0.7/0.5/' "$tmp/nu.json" >"$tmp/key.json"
-check unknown_key "material.colour" "$skinfem" mesh "$tmp/key.json" --out "$tmp/out"
-sed 's/0.7/0.5/' "$tmp/nu.json" >"$tmp/noload.json"
-check no_load "loads" "$skinfem" solve "$tmp/noload.json" --out "$tmp/out"
-check missing_file "no.json" "$skinfem" mesh "$tmp/no.json" --out "$tmp/out"
-check bad_solver "--solver" "$skinfem" solve "$tmp/noload.json" --solver lu --out "$tmp/out"
-# The contact section is read with the scene, before any subcommand runs.
-echo '{"geometry": {"type": "flat", "h": 3, "half_width": 5}, "material": {"E": 3, "nu": 0.5},
-       "sensors": {"positions": [[0, 0]], "disc_diameter": 0.2}, "mesh": {"h_min": 0.5, "growth": 1.5, "h_max": 2},
-       "contact": {"indenter": {"type": "plane"}, "force": 1}}' >"$tmp/plane.json"
-check plane_on_flat 'contact.indenter.type = "plane": a plane on a flat layer' "$skinfem" mesh "$tmp/plane.json" --out "$tmp/out"
-sed 's/{"type": "plane"}/{"type": "sphere", "R": 50, "center": [0, 0]}, "holes": [{"center": [4.9, 0], "diameter": 0.5}]/' \
-  "$tmp/plane.json" >"$tmp/hole.json"
-check hole_off_skin 'contact.holes.0. = .*hole 1 of 1.*off the skin' "$skinfem" mesh "$tmp/hole.json" --out "$tmp/out"
-sed 's/{"type": "plane"}/{"type": "sphere", "R": 50, "center": [0, 0]}/' "$tmp/plane.json" >"$tmp/zone.json"
-check zone_at_side 'contact.force = 1: .*would reach the truncated side' "$skinfem" mesh "$tmp/zone.json" --out "$tmp/out"
-check unknown_subcommand "unknown subcommand 'frobnicate'; one of: mesh" "$skinfem" frobnicate "$tmp/nu.json" --out "$tmp/out"
-if [ $fail -eq 0 ]; then echo "8 passed, 0 failed"; fi
-exit $fail
+cat >"$tmp/base.json" <<'JSON'
+{"geometry": {"type": "flat", "h": 3.0, "half_width": 8.0},
+ "material": {"E": 3.0, "nu": 0.5},
+ "sensors": {"positions": [[0.0, 0.0]], "disc_diameter": 0.2},
+ "mesh": {"h_min": 0.4, "growth": 1.5, "h_max": 3.0},
+ "loads": {"punches": [{"center": [0.0, 0.0], "diameter": 0.5, "force": 1.0}]},
+ "calibration": {"punch_diameter": 0.5, "spacing": 0.1}}
+JSON
+# variant NAME PYTHON: the base scene as d, changed by the Python statement, written to $tmp/NAME.json.
+variant() {
+  /usr/bin/python3 - "$tmp/base.json" "$tmp/$1.json" "$2" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+exec(sys.argv[3])
+open(sys.argv[2], "w").write(json.dumps(d))
+PY
+}
+bad() {  # NAME PYTHON EXPECT [subcommand]: a scene variant through `skinfem SUB scene --out`
+  variant "$1" "$2"
+  check "$1" "$3" "$skinfem" "${4:-solve}" "$tmp/$1.json" --out "$tmp/out"
+}
+punch='d["loads"]["punches"][0]'
+
+# The file itself.
+printf '{"geometry": ' >"$tmp/truncated.json"
+check truncated_json 'truncated.json: .*(syntax|parse|unexpected|end of input)' "$skinfem" mesh "$tmp/truncated.json" --out "$tmp/out"
+: >"$tmp/empty.json"
+check empty_file 'empty.json' "$skinfem" mesh "$tmp/empty.json" --out "$tmp/out"
+check missing_file 'no.json: cannot read scene file' "$skinfem" mesh "$tmp/no.json" --out "$tmp/out"
+mkdir "$tmp/dir.json"
+check directory 'dir.json: cannot read scene file: is a directory' "$skinfem" mesh "$tmp/dir.json" --out "$tmp/out"
+echo '[1, 2]' >"$tmp/array.json"
+check top_level_array '\(top level\) = .*must be an object' "$skinfem" mesh "$tmp/array.json" --out "$tmp/out"
+sed 's/"nu": 0.5/"nu": NaN/' "$tmp/base.json" >"$tmp/nan.json"
+check nan_literal 'nan.json: .*(syntax|parse|invalid)' "$skinfem" mesh "$tmp/nan.json" --out "$tmp/out"
+sed 's/"nu": 0.5/"nu": 0.5, "nu": 0.4/' "$tmp/base.json" >"$tmp/dupkey.json"
+check duplicate_key 'material.nu.*duplicate' "$skinfem" mesh "$tmp/dupkey.json" --out "$tmp/out"
+
+# Unknown keys at every level.
+bad unknown_top 'd["colour"] = 1' 'colour: unknown key'
+bad unknown_geometry 'd["geometry"]["radius"] = 1' 'geometry.radius: unknown key'
+bad unknown_material 'd["material"]["colour"] = 1' 'material.colour: unknown key'
+bad unknown_sensors 'd["sensors"]["pitch"] = 1' 'sensors.pitch: unknown key'
+bad unknown_mesh 'd["mesh"]["order"] = 2' 'mesh.order: unknown key'
+bad unknown_punch "$punch[\"depth\"] = 1" 'loads.punches\[0\].depth: unknown key'
+bad unknown_calibration 'd["calibration"]["k"] = 1.48' 'calibration.k: unknown key'
+bad unknown_contact 'd["contact"] = {"indenter": {"type": "sphere", "R": 50, "center": [0, 0]}, "force": 0.1, "glue": 1}' 'contact.glue: unknown key'
+
+# Types and ranges.
+bad geometry_type 'd["geometry"]["type"] = "torus"' 'geometry.type = "torus": must be one of'
+bad h_string 'd["geometry"]["h"] = "3"' 'geometry.h = "3": must be a length'
+bad h_huge 'd["geometry"]["h"] = 1e308' 'geometry.h = 1e\+308: must be a length in \(0, 10000\] mm'
+bad half_width_zero 'd["geometry"]["half_width"] = 0' 'geometry.half_width = 0: must be a length'
+bad E_negative 'd["material"]["E"] = -3' 'material.E = -3: must be a Young.s modulus in \(0, 1e12\] MPa'
+bad E_huge 'd["material"]["E"] = 1e200' 'material.E = 1e\+200: must be a Young.s modulus'
+bad nu_high 'd["material"]["nu"] = 0.7' 'material.nu = 0.7: must be a number in \[0, 0.5\]'
+bad nu_negative 'd["material"]["nu"] = -0.1' 'material.nu = -0.1: must be a number in \[0, 0.5\]'
+bad cap_h_ge_R 'd["geometry"] = {"type": "cap", "R": 3, "h": 3, "apex": [0, 0], "truncation_radius": 2}' 'geometry.h = 3: must be a number in \(0, R\)'
+bad cap_truncation 'd["geometry"] = {"type": "cap", "R": 129.7, "h": 3.04, "apex": [0, 0], "truncation_radius": 40}' 'geometry.truncation_radius = 40: .*where the cap thins to zero'
+bad no_sensors 'd["sensors"]["positions"] = []' 'sensors.positions = \[\]: must be a non-empty array'
+bad sensor_off_layer 'd["sensors"]["positions"] = [[7.95, 0]]' 'sensors.positions\[0\] = .*must lie inside the flat layer'
+bad sensor_duplicate 'd["sensors"]["positions"] = [[0, 0], [1, 0], [0, 0]]' 'sensors.positions\[2\] = .*same place as sensors.positions\[0\]'
+bad disc_zero 'd["sensors"]["disc_diameter"] = 0' 'sensors.disc_diameter = 0: must be a length'
+bad h_min_above_h_max 'd["mesh"]["h_min"] = 4' 'mesh.h_max = 3.0: must be a number >= mesh.h_min = 4'
+bad growth_one 'd["mesh"]["growth"] = 1' 'mesh.growth = 1: must be a number > 1'
+bad h_min_negative 'd["mesh"]["h_min"] = -0.4' 'mesh.h_min = -0.4: must be a length'
+bad punch_both "$punch[\"displacement\"] = 0.01" 'loads.punches\[0\] = .*exactly one of "force" \(N\) or "displacement"'
+bad punch_neither "del $punch[\"force\"]" 'loads.punches\[0\] = .*exactly one of "force"'
+bad punch_force_huge "$punch[\"force\"] = 1e200" 'loads.punches\[0\].force = 1e\+200: must be a force in \(0, 1e\+06\] N'
+bad punch_at_edge "$punch[\"center\"] = [7.5, 0]; $punch[\"diameter\"] = 1" 'loads.punches\[0\].center = \[7.5,0.0\]: the load disc .* must lie on the skin'
+bad punch_wider_than_layer "$punch[\"diameter\"] = 100" 'loads.punches\[0\].center = .*must lie on the skin'
+bad punch_on_corner "$punch[\"center\"] = [8, 8]" 'loads.punches\[0\].center = \[8.0,8.0\]: the load disc'
+bad punches_overlap 'd["loads"]["punches"].append({"center": [0.3, 0], "diameter": 0.5, "force": 1})' 'punches 1 and 2 overlap or touch'
+bad punches_identical 'd["loads"]["punches"].append(dict(d["loads"]["punches"][0]))' 'punches 1 and 2 overlap or touch'
+bad punch_too_deep "del $punch[\"force\"]; $punch[\"displacement\"] = 3.5" 'loads.punches\[0\].displacement = 3.5: must be < the skin.s thickness 3 mm'
+bad patch_direction_zero 'd["loads"]["patches"] = [{"center": [2, 0], "diameter": 0.5, "direction": [0, 0, 0], "force": 1}]' 'loads.patches\[0\].direction = \[0,0,0\]: must be a non-zero vector'
+bad spacing_tiny 'd["calibration"]["spacing"] = 1e-9' 'calibration.spacing = 1e-09: must be >= 2 x scan half-width' kfit
+bad no_loads 'del d["loads"]' 'loads = \{\}: solve needs at least one punch or patch'
+bad plane_on_flat 'd["contact"] = {"indenter": {"type": "plane"}, "force": 1}' 'contact.indenter.type = "plane": a plane on a flat layer' mesh
+bad hole_off_skin 'd["contact"] = {"indenter": {"type": "sphere", "R": 50, "center": [0, 0]}, "force": 0.1, "holes": [{"center": [7.9, 0], "diameter": 0.5}]}' 'contact.holes.0. = .*hole 1 of 1.*off the skin' mesh
+bad zone_at_side 'd["contact"] = {"indenter": {"type": "sphere", "R": 50, "center": [0, 0]}, "force": 1}; d["geometry"]["half_width"] = 5; d["loads"] = {}' 'contact.force = 1: .*would reach the truncated side' mesh
+
+# Imported surfaces.
+printf 'solid x\n garbage\nendsolid\n' >"$tmp/garbage.stl"
+variant stl_garbage 'd["geometry"] = {"type": "surface", "path": "garbage.stl"}; d["loads"] = {}'
+check stl_garbage 'garbage.stl' "$skinfem" mesh "$tmp/stl_garbage.json" --out "$tmp/out"
+variant stl_missing 'd["geometry"] = {"type": "surface", "path": "none.stl"}'
+check stl_missing 'geometry.path = "none.stl": must name an existing file' "$skinfem" mesh "$tmp/stl_missing.json" --out "$tmp/out"
+variant stl_extension 'd["geometry"] = {"type": "surface", "path": "base.json"}'
+check stl_extension 'geometry.path = "base.json": must be a .stl, .obj or .off file' "$skinfem" mesh "$tmp/stl_extension.json" --out "$tmp/out"
+
+# The command line.
+touch "$tmp/a_file"
+check out_is_file '--out .*a_file: exists and is not a directory' "$skinfem" mesh "$tmp/base.json" --out "$tmp/a_file"
+check out_under_file '--out .*a_file/sub: cannot create or write' "$skinfem" mesh "$tmp/base.json" --out "$tmp/a_file/sub"
+check unknown_subcommand "unknown subcommand 'frobnicate'; one of: mesh" "$skinfem" frobnicate "$tmp/base.json" --out "$tmp/out"
+check unknown_option '--frob' "$skinfem" mesh "$tmp/base.json" --frob --out "$tmp/out"
+check bad_solver '--solver' "$skinfem" solve "$tmp/base.json" --solver lu --out "$tmp/out"
+check bad_scales '--scales' "$skinfem" study "$tmp/base.json" --scales 1,-2 --out "$tmp/out"
+check error_scales_one '--error-scales: one coarser level' "$skinfem" report "$tmp/base.json" --error-scales 2 --out "$tmp/out"
+
+echo "$passed passed, $fail failed"
+[ $fail -eq 0 ]

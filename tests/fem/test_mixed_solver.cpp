@@ -194,6 +194,42 @@ TEST(MixedSolver, BlockSolveEqualsColumnByColumnSolves) {
   }
 }
 
+// Linear elasticity under force loads: u ∝ 1/E, p independent of E (scale invariance of the continuous
+// problem). The solver's scaled unknowns must keep that exact from E = 1e-6 to 1e12 MPa, for both roads,
+// ν = 0.5 and 0.3, point loads (block) and prescribed base displacements (single solve: u − u_c ∝ 1/E
+// does not hold there, so that case scales the prescribed values with 1/E too).
+TEST(MixedSolver, AnyYoungsModulusScalesTheSolutionExactly) {
+  const TetMesh m = box_mesh(1.5, 1.5, 0.6);
+  std::vector<bool> fixed(3 * m.num_nodes(), false);
+  for (int i = 0; i < m.num_nodes(); ++i)
+    if (m.node_marker(i) & kBase) fixed[3 * i] = fixed[3 * i + 1] = fixed[3 * i + 2] = true;
+  Eigen::MatrixXd F = Eigen::MatrixXd::Zero(3 * m.num_nodes(), 3);
+  int col = 0;
+  for (int i = 0; i < m.num_nodes() && col < F.cols(); ++i)
+    if (m.node_marker(i) == kTop) F(3 * i + col, col) = 1.0, ++col;
+  Eigen::VectorXd uc = Eigen::VectorXd::Zero(3 * m.num_nodes());
+  for (int i = 0; i < m.num_nodes(); ++i)
+    if (m.node_marker(i) & kBase) uc[3 * i] = 1e-3 * m.nodes(i, 1);  // a base shear, scaled by 3/E below
+  for (double nu : {0.5, 0.3})
+    for (SolverKind kind : {SolverKind::direct_ldlt, SolverKind::schur_cg}) {
+      const Lame ref_lame = Lame::from(3.0, nu);
+      const MixedMatrices ref_matrices = assemble_mixed(m, ref_lame);  // the solver keeps a reference
+      const MixedSolver ref(ref_matrices, ref_lame, fixed, kind);
+      const Eigen::MatrixXd U3 = ref.solve_block(F);
+      const MixedSolution s3 = ref.solve(F.col(0), uc);
+      for (double E : {1e-6, 1e12}) {
+        const Lame lame = Lame::from(E, nu);
+        const MixedMatrices matrices = assemble_mixed(m, lame);
+        const MixedSolver solver(matrices, lame, fixed, kind);
+        const Eigen::MatrixXd U = solver.solve_block(F) * (E / 3.0);
+        EXPECT_LT((U - U3).norm(), 1e-9 * U3.norm()) << "E " << E << " nu " << nu << " " << to_string(kind);
+        const MixedSolution s = solver.solve(F.col(0) * (E / 3.0), uc);
+        EXPECT_LT((s.u - s3.u).norm(), 1e-9 * s3.u.norm()) << "E " << E << " nu " << nu;
+        EXPECT_LT((s.p * (3.0 / E) - s3.p).norm(), 1e-9 * s3.p.norm()) << "E " << E << " nu " << nu;
+      }
+    }
+}
+
 TEST(MixedSolver, SingularSystemIsAnErrorNotNaN) {
   // Nothing fixed: rigid motions make A singular; both roads must refuse rather than return NaN.
   const TetMesh m = box_mesh(1.0, 1.0, 0.8);

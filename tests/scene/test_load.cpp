@@ -298,7 +298,8 @@ TEST(SceneLoad, UnknownKeys) {
 
 TEST(SceneLoad, MissingRequiredKeys) {
   EXPECT_SCENE_ERROR(R"({"material": {"E": 3, "nu": 0.5}})", "geometry: required key is missing");
-  EXPECT_SCENE_ERROR(with(&Doc::material, R"({"nu": 0.5})"), "material.E: required key is missing", "> 0");
+  EXPECT_SCENE_ERROR(with(&Doc::material, R"({"nu": 0.5})"), "material.E: required key is missing",
+                     "a Young's modulus in (0, 1e12] MPa");
   EXPECT_SCENE_ERROR(with(&Doc::geometry, R"({"R": 129.7, "h": 3.04})"),
                      "geometry.type: required key is missing", "\"cap\", \"flat\", \"surface\"");
   EXPECT_SCENE_ERROR(with(&Doc::geometry, R"({"type": "cap", "R": 129.7, "h": 3.04, "apex": [0, 0]})"),
@@ -328,9 +329,9 @@ TEST(SceneLoad, MissingRequiredKeys) {
 TEST(SceneLoad, WrongTypes) {
   EXPECT_SCENE_ERROR("[1, 2]", "(top level) = [1,2]: must be an object");
   EXPECT_SCENE_ERROR(with(&Doc::material, R"({"E": "3", "nu": 0.5})"),
-                     "material.E = \"3\": must be a number > 0");
+                     "material.E = \"3\": must be a Young's modulus in (0, 1e12] MPa");
   EXPECT_SCENE_ERROR(with(&Doc::material, R"({"E": true, "nu": 0.5})"),
-                     "material.E = true: must be a number > 0");
+                     "material.E = true: must be a Young's modulus in (0, 1e12] MPa");
   EXPECT_SCENE_ERROR(with(&Doc::material, "[3, 0.5]"),
                      "material = [3,0.5]: must be an object with keys E, nu");
   EXPECT_SCENE_ERROR(with(&Doc::geometry, R"({"type": 1})"), "geometry.type = 1: must be one of");
@@ -367,9 +368,10 @@ TEST(SceneLoad, NumbersMustBeFinite) {
 }
 
 TEST(SceneLoad, Material) {
-  EXPECT_SCENE_ERROR(with(&Doc::material, R"({"E": 0, "nu": 0.5})"), "material.E = 0: must be a number > 0");
+  EXPECT_SCENE_ERROR(with(&Doc::material, R"({"E": 0, "nu": 0.5})"),
+                     "material.E = 0: must be a Young's modulus in (0, 1e12] MPa");
   EXPECT_SCENE_ERROR(with(&Doc::material, R"({"E": -3, "nu": 0.5})"),
-                     "material.E = -3: must be a number > 0");
+                     "material.E = -3: must be a Young's modulus in (0, 1e12] MPa");
   EXPECT_SCENE_ERROR(with(&Doc::material, R"({"E": 3, "nu": 0.7})"),
                      "scenes/x.json: material.nu = 0.7: must be a number in [0, 0.5]");
   EXPECT_SCENE_ERROR(with(&Doc::material, R"({"E": 3, "nu": -0.1})"),
@@ -382,7 +384,7 @@ TEST(SceneLoad, CapGeometry) {
     return with(&Doc::geometry, R"({"type": "cap", "R": )" + R + R"(, "h": )" + h +
                                     R"(, "apex": [0.5, 0], "truncation_radius": )" + rt + "}");
   };
-  EXPECT_SCENE_ERROR(cap("0", "3.04", "12"), "geometry.R = 0: must be a number > 0");
+  EXPECT_SCENE_ERROR(cap("0", "3.04", "12"), "geometry.R = 0: must be a length in (0, 10000] mm");
   EXPECT_SCENE_ERROR(cap("129.7", "0", "12"), "geometry.h = 0: must be a number in (0, R) = (0, 129.7)");
   EXPECT_SCENE_ERROR(cap("129.7", "129.7", "12"),
                      "geometry.h = 129.7: must be a number in (0, R) = (0, 129.7)");
@@ -391,15 +393,16 @@ TEST(SceneLoad, CapGeometry) {
                      "geometry.truncation_radius = 30: must be a number > 0 and < 27.91",
                      "sqrt(R^2 - (R - h)^2)", "thins to zero");
   EXPECT_SCENE_ERROR(cap("129.7", "3.04", "27.92"), "geometry.truncation_radius = 27.92", "< 27.91");
-  EXPECT_SCENE_ERROR(cap("129.7", "3.04", "0"), "geometry.truncation_radius = 0: must be a number > 0");
+  EXPECT_SCENE_ERROR(cap("129.7", "3.04", "0"),
+                     "geometry.truncation_radius = 0: must be a number > 0 and < 27.9");
   EXPECT_NO_THROW(parse_scene(cap("129.7", "3.04", "27.9"), kSource));
 }
 
 TEST(SceneLoad, FlatGeometry) {
   EXPECT_SCENE_ERROR(with(&Doc::geometry, R"({"type": "flat", "h": 0, "half_width": 15})"),
-                     "geometry.h = 0: must be a number > 0");
+                     "geometry.h = 0: must be a length in (0, 10000] mm");
   EXPECT_SCENE_ERROR(with(&Doc::geometry, R"({"type": "flat", "h": 3, "half_width": -1})"),
-                     "geometry.half_width = -1: must be a number > 0");
+                     "geometry.half_width = -1: must be a length in (0, 10000] mm");
 }
 
 TEST(SceneLoad, Sensors) {
@@ -413,7 +416,7 @@ TEST(SceneLoad, Sensors) {
   EXPECT_SCENE_ERROR(with(&Doc::sensors, R"({"positions": [], "disc_diameter": 0.2})"),
                      "sensors.positions = []: must be a non-empty array of points [x, y]");
   EXPECT_SCENE_ERROR(with(&Doc::sensors, R"({"positions": [[0, 0]], "disc_diameter": 0})"),
-                     "sensors.disc_diameter = 0: must be a number > 0");
+                     "sensors.disc_diameter = 0: must be a length in (0, 10000] mm");
   EXPECT_SCENE_ERROR(
       with(&Doc::sensors, R"({"positions": [[0, 0], [1, 0], [2, 0], [1, 2, 3]], "disc_diameter": 0.2})"),
       "sensors.positions[3] = [1,2,3]: must be a point [x, y]");
@@ -453,7 +456,7 @@ TEST(SceneLoad, SensorsInsideFootprint) {
 TEST(SceneLoad, Mesh) {
   const auto mesh = [](const std::string& body) { return with(&Doc::mesh, "{" + body + "}"); };
   EXPECT_SCENE_ERROR(mesh(R"("h_min": 0, "growth": 1.3, "h_max": 2)"),
-                     "mesh.h_min = 0: must be a number > 0");
+                     "mesh.h_min = 0: must be a length in (0, 10000] mm");
   EXPECT_SCENE_ERROR(mesh(R"("h_min": 0.5, "growth": 1.3, "h_max": 0.4)"),
                      "mesh.h_max = 0.4: must be a number >= mesh.h_min = 0.5");
   EXPECT_SCENE_ERROR(mesh(R"("h_min": 0.5, "growth": 1, "h_max": 2)"),
@@ -471,7 +474,7 @@ TEST(SceneLoad, Mesh) {
   EXPECT_SCENE_ERROR(
       mesh(
           R"("h_min": 0.5, "growth": 1.3, "h_max": 2, "regions": [{"from": [0, 0], "to": [1, 0], "radius": 1, "h": 0}])"),
-      "mesh.regions[0].h = 0: must be a number > 0");
+      "mesh.regions[0].h = 0: must be a length in (0, 10000] mm");
   EXPECT_SCENE_ERROR(
       mesh(R"("h_min": 0.5, "growth": 1.3, "h_max": 2, "regions": [{"from": [0, 0], "to": 1, "radius": 1}])"),
       "mesh.regions[0].to = 1: must be a point [x, y]");
@@ -485,15 +488,15 @@ TEST(SceneLoad, Punches) {
                                  body + "}]}");
   };
   EXPECT_SCENE_ERROR(punch(R"("center": [0, 0], "diameter": 0, "force": 1)"),
-                     "loads.punches[1].diameter = 0: must be a number > 0");
+                     "loads.punches[1].diameter = 0: must be a length in (0, 10000] mm");
   EXPECT_SCENE_ERROR(punch(R"("center": [0, 0], "diameter": 0.5)"), "loads.punches[1] = {",
                      "must have exactly one of \"force\" (N) or \"displacement\" (mm)");
   EXPECT_SCENE_ERROR(punch(R"("center": [0, 0], "diameter": 0.5, "force": 1, "displacement": 0.01)"),
                      "loads.punches[1] = {", "must have exactly one of \"force\"");
   EXPECT_SCENE_ERROR(punch(R"("center": [0, 0], "diameter": 0.5, "force": 0)"),
-                     "loads.punches[1].force = 0: must be a number > 0");
+                     "loads.punches[1].force = 0: must be a force in (0, 1e+06] N");
   EXPECT_SCENE_ERROR(punch(R"("center": [0, 0], "diameter": 0.5, "displacement": -0.01)"),
-                     "loads.punches[1].displacement = -0.01: must be a number > 0");
+                     "loads.punches[1].displacement = -0.01: must be a length in (0, 10000] mm");
 }
 
 TEST(SceneLoad, Patches) {
@@ -501,20 +504,20 @@ TEST(SceneLoad, Patches) {
     return with(&Doc::extra, R"(, "loads": {"patches": [{)" + body + "}]}");
   };
   EXPECT_SCENE_ERROR(patch(R"("center": [0, 0], "diameter": 0, "direction": [1, 0, 0], "force": 1)"),
-                     "loads.patches[0].diameter = 0: must be a number > 0");
+                     "loads.patches[0].diameter = 0: must be a length in (0, 10000] mm");
   EXPECT_SCENE_ERROR(patch(R"("center": [0, 0], "diameter": 0.5, "direction": [0, 0, 0], "force": 1)"),
                      "loads.patches[0].direction = [0,0,0]: must be a non-zero vector [x, y, z]");
   EXPECT_SCENE_ERROR(patch(R"("center": [0, 0], "diameter": 0.5, "direction": [1, 0], "force": 1)"),
                      "loads.patches[0].direction = [1,0]: must be a vector [x, y, z]");
   EXPECT_SCENE_ERROR(patch(R"("center": [0, 0], "diameter": 0.5, "direction": [1, 0, 0], "force": -1)"),
-                     "loads.patches[0].force = -1: must be a number > 0");
+                     "loads.patches[0].force = -1: must be a force in (0, 1e+06] N");
 }
 
 TEST(SceneLoad, Calibration) {
   EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "calibration": {"punch_diameter": 0})"),
-                     "calibration.punch_diameter = 0: must be a number > 0");
+                     "calibration.punch_diameter = 0: must be a length in (0, 10000] mm");
   EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "calibration": {"spacing": 0})"),
-                     "calibration.spacing = 0: must be a number > 0");
+                     "calibration.spacing = 0: must be a length in (0, 10000] mm");
   EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "calibration": {"scan_half_width": -1})"),
                      "calibration.scan_half_width = -1: must be a number >= 0");
   EXPECT_NO_THROW(parse_scene(with(&Doc::extra, R"(, "calibration": {"scan_half_width": 0})"), kSource));
@@ -737,7 +740,7 @@ TEST(SceneLoad, ContactHoleOffTheSkin) {
   EXPECT_NO_THROW(
       parse_scene(contact(kPlane + R"(, "holes": [{"center": [12.25, 0], "diameter": 0.5}])"), kSource));
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "holes": [{"center": [1, 0], "diameter": 0.5, "h": 0}])"),
-                     "contact.holes[0].h = 0", "must be a number > 0");
+                     "contact.holes[0].h = 0", "must be a length in (0, 10000] mm");
   // Flat: |x|, |y| <= half_width - diameter/2.
   EXPECT_SCENE_ERROR(flat_contact(R"("indenter": {"type": "sphere", "R": 50, "center": [0, 0]}, "force": 1,
                                      "holes": [{"center": [0, -9.9], "diameter": 0.4}])"),
@@ -802,27 +805,27 @@ TEST(SceneLoad, ContactErrors) {
   EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "sphere", "center": [0, 0]}, "force": 1)"),
                      "contact.indenter.R: required key is missing");
   EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "sphere", "R": 0, "center": [0, 0]}, "force": 1)"),
-                     "contact.indenter.R = 0: must be a number > 0");
+                     "contact.indenter.R = 0: must be a length in (0, 10000] mm");
   EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "sphere", "R": 5}, "force": 1)"),
                      "contact.indenter.center: required key is missing");
   EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "plane"})"), "contact = {",
                      "must have exactly one of \"force\" (N) or \"depth\" (mm)");
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "depth": 0.01)"), "contact = {", "exactly one of");
   EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "plane"}, "force": 0)"),
-                     "contact.force = 0: must be a number > 0");
+                     "contact.force = 0: must be a force in (0, 1e+06] N");
   EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "plane"}, "depth": -0.1)"),
-                     "contact.depth = -0.1: must be a number > 0");
+                     "contact.depth = -0.1: must be a length in (0, 10000] mm");
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "holes": {"center": [0, 0]})"), "contact.holes = {",
                      "must be an array of holes");
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "holes": [{"center": [0, 0]}])"),
                      "contact.holes[0].diameter: required key is missing");
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "holes": [{"center": [0, 0], "diameter": 0}])"),
-                     "contact.holes[0].diameter = 0: must be a number > 0");
+                     "contact.holes[0].diameter = 0: must be a length in (0, 10000] mm");
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "holes": [{"center": [0], "diameter": 1}])"),
                      "contact.holes[0].center = [0]: must be a point [x, y]");
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "zone_radius": 0)"),
-                     "contact.zone_radius = 0: must be a number > 0");
-  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "h": -1)"), "contact.h = -1: must be a number > 0");
+                     "contact.zone_radius = 0: must be a length in (0, 10000] mm");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "h": -1)"), "contact.h = -1: must be a length in (0, 10000] mm");
   EXPECT_SCENE_ERROR(
       contact(kPlane + R"(, "friction": {"mode": "kinetic"})"),
       "contact.friction.mode = \"kinetic\": must be one of \"none\", \"static\", \"uncoupled\", "
@@ -844,9 +847,9 @@ TEST(SceneLoad, ContactErrors) {
         contact(kPlane + R"(, "sweep": {"from": [0, 0], "to": [1, 0], "positions": )" + n + "}"),
         "contact.sweep.positions = " + std::string(n) + ": must be an integer in [2, 100000]");
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "sweep": {"from": [0, 0], "to": [1, 0], "hole_diameter": 0})"),
-                     "contact.sweep.hole_diameter = 0: must be a number > 0");
+                     "contact.sweep.hole_diameter = 0: must be a length in (0, 10000] mm");
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "sweep": {"from": [0, 0], "to": [1, 0], "h": 0})"),
-                     "contact.sweep.h = 0: must be a number > 0");
+                     "contact.sweep.h = 0: must be a length in (0, 10000] mm");
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "sweep": {"from": [0, 0], "to": [1, 0], "step": 1})"),
                      "contact.sweep.step: unknown key; allowed: from, to, positions, hole_diameter, h");
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "colour": 1)"), "contact.colour: unknown key; allowed: indenter");
