@@ -9,6 +9,7 @@
 
 #include "app/commands.hpp"
 #include "app/common.hpp"
+#include "app/resources.hpp"
 #include "app/stages.hpp"
 #include "mesh/build.hpp"
 #include "mesh/quality.hpp"
@@ -64,9 +65,15 @@ nlohmann::json mesh_stage(const Scene& scene, const TetMesh& mesh, double mesh_s
 int run_mesh(const Scene& scene, const std::string& out_dir) {
   check_output_dir(out_dir);
   Stopwatch clock;
+  const MeshEstimate estimate = check_resources(scene, g_max_dofs);
   progress("meshing " + scene.name);
   const TetMesh mesh = build_mesh(scene);
-  mesh_stage(scene, mesh, clock.seconds(), out_dir);
+  nlohmann::json summary = mesh_stage(scene, mesh, clock.seconds(), out_dir);
+  if (estimate.known) {
+    summary["estimated_tets"] = estimate.tets;
+    summary["estimated_over_actual_tets"] = estimate.tets / mesh.num_tets();
+    write_json(out_dir + "/summary.json", summary);
+  }
   return 0;
 }
 

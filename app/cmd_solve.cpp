@@ -14,6 +14,7 @@
 
 #include "app/commands.hpp"
 #include "app/common.hpp"
+#include "app/resources.hpp"
 #include "fem/elastic_model.hpp"
 #include "fem/fields.hpp"
 #include "mesh/build.hpp"
@@ -28,6 +29,7 @@ int run_solve(const Scene& scene, const std::string& out_dir, SolverKind solver)
   Stopwatch total;
   nlohmann::json wall;
   Stopwatch clock;
+  check_resources(scene, g_max_dofs);
   progress("meshing " + scene.name);
   const TetMesh mesh = build_mesh(scene);
   wall["mesh"] = clock.seconds();

@@ -7,17 +7,24 @@
 // right-hand side, resident memory after the factorization, residuals and CG iterations, and
 // center_ratio with its change from the previous level; then the observed order and the Richardson
 // limit. Writes DIR/study.json and DIR/study.csv.
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
 #include "app/commands.hpp"
 #include "app/common.hpp"
+#include "app/resources.hpp"
 #include "validation/refinement_study.hpp"
 
 namespace skinfem::app {
 
 int run_study(const Scene& scene, const std::string& out_dir, const std::vector<double>& scales) {
   check_output_dir(out_dir);
+  Scene finest = scene;  // the study scales h_min and h_max (validation/refinement_study.hpp)
+  const double s_min = *std::min_element(scales.begin(), scales.end());
+  finest.mesh.h_min *= s_min;
+  finest.mesh.h_max *= s_min;
+  check_resources(finest, g_max_dofs);
   const std::vector<SolverKind> solvers{SolverKind::direct_ldlt, SolverKind::schur_cg};
   const StudyResult study = refinement_study(scene, scales, solvers, progress);
 

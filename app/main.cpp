@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "app/resources.hpp"
 #include "mesh/surface.hpp"
 #include "scene/load.hpp"
 
@@ -60,7 +61,12 @@ int main(int argc, char** argv) {
       ->delimiter(',')
       ->capture_default_str();
   report->add_flag("--no-error-bars", no_error_bars, "skip the coarser levels (no error bars)");
+  double max_dofs = 0;
   for (auto* sub : {mesh, solve, study, kfit, green_cmd, contact_cmd, defect, report}) {
+    sub->add_option(
+           "--max-dofs", max_dofs,
+           "refuse scenes whose estimated mesh exceeds this many DOFs (default: available memory only)")
+        ->check(CLI::NonNegativeNumber);
     sub->add_option("scene", scene_path, "scene JSON file")->required();
     sub->add_option("--out", out_dir,
                     sub == report ? "output directory (default: out/<scene name>)" : "output directory")
@@ -83,6 +89,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
+    skinfem::app::g_max_dofs = max_dofs;
     const skinfem::Scene scene = skinfem::load_scene(scene_path);
     if (mesh->parsed()) return skinfem::app::run_mesh(scene, out_dir);
     const auto solver =

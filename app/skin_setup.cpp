@@ -1,6 +1,7 @@
 #include "app/skin_setup.hpp"
 
 #include "app/common.hpp"
+#include "app/resources.hpp"
 #include "mesh/build.hpp"
 
 namespace skinfem::app {
@@ -8,6 +9,7 @@ namespace skinfem::app {
 std::shared_ptr<Skin> skin_setup(const Scene& scene) {
   auto s = std::make_shared<Skin>();
   Stopwatch clock;
+  check_resources(scene, g_max_dofs);
   progress("meshing " + scene.name);
   s->mesh = build_mesh(scene);
   s->wall["mesh"] = clock.seconds();

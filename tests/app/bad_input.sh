@@ -100,6 +100,12 @@ bad plane_on_flat 'd["contact"] = {"indenter": {"type": "plane"}, "force": 1}' '
 bad hole_off_skin 'd["contact"] = {"indenter": {"type": "sphere", "R": 50, "center": [0, 0]}, "force": 0.1, "holes": [{"center": [7.9, 0], "diameter": 0.5}]}' 'contact.holes.0. = .*hole 1 of 1.*off the skin' mesh
 bad zone_at_side 'd["contact"] = {"indenter": {"type": "sphere", "R": 50, "center": [0, 0]}, "force": 1}; d["geometry"]["half_width"] = 5; d["loads"] = {}' 'contact.force = 1: .*would reach the truncated side' mesh
 
+# Resource guards: refused from the size estimate, before meshing (issue 11's probe scenes).
+bad huge_mesh 'd["mesh"]["h_min"] = 0.001' 'the mesh would have at least .* tetrahedra .* GB available; coarsen mesh.h_min'
+bad thin_layer_fine 'd["geometry"] = {"type": "flat", "h": 0.1, "half_width": 20}; d["mesh"]["h_min"] = 0.05; d["loads"]["punches"][0]["displacement"] = 0.01; del d["loads"]["punches"][0]["force"]' 'the mesh would have .* tetrahedra .* GB available'
+variant max_dofs 'pass'
+check max_dofs 'above --max-dofs = 1e\+03; coarsen mesh.h_min' "$skinfem" solve "$tmp/max_dofs.json" --max-dofs 1000 --out "$tmp/out"
+
 # Imported surfaces.
 printf 'solid x\n garbage\nendsolid\n' >"$tmp/garbage.stl"
 variant stl_garbage 'd["geometry"] = {"type": "surface", "path": "garbage.stl"}; d["loads"] = {}'

@@ -1,0 +1,66 @@
+#include "app/resources.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "app/common.hpp"
+
+namespace skinfem::app {
+
+double g_max_dofs = 0;
+
+double estimated_memory_gb(double dofs) { return 19e3 * dofs * std::max(1.0, std::cbrt(dofs / 2e5)) / 1e9; }
+
+double available_memory_gb() {
+  std::ifstream in("/proc/meminfo");
+  std::string key;
+  double kb = 0;
+  std::string unit;
+  while (in >> key >> kb >> unit)
+    if (key == "MemAvailable:") return kb / 1e6 * 1.024;
+  return 0;
+}
+
+MeshEstimate check_resources(const Scene& scene, double max_dofs) {
+  const double avail = available_memory_gb();
+  // Stop integrating once the estimate is past every limit: the answer is already "no".
+  double limit_dofs = max_dofs > 0 ? max_dofs : 1e12;
+  if (avail > 0)
+    for (double d = 1e4; d < 1e12; d *= 1.1)
+      if (estimated_memory_gb(d) > avail) {
+        limit_dofs = std::min(limit_dofs, d);
+        break;
+      }
+  const double stop = 2 * limit_dofs / 4.3;
+  const MeshEstimate e = estimate_mesh(scene, stop);
+  if (!e.known) return e;
+  const char* about = e.tets > stop ? "at least" : "about";
+  const double gb = estimated_memory_gb(e.dofs);
+  char buf[512];
+  const char* fields =
+      "mesh.h_min, mesh.growth, mesh.regions[].h, contact.h, contact.sweep.h, contact.holes[].h";
+  if (max_dofs > 0 && e.dofs > max_dofs) {
+    std::snprintf(buf, sizeof buf,
+                  "%s: the mesh would have %s %.3g tetrahedra and %.3g DOFs, above --max-dofs = %.3g; "
+                  "coarsen %s",
+                  scene.source_path.c_str(), about, e.tets, e.dofs, max_dofs, fields);
+    throw SceneError(buf);
+  }
+  if (avail > 0 && gb > avail) {
+    std::snprintf(buf, sizeof buf,
+                  "%s: the mesh would have %s %.3g tetrahedra and %.3g DOFs, needing about %.3g GB, above "
+                  "the %.3g GB available; coarsen %s",
+                  scene.source_path.c_str(), about, e.tets, e.dofs, gb, avail, fields);
+    throw SceneError(buf);
+  }
+  std::snprintf(buf, sizeof buf,
+                "mesh estimate: about %.3g tetrahedra, %.3g DOFs, %.2g GB (%.3g GB available)", e.tets,
+                e.dofs, gb, avail);
+  progress(buf);
+  return e;
+}
+
+}  // namespace skinfem::app

@@ -1,0 +1,24 @@
+// Resource guards: refuse, before meshing, a scene whose mesh would not fit the machine
+// (mesh/size_estimate.hpp), with one line that gives the estimate, the limit and the scene fields that set
+// the size.
+#pragma once
+
+#include "mesh/size_estimate.hpp"
+#include "scene/scene.hpp"
+
+namespace skinfem::app {
+
+// Memory the chain needs per DOF, GB: 19 kB per DOF at 188k DOFs (the default scene's report peaks at
+// 3.5 GB), growing as DOFs^(1/3) beyond (the factor's fill in 3D).
+double estimated_memory_gb(double dofs);
+// MemAvailable of /proc/meminfo, GB (0 if unknown).
+double available_memory_gb();
+
+// Throws SceneError when the estimate exceeds --max-dofs (if > 0) or the available memory; else prints the
+// estimate as a progress line and returns it.
+MeshEstimate check_resources(const Scene& scene, double max_dofs);
+
+// The --max-dofs of this process (0: only the memory limit), set once by main.
+extern double g_max_dofs;
+
+}  // namespace skinfem::app

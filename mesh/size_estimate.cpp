@@ -1,0 +1,99 @@
+#include "mesh/size_estimate.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "mesh/shape.hpp"
+#include "mesh/sizing.hpp"
+
+namespace skinfem {
+
+namespace {
+constexpr double kTetsPerCube = 43.3;  // c⁻¹: elements per h³ of volume (fitted below)
+constexpr double kThinCap = 2.5;       // κ: the element size a thin skin allows, in thicknesses
+constexpr double kDofsPerTet = 4.3;    // P2 displacements + P1 pressure per tetrahedron (graded meshes)
+constexpr int kDepthPoints = 6;        // midpoint rule through the thickness
+
+struct Integrator {
+  const SizingField& size;
+  const SkinShape& shape;
+  double cx, cy, radius;  // a cap's footprint: the disc of `radius` about (cx, cy); radius 0 for a flat layer
+  double stop, tets = 0;
+
+  double thickness(double x, double y) const {
+    if (radius > 0 && std::hypot(x - cx, y - cy) > radius) return 0;
+    return shape.top_z(x, y);
+  }
+
+  // Elements per mm² of footprint above (x, y): ∫₀ᵗ dz / (c h_eff³).
+  double column(double x, double y) const {
+    const double t = thickness(x, y);
+    if (!(t > 0)) return 0;
+    double sum = 0;
+    for (int k = 0; k < kDepthPoints; ++k) {
+      const double z = t * (k + 0.5) / kDepthPoints;
+      const double h = std::min(size.in_volume(x, y, z), kThinCap * t);
+      sum += kTetsPerCube / (h * h * h);
+    }
+    return sum * t / kDepthPoints;
+  }
+  // The smallest size in the column above (x, y).
+  double min_size(double x, double y) const {
+    const double t = thickness(x, y);
+    if (!(t > 0)) return 0;
+    double m = size.h_max();
+    for (int k = 0; k < kDepthPoints; ++k)
+      m = std::min(m, size.in_volume(x, y, t * (k + 0.5) / kDepthPoints));
+    return std::min(m, kThinCap * t);
+  }
+
+  // Adaptive midpoint rule on the square cell of centre (x, y) and half-side r: split while the sizes at
+  // its centre and corners differ by more than 30 % and the cell is wider than twice the smallest size.
+  void cell(double x, double y, double r, int depth) {
+    if (tets > stop) return;
+    const std::array<std::array<double, 2>, 5> p{
+        {{x, y}, {x - r, y - r}, {x + r, y - r}, {x - r, y + r}, {x + r, y + r}}};
+    double lo = 1e300, hi = 0;
+    for (const auto& q : p) {
+      const double h = min_size(q[0], q[1]);
+      if (h > 0) lo = std::min(lo, h), hi = std::max(hi, h);
+    }
+    if (depth < 40 && hi > 0 && (hi > 1.3 * lo || lo == 1e300) && 2 * r > 2 * lo) {
+      for (int i : {-1, 1})
+        for (int j : {-1, 1}) cell(x + 0.5 * r * i, y + 0.5 * r * j, 0.5 * r, depth + 1);
+      return;
+    }
+    // 2×2 Gauss points: the footprint's edge cuts some cells, which the zero columns outside account for.
+    const double g = r / std::sqrt(3.0);
+    double sum = 0;
+    for (int i : {-1, 1})
+      for (int j : {-1, 1}) sum += column(x + g * i, y + g * j);
+    tets += sum * r * r;
+  }
+};
+}  // namespace
+
+MeshEstimate estimate_mesh(const Scene& scene, double stop_tets) {
+  MeshEstimate e;
+  const SkinShape shape(scene.geometry);
+  if (!shape.exact()) return e;
+  const SizingField size(scene);
+  const Geometry& g = scene.geometry;
+  const bool cap = g.kind == GeometryKind::cap;
+  const double r = cap ? g.cap.truncation_radius : g.flat.half_width;
+  const double cx = cap ? g.cap.apex_x : 0, cy = cap ? g.cap.apex_y : 0;
+  Integrator in{size, shape, cx, cy, cap ? r : 0, stop_tets};
+  // Start from a grid of cells no wider than h_max, so no feature is missed between samples.
+  const int n = std::max(1, static_cast<int>(std::ceil(2 * r / size.h_max())));
+  const double half = r / n;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) in.cell(cx - r + (2 * i + 1) * half, cy - r + (2 * j + 1) * half, half, 0);
+  e.tets = in.tets;
+  e.dofs = kDofsPerTet * in.tets;
+  e.known = true;
+  return e;
+}
+
+}  // namespace skinfem

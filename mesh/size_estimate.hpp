@@ -1,0 +1,24 @@
+// How big the mesh of a scene will be, before meshing it: the sizing field's element density integrated
+// over the skin, so that a scene asking for billions of elements is refused in milliseconds instead of
+// exhausting the machine (issue: resource guards).
+//
+// A tetrahedron of edge h has volume h³/(6√2); TetGen's quality bounds keep elements near that shape, so
+// a region of size h holds about V/(c h³) elements. Where the skin is thinner than h the quality bound
+// caps the element size at about κ·t (t the local thickness), so h_eff = min(h, κ t). c and κ are fitted
+// to TetGen's actual counts (size_estimate.cpp); the estimate is meant to be right within a factor 2.
+#pragma once
+
+#include "scene/scene.hpp"
+
+namespace skinfem {
+
+struct MeshEstimate {
+  double tets = 0;     // quadratic tetrahedra
+  double dofs = 0;     // free displacement + pressure DOFs of the Taylor–Hood system, about
+  bool known = false;  // false for imported surfaces (their thickness is not known before meshing)
+};
+
+// Stops integrating (and returns what it has, already above the limit) once `tets` exceeds stop_tets.
+MeshEstimate estimate_mesh(const Scene& scene, double stop_tets = 1e12);
+
+}  // namespace skinfem
