@@ -3,10 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 #include "app/common.hpp"
+#include "fem/memory.hpp"
 
 namespace skinfem::app {
 
@@ -14,15 +13,7 @@ double g_max_dofs = 0;
 
 double estimated_memory_gb(double dofs) { return 19e3 * dofs * std::max(1.0, std::cbrt(dofs / 2e5)) / 1e9; }
 
-double available_memory_gb() {
-  std::ifstream in("/proc/meminfo");
-  std::string key;
-  double kb = 0;
-  std::string unit;
-  while (in >> key >> kb >> unit)
-    if (key == "MemAvailable:") return kb / 1e6 * 1.024;
-  return 0;
-}
+double available_memory_gb() { return available_memory_mb() / 1024; }
 
 MeshEstimate check_resources(const Scene& scene, double max_dofs) {
   const double avail = available_memory_gb();

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <condition_variable>
+#include <cstdio>
 #include <exception>
 #include <mutex>
 #include <stdexcept>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "fem/dense_rate.hpp"
+#include "fem/memory.hpp"
 
 namespace skinfem {
 
@@ -116,7 +118,17 @@ MumpsLdlt::MumpsLdlt(const Eigen::SparseMatrix<double>& K, const FactorProgress&
   s.id.jcn = s.jcn.data();
   s.id.a = s.a.data();
   try {
-    s.call(1);  // analysis: ordering, symbolic factorization, flop estimate
+    s.call(1);  // analysis: ordering, symbolic factorization, flop and memory estimates
+    // INFOG(17): the factorization's estimated memory, MB (in-core, all of MUMPS's data).
+    const double need_mb = s.id.infog[16], avail_mb = available_memory_mb();
+    if (avail_mb > 0 && need_mb > avail_mb) {
+      char buf[200];
+      std::snprintf(buf, sizeof buf,
+                    "the factorization of %lld unknowns would need about %.3g GB (MUMPS analysis), more than "
+                    "the %.3g GB available; coarsen the mesh",
+                    static_cast<long long>(K.rows()), need_mb / 1024, avail_mb / 1024);
+      throw std::runtime_error(buf);
+    }
     Watcher watcher(progress, s.id.rinfog[0], every_s);
     s.call(2);
   } catch (...) {
@@ -165,5 +177,6 @@ double MumpsLdlt::factor_entries() const {
 }
 
 double MumpsLdlt::estimated_flops() const { return impl_->id.rinfog[0]; }
+double MumpsLdlt::estimated_memory_mb() const { return impl_->id.infog[16]; }
 
 }  // namespace skinfem

@@ -26,6 +26,9 @@ class MumpsLdlt {
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
   double factor_entries() const;   // entries in the factors (INFOG(29))
   double estimated_flops() const;  // the analysis's estimate of the factorization's flops (RINFOG(1))
+  // The analysis's estimate of the factorization's memory, MB (INFOG(17)); construction refuses (throws)
+  // when it exceeds the machine's available memory.
+  double estimated_memory_mb() const;
 
  private:
   struct Impl;

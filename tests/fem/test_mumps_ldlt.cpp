@@ -42,6 +42,8 @@ TEST(MumpsLdlt, FlopEstimateOfADenseMatrixIsNCubedOverThree) {
   const double closed = static_cast<double>(n) * n * n / 3;
   EXPECT_GE(ldlt.estimated_flops(), closed);
   EXPECT_LE(ldlt.estimated_flops(), closed * (1 + 3.0 / n));
+  // Its memory estimate holds at least the factor's n(n+1)/2 doubles.
+  EXPECT_GE(ldlt.estimated_memory_mb(), n * (n + 1) / 2 * 8.0 / (1024 * 1024));
 }
 
 TEST(MumpsLdlt, ProgressRisesBelowOneThenEndsAtOne) {
