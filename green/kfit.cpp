@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace skinfem::green {
 namespace {
@@ -40,6 +41,13 @@ KFit fit_k_line(const std::vector<double>& x, const std::vector<double>& g, doub
     cs[i] = cost(ks[i]);
   }
   const int best = static_cast<int>(std::min_element(cs.begin(), cs.end()) - cs.begin());
+  // A minimum at the scan's edge is the bound, not a fit: the rescaled half-space does not fit these samples.
+  if (best == 0 || best == n_scan - 1)
+    throw std::domain_error("k fit: the least-squares minimum lies at the search bound k = " +
+                            std::to_string(ks[best]).substr(0, 4) + " of [" +
+                            std::to_string(kMin).substr(0, 3) + ", " + std::to_string(kMax).substr(0, 3) +
+                            "]; the k-rescaled half-space does not fit this skin (h = " + std::to_string(h) +
+                            " mm)");
   double lo = ks[std::max(best - 1, 0)], hi = ks[std::min(best + 1, n_scan - 1)];
 
   // Golden section on [lo, hi].

@@ -18,7 +18,8 @@ struct KFit {
 /// Least-squares fit, uniform weights, of rescaled_green(x_i, 0, h, k).<component> to the samples g_i taken
 /// on the line y = 0 at offsets x_i (force − sensor, mm). Minimises over k ∈ [0.5, 4] by a coarse logarithmic
 /// scan followed by golden section search in the bracket around the best scan point (relative bracket width
-/// 1e-12 at exit). Throws std::invalid_argument on empty or mismatched inputs or h ≤ 0.
+/// 1e-12 at exit). Throws std::invalid_argument on empty or mismatched inputs or h ≤ 0, and
+/// std::domain_error when the minimum lies at a bound of [0.5, 4] (no fit: the bound is not an answer).
 KFit fit_k_line(const std::vector<double>& x, const std::vector<double>& g, double h,
                 GreenComponent component);
 

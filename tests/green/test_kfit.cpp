@@ -48,6 +48,16 @@ TEST(KFit, RecoversKnownK) {
     }
 }
 
+TEST(KFit, AMinimumBeyondTheSearchRangeIsAnErrorNotTheBound) {
+  // Samples of the rescaled model itself with k = 0.3 and 6: the least-squares minimum lies outside [0.5, 4].
+  const std::vector<double> x = line(3.0 * kH, 121);
+  for (double k0 : {0.3, 6.0}) {
+    std::vector<double> g;
+    for (double xi : x) g.push_back(rescaled_green(xi, 0.0, kH, k0).zz);
+    EXPECT_THROW(fit_k_line(x, g, kH, GreenComponent::zz), std::domain_error) << "k0 " << k0;
+  }
+}
+
 TEST(KFit, CentralAmplitudeRatio) {
   for (double k0 : {0.8, 1.48, 2.5})
     EXPECT_NEAR(k_central(rescaled_green(0.0, 0.0, kH, k0).zz, kH), k0, 1e-14 * k0);
