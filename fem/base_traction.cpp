@@ -56,6 +56,10 @@ BaseTraction::BaseTraction(const TetMesh& mesh, const Eigen::VectorXd& reactions
   for (int i = 0; i < nb; ++i) R.row(i) = reactions.segment<3>(3 * s.index.nodes[i]).transpose();
   s.total = R.colwise().sum().transpose();
   Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> chol(base_mass(mesh, s.index));
+  // The base mass matrix is SPD for any valid mesh; a failure means a degenerate base (zero-area faces).
+  if (chol.info() != Eigen::Success)
+    throw std::runtime_error(
+        "base traction: the base's mass matrix cannot be factored (degenerate base faces)");
   s.t = chol.solve(R);
 }
 
@@ -96,7 +100,11 @@ struct ReadingFunctionals::Impl {
   const TetMesh& mesh;
   BaseIndex index;
   Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> mass;
-  explicit Impl(const TetMesh& m) : mesh(m), index(m), mass(base_mass(m, index)) {}
+  explicit Impl(const TetMesh& m) : mesh(m), index(m), mass(base_mass(m, index)) {
+    if (mass.info() != Eigen::Success)
+      throw std::runtime_error(
+          "reading functionals: the base's mass matrix cannot be factored (degenerate base faces)");
+  }
 };
 
 ReadingFunctionals::ReadingFunctionals(const TetMesh& mesh) : impl_(new Impl(mesh)) {}
