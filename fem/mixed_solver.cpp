@@ -100,21 +100,27 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
     if (s.mass.info() != Eigen::Success) throw SolverError("pressure mass matrix is singular");
     s.precond_scale = 1.0 / (1.0 / (2 * lame.mu) + lame.inv_lambda);
   } else {
-    // Lower triangle of [A_ff Bᵀ; B −C] is all MUMPS reads.
-    std::vector<Eigen::Triplet<double>> t;
-    t.reserve(s.Aff.nonZeros() / 2 + s.nf + s.Bf.nonZeros() + s.C.nonZeros());
+    // Lower triangle of [A_ff/σ  Bᵀ; B  −σC] is all MUMPS reads, built straight into its arrays.
+    MumpsLdlt::Triplets t;
+    const size_t nnz = s.Aff.nonZeros() / 2 + s.nf + s.Bf.nonZeros() + s.C.nonZeros();
+    t.row.reserve(nnz);
+    t.col.reserve(nnz);
+    t.value.reserve(nnz);
+    const auto add = [&t](int r, int c, double v) {
+      t.row.push_back(r);
+      t.col.push_back(c);
+      t.value.push_back(v);
+    };
     for (int c = 0; c < s.Aff.outerSize(); ++c)
       for (SparseMatrixd::InnerIterator it(s.Aff, c); it; ++it)
-        if (it.row() >= c) t.emplace_back(it.row(), c, it.value() / s.sigma);
+        if (it.row() >= c) add(it.row(), c, it.value() / s.sigma);
     for (int c = 0; c < s.Bf.outerSize(); ++c)
-      for (SparseMatrixd::InnerIterator it(s.Bf, c); it; ++it) t.emplace_back(s.nf + it.row(), c, it.value());
+      for (SparseMatrixd::InnerIterator it(s.Bf, c); it; ++it) add(s.nf + it.row(), c, it.value());
     for (int c = 0; c < s.C.outerSize(); ++c)
       for (SparseMatrixd::InnerIterator it(s.C, c); it; ++it)
-        if (it.row() >= c) t.emplace_back(s.nf + it.row(), s.nf + c, -s.sigma * it.value());
-    SparseMatrixd K(s.nf + s.np, s.nf + s.np);
-    K.setFromTriplets(t.begin(), t.end());
+        if (it.row() >= c) add(s.nf + it.row(), s.nf + c, -s.sigma * it.value());
     try {
-      s.ldlt = std::make_unique<MumpsLdlt>(K, progress);
+      s.ldlt = std::make_unique<MumpsLdlt>(s.nf + s.np, std::move(t), progress);
     } catch (const std::runtime_error& e) {
       throw SolverError(std::string("cannot factor the saddle-point matrix: ") + e.what());
     }

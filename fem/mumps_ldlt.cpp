@@ -89,16 +89,30 @@ class Watcher {
 }  // namespace
 
 MumpsLdlt::MumpsLdlt(const Eigen::SparseMatrix<double>& K, const FactorProgress& progress, double every_s)
-    : impl_(new Impl) {
-  std::lock_guard<std::mutex> lock(mumps_mutex);
-  Impl& s = *impl_;
+    : MumpsLdlt(static_cast<int>(K.rows()), lower_triangle(K), progress, every_s) {}
+
+MumpsLdlt::Triplets MumpsLdlt::lower_triangle(const Eigen::SparseMatrix<double>& K) {
+  Triplets t;
   for (int c = 0; c < K.outerSize(); ++c)
     for (Eigen::SparseMatrix<double>::InnerIterator it(K, c); it; ++it)
       if (it.row() >= c) {
-        s.irn.push_back(static_cast<MUMPS_INT>(it.row() + 1));
-        s.jcn.push_back(c + 1);
-        s.a.push_back(it.value());
+        t.row.push_back(static_cast<int>(it.row()));
+        t.col.push_back(c);
+        t.value.push_back(it.value());
       }
+  return t;
+}
+
+MumpsLdlt::MumpsLdlt(int n, Triplets lower, const FactorProgress& progress, double every_s)
+    : impl_(new Impl) {
+  std::lock_guard<std::mutex> lock(mumps_mutex);
+  Impl& s = *impl_;
+  // MUMPS counts from 1; the value array is taken over without a copy.
+  s.irn = std::move(lower.row);
+  s.jcn = std::move(lower.col);
+  s.a = std::move(lower.value);
+  for (auto& i : s.irn) ++i;
+  for (auto& j : s.jcn) ++j;
   s.id.par = 1;
   s.id.sym = 2;  // general symmetric (indefinite): LDLᵀ with 2×2 pivots
   s.id.comm_fortran = kUseCommWorld;
@@ -112,7 +126,7 @@ MumpsLdlt::MumpsLdlt(const Eigen::SparseMatrix<double>& K, const FactorProgress&
   // (its generator's state carries over); SCOTCH is not reproducible either. AMF is bitwise reproducible.
   s.id.icntl[6] = 2;
   s.id.icntl[13] = 60;  // ICNTL(14): +60 % working-space relaxation for delayed pivots
-  s.id.n = static_cast<MUMPS_INT>(K.rows());
+  s.id.n = static_cast<MUMPS_INT>(n);
   s.id.nnz = static_cast<MUMPS_INT8>(s.a.size());
   s.id.irn = s.irn.data();
   s.id.jcn = s.jcn.data();
@@ -126,16 +140,25 @@ MumpsLdlt::MumpsLdlt(const Eigen::SparseMatrix<double>& K, const FactorProgress&
       std::snprintf(buf, sizeof buf,
                     "the factorization of %lld unknowns would need about %.3g GB (MUMPS analysis), more than "
                     "the %.3g GB available; coarsen the mesh",
-                    static_cast<long long>(K.rows()), need_mb / 1024, avail_mb / 1024);
+                    static_cast<long long>(n), need_mb / 1024, avail_mb / 1024);
       throw std::runtime_error(buf);
     }
-    Watcher watcher(progress, s.id.rinfog[0], every_s);
-    s.call(2);
+    {
+      Watcher watcher(progress, s.id.rinfog[0], every_s);
+      s.call(2);
+    }
   } catch (...) {
     s.id.job = -2;
     dmumps_c(&s.id);
     throw;
   }
+  // The solve phase needs only the factors (no iterative refinement or error analysis is requested):
+  // release the matrix.
+  std::vector<MUMPS_INT>().swap(s.irn);
+  std::vector<MUMPS_INT>().swap(s.jcn);
+  std::vector<double>().swap(s.a);
+  s.id.irn = s.id.jcn = nullptr;
+  s.id.a = nullptr;
 }
 
 MumpsLdlt::~MumpsLdlt() {

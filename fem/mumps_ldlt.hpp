@@ -4,6 +4,7 @@
 
 #include <Eigen/Sparse>
 #include <memory>
+#include <vector>
 
 #include "fem/factor_progress.hpp"
 
@@ -16,6 +17,14 @@ class MumpsLdlt {
   // every `every_s` seconds during the factorization phase, and once at its end.
   explicit MumpsLdlt(const Eigen::SparseMatrix<double>& K, const FactorProgress& progress = {},
                      double every_s = 5);
+  // The lower triangle (row ≥ col, 0-based) as coordinate arrays, taken over so that no second copy of a
+  // large matrix is alive while MUMPS factors it. n: the matrix's order.
+  struct Triplets {
+    std::vector<int> row, col;
+    std::vector<double> value;
+  };
+  MumpsLdlt(int n, Triplets lower, const FactorProgress& progress = {}, double every_s = 5);
+  static Triplets lower_triangle(const Eigen::SparseMatrix<double>& K);
   ~MumpsLdlt();
   MumpsLdlt(const MumpsLdlt&) = delete;
   MumpsLdlt& operator=(const MumpsLdlt&) = delete;
