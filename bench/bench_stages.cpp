@@ -1,0 +1,123 @@
+// Time per stage against DOFs: the flat layer (scenes/flat_layer.json) and the paper's cap
+// (scenes/candelier2011.json) with every mesh size scaled by 2.83, 2 and 1.41 (flat) or 2 and 1.41 (cap).
+// Each benchmark reports its DOFs as a counter, so bench/exponents.py can fit time ∝ DOFs^e per stage.
+//
+//   $ build/bench/skinfem_bench --benchmark_format=json > bench.json && bench/exponents.py bench.json
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "fem/assembly.hpp"
+#include "fem/elastic_model.hpp"
+#include "green/calibration.hpp"
+#include "green/fe_green.hpp"
+#include "green/kfit.hpp"
+#include "mesh/build.hpp"
+#include "scene/load.hpp"
+
+namespace skinfem {
+namespace {
+
+const char* kScenes[2] = {"flat_layer", "candelier2011"};
+
+Scene scaled(int scene, double s) {
+  Scene sc = load_scene(std::string(SKINFEM_SOURCE_DIR) + "/scenes/" + kScenes[scene] + ".json");
+  sc.contact.reset();  // the Green and k stages: the skin without the contact refinement
+  sc.mesh.h_min *= s;
+  sc.mesh.h_max *= s;
+  for (auto& r : sc.mesh.regions) r.h *= s;
+  return sc;
+}
+
+// One meshed and factored skin per (scene, scale), shared by the benchmarks that need it.
+struct Skin {
+  Scene scene;
+  TetMesh mesh;
+  std::unique_ptr<ElasticModel> model;
+};
+const Skin& skin(int scene, double s) {
+  static std::map<std::pair<int, double>, std::unique_ptr<Skin>> cache;
+  auto& p = cache[{scene, s}];
+  if (!p) {
+    p = std::make_unique<Skin>();
+    p->scene = scaled(scene, s);
+    p->mesh = build_mesh(p->scene);
+    p->model = std::make_unique<ElasticModel>(p->mesh, p->scene.material, p->scene.geometry.side,
+                                              std::vector<Punch>{});
+  }
+  return *p;
+}
+
+double scale_of(const benchmark::State& st) { return st.range(1) / 100.0; }
+void dofs(benchmark::State& st, const Skin& k) {
+  st.counters["dofs"] = k.model->solver().free_dofs();
+  st.SetLabel(std::string(kScenes[st.range(0)]) + " x" + std::to_string(scale_of(st)).substr(0, 4));
+}
+
+void BM_Mesh(benchmark::State& st) {
+  const Scene sc = scaled(st.range(0), scale_of(st));
+  for (auto _ : st) benchmark::DoNotOptimize(build_mesh(sc));
+  dofs(st, skin(st.range(0), scale_of(st)));
+}
+void BM_Assemble(benchmark::State& st) {
+  const Skin& k = skin(st.range(0), scale_of(st));
+  const Lame lame = Lame::from(k.scene.material.E, k.scene.material.nu);
+  for (auto _ : st) benchmark::DoNotOptimize(assemble_mixed(k.mesh, lame));
+  dofs(st, k);
+}
+void BM_Factor(benchmark::State& st) {
+  const Skin& k = skin(st.range(0), scale_of(st));
+  for (auto _ : st)
+    MixedSolver(k.model->matrices(), k.model->lame(), k.model->fixed(), SolverKind::direct_ldlt);
+  dofs(st, k);
+}
+// The 40 adjoint solves of 10 sensors as one block (green/fe_green).
+void BM_BlockSolve40(benchmark::State& st) {
+  const Skin& k = skin(st.range(0), scale_of(st));
+  Eigen::MatrixXd F = Eigen::MatrixXd::Random(3 * k.mesh.num_nodes(), 40);
+  for (auto _ : st) benchmark::DoNotOptimize(k.model->solver().solve_block(F));
+  dofs(st, k);
+}
+// Adjoints of every sensor, then sensor #1's calibration scan (the punch-load profile) and both k fits.
+void BM_KfitEndToEnd(benchmark::State& st) {
+  const Skin& k = skin(st.range(0), scale_of(st));
+  const auto& sc = k.scene;
+  const double h = sc.geometry.kind == GeometryKind::flat ? sc.geometry.flat.h : sc.geometry.cap.h;
+  for (auto _ : st) {
+    const green::FeGreen fe(*k.model, sc.sensors);
+    const auto prof = green::scan_profile(fe, 0, green::LayerLoad::punch, 0.5 * sc.calibration.punch_diameter,
+                                          std::min(4 * h, 9.0), sc.calibration.spacing);
+    benchmark::DoNotOptimize(green::fit_profile(prof.offset_x, prof.point, h));
+  }
+  dofs(st, k);
+}
+// Green map evaluation alone: sensor #1's scan on already solved adjoints.
+void BM_GreenScan(benchmark::State& st) {
+  const Skin& k = skin(st.range(0), scale_of(st));
+  const green::FeGreen fe(*k.model, k.scene.sensors);
+  for (auto _ : st)
+    benchmark::DoNotOptimize(green::scan_profile(fe, 0, green::LayerLoad::punch,
+                                                 0.5 * k.scene.calibration.punch_diameter, 9.0,
+                                                 k.scene.calibration.spacing));
+  dofs(st, k);
+}
+
+// (scene, scale × 100): flat at 2.83, 2, 1.41; the cap at 2, 1.41.
+void levels(benchmark::internal::Benchmark* b) {
+  for (int s : {283, 200, 141}) b->Args({0, s});
+  for (int s : {200, 141}) b->Args({1, s});
+  b->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(2)->ReportAggregatesOnly(false);
+}
+BENCHMARK(BM_Mesh)->Apply(levels);
+BENCHMARK(BM_Assemble)->Apply(levels);
+BENCHMARK(BM_Factor)->Apply(levels);
+BENCHMARK(BM_BlockSolve40)->Apply(levels);
+BENCHMARK(BM_GreenScan)->Apply(levels);
+BENCHMARK(BM_KfitEndToEnd)->Apply(levels);
+
+}  // namespace
+}  // namespace skinfem
+
+BENCHMARK_MAIN();
