@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "app/common.hpp"
+#include "fem/face_index.hpp"
 #include "mesh/shape.hpp"
 
 namespace skinfem::app {
@@ -17,12 +18,15 @@ std::unique_ptr<AdjointSetup> adjoint_setup(const Scene& scene, std::shared_ptr<
   return s;
 }
 
-double thickness_at(const Scene& scene, const Vec2& sensor) {
-  const SkinShape shape(scene.geometry);
-  return shape.exact() ? shape.top_z(sensor[0], sensor[1]) : nominal_thickness(scene);
+double thickness_at(const Scene& scene, const TetMesh& mesh, const Vec2& p) {
+  try {
+    return skin_thickness(scene.geometry, mesh, p[0], p[1]);
+  } catch (const std::out_of_range& e) {
+    throw SceneError(scene.source_path + ": sensors: " + e.what() + "; every sensor must lie under the skin");
+  }
 }
 
-double scan_half_width(const Scene& scene, double h, const Vec2& sensor) {
+double scan_half_width(const Scene& scene, const TetMesh& mesh, double h, const Vec2& sensor) {
   const double wanted = scene.calibration.scan_half_width > 0 ? scene.calibration.scan_half_width : 4 * h;
   // The loaded disc must stay on the top: along x through the sensor, both ways, to the footprint's edge
   // (half a step inside it, so the grid's last offset is strictly on the skin).
@@ -34,6 +38,21 @@ double scan_half_width(const Scene& scene, double h, const Vec2& sensor) {
   } else if (g.kind == GeometryKind::cap) {
     const double reach = g.cap.truncation_radius - a, dy = sensor[1] - g.cap.apex_y;
     room = std::sqrt(std::max(0.0, reach * reach - dy * dy)) - std::abs(sensor[0] - g.cap.apex_x);
+  } else {
+    // An imported skin: walk out along x from the sensor, both ways, while the disc's rim stays above the
+    // meshed top (its footprint is known only from the mesh).
+    const PlanarFaceIndex top(mesh, kTop);
+    double ps, pt;
+    const auto on_top = [&](double x, double y) { return top.find(x, y, ps, pt) >= 0; };
+    room = 0;
+    for (double w = 0; w <= wanted + 1e-12; w += scene.calibration.spacing) {
+      bool ok = true;
+      for (int side : {-1, 1})
+        for (double dy : {-a, 0.0, a})
+          ok = ok && on_top(sensor[0] + side * (w + (dy == 0 ? a : 0)), sensor[1] + dy);
+      if (!ok) break;
+      room = w + 0.5 * scene.calibration.spacing;  // the last offset fits; half a step, as below
+    }
   }
   const double w = room >= wanted ? wanted : room - 0.5 * scene.calibration.spacing;
   if (!(w > 0))

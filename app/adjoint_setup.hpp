@@ -23,10 +23,12 @@ struct AdjointSetup {
 // skin: an already factored skin of this scene, or null to mesh and factor one.
 std::unique_ptr<AdjointSetup> adjoint_setup(const Scene& scene, std::shared_ptr<Skin> skin = nullptr);
 
-// Skin thickness above a sensor (exact shapes) or the scene's nominal thickness.
-double thickness_at(const Scene& scene, const Vec2& sensor);
+// Skin thickness above a base point (fem/face_index.hpp skin_thickness); a point with no skin above it is a
+// scene error naming it.
+double thickness_at(const Scene& scene, const TetMesh& mesh, const Vec2& p);
 // Half-width of the calibration scan along x through a sensor: calibration.scan_half_width if given, else 4h,
-// shortened so that the loaded disc stays on the skin's footprint on both sides (flat and cap skins).
-double scan_half_width(const Scene& scene, double h, const Vec2& sensor);
+// shortened so that the loaded disc stays on the skin's footprint on both sides (flat and cap skins exactly,
+// imported skins by walking along the meshed top).
+double scan_half_width(const Scene& scene, const TetMesh& mesh, double h, const Vec2& sensor);
 
 }  // namespace skinfem::app

@@ -56,8 +56,8 @@ nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const 
   for (int s = 0; s < ns; ++s) {
     progress_step("green: calibration scans", s, ns, clock.seconds());
     const auto& pos = scene.sensors.positions[s];
-    const double h = thickness_at(scene, pos);
-    const auto prof = green::scan_profile(fe, s, LayerLoad::punch, radius, scan_half_width(scene, h, pos),
+    const double h = thickness_at(scene, mesh, pos);
+    const auto prof = green::scan_profile(fe, s, LayerLoad::punch, radius, scan_half_width(scene, mesh, h, pos),
                                           scene.calibration.spacing);
     std::vector<GreenSample> exact, exact_disc;
     if (flat) {

@@ -404,12 +404,13 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
       in.solver = contact->solver.get();
       in.fe = adjoints->fe.get();
       in.sensors = scene.sensors;
-      for (const auto& s : scene.sensors.positions) in.thickness.push_back(thickness_at(scene, s));
+      for (const auto& s : scene.sensors.positions)
+        in.thickness.push_back(thickness_at(scene, skin->mesh, s));
       in.E = scene.material.E;
       in.nu = scene.material.nu;
       in.force = scene.contact->force.value_or(report["contact"]["force_N"].get<double>());
       in.center = contact_center(scene);
-      in.center_thickness = thickness_at(scene, in.center);
+      in.center_thickness = thickness_at(scene, skin->mesh, in.center);
       in.equivalent_radius = equivalent_sphere_radius(scene);
       in.k_paper = green::kPaperK;
       in.k_best = report["kfit"]["k_lsq_line"].get<double>();

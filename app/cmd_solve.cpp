@@ -48,7 +48,7 @@ int run_solve(const Scene& scene, const std::string& out_dir, SolverKind solver)
   wall["solve"] = clock.seconds();
 
   const Eigen::Vector3d applied(r.applied_force_N[0], r.applied_force_N[1], r.applied_force_N[2]);
-  const LoadMetrics metrics = load_metrics(scene, r, base);
+  const LoadMetrics metrics = load_metrics(scene, mesh, r, base);
   const double balance = metrics.force_balance_rel;
   nlohmann::json summary;
   if (metrics.center_ratio) summary["center_ratio"] = *metrics.center_ratio;

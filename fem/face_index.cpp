@@ -4,6 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
+
+#include "mesh/shape.hpp"
+#include "mesh/surface_quadrature.hpp"
 
 namespace skinfem {
 
@@ -57,6 +61,21 @@ int PlanarFaceIndex::find(double x, double y, double& s, double& t) const {
   if (best < 0 || best_score < -1e-9) return -1;
   s = bs, t = bt;
   return best;
+}
+
+double skin_thickness(const Geometry& geometry, const TetMesh& mesh, double x, double y) {
+  const SkinShape shape(geometry);
+  if (shape.exact()) return shape.top_z(x, y);
+  const PlanarFaceIndex top(mesh, kTop);
+  double s, t;
+  const int f = top.find(x, y, s, t);
+  if (f < 0)
+    throw std::out_of_range("no skin above (" + std::to_string(x) + ", " + std::to_string(y) +
+                            "): the point is off the top surface");
+  const auto N = triangle_shape(s, t);
+  double z = 0;
+  for (int k = 0; k < 6; ++k) z += N[k] * mesh.nodes(mesh.faces(f, k), 2);
+  return z;
 }
 
 }  // namespace skinfem

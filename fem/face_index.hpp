@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "mesh/tet_mesh.hpp"
+#include "scene/scene.hpp"
 
 namespace skinfem {
 
@@ -25,5 +26,10 @@ class PlanarFaceIndex {
   int nx_ = 1, ny_ = 1;
   std::vector<std::vector<int>> buckets_;  // face indices
 };
+
+// The skin's thickness above the base point (x, y), mm: the exact top for caps and flat layers, else the
+// height of the meshed top surface there (its quadratic faces), so imported skins get their own thickness.
+// Throws std::out_of_range, naming the point, when no skin lies above it.
+double skin_thickness(const Geometry& geometry, const TetMesh& mesh, double x, double y);
 
 }  // namespace skinfem

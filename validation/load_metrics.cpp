@@ -2,11 +2,12 @@
 
 #include <cmath>
 
-#include "mesh/shape.hpp"
+#include "fem/face_index.hpp"
 
 namespace skinfem {
 
-LoadMetrics load_metrics(const Scene& scene, const LoadCaseResult& r, const BaseTraction& base) {
+LoadMetrics load_metrics(const Scene& scene, const TetMesh& mesh, const LoadCaseResult& r,
+                         const BaseTraction& base) {
   LoadMetrics m;
   const Eigen::Vector3d applied(r.applied_force_N[0], r.applied_force_N[1], r.applied_force_N[2]);
   m.force_balance_rel = (base.total_force() + applied).norm() / applied.norm();
@@ -19,7 +20,7 @@ LoadMetrics load_metrics(const Scene& scene, const LoadCaseResult& r, const Base
     if (std::abs(scene.loads.patches[0].direction[2]) > 0.99) normal_force = scene.loads.patches[0].force;
   }
   if (normal_force != 0) {
-    const double h = SkinShape(scene.geometry).top_z(m.centre[0], m.centre[1]);
+    const double h = skin_thickness(scene.geometry, mesh, m.centre[0], m.centre[1]);
     m.center_ratio =
         base.reading_at(m.centre[0], m.centre[1]).sigma_z / (3 * normal_force / (2 * M_PI * h * h));
   }

@@ -71,7 +71,7 @@ StudyResult refinement_study(const Scene& base_scene, const std::vector<double>&
       timing.extra_rhs_s = seconds_since(t0);
       level.solvers.push_back(timing);
 
-      const LoadMetrics metrics = load_metrics(scene, r, BaseTraction(mesh, r.reactions));
+      const LoadMetrics metrics = load_metrics(scene, mesh, r, BaseTraction(mesh, r.reactions));
       if (!metrics.center_ratio) throw std::invalid_argument("refinement study needs a normal load");
       level.force_balance_rel = metrics.force_balance_rel;
       level.center_ratio = *metrics.center_ratio;
