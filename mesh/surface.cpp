@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "mesh/footprint.hpp"
+#include "mesh/self_intersection.hpp"
 
 namespace skinfem {
 
@@ -219,6 +220,10 @@ SurfaceMesh import_surface(const std::string& path) {
   }
   // Faces the reader dropped (complex edges) leave open edges, which this check reports.
   check_watertight(s, path);
+  if (const auto x = first_self_intersection(s))
+    throw MeshError(path + ": surface intersects itself near (" + std::to_string((*x)[0]) + ", " +
+                    std::to_string((*x)[1]) + ", " + std::to_string((*x)[2]) +
+                    ") mm; a closed surface that does not cross itself is required");
 
   const double diameter = (s.vertices.colwise().maxCoeff() - s.vertices.colwise().minCoeff()).norm();
   const double tol = 1e-9 * diameter;

@@ -110,6 +110,15 @@ check max_dofs 'above --max-dofs = 1e\+03; coarsen mesh.h_min' "$skinfem" solve 
 printf 'solid x\n garbage\nendsolid\n' >"$tmp/garbage.stl"
 variant stl_garbage 'd["geometry"] = {"type": "surface", "path": "garbage.stl"}; d["loads"] = {}'
 check stl_garbage 'garbage.stl' "$skinfem" mesh "$tmp/stl_garbage.json" --out "$tmp/out"
+/usr/bin/python3 "$(dirname "$0")/box_stl.py" "$tmp/open.stl" --open
+variant stl_open 'd["geometry"] = {"type": "surface", "path": "open.stl"}; d["loads"] = {}'
+check stl_open 'open.stl: surface is not watertight' "$skinfem" mesh "$tmp/stl_open.json" --out "$tmp/out"
+/usr/bin/python3 "$(dirname "$0")/box_stl.py" "$tmp/crossing.stl" --overlap
+variant stl_self_intersecting 'd["geometry"] = {"type": "surface", "path": "crossing.stl"}; d["loads"] = {}'
+check stl_self_intersecting 'crossing.stl: surface intersects itself near \(' "$skinfem" mesh "$tmp/stl_self_intersecting.json" --out "$tmp/out"
+/usr/bin/python3 -c 'import random, sys; random.seed(1); open(sys.argv[1], "wb").write(bytes(random.randrange(256) for _ in range(300)))' "$tmp/binary.stl"
+variant stl_binary_garbage 'd["geometry"] = {"type": "surface", "path": "binary.stl"}; d["loads"] = {}'
+check stl_binary_garbage 'binary.stl: (surface has no faces|cannot be read)' "$skinfem" mesh "$tmp/stl_binary_garbage.json" --out "$tmp/out"
 variant stl_missing 'd["geometry"] = {"type": "surface", "path": "none.stl"}'
 check stl_missing 'geometry.path = "none.stl": must name an existing file' "$skinfem" mesh "$tmp/stl_missing.json" --out "$tmp/out"
 variant stl_extension 'd["geometry"] = {"type": "surface", "path": "base.json"}'

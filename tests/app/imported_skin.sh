@@ -8,25 +8,7 @@ set -u
 skinfem=$1
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-/usr/bin/python3 - "$tmp/box.stl" <<'PY'
-import sys
-L, H = 8.0, 3.0
-v = [(-L, -L, 0), (L, -L, 0), (L, L, 0), (-L, L, 0), (-L, -L, H), (L, -L, H), (L, L, H), (-L, L, H)]
-quads = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]  # outward
-out = ["solid box"]
-for q in quads:
-    for tri in ((q[0], q[1], q[2]), (q[0], q[2], q[3])):
-        a, b, c = (v[i] for i in tri)
-        u = [b[k] - a[k] for k in range(3)]
-        w = [c[k] - a[k] for k in range(3)]
-        n = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]]
-        m = sum(x * x for x in n) ** 0.5
-        out.append(" facet normal %g %g %g\n  outer loop" % tuple(x / m for x in n))
-        out += ["   vertex %g %g %g" % p for p in (a, b, c)]
-        out.append("  endloop\n endfacet")
-out.append("endsolid box")
-open(sys.argv[1], "w").write("\n".join(out) + "\n")
-PY
+/usr/bin/python3 "$(dirname "$0")/box_stl.py" "$tmp/box.stl"
 cat >"$tmp/box.json" <<'JSON'
 {"geometry": {"type": "surface", "path": "box.stl"}, "material": {"E": 3.0, "nu": 0.5},
  "sensors": {"positions": [[0.0, 0.0]], "disc_diameter": 0.2},

@@ -1,0 +1,35 @@
+#!/usr/bin/python3
+"""Writes a closed ASCII STL box, 16 x 16 x 3 mm with its base on z = 0 and outward normals, for the
+command-line tests. Usage: box_stl.py OUT [--open] [--overlap]
+  --open     drop the last two triangles (an open surface)
+  --overlap  add a second box shifted by (4, 4, 0): closed and manifold, but self-intersecting"""
+import sys
+
+L, H = 8.0, 3.0
+V = [(-L, -L, 0), (L, -L, 0), (L, L, 0), (-L, L, 0), (-L, -L, H), (L, -L, H), (L, L, H), (-L, L, H)]
+QUADS = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]
+
+
+def triangles(shift):
+    for q in QUADS:
+        for tri in ((q[0], q[1], q[2]), (q[0], q[2], q[3])):
+            yield [tuple(V[i][k] + shift[k] for k in range(3)) for i in tri]
+
+
+def facet(a, b, c):
+    u = [b[k] - a[k] for k in range(3)]
+    w = [c[k] - a[k] for k in range(3)]
+    n = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]]
+    m = sum(x * x for x in n) ** 0.5
+    lines = [" facet normal %g %g %g" % tuple(x / m for x in n), "  outer loop"]
+    lines += ["   vertex %g %g %g" % p for p in (a, b, c)]
+    return lines + ["  endloop", " endfacet"]
+
+
+tris = list(triangles((0, 0, 0)))
+if "--open" in sys.argv:
+    tris = tris[:-2]
+if "--overlap" in sys.argv:
+    tris += list(triangles((4, 4, 0)))
+out = ["solid box"] + [line for t in tris for line in facet(*t)] + ["endsolid box"]
+open(sys.argv[1], "w").write("\n".join(out) + "\n")
