@@ -26,6 +26,21 @@ double thickness_at(const Scene& scene, const TetMesh& mesh, const Vec2& p) {
   }
 }
 
+void check_sensors_on_skin(const Scene& scene, const TetMesh& mesh) {
+  const PlanarFaceIndex base(mesh, kBase);
+  const double r = 0.5 * scene.sensors.disc_diameter;
+  for (size_t i = 0; i < scene.sensors.positions.size(); ++i) {
+    const Vec2& p = scene.sensors.positions[i];
+    double s, t;
+    for (auto [dx, dy] : {std::pair{0.0, 0.0}, {r, 0.0}, {-r, 0.0}, {0.0, r}, {0.0, -r}})
+      if (base.find(p[0] + dx, p[1] + dy, s, t) < 0)
+        throw SceneError(scene.source_path + ": sensors: sensor " + std::to_string(i + 1) + " at (" +
+                         std::to_string(p[0]) + ", " + std::to_string(p[1]) + "): its disc (diameter " +
+                         std::to_string(scene.sensors.disc_diameter) +
+                         ") is not entirely on the skin's base; sensors must lie under the skin");
+  }
+}
+
 double scan_half_width(const Scene& scene, const TetMesh& mesh, double h, const Vec2& sensor) {
   const double wanted = scene.calibration.scan_half_width > 0 ? scene.calibration.scan_half_width : 4 * h;
   // The loaded disc must stay on the top: along x through the sensor, both ways, to the footprint's edge

@@ -26,6 +26,9 @@ std::unique_ptr<AdjointSetup> adjoint_setup(const Scene& scene, std::shared_ptr<
 // Skin thickness above a base point (fem/face_index.hpp skin_thickness); a point with no skin above it is a
 // scene error naming it.
 double thickness_at(const Scene& scene, const TetMesh& mesh, const Vec2& p);
+// Throws SceneError naming the first sensor whose disc is not entirely under the skin (imported skins: the
+// scene cannot check it before meshing).
+void check_sensors_on_skin(const Scene& scene, const TetMesh& mesh);
 // Half-width of the calibration scan along x through a sensor: calibration.scan_half_width if given, else 4h,
 // shortened so that the loaded disc stays on the skin's footprint on both sides (flat and cap skins exactly,
 // imported skins by walking along the meshed top).

@@ -57,8 +57,8 @@ nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const 
     progress_step("green: calibration scans", s, ns, clock.seconds());
     const auto& pos = scene.sensors.positions[s];
     const double h = thickness_at(scene, mesh, pos);
-    const auto prof = green::scan_profile(fe, s, LayerLoad::punch, radius, scan_half_width(scene, mesh, h, pos),
-                                          scene.calibration.spacing);
+    const auto prof = green::scan_profile(fe, s, LayerLoad::punch, radius,
+                                          scan_half_width(scene, mesh, h, pos), scene.calibration.spacing);
     std::vector<GreenSample> exact, exact_disc;
     if (flat) {
       const green::LayerGreen layer(h, scene.material.nu, LayerLoad::punch, radius);

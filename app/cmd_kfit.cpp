@@ -54,8 +54,8 @@ nlohmann::json kfit_stage(const Scene& scene, const AdjointSetup& setup, const s
     progress_step("kfit: calibration scans", s, ns, clock.seconds());
     const auto& pos = scene.sensors.positions[s];
     const double h = thickness_at(scene, setup.mesh, pos);
-    const auto prof =
-        green::scan_profile(fe, s, load, radius, scan_half_width(scene, setup.mesh, h, pos), scene.calibration.spacing);
+    const auto prof = green::scan_profile(fe, s, load, radius, scan_half_width(scene, setup.mesh, h, pos),
+                                          scene.calibration.spacing);
     const green::KReport fe_k = green::fit_profile(prof.offset_x, prof.point, h);
     nlohmann::json js = {{"sensor", s + 1},
                          {"x_mm", pos[0]},

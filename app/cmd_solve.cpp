@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "app/adjoint_setup.hpp"
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "app/resources.hpp"
@@ -32,6 +33,7 @@ int run_solve(const Scene& scene, const std::string& out_dir, SolverKind solver)
   check_resources(scene, g_max_dofs);
   progress("meshing " + scene.name);
   const TetMesh mesh = build_mesh(scene);
+  check_sensors_on_skin(scene, mesh);
   wall["mesh"] = clock.seconds();
 
   progress("assembling and factoring (" + std::string(to_string(solver)) + ")");
@@ -54,8 +56,7 @@ int run_solve(const Scene& scene, const std::string& out_dir, SolverKind solver)
   if (metrics.center_ratio) summary["center_ratio"] = *metrics.center_ratio;
 
   clock = Stopwatch();
-  prepare_output_dir(out_dir);
-  write_fields_vtu(out_dir + "/fields.vtu", mesh, model.lame(), r.solution);
+  // Every reading before the first file: a run that fails leaves nothing behind.
   std::ostringstream csv;
   csv << "sensor,x_mm,y_mm,sigma_z_kPa,sigma_x_kPa\n";
   csv.precision(10);
@@ -64,6 +65,8 @@ int run_solve(const Scene& scene, const std::string& out_dir, SolverKind solver)
     const SensorReading v = base.disc_mean(s[0], s[1], scene.sensors.disc_diameter);
     csv << i + 1 << "," << s[0] << "," << s[1] << "," << 1e3 * v.sigma_z << "," << 1e3 * v.sigma_x << "\n";
   }
+  prepare_output_dir(out_dir);
+  write_fields_vtu(out_dir + "/fields.vtu", mesh, model.lame(), r.solution);
   write_text_atomic(out_dir + "/sensors.csv", csv.str());
   wall["write"] = clock.seconds();
 

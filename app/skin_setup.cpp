@@ -1,5 +1,6 @@
 #include "app/skin_setup.hpp"
 
+#include "app/adjoint_setup.hpp"
 #include "app/common.hpp"
 #include "app/resources.hpp"
 #include "mesh/build.hpp"
@@ -12,6 +13,7 @@ std::shared_ptr<Skin> skin_setup(const Scene& scene) {
   check_resources(scene, g_max_dofs);
   progress("meshing " + scene.name);
   s->mesh = build_mesh(scene);
+  check_sensors_on_skin(scene, s->mesh);
   s->wall["mesh"] = clock.seconds();
   progress("assembling and factoring (" + std::to_string(s->mesh.num_nodes()) + " nodes)");
   ModelOptions options;

@@ -119,6 +119,9 @@ check stl_self_intersecting 'crossing.stl: surface intersects itself near \(' "$
 /usr/bin/python3 -c 'import random, sys; random.seed(1); open(sys.argv[1], "wb").write(bytes(random.randrange(256) for _ in range(300)))' "$tmp/binary.stl"
 variant stl_binary_garbage 'd["geometry"] = {"type": "surface", "path": "binary.stl"}; d["loads"] = {}'
 check stl_binary_garbage 'binary.stl: (surface has no faces|cannot be read)' "$skinfem" mesh "$tmp/stl_binary_garbage.json" --out "$tmp/out"
+/usr/bin/python3 "$(dirname "$0")/box_stl.py" "$tmp/box.stl"
+variant stl_sensor_off 'd["geometry"] = {"type": "surface", "path": "box.stl"}; d["sensors"]["positions"] = [[7.95, 0]]; d["loads"] = {"patches": [{"center": [0, 0], "diameter": 0.5, "direction": [0, 0, -1], "force": 1}]}'
+check stl_sensor_off 'sensor 1 at \(7.95.*not entirely on the skin' "$skinfem" solve "$tmp/stl_sensor_off.json" --out "$tmp/out"
 variant stl_missing 'd["geometry"] = {"type": "surface", "path": "none.stl"}'
 check stl_missing 'geometry.path = "none.stl": must name an existing file' "$skinfem" mesh "$tmp/stl_missing.json" --out "$tmp/out"
 variant stl_extension 'd["geometry"] = {"type": "surface", "path": "base.json"}'
