@@ -1,8 +1,8 @@
-// Tractions on the bonded base from the reactions at its nodes (DESIGN.md "Numerical guidance"):
+// Tractions on the bonded base from the reactions at its nodes (docs/theory.md §Base tractions):
 // the nodal reactions R_i are spread into a P2 traction field t with the base's boundary mass
 // matrix, ∫ t φ_i = R_i, so ∫ t dA = Σ R_i exactly balances the applied load.
-// Sensor readings follow DESIGN.md: σ_z = t_z (skin presses on the sensor), σ_x = −t_x (skin drags
-// it toward +x), with t the traction the base exerts on the skin. Units: MPa, mm.
+// Sensor readings follow docs/theory.md §Conventions: σ_z = t_z (skin presses on the sensor), σ_x = −t_x
+// (skin drags it toward +x), with t the traction the base exerts on the skin. Units: MPa, mm.
 #pragma once
 
 #include <Eigen/Dense>

@@ -23,7 +23,7 @@ struct ModelOptions {
 // The nodes a rigid flat punch holds: top corner nodes with (x, y) within its radius and the mid-edge
 // nodes between them (the mesh follows the punch circle, so this is the inscribed polygon).
 // The punch is frictionless: it prescribes u_z only (at ν = 0.5 a half-space does not couple normal
-// and tangential contact, so friction would not change its pressure; see REFERENCES.md).
+// and tangential contact, so friction would not change its pressure; see docs/theory.md §References).
 std::vector<int> punch_nodes(const TetMesh& mesh, const Punch& punch);
 
 struct PunchResult {

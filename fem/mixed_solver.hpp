@@ -1,7 +1,7 @@
 // Saddle-point solver for the Taylor–Hood system with Dirichlet displacement DOFs eliminated.
 // It factors once per mesh and constraint set; every further load costs triangular solves.
 //
-// Two roads (DESIGN.md "Numerical guidance"), selectable and compared by `skinfem study`:
+// Two roads (docs/theory.md §Base tractions), selectable and compared by `skinfem study`:
 //  - schur_cg:  CHOLMOD supernodal LLᵀ of the free displacement block A_ff, and preconditioned CG on
 //               the pressure Schur complement S = B A⁻¹ Bᵀ + C with preconditioner (1/2μ + 1/λ) M_p
 //               (spectrally equivalent to S for inf-sup stable pairs: mesh-independent iterations);

@@ -1,4 +1,4 @@
-// Finite-element Green tensors of any scene by reciprocity (Maxwell–Betti; DESIGN.md).
+// Finite-element Green tensors of any scene by reciprocity (Maxwell–Betti; docs/theory.md §Reciprocity).
 //
 // A sensor reading is a linear functional J = w·R of the base reactions R. With the base held, the
 // reactions are R = K_bF x_F for the free unknowns x_F = K_FF⁻¹ f_F, so J = y·f with

@@ -1,8 +1,8 @@
 // Half-space point-load solutions (Boussinesq, Cerruti) and the half-space Green tensor of the sensor model.
 //
-// Conventions (shared/DESIGN.md): the bonded base is z = 0, the skin is z > 0, units mm, N, MPa. A Green
-// tensor g_ab(x, y) is the sensor reading b ∈ {z, x} at the base for a unit surface force along a ∈ {z, x}
-// applied at the offset (x, y) = force position − sensor position. "Force along z" presses INTO the skin
+// Conventions (docs/theory.md §Conventions): the bonded base is z = 0, the skin is z > 0, units mm, N, MPa. A
+// Green tensor g_ab(x, y) is the sensor reading b ∈ {z, x} at the base for a unit surface force along a ∈ {z,
+// x} applied at the offset (x, y) = force position − sensor position. "Force along z" presses INTO the skin
 // (−e_z in the z-up frame). Readings: σ_z = −σ_zz > 0 when the skin presses on the sensor, σ_x = σ_xz > 0
 // when the skin drags the sensor toward +x (tension-positive Cauchy stress, z-up components, on the
 // horizontal plane of the sensor).
@@ -40,13 +40,13 @@ double component(const GreenSample& g, GreenComponent c);
 GreenSample readings_from_stress(const Eigen::Matrix3d& stress_normal,
                                  const Eigen::Matrix3d& stress_tangential);
 
-/// Half-space Green tensor on the plane at depth h (REFERENCES.md; independent of nu), ρ = √(x² + y² + h²):
-/// g_zz = 3h³/(2πρ⁵), g_zx = −3x h²/(2πρ⁵), g_xz = −3x h²/(2πρ⁵), g_xx = 3x² h/(2πρ⁵). (x, y) is the
-/// force−sensor offset.
+/// Half-space Green tensor on the plane at depth h (docs/theory.md §References; independent of nu), ρ = √(x²
+/// + y² + h²): g_zz = 3h³/(2πρ⁵), g_zx = −3x h²/(2πρ⁵), g_xz = −3x h²/(2πρ⁵), g_xx = 3x² h/(2πρ⁵). (x, y) is
+/// the force−sensor offset.
 GreenSample halfspace_green(double x, double y, double h);
 
-/// DESIGN.md's k-rescaling of the half-space tensor: k · g_half(√k x, √k y) at depth h (amplitude × k, width
-/// × k^−1/2, so ∬ g dA is unchanged).
+/// The k-rescaling (docs/theory.md §Conventions) of the half-space tensor: k · g_half(√k x, √k y) at depth h
+/// (amplitude × k, width × k^−1/2, so ∬ g dA is unchanged).
 GreenSample rescaled_green(double x, double y, double h, double k);
 
 }  // namespace skinfem::green

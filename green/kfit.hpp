@@ -1,4 +1,4 @@
-// Fitting DESIGN.md's k-rescaled half-space Green tensor to a layer's Green tensor.
+// Fitting the k-rescaled (docs/theory.md §Conventions) half-space Green tensor to a layer's Green tensor.
 #pragma once
 
 #include <cmath>

@@ -26,7 +26,8 @@ namespace skinfem::validation {
 // g_ab of sensor `sensor` for a unit point force at offset (ox, oy), 1/mm².
 using GreenKernel = std::function<green::GreenSample(int sensor, double ox, double oy)>;
 
-// DESIGN.md's rescaled half-space, k·g_half(√k offset) at the depth of each sensor (thickness[sensor], mm).
+// the rescaled (docs/theory.md §Conventions) half-space, k·g_half(√k offset) at the depth of each sensor
+// (thickness[sensor], mm).
 GreenKernel rescaled_halfspace_kernel(std::vector<double> thickness, double k);
 // The exact bonded layer (point values at the base), the same for every sensor; tabulated along the two
 // axes every `step` mm out to `reach` and interpolated linearly (relative error ≲ (step/h)²/8).

@@ -252,16 +252,17 @@ TEST(LayerHertz, LoadAndDepthControlAreInverse) {
 }
 
 TEST(LayerHertz, ThinLayerLubricationLimit) {
-  // Thin incompressible layer, frictionless top (REFERENCES.md, c = 3): ∇²p = −3μ w/h³ in the contact, with
-  // w = δ − r²/(2R), μ = E/3. Outside the contact p = 0 forces w = 0 (to leading order in h/a), and since w
-  // stays bounded, p is C¹ across r = a: p(a) = 0 and p'(a) = 0. Radially,
-  // (1/r)(r p')' = −(3μ/h³)(δ − r²/2R):
+  // Thin incompressible layer, frictionless top (docs/theory.md §References, c = 3): ∇²p = −3μ w/h³ in the
+  // contact, with w = δ − r²/(2R), μ = E/3. Outside the contact p = 0 forces w = 0 (to leading order in h/a),
+  // and since w stays bounded, p is C¹ across r = a: p(a) = 0 and p'(a) = 0. Radially, (1/r)(r p')' =
+  // −(3μ/h³)(δ − r²/2R):
   //   p = (3μ/h³)[r⁴/(32R) − δr²/4] + const,  p'(a) = 0 ⇒ δ = a²/(4R),  p(a) = 0 ⇒ p = 3μ(a² − r²)²/(32Rh³),
   //   p0 = 3μa⁴/(32Rh³) = Ea⁴/(32Rh³),  F = 2π∫p r dr = πμa⁶/(32Rh³) = πEa⁶/(96Rh³).
   // (Check: ∫w dA = 2π∫(δ − r²/2R) r dr = 0, volume conservation; the flat-punch analogue, p(a) = 0 only,
-  // gives REFERENCES.md's F = 3πμδa⁴/(8h³).) The exact solution has a boundary layer of width ~h at the edge
-  // (p ~ √(a − r) there), so the relative errors are O(h/a): halving h/a must halve them asymptotically, i.e.
-  // the observed order log₂(e(λ)/e(2λ)) → 1. With e = c₁/λ + c₂/λ² it is 1 + O(1/λ), moving towards 1.
+  // gives docs/theory.md §References's F = 3πμδa⁴/(8h³).) The exact solution has a boundary layer of width ~h
+  // at the edge (p ~ √(a − r) there), so the relative errors are O(h/a): halving h/a must halve them
+  // asymptotically, i.e. the observed order log₂(e(λ)/e(2λ)) → 1. With e = c₁/λ + c₂/λ² it is 1 + O(1/λ),
+  // moving towards 1.
   const double R = 100.0, h = 1.0, E = 3.0;
   const std::vector<double> lams = {10.0, 20.0, 40.0};
   std::vector<std::array<double, 3>> err;  // F, δ, p0
@@ -368,8 +369,8 @@ TEST(LayerHertz, PaperCaseAgainstDimitriadisSeries) {
   // contact frictionless (shear-free top, the problem solved here), kernel of Hayes et al., J. Biomech. 5
   // (1972), expanded in powers of χ:
   //   F = (16E/9) R^½ δ^{3/2} [1 + 1.133χ + 1.283χ² + 0.769χ³ + 0.0975χ⁴],  χ = √(Rδ)/h,  ν = 0.5.
-  // A truncated series at χ ≈ 0.63–0.65 (REFERENCES.md: several per cent off there), so only ±10 % is asked
-  // of δ at the given force.
+  // A truncated series at χ ≈ 0.63–0.65 (docs/theory.md §References: several per cent off there), so only ±10
+  // % is asked of δ at the given force.
   const LayerHertzResult r = layer_hertz_force(kF, kR, kH, kE, 0.5);
   const HertzHalfspace hz = hertz_halfspace(kF, kR, kE, 0.5);
   auto series = [](double chi) { return 1.0 + chi * (1.133 + chi * (1.283 + chi * (0.769 + chi * 0.0975))); };

@@ -1,5 +1,5 @@
 // ElasticModel end to end: force balance of the base tractions, punches driven by force or by
-// displacement, a flat rigid punch against Johnson's half-space stiffness, the DESIGN.md sign
+// displacement, a flat rigid punch against Johnson's half-space stiffness, the docs/theory.md sign
 // convention of sensor readings, and the adjoint reading functional.
 #include <gtest/gtest.h>
 
@@ -204,7 +204,7 @@ double g_xx(double x, double y, double h) {
 }
 
 TEST(ElasticModel, SensorReadingsFollowTheDesignSignConvention) {
-  // Reference: DESIGN.md "Conventions" (σ_z > 0 when the skin presses on the sensor, σ_x > 0 when it
+  // Reference: docs/theory.md §Conventions (σ_z > 0 when the skin presses on the sensor, σ_x > 0 when it
   // drags it toward +x) and the half-space tensors above for the sign. The bonded layer only
   // concentrates the near field (k ≈ 1.48 in the paper), so each reading must have the half-space sign
   // and at least a quarter of its size (a guard against a vanishing field, not an accuracy claim).

@@ -1,5 +1,5 @@
-// Rung 3 of the verification ladder (DESIGN.md): ν → 0.5 continuity of the Taylor–Hood P2–P1 solution
-// (no locking), contrasted with a pure-displacement P1 solve of the same problem, which does lock.
+// Rung 3 of the verification ladder (docs/theory.md §Elements): ν → 0.5 continuity of the Taylor–Hood P2–P1
+// solution (no locking), contrasted with a pure-displacement P1 solve of the same problem, which does lock.
 #include <gtest/gtest.h>
 
 #include <Eigen/SparseCholesky>

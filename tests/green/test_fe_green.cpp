@@ -170,9 +170,9 @@ TEST(FeGreen, UniformPatchEqualsDirectPatchLoadToQuadratureAccuracy) {
 }
 
 TEST(FeGreen, GreenMapIntegratesToOneExactlyWithHeldSides) {
-  // Reference: force balance (REFERENCES.md: ∬ g_zz dA = 1 at the base of any bonded layer) in its exact
-  // discrete form. By reciprocity the map integral −∫_top y_z dA of the adjoint y of a σ_z reading is
-  // the reading J = w·R of the direct solve for a uniform unit pressure on the whole top, f =
+  // Reference: force balance (docs/theory.md §References: ∬ g_zz dA = 1 at the base of any bonded layer) in
+  // its exact discrete form. By reciprocity the map integral −∫_top y_z dA of the adjoint y of a σ_z reading
+  // is the reading J = w·R of the direct solve for a uniform unit pressure on the whole top, f =
   // traction_load(top, (0, 0, −1)) (the same 7-point face rule builds f and the integral here). With the
   // sides held (u = 0) that load has the exact solution u = 0, p = 1 (σ = −I): it satisfies every
   // boundary condition and lies in the P2–P1 space, so the discrete solution is exactly it on any mesh;

@@ -97,8 +97,8 @@ TEST(HalfSpaceGreen, CentralValueAndSymmetries) {
       EXPECT_NEAR(a.xz, -b.xz, 1e-15 * peak);
       EXPECT_NEAR(a.xx, b.xx, 1e-15 * peak);
       EXPECT_NEAR(a.xx, c.xx, 1e-15 * peak);
-      // Signs (REFERENCES.md): a normal push right of the sensor drags it toward −x, a +x drag puts it in
-      // tension.
+      // Signs (docs/theory.md §References): a normal push right of the sensor drags it toward −x, a +x drag
+      // puts it in tension.
       EXPECT_LT(a.zx, 0.0);
       EXPECT_LT(a.xz, 0.0);
       EXPECT_GT(a.xx, 0.0);

@@ -40,8 +40,8 @@ TEST(PaperModel, ExactLayerKernelConvolvesToTheExactDiscLoad) {
   }
 }
 
-// The rescaled half-space kernel with k = 1 is Boussinesq–Cerruti's tensor, and k rescales it as DESIGN.md
-// says: amplitude × k, width × k^−1/2.
+// The rescaled half-space kernel with k = 1 is Boussinesq–Cerruti's tensor, and k rescales it as
+// docs/theory.md §Conventions says: amplitude × k, width × k^−1/2.
 TEST(PaperModel, RescaledKernelFollowsItsDefinition) {
   const GreenKernel g1 = rescaled_halfspace_kernel({3.0}, 1.0), gk = rescaled_halfspace_kernel({3.0}, 1.48);
   for (double x : {0.0, 0.7, 2.0}) {
