@@ -61,7 +61,7 @@ struct ShippedLayer {
   FeGreen fe;
   double build_seconds = 0;
   ShippedLayer(std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now())
-      : scene(load_scene(std::string(SKINFEM_SOURCE_DIR) + "/scenes/flat_layer.json")),
+      : scene(load_scene(std::string(SKINFEM_SOURCE_DIR) + "/tests/green/data/flat_layer.json")),
         mesh(build_mesh(scene)),
         model(mesh, scene.material, scene.geometry.side, {}),
         fe(model, scene.sensors),

@@ -17,7 +17,7 @@ TEST(KRegression, FlatLayerGreenTensorMatchesTheExactLayerAndPinsK) {
   // Tolerances are the acceptance criteria of the k issue; the refinement study in the closing note
   // and README (55k → 142k DOFs: worst component 2.5 % → 0.17 %, k_central −0.55 % → −0.17 %) shows the
   // shipped 97k-DOF mesh sits inside them with margin (0.4 %, −0.12 %).
-  const Scene scene = load_scene(std::string(SKINFEM_SOURCE_DIR) + "/scenes/flat_layer.json");
+  const Scene scene = load_scene(std::string(SKINFEM_SOURCE_DIR) + "/tests/green/data/flat_layer.json");
   const TetMesh mesh = build_mesh(scene);
   const ElasticModel model(mesh, scene.material, scene.geometry.side, {});
   const FeGreen fe(model, scene.sensors);
@@ -38,7 +38,7 @@ TEST(KRegression, FlatLayerGreenTensorMatchesTheExactLayerAndPinsK) {
               fe_k.k_lsq_line, ex_k.k_lsq_line);
   EXPECT_NEAR(fe_k.k_central / ex_k.k_central, 1.0, 0.005);
   EXPECT_NEAR(fe_k.k_lsq_line / ex_k.k_lsq_line, 1.0, 0.005);
-  // Pinned exact values (regenerate: skinfem kfit scenes/flat_layer.json → k_central_exact,
+  // Pinned exact values (regenerate: skinfem kfit tests/green/data/flat_layer.json → k_central_exact,
   // k_lsq_line_exact); the series is converged far below this tolerance.
   EXPECT_NEAR(ex_k.k_central, 1.54996, 1e-4);
   EXPECT_NEAR(ex_k.k_lsq_line, 1.60856, 1e-4);

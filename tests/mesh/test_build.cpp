@@ -217,7 +217,7 @@ TEST(MeshBuild, ContactRefinementGradesWithDepth) {
 // Top and base are triangulated separately under a contact and must meet on the same rim: for every zone
 // size the surface is closed (else TetGen is never reached) and the volume exact (a flat layer).
 TEST(MeshBuild, TopAndBaseRimsAgreeForEveryContactSize) {
-  Scene s = load_scene(std::string(SKINFEM_SOURCE_DIR) + "/scenes/hertz_layer.json");
+  Scene s = load_scene(std::string(SKINFEM_SOURCE_DIR) + "/tests/mesh/data/hertz_layer.json");
   for (double h : {0.8, 0.6, 0.5, 0.4}) {
     s.contact->h = h;
     const MeshQuality q = assess_quality(build_mesh(s));
