@@ -14,6 +14,7 @@
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "app/resources.hpp"
+#include "scene/load.hpp"
 #include "validation/refinement_study.hpp"
 
 namespace skinfem::app {
@@ -25,6 +26,12 @@ int run_study(const Scene& scene, const std::string& out_dir, const std::vector<
   finest.mesh.h_min *= s_min;
   finest.mesh.h_max *= s_min;
   check_resources(finest, g_max_dofs);
+  for (double sc : scales) {  // the coarsest levels must still fit their loads on the skin
+    Scene level = scene;
+    level.mesh.h_min *= sc;
+    level.mesh.h_max *= sc;
+    check_load_placement(level, "--scales " + std::to_string(sc).substr(0, 6));
+  }
   const std::vector<SolverKind> solvers{SolverKind::direct_ldlt, SolverKind::schur_cg};
   const StudyResult study = refinement_study(scene, scales, solvers, progress);
 

@@ -590,7 +590,15 @@ void check_loads(const Reader& r, const Scene& scene) {
   const double thickness = g.kind == GeometryKind::cap    ? g.cap.h
                            : g.kind == GeometryKind::flat ? g.flat.h
                                                           : 0;
+  // TetGen's geometric tolerance is relative (1e-8 of the domain): a disc below 1e-6 of the footprint's
+  // width is refused (a 1e-9 mm punch on a 16 mm layer crashed it).
+  const double width = g.kind == GeometryKind::flat  ? 2 * g.flat.half_width
+                       : g.kind == GeometryKind::cap ? 2 * g.cap.truncation_radius
+                                                     : 0;
   const auto check_disc = [&](const std::string& path, const Vec2& c, double d) {
+    if (d < 1e-6 * width)
+      r.fail(path.substr(0, path.rfind('.')) + ".diameter", json(d),
+             "must be >= 1e-6 x the skin's width = " + fmt(1e-6 * width) + " mm (mesh generator tolerance)");
     const std::string off = off_footprint(g, c, 0.5 * d + gap, "diameter/2 - mesh.h_min");
     if (!off.empty())
       r.fail(path, point(c),
@@ -789,6 +797,10 @@ Scene parse_scene(const std::string& json_text, const std::string& source_path) 
     check_contact_zone(r, *contact, scene);
   }
   return scene;
+}
+
+void check_load_placement(const Scene& scene, const std::string& what) {
+  check_loads(Reader(scene.source_path + " (" + what + ")"), scene);
 }
 
 Scene load_scene(const std::string& path) {

@@ -20,4 +20,9 @@ Scene load_scene(const std::string& path);
 // it has none) and gives the default name (its stem). It need not exist.
 Scene parse_scene(const std::string& json_text, const std::string& source_path);
 
+// The placement rules of punches and patches (on the skin with mesh.h_min to spare, apart, above the mesh
+// generator's tolerance) for a scene changed in code, e.g. its mesh sizes scaled by a study; `what` names
+// the change in the message. Throws SceneError like load_scene.
+void check_load_placement(const Scene& scene, const std::string& what);
+
 }  // namespace skinfem

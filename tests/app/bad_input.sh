@@ -88,6 +88,7 @@ bad punch_both "$punch[\"displacement\"] = 0.01" 'loads.punches\[0\] = .*exactly
 bad punch_neither "del $punch[\"force\"]" 'loads.punches\[0\] = .*exactly one of "force"'
 bad punch_force_huge "$punch[\"force\"] = 1e200" 'loads.punches\[0\].force = 1e\+200: must be a force in \(0, 1e\+06\] N'
 bad punch_at_edge "$punch[\"center\"] = [7.5, 0]; $punch[\"diameter\"] = 1" 'loads.punches\[0\].center = \[7.5,0.0\]: the load disc .* must lie on the skin'
+bad punch_tiny "$punch[\"diameter\"] = 1e-9" 'loads.punches\[0\].diameter = 1e-09: must be >= 1e-6 x the skin.s width'
 bad punch_wider_than_layer "$punch[\"diameter\"] = 100" 'loads.punches\[0\].center = .*must lie on the skin'
 bad punch_on_corner "$punch[\"center\"] = [8, 8]" 'loads.punches\[0\].center = \[8.0,8.0\]: the load disc'
 bad punches_overlap 'd["loads"]["punches"].append({"center": [0.3, 0], "diameter": 0.5, "force": 1})' 'punches 1 and 2 overlap or touch'
@@ -135,6 +136,7 @@ check unknown_subcommand "unknown subcommand 'frobnicate'; one of: mesh" "$skinf
 check unknown_option '--frob' "$skinfem" mesh "$tmp/base.json" --frob --out "$tmp/out"
 check bad_solver '--solver' "$skinfem" solve "$tmp/base.json" --solver lu --out "$tmp/out"
 check bad_scales '--scales' "$skinfem" study "$tmp/base.json" --scales 1,-2 --out "$tmp/out"
+check study_scales_huge '\(--scales 1000.0\): loads.punches\[0\].center = .*must lie on the skin with mesh.h_min = 400' "$skinfem" study "$tmp/base.json" --scales 1000,500,200 --out "$tmp/out"
 check error_scales_one '--error-scales: one coarser level' "$skinfem" report "$tmp/base.json" --error-scales 2 --out "$tmp/out"
 
 echo "$passed passed, $fail failed"
