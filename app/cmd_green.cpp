@@ -10,6 +10,9 @@
 // g_exact_point_per_mm2, g_exact_disc_per_mm2 for flat layers: the exact layer values), DIR/green_maps.vtp
 // (top surface; point data g_<ab>_sensorNN_per_mm2: the sensor-disc reading for a unit point force at that
 // surface point) and DIR/summary.json (DOFs, adjoint solves, reciprocity check, timings, memory).
+// With --grid DX: DIR/kernel.h5 and DIR/kernel.vti, every sensor's four disc-reading components on a regular
+// grid of spacing DX over the top's bounding box (green/kernel_grid.hpp; the README loads it with h5py).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -19,11 +22,49 @@
 #include "app/common.hpp"
 #include "app/stages.hpp"
 #include "green/calibration.hpp"
+#include "green/kernel_grid.hpp"
+#include "mesh/surface.hpp"
 #include "mesh/vtu.hpp"
 
 namespace skinfem::app {
 
-nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const std::string& out_dir) {
+namespace {
+
+// Bounding box (x_lo, x_hi, y_lo, y_hi; mm) of the skin's footprint, from the scene alone (no meshing).
+std::array<double, 4> footprint_box(const Scene& scene) {
+  const Geometry& g = scene.geometry;
+  if (g.kind == GeometryKind::flat)
+    return {-g.flat.half_width, g.flat.half_width, -g.flat.half_width, g.flat.half_width};
+  if (g.kind == GeometryKind::cap)
+    return {g.cap.apex_x - g.cap.truncation_radius, g.cap.apex_x + g.cap.truncation_radius,
+            g.cap.apex_y - g.cap.truncation_radius, g.cap.apex_y + g.cap.truncation_radius};
+  const SurfaceMesh surface = import_surface(g.surface.path);
+  const Eigen::RowVector3d lo = surface.vertices.colwise().minCoeff(),
+                           hi = surface.vertices.colwise().maxCoeff();
+  return {lo(0), hi(0), lo(1), hi(1)};
+}
+
+// The kernel grid is held in memory (4 components per sensor) and written twice: bounded at 1e6 points and
+// 2.5e7 values (200 MB).
+void check_kernel_grid(const Scene& scene, double dx) {
+  const auto box = footprint_box(scene);
+  const double points = (std::floor((box[1] - box[0]) / dx) + 1) * (std::floor((box[3] - box[2]) / dx) + 1);
+  const double values = 4.0 * points * static_cast<double>(scene.sensors.positions.size());
+  if (points > 1e6 || values > 2.5e7) {
+    char line[256];
+    std::snprintf(
+        line, sizeof line,
+        "--grid = %g: the kernel grid over the %.4g × %.4g mm footprint would have %.3g points (%.3g "
+        "values for %zu sensors); allowed at most 1e6 points and 2.5e7 values: use a larger --grid",
+        dx, box[1] - box[0], box[3] - box[2], points, values, scene.sensors.positions.size());
+    throw SceneError(line);
+  }
+}
+
+}  // namespace
+
+nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const std::string& out_dir,
+                           double grid_dx) {
   using green::GreenSample;
   using green::LayerLoad;
   const double radius = 0.5 * scene.calibration.punch_diameter;
@@ -94,9 +135,20 @@ nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const 
       for (int i = 0; i < mesh.num_nodes(); ++i) a.values[i] = force == 'z' ? -y[3 * i + 2] : y[3 * i];
       maps.push_back(std::move(a));
     }
+  green::KernelGrid grid;
+  if (grid_dx > 0) {
+    clock = Stopwatch();
+    const auto box = footprint_box(scene);
+    grid = green::kernel_grid(fe, scene.sensors, box[0], box[1], box[2], box[3], grid_dx);
+    wall["kernel_grid"] = clock.seconds();
+  }
   prepare_output_dir(out_dir);
   write_text_atomic(out_dir + "/green.csv", csv.str());
   write_surface_vtp(out_dir + "/green_maps.vtp", mesh, kTop, maps);
+  if (grid_dx > 0) {
+    green::write_kernel_h5(out_dir + "/kernel.h5", grid, scene.name);
+    green::write_kernel_vti(out_dir + "/kernel.vti", grid);
+  }
   nlohmann::json summary = {
       {"scene", scene_json(scene)},
       {"dofs", model.solver().free_dofs()},
@@ -109,6 +161,13 @@ nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const 
       {"wall_s", wall},
       {"wall_total_s", total_seconds(wall)},
       {"peak_rss_mb", peak_rss_mb()}};
+  if (grid_dx > 0)
+    summary["kernel_grid"] = {{"spacing_mm", grid_dx},
+                              {"nx", grid.x.size()},
+                              {"ny", grid.y.size()},
+                              {"x_range_mm", {grid.x.front(), grid.x.back()}},
+                              {"y_range_mm", {grid.y.front(), grid.y.back()}},
+                              {"points_on_skin", std::count(grid.on_skin.begin(), grid.on_skin.end(), 1)}};
   write_json(out_dir + "/summary.json", summary);
   std::printf(
       "green %s: %zu sensors × 4 components, %d adjoint solves on %d DOFs; %.1f s (factor %.1f s), peak %.0f "
@@ -117,13 +176,19 @@ nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const 
       total_seconds(wall), wall["factor"].get<double>(), peak_rss_mb());
   std::printf("  reciprocity check (direct solve vs adjoint, sensor 1, offset 1 mm): %.1e relative\n",
               reciprocity_rel);
-  std::printf("  wrote %s/green.csv, green_maps.vtp, summary.json\n", out_dir.c_str());
+  if (grid_dx > 0)
+    std::printf("  kernel grid: %zu × %zu points at %g mm over x [%g, %g], y [%g, %g] mm (%ld on the skin)\n",
+                grid.x.size(), grid.y.size(), grid_dx, grid.x.front(), grid.x.back(), grid.y.front(),
+                grid.y.back(), static_cast<long>(std::count(grid.on_skin.begin(), grid.on_skin.end(), 1)));
+  std::printf("  wrote %s/green.csv, green_maps.vtp, %ssummary.json\n", out_dir.c_str(),
+              grid_dx > 0 ? "kernel.h5, kernel.vti, " : "");
   return summary;
 }
 
-int run_green(const Scene& scene, const std::string& out_dir) {
+int run_green(const Scene& scene, const std::string& out_dir, double grid_dx) {
   check_output_dir(out_dir);
-  green_stage(scene, *adjoint_setup(scene), out_dir);
+  if (grid_dx > 0) check_kernel_grid(scene, grid_dx);
+  green_stage(scene, *adjoint_setup(scene), out_dir, grid_dx);
   return 0;
 }
 

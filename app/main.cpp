@@ -40,6 +40,13 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   auto* green_cmd =
       cli.add_subcommand("green", "FE Green tensors of every sensor (green.csv, green_maps.vtp)");
+  double grid_dx = 0;
+  green_cmd
+      ->add_option(
+          "--grid", grid_dx,
+          "also each sensor's kernel on a regular grid of this spacing (mm) over the top: kernel.h5, "
+          "kernel.vti")
+      ->check(CLI::PositiveNumber);
   auto* contact_cmd = cli.add_subcommand(
       "contact",
       "rigid indenter in contact with the skin (pressure.vtp, fields.vtu, sensors.csv, summary.json)");
@@ -95,7 +102,7 @@ int main(int argc, char** argv) {
     const auto solver =
         solver_name == "schur_cg" ? skinfem::SolverKind::schur_cg : skinfem::SolverKind::direct_ldlt;
     if (solve->parsed()) return skinfem::app::run_solve(scene, out_dir, solver);
-    if (green_cmd->parsed()) return skinfem::app::run_green(scene, out_dir);
+    if (green_cmd->parsed()) return skinfem::app::run_green(scene, out_dir, grid_dx);
     if (kfit->parsed()) return skinfem::app::run_kfit(scene, out_dir, load_name);
     if (contact_cmd->parsed()) return skinfem::app::run_contact(scene, out_dir, friction);
     if (defect->parsed()) return skinfem::app::run_defect(scene, out_dir);

@@ -59,6 +59,23 @@ Eigen::Vector3d FeGreen::displacement_at_top(const Eigen::VectorXd& y, double x,
   return v;
 }
 
+bool FeGreen::disc_map_at(int sensor, double x, double y, GreenSample& g) const {
+  double s, t;
+  const int f = top_.find(x, y, s, t);
+  if (f < 0) return false;
+  const auto N = triangle_shape(s, t);
+  Eigen::Vector3d vz = Eigen::Vector3d::Zero(), vx = Eigen::Vector3d::Zero();
+  const auto& yz = adjoint(sensor, 'z', true);
+  const auto& yx = adjoint(sensor, 'x', true);
+  for (int k = 0; k < 6; ++k) {
+    const int node = model_.mesh().faces(f, k);
+    vz += N[k] * yz.segment<3>(3 * node);
+    vx += N[k] * yx.segment<3>(3 * node);
+  }
+  g = {-vz.z(), -vx.z(), vz.x(), vx.x()};
+  return true;
+}
+
 GreenSample FeGreen::at(int sensor, bool disc, double ox, double oy, LayerLoad load, double radius) const {
   const auto& yz = adjoint(sensor, 'z', disc);
   const auto& yx = adjoint(sensor, 'x', disc);

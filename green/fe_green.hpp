@@ -36,6 +36,9 @@ class FeGreen {
   // g_ab (1/mm²) of sensor `sensor` for a unit load centred at offset (ox, oy) from it, spread as
   // `load` over radius `radius`. disc: the sensor's disc mean, else its centre value.
   GreenSample at(int sensor, bool disc, double ox, double oy, LayerLoad load, double radius) const;
+  // The disc reading of `sensor` for a unit point force at the top point above (x, y) (mm, absolute); false,
+  // g untouched, when no top face lies above (x, y).
+  bool disc_map_at(int sensor, double x, double y, GreenSample& g) const;
 
   // The adjoint displacement (3N) of sensor, reading component b ∈ {'z','x'}, point/disc: top-surface
   // nodal values give the point-load Green map there.
