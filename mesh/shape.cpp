@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "mesh/gauss_legendre.hpp"
+
 namespace skinfem {
 
 SkinShape::SkinShape(const Geometry& geometry)
@@ -10,7 +12,9 @@ SkinShape::SkinShape(const Geometry& geometry)
 double SkinShape::top_z(double x, double y) const {
   if (kind_ != GeometryKind::cap) return flat_.h;
   const double dx = x - cap_.apex_x, dy = y - cap_.apex_y;
-  return cap_.h - cap_.R + std::sqrt(cap_.R * cap_.R - dx * dx - dy * dy);
+  if (cap_.spherical()) return cap_.h - cap_.R + std::sqrt(cap_.R * cap_.R - dx * dx - dy * dy);
+  const double u = dx / cap_.semi_axis_x(), v = dy / cap_.semi_axis_y(), c = cap_.semi_axis_z();
+  return cap_.h - c + c * std::sqrt(1 - u * u - v * v);
 }
 
 Vec3 SkinShape::on_side(const Vec3& p) const {
@@ -22,9 +26,22 @@ Vec3 SkinShape::on_side(const Vec3& p) const {
 
 double SkinShape::volume() const {
   if (kind_ != GeometryKind::cap) return base_area() * flat_.h;
-  // ∫₀^rt 2πr (h − R + sqrt(R² − r²)) dr
   const double R = cap_.R, rt = cap_.truncation_radius;
-  return M_PI * rt * rt * (cap_.h - R) + 2.0 * M_PI / 3.0 * (R * R * R - std::pow(R * R - rt * rt, 1.5));
+  // ∫₀^rt 2πr (h − R + sqrt(R² − r²)) dr
+  if (cap_.spherical())
+    return M_PI * rt * rt * (cap_.h - R) + 2.0 * M_PI / 3.0 * (R * R * R - std::pow(R * R - rt * rt, 1.5));
+  // Ellipsoid: the top is smooth and positive up to rt < rim, so Gauss in r and the (spectrally accurate)
+  // periodic trapezoid rule in θ reach round-off.
+  const GaussRule1d g = gauss_legendre01(48);
+  constexpr int nt = 256;
+  double v = 0;
+  for (size_t i = 0; i < g.x.size(); ++i)
+    for (int j = 0; j < nt; ++j) {
+      const double r = rt * g.x[i], th = 2 * M_PI * j / nt;
+      v += g.w[i] * rt * r * (2 * M_PI / nt) *
+           top_z(cap_.apex_x + r * std::cos(th), cap_.apex_y + r * std::sin(th));
+    }
+  return v;
 }
 
 double SkinShape::base_area() const {

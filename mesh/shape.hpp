@@ -12,7 +12,7 @@ class SkinShape {
 
   bool exact() const { return kind_ != GeometryKind::surface; }
   GeometryKind kind() const { return kind_; }
-  // Top surface height s(x, y), mm. Cap: h − R + sqrt(R² − (x − x_a)² − (y − y_a)²); flat: h.
+  // Top surface height s(x, y), mm. Cap: the sphere or ellipsoid of scene.hpp's CapGeometry; flat: h.
   double top_z(double x, double y) const;
   // Point on the exact top surface above (x, y).
   Vec3 on_top(double x, double y) const { return {x, y, top_z(x, y)}; }

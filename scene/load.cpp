@@ -2,7 +2,8 @@
 //
 // Format (units mm, N, MPa; keys marked * are optional, defaults from scene.hpp):
 //   name*         string; default: the file stem
-//   geometry      {"type": "cap", "R", "h", "apex": [x, y], "truncation_radius", "side"*}
+//   geometry      {"type": "cap", "R", "R_y"*, "h", "apex": [x, y], "truncation_radius", "side"*}
+//                 R_y: the apex radius of curvature along y (default R: spherical; else an ellipsoid)
 //               | {"type": "flat", "h", "half_width", "side"*}
 //               | {"type": "surface", "path", "side"*}      path: .stl/.obj/.off, relative to the scene file
 //                 side: "free" (default) | "fixed"
@@ -289,9 +290,6 @@ json parse_json(const std::string& text, const Reader& r) {
   }
 }
 
-// Radius at which the cap's top meets the base plane: sqrt(R² − (R − h)²).
-double cap_rim_radius(const CapGeometry& c) { return std::sqrt(c.R * c.R - (c.R - c.h) * (c.R - c.h)); }
-
 Geometry read_geometry(const Reader& r, const json& g, const fs::path& base_dir) {
   const std::string P = "geometry";
   const std::string kinds = R"(one of "cap", "flat", "surface")";
@@ -302,24 +300,32 @@ Geometry read_geometry(const Reader& r, const json& g, const fs::path& base_dir)
 
   Geometry geo;
   if (t == "cap") {
-    r.object(g, P, {"type", "R", "h", "apex", "truncation_radius", "side"});
+    r.object(g, P, {"type", "R", "R_y", "h", "apex", "truncation_radius", "side"});
     CapGeometry& c = geo.cap;
     geo.kind = GeometryKind::cap;
     c.R = r.number(g, P, "R", length());
-    const double R = c.R;
-    c.h =
-        r.number(g, P, "h",
-                 Rule{"a number in (0, R) = (0, " + fmt(R) + ")", [R](double x) { return 0 < x && x < R; }});
+    c.R_y = r.number_or(g, P, "R_y", 0.0, length());
+    const double zc = c.semi_axis_z();
+    const std::string semi =
+        c.spherical() ? "(0, R)"
+                      : "(0, sqrt(R R_y)), the ellipsoid's vertical semi-axis: (0, " + fmt(zc) + ")";
+    c.h = r.number(g, P, "h",
+                   Rule{"a number in " + (c.spherical() ? "(0, R) = (0, " + fmt(c.R) + ")" : semi),
+                        [zc](double x) { return 0 < x && x < zc; }});
     const Vec2 apex = r.vec2(g, P, "apex");
     c.apex_x = apex[0];
     c.apex_y = apex[1];
-    const double rim = cap_rim_radius(c);
-    c.truncation_radius =
-        r.number(g, P, "truncation_radius",
-                 Rule{"a number > 0 and < " + fmt(rim) +
-                          ", the radius sqrt(R^2 - (R - h)^2) where the cap thins to zero (R = " + fmt(c.R) +
-                          ", h = " + fmt(c.h) + ")",
-                      [rim](double x) { return x > 0 && x < rim; }});
+    const double rim = c.rim_radius();
+    c.truncation_radius = r.number(
+        g, P, "truncation_radius",
+        Rule{"a number > 0 and < " + fmt(rim) +
+                 (c.spherical()
+                      ? ", the radius sqrt(R^2 - (R - h)^2) where the cap thins to zero (R = " + fmt(c.R)
+                      : ", the distance from the apex at which the ellipsoidal cap first thins to zero "
+                        "(R = " +
+                            fmt(c.R) + ", R_y = " + fmt(c.R_y)) +
+                 ", h = " + fmt(c.h) + ")",
+             [rim](double x) { return x > 0 && x < rim; }});
   } else if (t == "flat") {
     r.object(g, P, {"type", "h", "half_width", "side"});
     geo.kind = GeometryKind::flat;

@@ -43,7 +43,8 @@ std::optional<double> equivalent_sphere_radius(const Scene& scene) {
   const ContactLoad& c = *scene.contact;
   double curvature = 0;  // 1/R_eff, 1/mm
   if (c.indenter == IndenterKind::sphere) curvature += 1 / c.sphere_R;
-  if (scene.geometry.kind == GeometryKind::cap) curvature += 1 / scene.geometry.cap.R;
+  // An ellipsoidal cap: the equivalent sphere of an elliptic Hertz contact, R_e = sqrt(R R_y) (Johnson §4.2).
+  if (scene.geometry.kind == GeometryKind::cap) curvature += 1 / scene.geometry.cap.semi_axis_z();
   if (!(curvature > 0)) return std::nullopt;
   return 1 / curvature;
 }

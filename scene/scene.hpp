@@ -2,7 +2,9 @@
 // scene/load.cpp turns a JSON file into this struct; nothing else in skinfem reads JSON.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -13,13 +15,29 @@ namespace skinfem {
 using Vec2 = std::array<double, 2>;
 using Vec3 = std::array<double, 3>;
 
-// Spherical cap bonded to z = 0: top z = h − R + sqrt(R² − (x − x_a)² − (y − y_a)²),
-// cut by the vertical cylinder of radius truncation_radius about the apex axis.
+// Spherical or ellipsoidal cap bonded to z = 0, cut by the vertical cylinder of radius truncation_radius
+// about the apex axis. R and R_y are the top's radii of curvature at the apex along x and y (R_y = 0: R_y =
+// R, a sphere). The top is the ellipsoid with semi-axes a = sqrt(R c) (x), b = sqrt(R_y c) (y) and
+// c = sqrt(R R_y) (z), whose apex curvatures are a²/c = R and b²/c = R_y:
+//   z = h − c + c sqrt(1 − ((x − x_a)/a)² − ((y − y_a)/b)²);  for R_y = R, h − R + sqrt(R² − r²).
 struct CapGeometry {
   double R = 129.7;
   double h = 3.04;
   double apex_x = 0.0, apex_y = 0.0;
   double truncation_radius = 12.0;
+  double R_y = 0;  // mm; 0 → R (spherical). Last, so that {R, h, x_a, y_a, r_t} still means a sphere.
+
+  double radius_y() const { return R_y > 0 ? R_y : R; }
+  bool spherical() const { return radius_y() == R; }
+  double semi_axis_z() const { return spherical() ? R : std::sqrt(R * radius_y()); }
+  double semi_axis_x() const { return spherical() ? R : std::sqrt(R * semi_axis_z()); }
+  double semi_axis_y() const { return spherical() ? R : std::sqrt(radius_y() * semi_axis_z()); }
+  // Smallest distance from the apex axis at which the top meets the base plane (along the shorter axis).
+  double rim_radius() const {
+    if (spherical()) return std::sqrt(R * R - (R - h) * (R - h));
+    const double c = semi_axis_z(), t = 1 - h / c;
+    return std::min(semi_axis_x(), semi_axis_y()) * std::sqrt(1 - t * t);
+  }
 };
 
 // Flat layer of thickness h over the square |x|, |y| ≤ half_width.

@@ -1,0 +1,60 @@
+// The exact skin shapes: the ellipsoidal cap's apex curvatures, rim and volume quadrature, against closed
+// forms (the sphere's volume, the curvature radii a²/c and b²/c of an ellipsoid at its pole).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "mesh/shape.hpp"
+
+namespace skinfem {
+namespace {
+
+Geometry ellipsoidal_cap(double R, double R_y, double h, double truncation) {
+  Geometry g;
+  g.kind = GeometryKind::cap;
+  g.cap = {R, h, 0.7, -0.3, truncation, R_y};
+  return g;
+}
+
+TEST(SkinShape, EllipsoidalCapHasApexCurvatureRadiiRAndRy) {
+  // Central second differences, step 1e-3 mm: truncation error (step²/12)·|z''''| ~ 1e-9 of 1/R.
+  const Geometry g = ellipsoidal_cap(15.0, 8.0, 4.0, 6.0);
+  const SkinShape shape(g);
+  const double x = 0.7, y = -0.3, d = 1e-3, z0 = shape.top_z(x, y);
+  EXPECT_NEAR(z0, 4.0, 1e-14);
+  const double zxx = (shape.top_z(x + d, y) - 2 * z0 + shape.top_z(x - d, y)) / (d * d);
+  const double zyy = (shape.top_z(x, y + d) - 2 * z0 + shape.top_z(x, y - d)) / (d * d);
+  EXPECT_NEAR(-1 / zxx, 15.0, 15.0 * 1e-6);
+  EXPECT_NEAR(-1 / zyy, 8.0, 8.0 * 1e-6);
+}
+
+TEST(SkinShape, EllipsoidalCapMeetsTheBaseAtItsRimAlongTheShorterAxis) {
+  const Geometry g = ellipsoidal_cap(15.0, 8.0, 4.0, 6.0);
+  const SkinShape shape(g);
+  const double rim = g.cap.rim_radius();
+  EXPECT_NEAR(shape.top_z(0.7, -0.3 + rim), 0.0, 1e-12);
+  EXPECT_GT(shape.top_z(0.7 + rim, -0.3), 0.5);  // the longer axis: still thick there
+}
+
+TEST(SkinShape, EllipsoidVolumeQuadratureMatchesTheSphereClosedForm) {
+  // R_y = R(1 + 1e-10) takes the quadrature path; the shape differs from the sphere's by O(1e-10).
+  for (double R : {20.0, 129.7}) {
+    const Geometry sphere = ellipsoidal_cap(R, 0.0, 3.0, 6.0);
+    const Geometry nearly = ellipsoidal_cap(R, R * (1 + 1e-10), 3.0, 6.0);
+    ASSERT_TRUE(sphere.cap.spherical());
+    ASSERT_FALSE(nearly.cap.spherical());
+    const double v_closed = SkinShape(sphere).volume(), v_quad = SkinShape(nearly).volume();
+    EXPECT_NEAR(v_quad, v_closed, 1e-9 * v_closed) << "R " << R;
+  }
+}
+
+TEST(SkinShape, SphericalCapKeepsItsClosedForm) {
+  const Geometry g = ellipsoidal_cap(129.7, 0.0, 3.04, 12.0);
+  const SkinShape shape(g);
+  const double r2 = 3.0 * 3.0 + 4.0 * 4.0;
+  EXPECT_DOUBLE_EQ(shape.top_z(0.7 + 3.0, -0.3 + 4.0), 3.04 - 129.7 + std::sqrt(129.7 * 129.7 - r2));
+  EXPECT_DOUBLE_EQ(g.cap.rim_radius(), std::sqrt(129.7 * 129.7 - (129.7 - 3.04) * (129.7 - 3.04)));
+}
+
+}  // namespace
+}  // namespace skinfem
