@@ -44,7 +44,8 @@ void check_zone(const Scene& scene, const ContactSetup& s, const contact::Contac
   // cut short by the zone.
   if (reach > s.zone_radius - s.zone_h)
     throw SceneError(scene.source_path + ": contact.zone_radius = " + std::to_string(s.zone_radius) +
-                     ": the " + contact::to_string(r.mode) + " contact reaches " + std::to_string(reach) +
+                     ": the contact (friction " + contact::to_string(r.mode) + ") reaches " +
+                     std::to_string(reach) +
                      " mm from the centre, within one element (contact.h = " + std::to_string(s.zone_h) +
                      ")" + " mm of the zone's edge; give a larger contact.zone_radius");
 }

@@ -88,7 +88,7 @@ TetMesh build_mesh(const Scene& scene) {
   const bool generated = scene.geometry.kind != GeometryKind::surface;
   const SurfaceMesh surface =
       generated ? layer_surface(scene, size) : import_surface(scene.geometry.surface.path);
-  LinearTets lin = tetrahedralize(surface, size, scene.mesh);
+  LinearTets lin = tetrahedralize(surface, size, scene.mesh, /*keep_facets=*/!generated);
   if (generated) snap_to_surface(lin, SkinShape(scene.geometry));
   return make_quadratic(lin.points, lin.tets, lin.faces, lin.face_marker, scene.geometry);
 }

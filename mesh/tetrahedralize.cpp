@@ -41,7 +41,8 @@ std::array<int, 3> sorted(int a, int b, int c) {
 }
 }  // namespace
 
-LinearTets tetrahedralize(const SurfaceMesh& surface, const SizingField& size, const MeshControls& controls) {
+LinearTets tetrahedralize(const SurfaceMesh& surface, const SizingField& size, const MeshControls& controls,
+                          bool keep_facets) {
   std::lock_guard<std::mutex> lock(tetgen_mutex);
   active_size = &size;
 
@@ -75,8 +76,11 @@ LinearTets tetrahedralize(const SurfaceMesh& surface, const SizingField& size, c
   std::string switches = sw.str();
   std::vector<char> buf(switches.begin(), switches.end());
   buf.push_back('\0');
+  tetgenbehavior behavior;
+  if (!behavior.parse_commandline(buf.data())) throw MeshError("TetGen rejected the switches " + switches);
+  if (keep_facets) behavior.facet_ang_tol = 179.9999;  // merge only coplanar facets (within 2e-6 rad)
   try {
-    tetrahedralize(buf.data(), &in, &out);
+    tetrahedralize(&behavior, &in, &out);
   } catch (int code) {
     active_size = nullptr;
     throw MeshError("TetGen failed with code " + std::to_string(code) + " (switches " + switches + ")");

@@ -16,7 +16,11 @@ struct LinearTets {
 
 // TetGen may split boundary triangles (its -Y switch, which forbids that, also stalls interior
 // refinement next to the surface); new boundary points lie on the flat input triangles, and
-// build_mesh snaps them onto the exact surface.
-LinearTets tetrahedralize(const SurfaceMesh& surface, const SizingField& size, const MeshControls& controls);
+// build_mesh snaps them onto the exact surface. TetGen also merges adjacent facets within 0.1° of coplanar
+// (its facet angle tolerance) and remeshes them, which flattens a finely tessellated smooth surface:
+// `keep_facets` (an imported surface, whose facets are the geometry) merges only facets within 1e-4° of
+// coplanar: a flat base is remeshed, a curved top moves by at most 2e-6 × its facet size.
+LinearTets tetrahedralize(const SurfaceMesh& surface, const SizingField& size, const MeshControls& controls,
+                          bool keep_facets = false);
 
 }  // namespace skinfem

@@ -1,5 +1,6 @@
 #include "scene/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace skinfem {
@@ -61,9 +62,19 @@ double contact_zone_radius(const Scene& scene) {
   if (!c.force && !c.depth)
     throw SceneError(scene.source_path +
                      ": contact: needs \"force\" or \"depth\" for an automatic zone_radius");
-  const double R_eff = *R;
+  // An ellipsoidal cap makes the contact an ellipse, longest along the flatter relative curvature. Half-space
+  // Hertz (Johnson 1985, §4.2): its semi-axes are about sqrt(a_e² · (κ_max/κ_min)^{±2/3}) with a_e the
+  // radius for R_eff = sqrt(R_x R_y), so the long one is a_e (κ_max/κ_min)^{1/3}; at a depth the thin-layer
+  // bound scales each axis with its own radius, 2 sqrt(R_flat δ).
+  double kx = c.indenter == IndenterKind::sphere ? 1 / c.sphere_R : 0, ky = kx;
+  if (scene.geometry.kind == GeometryKind::cap) {
+    kx += 1 / scene.geometry.cap.R;
+    ky += 1 / scene.geometry.cap.radius_y();
+  }
+  const double k_max = std::max(kx, ky), k_min = std::min(kx, ky);
   const double E_star = scene.material.E / (1 - scene.material.nu * scene.material.nu);
-  const double a = c.force ? std::cbrt(3 * *c.force * R_eff / (4 * E_star)) : 2 * std::sqrt(R_eff * *c.depth);
+  const double a = c.force ? std::cbrt(3 * *c.force * *R / (4 * E_star)) * std::cbrt(k_max / k_min)
+                           : 2 * std::sqrt(*c.depth / k_min);
   return 1.25 * a;
 }
 

@@ -187,14 +187,16 @@ double nominal_thickness(const Scene& scene);
 // Where the indenter first touches the skin: a plane on a cap touches at the apex, a sphere at its centre.
 Vec2 contact_center(const Scene& scene);
 // The sphere-on-flat equivalent of the contact's relative curvature, 1/R = 1/R_sphere + 1/R_cap (a plane:
-// no sphere term, a flat layer or imported surface: no cap term); none when both vanish.
+// no sphere term, a flat layer or imported surface: no cap term; an ellipsoidal cap: R_cap = sqrt(R R_y), the
+// geometric mean of its apex radii); none when both vanish.
 std::optional<double> equivalent_sphere_radius(const Scene& scene);
 // Radius of the candidate contact zone (the multipliers' disc): contact.zone_radius, else 1.25 × an upper
 // bound of the contact radius: under a force, the half-space Hertz radius (a bonded layer is stiffer than
 // the half-space, so its contact is smaller than Hertz's); at a depth, twice Hertz's sqrt(R δ) (there the
 // incompressible layer bulges around the indenter and its contact is larger than Hertz's, up to the
-// thin-layer limit 2 sqrt(R δ)). The margin covers the shift of a sliding contact. Commands check the
-// answer stays inside. Throws SceneError for a plane off a cap without contact.zone_radius.
+// thin-layer limit 2 sqrt(R δ)); on an ellipsoidal cap, the long semi-axis of the contact ellipse. The margin
+// covers the shift of a sliding contact. Commands check the answer stays inside. Throws SceneError for a
+// plane off a cap without contact.zone_radius.
 double contact_zone_radius(const Scene& scene);
 // Mesh size inside the candidate zone: contact.h, else mesh.h_min.
 double contact_zone_h(const Scene& scene);

@@ -264,7 +264,7 @@ TEST(SceneLoad, UnknownKeys) {
   EXPECT_SCENE_ERROR(
       with(&Doc::geometry,
            R"({"type": "cap", "R": 129.7, "h": 3.04, "apex": [0, 0], "truncation_radius": 12, "foo": 1})"),
-      "scenes/x.json: geometry.foo: unknown key; allowed: type, R, h, apex, truncation_radius, side");
+      "scenes/x.json: geometry.foo: unknown key; allowed: type, R, R_y, h, apex, truncation_radius, side");
   EXPECT_SCENE_ERROR(with(&Doc::geometry, R"({"type": "flat", "h": 3, "half_width": 15, "R": 1})"),
                      "geometry.R: unknown key; allowed: type, h, half_width, side");
   EXPECT_SCENE_ERROR(with(&Doc::material, R"({"E": 3.0, "nu": 0.5, "G": 1})"),
@@ -396,6 +396,25 @@ TEST(SceneLoad, CapGeometry) {
   EXPECT_SCENE_ERROR(cap("129.7", "3.04", "0"),
                      "geometry.truncation_radius = 0: must be a number > 0 and < 27.9");
   EXPECT_NO_THROW(parse_scene(cap("129.7", "3.04", "27.9"), kSource));
+}
+
+TEST(SceneLoad, EllipsoidalCapGeometry) {
+  const auto cap = [](const std::string& Ry, const std::string& h, const std::string& rt) {
+    return with(&Doc::geometry, R"({"type": "cap", "R": 15, "R_y": )" + Ry + R"(, "h": )" + h +
+                                    R"(, "apex": [0, 0], "truncation_radius": )" + rt + "}");
+  };
+  // c = sqrt(R R_y) = sqrt(120) = 10.954; along y (the shorter axis, b = sqrt(R_y c) = 9.361) the top meets
+  // the base at b sqrt(1 − (1 − h/c)²) = 6.4362 for h = 3.
+  const Scene s = parse_scene(cap("8", "3", "6.4"), kSource);
+  EXPECT_DOUBLE_EQ(s.geometry.cap.radius_y(), 8.0);
+  EXPECT_FALSE(s.geometry.cap.spherical());
+  EXPECT_SCENE_ERROR(cap("8", "11", "6"), "geometry.h = 11: must be a number in (0, sqrt(R R_y))", "10.95");
+  EXPECT_SCENE_ERROR(cap("8", "3", "6.5"),
+                     "geometry.truncation_radius = 6.5: must be a number > 0 and < 6.436",
+                     "ellipsoidal cap first thins to zero");
+  EXPECT_SCENE_ERROR(cap("-1", "3", "6"), "geometry.R_y = -1: must be a length in (0, 10000] mm");
+  // R_y = R is the sphere, with the sphere's own rule.
+  EXPECT_TRUE(parse_scene(cap("15", "3", "6"), kSource).geometry.cap.spherical());
 }
 
 TEST(SceneLoad, FlatGeometry) {
