@@ -3,6 +3,7 @@
 #include <map>
 
 #include "mesh/p2_tet.hpp"
+#include "mesh/quality.hpp"
 #include "mesh/shape.hpp"
 #include "mesh/surface.hpp"
 #include "mesh/tetrahedralize.hpp"
@@ -90,7 +91,9 @@ TetMesh build_mesh(const Scene& scene) {
       generated ? layer_surface(scene, size) : import_surface(scene.geometry.surface.path);
   LinearTets lin = tetrahedralize(surface, size, scene.mesh, /*keep_facets=*/!generated);
   if (generated) snap_to_surface(lin, SkinShape(scene.geometry));
-  return make_quadratic(lin.points, lin.tets, lin.faces, lin.face_marker, scene.geometry);
+  TetMesh mesh = make_quadratic(lin.points, lin.tets, lin.faces, lin.face_marker, scene.geometry);
+  check_no_inverted_element(mesh);
+  return mesh;
 }
 
 }  // namespace skinfem

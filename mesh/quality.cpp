@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "mesh/p2_tet.hpp"
+#include "mesh/surface.hpp"
 
 namespace skinfem {
 
@@ -80,6 +81,26 @@ MeshQuality assess_quality(const TetMesh& m) {
     }
   }
   return q;
+}
+
+void check_no_inverted_element(const TetMesh& m) {
+  static const Eigen::Vector3d kVertices[4] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const auto& rule = p2::quadrature_degree5();
+  for (int t = 0; t < m.num_tets(); ++t) {
+    double worst = tet_volume(m, t);
+    for (const auto& xi : kVertices) worst = std::min(worst, tet_jacobian(m, t, xi).determinant());
+    for (const auto& qp : rule) worst = std::min(worst, tet_jacobian(m, t, qp.xi).determinant());
+    if (worst > 0) continue;
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 4; ++k) c += 0.25 * vertex(m, t, k);
+    char where[96];
+    std::snprintf(where, sizeof where, "(%.3f, %.3f, %.3f) mm", c.x(), c.y(), c.z());
+    throw MeshError(
+        "element " + std::to_string(t) + " near " + where +
+        " is inverted (det J <= 0: snapped onto the curved top, its nodes fold it); the mesh does not "
+        "fit the surface there: change mesh.h_min / mesh.h_max (finer where the top is steep or "
+        "strongly curved), or cut the cap farther inside its rim");
+  }
 }
 
 }  // namespace skinfem

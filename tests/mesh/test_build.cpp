@@ -9,6 +9,7 @@
 #include "mesh/quality.hpp"
 #include "mesh/shape.hpp"
 #include "mesh/sizing.hpp"
+#include "mesh/surface.hpp"
 #include "mesh/surface_quadrature.hpp"
 #include "scene/load.hpp"
 
@@ -85,6 +86,29 @@ TEST(MeshBuild, EllipsoidalCapVolumeConvergesAtFourthOrder) {
   const double order = testing::observed_order(size, err_p2);
   std::printf("observed order %.2f\n", order);
   EXPECT_GT(order, 3.5);
+}
+
+TEST(MeshBuild, AFoldedElementIsRefusedWithItsLocation) {
+  // Node 4 of a P2 tet sits on edge (0, 1); moved to x0 − (x1 − x0) the map's tangent along that edge at
+  // vertex 0 is −3x0 + 4x01 − x1 = −5(x1 − x0): reversed, so det J < 0 there (the element folds).
+  TetMesh m = build_mesh(small_cap(1.0));
+  EXPECT_NO_THROW(check_no_inverted_element(m));
+  EXPECT_GT(assess_quality(m).min_jacobian_ratio, 0);
+  const int t = m.num_tets() / 2;
+  const Eigen::RowVector3d x0 = m.nodes.row(m.tets(t, 0)), x1 = m.nodes.row(m.tets(t, 1));
+  ASSERT_EQ(p2::kEdge[0][0], 0);
+  ASSERT_EQ(p2::kEdge[0][1], 1);
+  m.nodes.row(m.tets(t, 4)) = x0 - (x1 - x0);
+  EXPECT_LT(assess_quality(m).min_jacobian_ratio, 0);
+  try {
+    check_no_inverted_element(m);
+    ADD_FAILURE() << "a folded element was accepted";
+  } catch (const MeshError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("is inverted"), std::string::npos) << msg;
+    EXPECT_NE(msg.find(" mm"), std::string::npos) << msg;
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+  }
 }
 
 TEST(MeshBuild, EveryBoundaryFaceIsMarkedAndLiesOnItsExactSurface) {
