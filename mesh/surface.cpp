@@ -4,8 +4,11 @@
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <map>
 #include <optional>
 
 #include "mesh/footprint.hpp"
@@ -53,6 +56,80 @@ bool inside_circle(const Footprint& fp, int a, int b, int c, const std::vector<C
   for (const auto& circle : circles)
     if (std::hypot(x - circle.centre[0], y - circle.centre[1]) < circle.radius) return true;
   return false;
+}
+
+// OBJ and OFF files may repeat a point for every face that uses it (STL readers merge them already): faces
+// joined only through equal coordinates become neighbours.
+void merge_duplicate_vertices(SurfaceMesh& s) {
+  std::map<std::array<double, 3>, int> first;
+  std::vector<int> to(s.vertices.rows());
+  RowMatrixX3d kept(s.vertices.rows(), 3);
+  int n = 0;
+  for (int i = 0; i < s.vertices.rows(); ++i) {
+    const auto [it, fresh] = first.try_emplace({s.vertices(i, 0), s.vertices(i, 1), s.vertices(i, 2)}, n);
+    if (fresh) kept.row(n++) = s.vertices.row(i);
+    to[i] = it->second;
+  }
+  s.vertices = kept.topRows(n);
+  for (int t = 0; t < s.triangles.rows(); ++t)
+    for (int k = 0; k < 3; ++k) s.triangles(t, k) = to[s.triangles(t, k)];
+}
+
+std::string point_words(const Eigen::Vector3d& p) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%.6g, %.6g, %.6g) mm", p.x(), p.y(), p.z());
+  return buf;
+}
+
+// Turns every face the way of its neighbours (breadth first across shared edges), so a surface written with
+// mixed orientations still reads; check_watertight then requires the result to enclose positive volume.
+// An edge of more than two faces, or a one-sided surface, is refused at its location.
+void orient_faces(SurfaceMesh& s, const std::string& path) {
+  const int nf = static_cast<int>(s.triangles.rows());
+  std::map<std::pair<int, int>, std::vector<int>> faces_of;
+  for (int t = 0; t < nf; ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int a = s.triangles(t, k), b = s.triangles(t, (k + 1) % 3);
+      faces_of[{std::min(a, b), std::max(a, b)}].push_back(t);
+    }
+  const auto midpoint = [&](int a, int b) {
+    return point_words(0.5 * (s.vertices.row(a) + s.vertices.row(b)).transpose());
+  };
+  for (const auto& [edge, faces] : faces_of)
+    if (faces.size() > 2)
+      throw MeshError(path + ": " + std::to_string(faces.size()) + " faces share the edge at " +
+                      midpoint(edge.first, edge.second) + "; a manifold surface is required");
+  // Whether face t runs a → b (true) or b → a (false).
+  const auto runs = [&](int t, int a, int b) {
+    for (int k = 0; k < 3; ++k)
+      if (s.triangles(t, k) == a && s.triangles(t, (k + 1) % 3) == b) return true;
+    return false;
+  };
+  std::vector<char> seen(nf, 0);
+  for (int start = 0; start < nf; ++start) {
+    if (seen[start]) continue;
+    seen[start] = 1;
+    std::vector<int> queue{start};
+    while (!queue.empty()) {
+      const int t = queue.back();
+      queue.pop_back();
+      for (int k = 0; k < 3; ++k) {
+        const int a = s.triangles(t, k), b = s.triangles(t, (k + 1) % 3);
+        for (int u : faces_of[{std::min(a, b), std::max(a, b)}]) {
+          if (u == t || !runs(u, a, b)) continue;  // u runs b → a: consistent with t
+          if (seen[u])
+            throw MeshError(path + ": the surface is one-sided (it cannot be oriented) at the edge " +
+                            midpoint(a, b));
+          std::swap(s.triangles(u, 1), s.triangles(u, 2));
+        }
+        for (int u : faces_of[{std::min(a, b), std::max(a, b)}])
+          if (!seen[u]) {
+            seen[u] = 1;
+            queue.push_back(u);
+          }
+      }
+    }
+  }
 }
 
 double signed_volume(const SurfaceMesh& s) {
@@ -218,6 +295,9 @@ SurfaceMesh import_surface(const std::string& path) {
     int i = 0;
     for (auto v : m.fv_range(f)) s.triangles(f.idx(), i++) = v.idx();
   }
+  merge_duplicate_vertices(s);
+  orient_faces(s, path);
+  if (signed_volume(s) < 0) s.triangles.col(1).swap(s.triangles.col(2));  // consistently inward: turn out
   // Faces the reader dropped (complex edges) leave open edges, which this check reports.
   check_watertight(s, path);
   if (const auto x = first_self_intersection(s))

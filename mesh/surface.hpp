@@ -21,10 +21,11 @@ struct MeshError : std::runtime_error {
 // edge of every punch, so that a rigid punch holds exactly its disc.
 SurfaceMesh layer_surface(const Scene& scene, const SizingField& size);
 
-// Reads a closed surface; faces lying on z = 0 (all three vertices within 1e-9·diameter, normal −z)
-// become the base, faces with a horizontal normal the side, the rest the top.
-// Throws MeshError naming the file when it cannot be read, is not watertight or not manifold,
-// or has no base face.
+// Reads a closed surface (STL ASCII or binary, OBJ, OFF; mm): points with equal coordinates are merged and
+// faces are oriented like their neighbours, then outward. Faces lying on z = 0 (all three vertices within
+// 1e-9·diameter, normal −z) become the base, faces with a horizontal normal the side, the rest the top.
+// Throws MeshError naming the file when it cannot be read, is not watertight, has an edge of more than two
+// faces (naming where), is one-sided or self-intersecting, reaches below z = 0, or has no base face.
 SurfaceMesh import_surface(const std::string& path);
 
 // Throws MeshError (prefixed with `what`) unless the surface is closed, manifold and outward oriented.

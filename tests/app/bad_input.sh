@@ -123,6 +123,9 @@ check stl_binary_garbage 'binary.stl: (surface has no faces|cannot be read)' "$s
 /usr/bin/python3 "$(dirname "$0")/box_stl.py" "$tmp/box.stl"
 variant stl_sensor_off 'd["geometry"] = {"type": "surface", "path": "box.stl"}; d["sensors"]["positions"] = [[7.95, 0]]; d["loads"] = {"patches": [{"center": [0, 0], "diameter": 0.5, "direction": [0, 0, -1], "force": 1}]}'
 check stl_sensor_off 'sensor 1 at \(7.95.*not entirely on the skin' "$skinfem" solve "$tmp/stl_sensor_off.json" --out "$tmp/out"
+/usr/bin/python3 "$(dirname "$0")/box_stl.py" "$tmp/edge.off" --edge
+variant off_non_manifold 'd["geometry"] = {"type": "surface", "path": "edge.off"}; d["loads"] = {}'
+check off_non_manifold 'edge.off: 4 faces share the edge at \(8, 8, 1.5\) mm' "$skinfem" mesh "$tmp/off_non_manifold.json" --out "$tmp/out"
 variant stl_missing 'd["geometry"] = {"type": "surface", "path": "none.stl"}'
 check stl_missing 'geometry.path = "none.stl": must name an existing file' "$skinfem" mesh "$tmp/stl_missing.json" --out "$tmp/out"
 variant stl_extension 'd["geometry"] = {"type": "surface", "path": "base.json"}'

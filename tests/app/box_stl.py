@@ -1,8 +1,12 @@
 #!/usr/bin/python3
-"""Writes a closed ASCII STL box, 16 x 16 x 3 mm with its base on z = 0 and outward normals, for the
-command-line tests. Usage: box_stl.py OUT [--open] [--overlap]
-  --open     drop the last two triangles (an open surface)
-  --overlap  add a second box shifted by (4, 4, 0): closed and manifold, but self-intersecting"""
+"""Writes a closed box, 16 x 16 x 3 mm with its base on z = 0 and outward normals, for the command-line
+tests. Usage: box_stl.py OUT [options]; the format follows OUT's extension (.stl ASCII, .obj, .off).
+  --open       drop the last two triangles (an open surface)
+  --overlap    add a second box shifted by (4, 4, 0): closed and manifold, but self-intersecting
+  --edge       add a second box shifted by (16, 16, 0): the two share one vertical edge (non-manifold)
+  --mixed      every third triangle written inward (orientations mixed)
+  --inward     every triangle written inward
+  --unshared   (.obj, .off) every triangle with its own three points, repeated coordinates"""
 import sys
 
 L, H = 8.0, 3.0
@@ -31,5 +35,29 @@ if "--open" in sys.argv:
     tris = tris[:-2]
 if "--overlap" in sys.argv:
     tris += list(triangles((4, 4, 0)))
-out = ["solid box"] + [line for t in tris for line in facet(*t)] + ["endsolid box"]
-open(sys.argv[1], "w").write("\n".join(out) + "\n")
+if "--edge" in sys.argv:
+    tris += list(triangles((16, 16, 0)))
+if "--inward" in sys.argv:
+    tris = [[t[0], t[2], t[1]] for t in tris]
+if "--mixed" in sys.argv:
+    tris = [[t[0], t[2], t[1]] if i % 3 == 0 else t for i, t in enumerate(tris)]
+out = sys.argv[1]
+if out.endswith(".stl"):
+    lines = ["solid box"] + [line for t in tris for line in facet(*t)] + ["endsolid box"]
+else:
+    points, index = [], {}
+    faces = []
+    for t in tris:
+        face = []
+        for p in t:
+            if "--unshared" in sys.argv or p not in index:
+                index[p] = len(points)
+                points.append(p)
+            face.append(index[p])
+        faces.append(face)
+    if out.endswith(".obj"):
+        lines = ["v %g %g %g" % p for p in points] + ["f %d %d %d" % tuple(i + 1 for i in f) for f in faces]
+    else:
+        lines = ["OFF", "%d %d 0" % (len(points), len(faces))] + ["%g %g %g" % p for p in points]
+        lines += ["3 %d %d %d" % tuple(f) for f in faces]
+open(out, "w").write("\n".join(lines) + "\n")
