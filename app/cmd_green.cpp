@@ -91,7 +91,7 @@ nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const 
   std::ostringstream csv;
   csv.precision(10);
   csv << "sensor,component,offset_x_mm,offset_y_mm,g_point_per_mm2,g_disc_per_mm2"
-      << (flat ? ",g_exact_point_per_mm2,g_exact_disc_per_mm2" : "") << "\n";
+      << (flat ? ",g_exact_point_per_mm2,g_exact_disc_per_mm2" : "") << "\n";  // ridged: the smooth layer's
   nlohmann::json per_sensor = nlohmann::json::array();
   const int ns = static_cast<int>(scene.sensors.positions.size());
   for (int s = 0; s < ns; ++s) {
@@ -117,7 +117,9 @@ nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const 
     if (flat) {
       const auto err = green::max_error_over_peak(prof.disc, exact_disc);
       for (size_t c = 0; c < 4; ++c)
-        js["fe_vs_exact_max_err_over_peak"][green::component_name(green::kComponents[c])] = err[c];
+        js[scene.geometry.ridges.present()
+               ? "disc_vs_smooth_max_diff_over_peak"
+               : "fe_vs_exact_max_err_over_peak"][green::component_name(green::kComponents[c])] = err[c];
     }
     per_sensor.push_back(js);
   }

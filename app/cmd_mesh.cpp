@@ -47,6 +47,7 @@ nlohmann::json mesh_stage(const Scene& scene, const TetMesh& mesh, double mesh_s
   write_boundary_vtu(out_dir + "/boundary.vtu", mesh);
   nlohmann::json summary = quality_json(q, scene);
   summary["scene"] = scene_json(scene);
+  summary["straightened_elements"] = mesh.straightened;
   summary["wall_s"] = mesh_s;
   summary["peak_rss_mb"] = peak_rss_mb();
   write_json(out_dir + "/summary.json", summary);
@@ -58,6 +59,8 @@ nlohmann::json mesh_stage(const Scene& scene, const TetMesh& mesh, double mesh_s
   if (summary.contains("volume_rel_error"))
     std::printf(" (exact %.4f, rel. error %.1e)", summary["exact_volume_mm3"].get<double>(),
                 summary["volume_rel_error"].get<double>());
+  if (mesh.straightened > 0)
+    std::printf("; %d elements folded by their curved edges were given straight ones", mesh.straightened);
   std::printf("; %.2f s\n  wrote %s/mesh.vtu, boundary.vtu, summary.json\n", mesh_s, out_dir.c_str());
   return summary;
 }

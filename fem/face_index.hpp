@@ -27,7 +27,8 @@ class PlanarFaceIndex {
   std::vector<std::vector<int>> buckets_;  // face indices
 };
 
-// The skin's thickness above the base point (x, y), mm: the exact top for caps and flat layers, else the
+// The skin's thickness above the base point (x, y), mm: the exact top for caps and flat layers (a ridged one:
+// its mean top, so that it compares with the smooth skin of equal mean thickness), else the
 // height of the meshed top surface there (its quadratic faces), so imported skins get their own thickness.
 // Throws std::out_of_range, naming the point, when no skin lies above it.
 double skin_thickness(const Geometry& geometry, const TetMesh& mesh, double x, double y);

@@ -84,14 +84,35 @@ void snap_to_surface(LinearTets& lin, const SkinShape& shape) {
 }
 }  // namespace
 
+void straighten_folded_elements(TetMesh& m) {
+  // A pass can fold a neighbour that shares a straightened edge; a few passes settle it (a linear tet with
+  // all edges straight is its own straight-sided tet, which TetGen made valid).
+  for (int pass = 0; pass < 4; ++pass) {
+    int changed = 0;
+    for (int t = 0; t < m.num_tets(); ++t) {
+      if (!folded(m, t)) continue;
+      for (int e = 0; e < 6; ++e)
+        m.nodes.row(m.tets(t, 4 + e)) =
+            0.5 * (m.nodes.row(m.tets(t, p2::kEdge[e][0])) + m.nodes.row(m.tets(t, p2::kEdge[e][1])));
+      ++changed;
+    }
+    m.straightened += changed;
+    if (changed == 0) return;
+  }
+}
+
 TetMesh build_mesh(const Scene& scene) {
   const SizingField size(scene);
   const bool generated = scene.geometry.kind != GeometryKind::surface;
   const SurfaceMesh surface =
       generated ? layer_surface(scene, size) : import_surface(scene.geometry.surface.path);
-  LinearTets lin = tetrahedralize(surface, size, scene.mesh, /*keep_facets=*/!generated);
+  const FacetPolicy facets = !generated                        ? FacetPolicy::keep
+                             : scene.geometry.ridges.present() ? FacetPolicy::preserve
+                                                               : FacetPolicy::merge;
+  LinearTets lin = tetrahedralize(surface, size, scene.mesh, facets);
   if (generated) snap_to_surface(lin, SkinShape(scene.geometry));
   TetMesh mesh = make_quadratic(lin.points, lin.tets, lin.faces, lin.face_marker, scene.geometry);
+  straighten_folded_elements(mesh);
   check_no_inverted_element(mesh);
   return mesh;
 }

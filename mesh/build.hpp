@@ -8,8 +8,14 @@
 
 namespace skinfem {
 
-// Throws MeshError when the surface is unusable or TetGen fails.
+// Throws MeshError when the surface is unusable, TetGen fails, or an element stays folded.
 TetMesh build_mesh(const Scene& scene);
+
+// Mid-edge nodes placed on a surface curved on the scale of the elements (a steep cap near its rim,
+// ridges) can fold a thin element (det J ≤ 0). Each folded element gets straight edges, its mid-edge
+// nodes back at the chord midpoints: a local O(h²) geometry error instead of a wrong solve. Counts them in
+// mesh.straightened.
+void straighten_folded_elements(TetMesh& mesh);
 
 // The P2 completion alone: adds the six mid-edge nodes per tet, placed on the exact top/side
 // surface of `geometry` when the edge lies on a curved boundary face (straight otherwise).

@@ -83,14 +83,18 @@ MeshQuality assess_quality(const TetMesh& m) {
   return q;
 }
 
-void check_no_inverted_element(const TetMesh& m) {
+bool folded(const TetMesh& m, int t) {
   static const Eigen::Vector3d kVertices[4] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  const auto& rule = p2::quadrature_degree5();
+  double worst = tet_volume(m, t);
+  for (const auto& xi : kVertices) worst = std::min(worst, tet_jacobian(m, t, xi).determinant());
+  for (const auto& qp : p2::quadrature_degree5())
+    worst = std::min(worst, tet_jacobian(m, t, qp.xi).determinant());
+  return !(worst > 0);
+}
+
+void check_no_inverted_element(const TetMesh& m) {
   for (int t = 0; t < m.num_tets(); ++t) {
-    double worst = tet_volume(m, t);
-    for (const auto& xi : kVertices) worst = std::min(worst, tet_jacobian(m, t, xi).determinant());
-    for (const auto& qp : rule) worst = std::min(worst, tet_jacobian(m, t, qp.xi).determinant());
-    if (worst > 0) continue;
+    if (!folded(m, t)) continue;
     Eigen::Vector3d c = Eigen::Vector3d::Zero();
     for (int k = 0; k < 4; ++k) c += 0.25 * vertex(m, t, k);
     char where[96];

@@ -22,6 +22,8 @@ MeshQuality assess_quality(const TetMesh& mesh);
 // vertices or degree-5 quadrature points) and where it lies. Mid-edge nodes moved onto a strongly curved
 // surface (a steep cap near its rim, too coarse a mesh) can fold an element; the solve would be wrong.
 void check_no_inverted_element(const TetMesh& mesh);
+// Whether element t folds: det J ≤ 0 at one of its vertices or degree-5 quadrature points.
+bool folded(const TetMesh& mesh, int t);
 
 // Per tet: straight-sided volume (mm³) and longest edge (mm).
 double tet_volume(const TetMesh& mesh, int tet);

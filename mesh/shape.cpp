@@ -7,9 +7,20 @@
 namespace skinfem {
 
 SkinShape::SkinShape(const Geometry& geometry)
-    : kind_(geometry.kind), cap_(geometry.cap), flat_(geometry.flat) {}
+    : kind_(geometry.kind), cap_(geometry.cap), flat_(geometry.flat), ridges_(geometry.ridges) {}
 
-double SkinShape::top_z(double x, double y) const {
+double SkinShape::ridge_z(double x, double y) const {
+  if (!ridges_.present()) return 0;
+  const double dx = x - ridges_.center[0], dy = y - ridges_.center[1];
+  const double rho = std::hypot(dx, dy), R = ridges_.radius, L = ridges_.period;
+  if (rho >= R) return 0;
+  const double w = rho <= R - L ? 1.0 : 0.5 * (1 + std::cos(M_PI * (rho - (R - L)) / L));
+  const double theta = ridges_.angle_deg * M_PI / 180;
+  const double xi = dx * std::cos(theta) + dy * std::sin(theta);
+  return 0.5 * ridges_.height * w * std::cos(2 * M_PI * xi / L);
+}
+
+double SkinShape::mean_top_z(double x, double y) const {
   if (kind_ != GeometryKind::cap) return flat_.h;
   const double dx = x - cap_.apex_x, dy = y - cap_.apex_y;
   if (cap_.spherical()) return cap_.h - cap_.R + std::sqrt(cap_.R * cap_.R - dx * dx - dy * dy);
@@ -24,7 +35,28 @@ Vec3 SkinShape::on_side(const Vec3& p) const {
   return {cap_.apex_x + scale * dx, cap_.apex_y + scale * dy, p[2]};
 }
 
-double SkinShape::volume() const {
+namespace {
+// ∬ ridge_z dA over the pattern: the angular mean of cos(k ρ cos φ) is J0(k ρ), so the integral is
+// (height/2) 2π ∫₀^R w(ρ) J0(kρ) ρ dρ, by Gauss on panels a quarter period long (J0 oscillates with it).
+double ridges_volume(const Ridges& r) {
+  if (!r.present()) return 0;
+  const double k = 2 * M_PI / r.period, R = r.radius, L = r.period;
+  const GaussRule1d g = gauss_legendre01(8);
+  const int panels = static_cast<int>(std::ceil(4 * R / L));
+  double v = 0;
+  for (int p = 0; p < panels; ++p)
+    for (size_t i = 0; i < g.x.size(); ++i) {
+      const double rho = R * (p + g.x[i]) / panels;
+      const double w = rho <= R - L ? 1.0 : 0.5 * (1 + std::cos(M_PI * (rho - (R - L)) / L));
+      v += g.w[i] * R / panels * w * std::cyl_bessel_j(0.0, k * rho) * rho;
+    }
+  return 0.5 * r.height * 2 * M_PI * v;
+}
+}  // namespace
+
+double SkinShape::volume() const { return smooth_volume() + ridges_volume(ridges_); }
+
+double SkinShape::smooth_volume() const {
   if (kind_ != GeometryKind::cap) return base_area() * flat_.h;
   const double R = cap_.R, rt = cap_.truncation_radius;
   // ∫₀^rt 2πr (h − R + sqrt(R² − r²)) dr
@@ -39,7 +71,7 @@ double SkinShape::volume() const {
     for (int j = 0; j < nt; ++j) {
       const double r = rt * g.x[i], th = 2 * M_PI * j / nt;
       v += g.w[i] * rt * r * (2 * M_PI / nt) *
-           top_z(cap_.apex_x + r * std::cos(th), cap_.apex_y + r * std::sin(th));
+           mean_top_z(cap_.apex_x + r * std::cos(th), cap_.apex_y + r * std::sin(th));
     }
   return v;
 }

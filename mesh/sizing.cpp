@@ -37,6 +37,9 @@ SizingField::SizingField(const Scene& scene)
     for (const auto& p : scene.sensors.positions)
       through_.push_back({p, p, 0.5 * scene.sensors.disc_diameter, contact_zone_h(scene)});
   }
+  // Ridges are resolved on the top only: their field decays within about a period below it.
+  if (const Ridges& r = scene.geometry.ridges; r.present())
+    top_.push_back({r.center, r.center, r.radius, r.mesh_size()});
   if (scene.geometry.kind != GeometryKind::surface) shape_.emplace(scene.geometry);
 }
 

@@ -28,6 +28,7 @@ struct TetMesh {
   RowMatrixX6i faces;           // F×6 boundary triangles, outward normal (right-hand rule)
   Eigen::VectorXi face_marker;  // F: one BoundaryMarker
   Eigen::VectorXi node_marker;  // N: OR of BoundaryMarker of the faces touching the node, 0 inside
+  int straightened = 0;         // elements given straight edges because curving folded them (mesh/build.hpp)
 
   int num_nodes() const { return static_cast<int>(nodes.rows()); }
   int num_tets() const { return static_cast<int>(tets.rows()); }

@@ -5,6 +5,9 @@
 //   geometry      {"type": "cap", "R", "R_y"*, "h", "apex": [x, y], "truncation_radius", "side"*}
 //                 R_y: the apex radius of curvature along y (default R: spherical; else an ellipsoid)
 //               | {"type": "flat", "h", "half_width", "side"*}
+//                 cap and flat: "ridges"*: {"period", "height" (crest to trough, < h), "angle_deg"* (0:
+//                 crests along y), "center": [x, y], "radius" (>= 2 periods), "h"* (mesh size, default
+//                 period/6), "profile"*: "sinusoidal"} (scene.hpp's Ridges)
 //               | {"type": "surface", "path", "side"*}      path: .stl/.obj/.off, relative to the scene file
 //                 side: "free" (default) | "fixed"
 //   material      {"E", "nu"}
@@ -290,6 +293,31 @@ json parse_json(const std::string& text, const Reader& r) {
   }
 }
 
+std::string off_footprint(const Geometry& g, const Vec2& p, double rad, const std::string& rad_name);
+json point(const Vec2& p);
+
+// Ridges on a cap or flat layer (scene.hpp's Ridges); `thickness` is the layer's h (the apex's for a cap).
+Ridges read_ridges(const Reader& r, const json& j, const std::string& P, const Geometry& geo,
+                   double thickness) {
+  if (!j.is_object()) r.fail(P, j, R"(must be an object {"period", "height", "center", "radius", ...})");
+  r.object(j, P, {"period", "height", "angle_deg", "center", "radius", "h", "profile"});
+  if (const json* profile = Reader::find(j, "profile"))
+    if (*profile != "sinusoidal")
+      r.fail(sub(P, "profile"), *profile,
+             R"(must be "sinusoidal": a rectangular profile has vertical walls that no height field holds)");
+  Ridges out;
+  out.period = r.number(j, P, "period", length());
+  out.height = r.number(j, P, "height", open_interval(0, thickness));
+  out.angle_deg = r.number_or(j, P, "angle_deg", 0.0, closed_interval(-360, 360));
+  out.center = r.vec2(j, P, "center");
+  out.radius = r.number(j, P, "radius", at_least(2 * out.period, "2 x period = " + fmt(2 * out.period)));
+  out.h = r.number_or(j, P, "h", 0.0, length());
+  const std::string off = off_footprint(geo, out.center, out.radius, "radius");
+  if (!off.empty())
+    r.fail(sub(P, "center"), point(out.center), "the patterned disc must lie on the skin; " + off);
+  return out;
+}
+
 Geometry read_geometry(const Reader& r, const json& g, const fs::path& base_dir) {
   const std::string P = "geometry";
   const std::string kinds = R"(one of "cap", "flat", "surface")";
@@ -300,7 +328,7 @@ Geometry read_geometry(const Reader& r, const json& g, const fs::path& base_dir)
 
   Geometry geo;
   if (t == "cap") {
-    r.object(g, P, {"type", "R", "R_y", "h", "apex", "truncation_radius", "side"});
+    r.object(g, P, {"type", "R", "R_y", "h", "apex", "truncation_radius", "side", "ridges"});
     CapGeometry& c = geo.cap;
     geo.kind = GeometryKind::cap;
     c.R = r.number(g, P, "R", length());
@@ -327,7 +355,7 @@ Geometry read_geometry(const Reader& r, const json& g, const fs::path& base_dir)
                  ", h = " + fmt(c.h) + ")",
              [rim](double x) { return x > 0 && x < rim; }});
   } else if (t == "flat") {
-    r.object(g, P, {"type", "h", "half_width", "side"});
+    r.object(g, P, {"type", "h", "half_width", "side", "ridges"});
     geo.kind = GeometryKind::flat;
     geo.flat.h = r.number(g, P, "h", length());
     geo.flat.half_width = r.number(g, P, "half_width", length());
@@ -349,6 +377,8 @@ Geometry read_geometry(const Reader& r, const json& g, const fs::path& base_dir)
   } else {
     r.fail(sub(P, "type"), type, "must be " + kinds);
   }
+  if (const json* ridges = Reader::find(g, "ridges"))
+    geo.ridges = read_ridges(r, *ridges, sub(P, "ridges"), geo, t == "cap" ? geo.cap.h : geo.flat.h);
 
   if (const json* side = Reader::find(g, "side")) {
     if (*side == "free")

@@ -51,6 +51,24 @@ struct SurfaceGeometry {
   std::string path;  // resolved relative to the scene file
 };
 
+// Fingerprint-like ridges on the top of a cap or flat layer (Scheibert et al., Science 2009: period about
+// 220 µm): the top becomes s(x, y) + (height/2) w(ρ) cos(2π ξ / period), ξ = (p − center)·(cos θ, sin θ) the
+// distance across the crests (crests run at angle_deg + 90° from x; angle_deg = 0: crests along y, ridges
+// crossed by a scan along x), ρ = |p − center|. The window w is 1 for ρ ≤ radius − period and falls to 0 at
+// ρ = radius as a half cosine, so the top stays smooth (C¹) where the pattern ends. Sinusoidal only: a
+// rectangular profile has vertical walls that no height field z = s(x, y) holds.
+struct Ridges {
+  double period = 0;  // mm; 0: no ridges
+  double height = 0;  // mm, crest to trough
+  double angle_deg = 0;
+  Vec2 center{0, 0};  // mm
+  double radius = 0;  // mm, the patterned disc
+  double h = 0;       // mm, mesh size on the pattern; 0 → period / 6
+
+  bool present() const { return period > 0; }
+  double mesh_size() const { return h > 0 ? h : period / 6; }
+};
+
 enum class GeometryKind { cap, flat, surface };
 // What holds the lateral (truncation) face: nothing (traction-free) or u = 0.
 enum class SideCondition { free, fixed };
@@ -60,6 +78,7 @@ struct Geometry {
   CapGeometry cap;
   FlatGeometry flat;
   SurfaceGeometry surface;
+  Ridges ridges;  // cap or flat only
   SideCondition side = SideCondition::free;
 };
 

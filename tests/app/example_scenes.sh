@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The shipped example skins end to end: scenes/fingertip.json (ellipsoidal cap) and scenes/dome_stl.json (binary
-# STL dome, regenerated here by scenes/make_dome_stl.py and compared byte for byte) through mesh, solve, green,
-# kfit and contact, and defect where the scene has a sweep, at coarse settings (skin mesh sizes doubled).
+# The shipped example skins end to end: scenes/fingertip.json (ellipsoidal cap), scenes/dome_stl.json (binary
+# STL dome, regenerated here by scenes/make_dome_stl.py and compared byte for byte) and scenes/ridged_layer.json
+# (fingerprint ridges over the sensor) through mesh, solve, green and kfit, contact and defect where the scene
+# has them, at coarse settings (skin mesh sizes doubled; ridges at 5 elements per period on a smaller patch).
 # Independent checks: the meshed volume against the skin's volume computed here (the ellipsoid by quadrature,
 # the dome by the divergence theorem over the STL's facets), the thickness above each sensor against the
 # closed-form top, and each command's second-method check (reciprocity, statics, condensed vs reaction
@@ -19,7 +20,7 @@ if ! cmp -s "$tmp/dome.stl" "$root/scenes/dome.stl"; then
 fi
 
 fail=0
-for name in fingertip dome_stl; do
+for name in fingertip dome_stl ridged_layer; do
   # Coarse settings: the skin's mesh sizes doubled, a sparser calibration scan and sweep.
   /usr/bin/python3 - "$root/scenes/$name.json" "$tmp/$name.json" <<'PY'
 import json, sys
@@ -31,9 +32,13 @@ s["calibration"]["spacing"] = 0.2
 c = s.get("contact")
 if c and "sweep" in c:  # contact.h stays: the contact must stay one element inside its zone
     c["sweep"]["positions"] = 5
+r = s["geometry"].get("ridges")
+if r:
+    r["h"], r["radius"] = r["period"] / 5, 2 * r["period"]
 json.dump(s, open(sys.argv[2], "w"))
 PY
-  commands="mesh solve green kfit contact"
+  commands="mesh solve green kfit"
+  grep -q '"contact"' "$tmp/$name.json" && commands="$commands contact"
   grep -q '"sweep"' "$tmp/$name.json" && commands="$commands defect"
   for cmd in $commands; do
     if ! "$skinfem" "$cmd" "$tmp/$name.json" --out "$tmp/$name/$cmd" >"$tmp/stdout" 2>"$tmp/err"; then
@@ -84,8 +89,10 @@ def check_volume(name, exact, tol, why):
 
 
 def check_thickness(name, top, tol, why):
-    line = json.load(open(os.path.join(tmp, name + ".json")))["sensors"]["line"]
-    at = lambda i: [line["start"][k] + (i - 1) * line["step"][k] for k in range(2)]  # sensors count from 1
+    sensors = json.load(open(os.path.join(tmp, name + ".json")))["sensors"]
+    line = sensors.get("line")
+    at = lambda i: ([line["start"][k] + (i - 1) * line["step"][k] for k in range(2)] if line  # count from 1
+                    else sensors["positions"][i - 1])
     for cmd, file in (("kfit", "kfit.json"), ("green", "summary.json")):
         for s in load(name, cmd, file)["sensors"]:
             h, want = s["h_mm"], top(*at(s["sensor"]))
@@ -135,8 +142,30 @@ def faceted_top(x, y):
 
 # float32 coordinates (relative 6e-8 of 10 mm) bound the round-off.
 check_thickness("dome_stl", faceted_top, 1e-5, "the STL's facets")
+# Ridged layer: the flat box plus the ridges' volume, here by the midpoint rule on a 2000² grid over the
+# patch (the C++ side integrates them as a Bessel integral); thickness is the mean one, h.
+sc = json.load(open(os.path.join(tmp, "ridged_layer.json")))
+g = sc["geometry"]
+r = g["ridges"]
+n = 2000
+u = (np.arange(n) + 0.5) / n * 2 * r["radius"] - r["radius"]
+X, Y = np.meshgrid(u, u)
+rho = np.hypot(X, Y)
+L, R = r["period"], r["radius"]
+w = np.where(rho <= R - L, 1.0, np.where(rho < R, 0.5 * (1 + np.cos(np.pi * (rho - (R - L)) / L)), 0.0))
+th = math.radians(r.get("angle_deg", 0.0))
+ridge = 0.5 * r["height"] * w * np.cos(2 * math.pi * (X * math.cos(th) + Y * math.sin(th)) / L)
+volume = (2 * g["half_width"]) ** 2 * g["h"] + float(ridge.sum()) * (2 * R / n) ** 2
+# Mesh: P2 on the ridges (tests/mesh/test_build.cpp: 4e-6 at 5 elements per period); grid: O(1e-7) of it.
+check_volume("ridged_layer", volume, 1e-5, "flat box + ridges by the midpoint rule")
+check_thickness("ridged_layer", lambda x, y: g["h"], 1e-12, "the mean thickness")
+
 for name in ("fingertip", "dome_stl"):
     check_round_off(name)
+for cmd, key in (("solve", "base_force_balance_rel"), ("green", "reciprocity_check_rel")):
+    v = load("ridged_layer", cmd)[key]
+    if not (math.isfinite(v) and abs(v) < 1e-10):
+        bad.append(f"ridged_layer {cmd} {key} = {v}")
 d = load("fingertip", "defect")
 if d.get("positions") != 5: bad.append(f"fingertip defect: {d.get('positions')} positions, expected 5")
 for b_ in bad:

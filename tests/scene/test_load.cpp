@@ -417,6 +417,28 @@ TEST(SceneLoad, EllipsoidalCapGeometry) {
   EXPECT_TRUE(parse_scene(cap("15", "3", "6"), kSource).geometry.cap.spherical());
 }
 
+TEST(SceneLoad, Ridges) {
+  const auto ridged = [](const std::string& ridges) {
+    return with(&Doc::geometry, R"({"type": "flat", "h": 3, "half_width": 8, "ridges": )" + ridges + "}");
+  };
+  const Scene s = parse_scene(
+      ridged(R"({"period": 0.22, "height": 0.05, "angle_deg": 30, "center": [1, 0], "radius": 1})"), kSource);
+  EXPECT_TRUE(s.geometry.ridges.present());
+  EXPECT_DOUBLE_EQ(s.geometry.ridges.mesh_size(), 0.22 / 6);
+  EXPECT_SCENE_ERROR(ridged(R"({"period": 0.22, "height": 3, "center": [0, 0], "radius": 1})"),
+                     "geometry.ridges.height = 3: must be a number in (0, 3)");
+  EXPECT_SCENE_ERROR(ridged(R"({"period": 0.22, "height": 0.05, "center": [0, 0], "radius": 0.4})"),
+                     "geometry.ridges.radius = 0.4: must be a number >= 2 x period = 0.44");
+  EXPECT_SCENE_ERROR(ridged(R"({"period": 0.22, "height": 0.05, "center": [7.5, 0], "radius": 1})"),
+                     "geometry.ridges.center = [7.5,0.0]: the patterned disc must lie on the skin",
+                     "<= half_width - radius = 7");
+  EXPECT_SCENE_ERROR(
+      ridged(R"({"period": 0.22, "height": 0.05, "center": [0, 0], "radius": 1, "profile": "rectangular"})"),
+      "geometry.ridges.profile = \"rectangular\": must be \"sinusoidal\"");
+  EXPECT_SCENE_ERROR(with(&Doc::geometry, R"({"type": "surface", "path": "x.stl", "ridges": {}})"),
+                     "geometry.ridges: unknown key");
+}
+
 TEST(SceneLoad, FlatGeometry) {
   EXPECT_SCENE_ERROR(with(&Doc::geometry, R"({"type": "flat", "h": 0, "half_width": 15})"),
                      "geometry.h = 0: must be a length in (0, 10000] mm");
