@@ -33,6 +33,13 @@ nlohmann::json components_json(const green::KReport& r) {
         {"k", r.components[c].k}, {"rms_residual_over_peak", r.components[c].rms_residual_over_peak}};
   return j;
 }
+
+// max |g_c| over a profile, 1/mm².
+double peak(const std::vector<green::GreenSample>& profile, GreenComponent c) {
+  double p = 0;
+  for (const auto& g : profile) p = std::max(p, std::abs(green::component(g, c)));
+  return p;
+}
 }  // namespace
 
 nlohmann::json kfit_stage(const Scene& scene, const AdjointSetup& setup, const std::string& out_dir,
@@ -69,11 +76,8 @@ nlohmann::json kfit_stage(const Scene& scene, const AdjointSetup& setup, const s
                          {"k_central", fe_k.k_central},
                          {"k_lsq_line", fe_k.k_lsq_line},
                          {"components", components_json(fe_k)}};
-    for (auto c : green::kComponents) {
-      double peak = 0;
-      for (const auto& g : prof.point) peak = std::max(peak, std::abs(green::component(g, c)));
-      js["peak_point_per_mm2"][green::component_name(c)] = peak;
-    }
+    for (auto c : green::kComponents)
+      js["peak_point_per_mm2"][green::component_name(c)] = peak(prof.point, c);
     if (scene.geometry.kind == GeometryKind::cap) {
       std::vector<double> zz;
       for (const auto& g : prof.point) zz.push_back(g.zz);
@@ -94,10 +98,7 @@ nlohmann::json kfit_stage(const Scene& scene, const AdjointSetup& setup, const s
         const char* name = green::component_name(green::kComponents[c]);
         js[ridged ? "point_vs_smooth_max_diff_over_peak" : "fe_point_vs_exact_max_err_over_peak"][name] =
             err_point[c];
-        double peak = 0;
-        for (const auto& g : exact)
-          peak = std::max(peak, std::abs(green::component(g, green::kComponents[c])));
-        js["peak_point_exact_per_mm2"][name] = peak;
+        js["peak_point_exact_per_mm2"][name] = peak(exact, green::kComponents[c]);
       }
       js["k_central_exact"] = ex_k.k_central;
       js["k_lsq_line_exact"] = ex_k.k_lsq_line;

@@ -9,15 +9,23 @@ namespace skinfem {
 SkinShape::SkinShape(const Geometry& geometry)
     : kind_(geometry.kind), cap_(geometry.cap), flat_(geometry.flat), ridges_(geometry.ridges) {}
 
+namespace {
+// The ridges' window: 1 up to one period inside the patterned disc, then a half cosine to 0 at its edge.
+double ridge_window(double rho, const Ridges& r) {
+  const double inner = r.radius - r.period;
+  if (rho <= inner) return 1.0;
+  return rho < r.radius ? 0.5 * (1 + std::cos(M_PI * (rho - inner) / r.period)) : 0.0;
+}
+}  // namespace
+
 double SkinShape::ridge_z(double x, double y) const {
   if (!ridges_.present()) return 0;
   const double dx = x - ridges_.center[0], dy = y - ridges_.center[1];
-  const double rho = std::hypot(dx, dy), R = ridges_.radius, L = ridges_.period;
-  if (rho >= R) return 0;
-  const double w = rho <= R - L ? 1.0 : 0.5 * (1 + std::cos(M_PI * (rho - (R - L)) / L));
+  const double w = ridge_window(std::hypot(dx, dy), ridges_);
+  if (w == 0) return 0;
   const double theta = ridges_.angle_deg * M_PI / 180;
   const double xi = dx * std::cos(theta) + dy * std::sin(theta);
-  return 0.5 * ridges_.height * w * std::cos(2 * M_PI * xi / L);
+  return 0.5 * ridges_.height * w * std::cos(2 * M_PI * xi / ridges_.period);
 }
 
 double SkinShape::mean_top_z(double x, double y) const {
@@ -40,15 +48,14 @@ namespace {
 // (height/2) 2π ∫₀^R w(ρ) J0(kρ) ρ dρ, by Gauss on panels a quarter period long (J0 oscillates with it).
 double ridges_volume(const Ridges& r) {
   if (!r.present()) return 0;
-  const double k = 2 * M_PI / r.period, R = r.radius, L = r.period;
+  const double k = 2 * M_PI / r.period, R = r.radius;
   const GaussRule1d g = gauss_legendre01(8);
-  const int panels = static_cast<int>(std::ceil(4 * R / L));
+  const int panels = static_cast<int>(std::ceil(4 * R / r.period));
   double v = 0;
   for (int p = 0; p < panels; ++p)
     for (size_t i = 0; i < g.x.size(); ++i) {
       const double rho = R * (p + g.x[i]) / panels;
-      const double w = rho <= R - L ? 1.0 : 0.5 * (1 + std::cos(M_PI * (rho - (R - L)) / L));
-      v += g.w[i] * R / panels * w * std::cyl_bessel_j(0.0, k * rho) * rho;
+      v += g.w[i] * R / panels * ridge_window(rho, r) * std::cyl_bessel_j(0.0, k * rho) * rho;
     }
   return 0.5 * r.height * 2 * M_PI * v;
 }

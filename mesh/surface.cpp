@@ -81,7 +81,7 @@ std::string point_words(const Eigen::Vector3d& p) {
   return buf;
 }
 
-// Turns every face the way of its neighbours (breadth first across shared edges), so a surface written with
+// Turns every face the way of its neighbours (spreading across shared edges), so a surface written with
 // mixed orientations still reads; check_watertight then requires the result to enclose positive volume.
 // An edge of more than two faces, or a one-sided surface, is refused at its location.
 void orient_faces(SurfaceMesh& s, const std::string& path) {
@@ -115,18 +115,19 @@ void orient_faces(SurfaceMesh& s, const std::string& path) {
       queue.pop_back();
       for (int k = 0; k < 3; ++k) {
         const int a = s.triangles(t, k), b = s.triangles(t, (k + 1) % 3);
-        for (int u : faces_of[{std::min(a, b), std::max(a, b)}]) {
-          if (u == t || !runs(u, a, b)) continue;  // u runs b → a: consistent with t
-          if (seen[u])
-            throw MeshError(path + ": the surface is one-sided (it cannot be oriented) at the edge " +
-                            midpoint(a, b));
-          std::swap(s.triangles(u, 1), s.triangles(u, 2));
-        }
-        for (int u : faces_of[{std::min(a, b), std::max(a, b)}])
+        for (int u : faces_of.at({std::min(a, b), std::max(a, b)})) {
+          if (u == t) continue;
+          if (runs(u, a, b)) {  // u must run b → a to agree with t
+            if (seen[u])
+              throw MeshError(path + ": the surface is one-sided (it cannot be oriented) at the edge " +
+                              midpoint(a, b));
+            std::swap(s.triangles(u, 1), s.triangles(u, 2));
+          }
           if (!seen[u]) {
             seen[u] = 1;
             queue.push_back(u);
           }
+        }
       }
     }
   }

@@ -42,7 +42,7 @@ std::array<int, 3> sorted(int a, int b, int c) {
 }  // namespace
 
 LinearTets tetrahedralize(const SurfaceMesh& surface, const SizingField& size, const MeshControls& controls,
-                          FacetPolicy keep_facets) {
+                          FacetPolicy facets) {
   std::lock_guard<std::mutex> lock(tetgen_mutex);
   active_size = &size;
 
@@ -78,9 +78,9 @@ LinearTets tetrahedralize(const SurfaceMesh& surface, const SizingField& size, c
   buf.push_back('\0');
   tetgenbehavior behavior;
   if (!behavior.parse_commandline(buf.data())) throw MeshError("TetGen rejected the switches " + switches);
-  if (keep_facets != FacetPolicy::merge)
-    behavior.facet_ang_tol = 179.9999;  // merge only coplanar facets (within 2e-6 rad)
-  if (keep_facets == FacetPolicy::preserve) behavior.nobisect = 1;  // TetGen's -Y
+  if (facets != FacetPolicy::merge)
+    behavior.facet_ang_tol = 179.9999;                         // merge only coplanar facets (within 2e-6 rad)
+  if (facets == FacetPolicy::preserve) behavior.nobisect = 1;  // TetGen's -Y
   try {
     tetrahedralize(&behavior, &in, &out);
   } catch (int code) {

@@ -27,6 +27,6 @@ struct LinearTets {
 //    be as fine as the sizing field asks (layer_surface triangulates the footprint with it).
 enum class FacetPolicy { merge, keep, preserve };
 LinearTets tetrahedralize(const SurfaceMesh& surface, const SizingField& size, const MeshControls& controls,
-                          FacetPolicy keep_facets = FacetPolicy::merge);
+                          FacetPolicy facets = FacetPolicy::merge);
 
 }  // namespace skinfem
