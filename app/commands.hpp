@@ -19,6 +19,8 @@ int run_defect(const Scene& scene, const std::string& out_dir);
 // none.
 int run_report(const Scene& scene, const std::string& out_dir, const std::vector<double>& error_scales);
 int run_study(const Scene& scene, const std::string& out_dir, const std::vector<double>& scales);
+// per_period: mesh elements per ridge period on the pattern, one level each (at least 3).
+int run_ridge_study(const Scene& scene, const std::string& out_dir, std::vector<double> per_period);
 int run_chain_study(const Scene& scene, const std::string& out_dir, const std::vector<double>& scales);
 
 }  // namespace skinfem::app

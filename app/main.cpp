@@ -29,6 +29,14 @@ int main(int argc, char** argv) {
   study->add_flag(
       "--chain", chain,
       "the whole chain (Green maps and k, contact, hole sweep) per level: chain_study.csv, .json");
+  std::vector<double> ridge_levels;
+  study
+      ->add_option(
+          "--ridges", ridge_levels,
+          "ridge study: mesh elements per ridge period, one level each (>= 3, e.g. 4,5,6,8): the ridged "
+          "skin against the same mesh with 2 % ridges (ridge_study.json, .csv)")
+      ->delimiter(',')
+      ->check(CLI::PositiveNumber);
   study->add_option("--scales", scales, "factors applied to h_min and h_max, coarse to fine")
       ->delimiter(',')
       ->check(CLI::PositiveNumber)
@@ -107,8 +115,9 @@ int main(int argc, char** argv) {
     if (contact_cmd->parsed()) return skinfem::app::run_contact(scene, out_dir, friction);
     if (defect->parsed()) return skinfem::app::run_defect(scene, out_dir);
     if (study->parsed())
-      return chain ? skinfem::app::run_chain_study(scene, out_dir, scales)
-                   : skinfem::app::run_study(scene, out_dir, scales);
+      return !ridge_levels.empty() ? skinfem::app::run_ridge_study(scene, out_dir, ridge_levels)
+             : chain               ? skinfem::app::run_chain_study(scene, out_dir, scales)
+                                   : skinfem::app::run_study(scene, out_dir, scales);
     if (report->parsed())
       return skinfem::app::run_report(scene, report->count("--out") ? out_dir : "out/" + scene.name,
                                       no_error_bars ? std::vector<double>{} : error_scales);

@@ -8,13 +8,18 @@
 namespace skinfem::app {
 
 std::shared_ptr<Skin> skin_setup(const Scene& scene) {
-  auto s = std::make_shared<Skin>();
   Stopwatch clock;
   check_resources(scene, g_max_dofs);
   progress("meshing " + scene.name);
-  s->mesh = build_mesh(scene);
-  check_sensors_on_skin(scene, s->mesh);
-  s->wall["mesh"] = clock.seconds();
+  TetMesh mesh = build_mesh(scene);
+  check_sensors_on_skin(scene, mesh);
+  return factored_skin(scene, std::move(mesh), clock.seconds());
+}
+
+std::shared_ptr<Skin> factored_skin(const Scene& scene, TetMesh mesh, double mesh_seconds) {
+  auto s = std::make_shared<Skin>();
+  s->mesh = std::move(mesh);
+  s->wall["mesh"] = mesh_seconds;
   progress("assembling and factoring (" + std::to_string(s->mesh.num_nodes()) + " nodes)");
   ModelOptions options;
   options.factor_progress = [](const FactorStatus& f) {

@@ -19,5 +19,7 @@ struct Skin {
 
 // Meshes the scene (with its contact zone and hole path refined when it has a contact) and factors it.
 std::shared_ptr<Skin> skin_setup(const Scene& scene);
+// Factors an already meshed skin of the scene (mesh_seconds: what meshing it took, for `wall`).
+std::shared_ptr<Skin> factored_skin(const Scene& scene, TetMesh mesh, double mesh_seconds);
 
 }  // namespace skinfem::app

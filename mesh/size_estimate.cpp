@@ -14,7 +14,8 @@ namespace {
 constexpr double kTetsPerCube = 43.3;  // c⁻¹: elements per h³ of volume (fitted below)
 constexpr double kThinCap = 2.5;       // κ: the element size a thin skin allows, in thicknesses
 constexpr double kDofsPerTet = 4.3;    // P2 displacements + P1 pressure per tetrahedron (graded meshes)
-constexpr int kDepthPoints = 6;        // midpoint rule through the thickness
+constexpr int kDepthIntervals = 24;    // midpoint rule through the thickness, on intervals that grow
+constexpr double kDepthRatio = 1.35;   // by this ratio down from the top (the first is t/1800 thick)
 
 struct Integrator {
   const SizingField& size;
@@ -27,26 +28,32 @@ struct Integrator {
     return shape.top_z(x, y);
   }
 
-  // Elements per mm² of footprint above (x, y): ∫₀ᵗ dz / (c h_eff³).
+  // Elements per mm² of footprint above (x, y): ∫₀ᵗ dz / (c h_eff³), by the midpoint rule on intervals that
+  // grow geometrically down from the top: a region refined on the top (a contact zone, ridges) grades with
+  // depth, so its elements crowd into a layer far thinner than the skin, which evenly spaced points miss.
   double column(double x, double y) const {
     const double t = thickness(x, y);
     if (!(t > 0)) return 0;
     double sum = 0;
-    for (int k = 0; k < kDepthPoints; ++k) {
-      const double z = t * (k + 0.5) / kDepthPoints;
+    for (int k = 0; k < kDepthIntervals; ++k) {
+      const double d0 = t * depth_fraction(k), d1 = t * depth_fraction(k + 1), z = t - 0.5 * (d0 + d1);
       const double h = std::min(size.in_volume(x, y, z), kThinCap * t);
-      sum += kTetsPerCube / (h * h * h);
+      sum += kTetsPerCube / (h * h * h) * (d1 - d0);
     }
-    return sum * t / kDepthPoints;
+    return sum;
   }
   // The smallest size in the column above (x, y).
   double min_size(double x, double y) const {
     const double t = thickness(x, y);
     if (!(t > 0)) return 0;
     double m = size.h_max();
-    for (int k = 0; k < kDepthPoints; ++k)
-      m = std::min(m, size.in_volume(x, y, t * (k + 0.5) / kDepthPoints));
+    for (int k = 0; k < kDepthIntervals; ++k)
+      m = std::min(m, size.in_volume(x, y, t * (1 - 0.5 * (depth_fraction(k) + depth_fraction(k + 1)))));
     return std::min(m, kThinCap * t);
+  }
+  // Interval k of the column spans depths t·[f(k), f(k+1)]: geometric growth by kDepthRatio from the top.
+  static double depth_fraction(int k) {
+    return (std::pow(kDepthRatio, k) - 1) / (std::pow(kDepthRatio, kDepthIntervals) - 1);
   }
 
   // Adaptive midpoint rule on the square cell of centre (x, y) and half-side r: split while the sizes at

@@ -7,7 +7,8 @@
 //               | {"type": "flat", "h", "half_width", "side"*}
 //                 cap and flat: "ridges"*: {"period", "height" (crest to trough, < h), "angle_deg"* (0:
 //                 crests along y), "center": [x, y], "radius" (>= 2 periods), "h"* (mesh size, default
-//                 period/6), "profile"*: "sinusoidal"} (scene.hpp's Ridges)
+//                 period/6), "profile"*: "sinusoidal" (default) | "rectangular", "edge_width"* (rectangular
+//                 only: wall width in (0, period/2], default period/4)} (scene.hpp's Ridges)
 //               | {"type": "surface", "path", "side"*}      path: .stl/.obj/.off, relative to the scene file
 //                 side: "free" (default) | "fixed"
 //   material      {"E", "nu"}
@@ -132,6 +133,9 @@ Rule greater(double lo) {
 Rule closed_interval(double lo, double hi) {
   return {"a number in [" + fmt(lo) + ", " + fmt(hi) + "]",
           [lo, hi](double x) { return lo <= x && x <= hi; }};
+}
+Rule half_open_interval(double lo, double hi, const std::string& hi_name) {
+  return {"a number in (" + fmt(lo) + ", " + hi_name + "]", [lo, hi](double x) { return lo < x && x <= hi; }};
 }
 Rule open_interval(double lo, double hi) {
   return {"a number in (" + fmt(lo) + ", " + fmt(hi) + ")", [lo, hi](double x) { return lo < x && x < hi; }};
@@ -300,13 +304,20 @@ json point(const Vec2& p);
 Ridges read_ridges(const Reader& r, const json& j, const std::string& P, const Geometry& geo,
                    double thickness) {
   if (!j.is_object()) r.fail(P, j, R"(must be an object {"period", "height", "center", "radius", ...})");
-  r.object(j, P, {"period", "height", "angle_deg", "center", "radius", "h", "profile"});
-  if (const json* profile = Reader::find(j, "profile"))
-    if (*profile != "sinusoidal")
-      r.fail(sub(P, "profile"), *profile,
-             R"(must be "sinusoidal": a rectangular profile has vertical walls that no height field holds)");
+  r.object(j, P, {"period", "height", "angle_deg", "center", "radius", "h", "profile", "edge_width"});
   Ridges out;
+  if (const json* profile = Reader::find(j, "profile")) {
+    if (*profile == "rectangular")
+      out.profile = RidgeProfile::rectangular;
+    else if (*profile != "sinusoidal")
+      r.fail(sub(P, "profile"), *profile, R"(must be "sinusoidal" or "rectangular")");
+  }
   out.period = r.number(j, P, "period", length());
+  if (out.profile == RidgeProfile::rectangular)
+    out.edge_width = r.number_or(j, P, "edge_width", out.period / 4,
+                                 half_open_interval(0, out.period / 2, "period/2 = " + fmt(out.period / 2)));
+  else if (const json* e = Reader::find(j, "edge_width"))
+    r.fail(sub(P, "edge_width"), *e, R"(is only for "profile": "rectangular")");
   out.height = r.number(j, P, "height", open_interval(0, thickness));
   out.angle_deg = r.number_or(j, P, "angle_deg", 0.0, closed_interval(-360, 360));
   out.center = r.vec2(j, P, "center");

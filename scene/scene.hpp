@@ -52,21 +52,32 @@ struct SurfaceGeometry {
 };
 
 // Fingerprint-like ridges on the top of a cap or flat layer (Scheibert et al., Science 2009: period about
-// 220 µm): the top becomes s(x, y) + (height/2) w(ρ) cos(2π ξ / period), ξ = (p − center)·(cos θ, sin θ) the
-// distance across the crests (crests run at angle_deg + 90° from x; angle_deg = 0: crests along y, ridges
-// crossed by a scan along x), ρ = |p − center|. The window w is 1 for ρ ≤ radius − period and falls to 0 at
-// ρ = radius as a half cosine, so the top stays smooth (C¹) where the pattern ends. Sinusoidal only: a
-// rectangular profile has vertical walls that no height field z = s(x, y) holds.
+// 220 µm): the top becomes s(x, y) + (height/2) w(ρ) P(ξ), ξ = (p − center)·(cos θ, sin θ) the distance
+// across the crests (crests run at angle_deg + 90° from x; angle_deg = 0: crests along y, ridges crossed by a
+// scan along x), ρ = |p − center|. The window w is 1 for ρ ≤ radius − period and falls to 0 at ρ = radius as
+// a half cosine, so the top stays smooth (C¹) where the pattern ends. The profile P, period-periodic with a
+// crest at ξ = 0 and P(ξ + period/2) = −P(ξ):
+//   sinusoidal:  P = cos(2πξ / period);
+//   rectangular: flat crests and troughs joined by walls edge_width wide across which P goes from 1 to −1 as
+//                a half sine, so the wall meets each plateau with zero slope (C¹). Truly vertical walls are
+//                no height field z = s(x, y); edge_width = period/2 leaves no plateau and is the sinusoid.
+enum class RidgeProfile { sinusoidal, rectangular };
+
 struct Ridges {
   double period = 0;  // mm; 0: no ridges
   double height = 0;  // mm, crest to trough
   double angle_deg = 0;
   Vec2 center{0, 0};  // mm
   double radius = 0;  // mm, the patterned disc
-  double h = 0;       // mm, mesh size on the pattern; 0 → period / 6
+  double h = 0;  // mm, mesh size on the pattern; 0 → period/6 (sinusoidal), min(period/6, edge_width/2)
+  RidgeProfile profile = RidgeProfile::sinusoidal;
+  double edge_width = 0;  // mm, rectangular only: the width of each wall, in (0, period/2]
 
   bool present() const { return period > 0; }
-  double mesh_size() const { return h > 0 ? h : period / 6; }
+  double mesh_size() const {
+    if (h > 0) return h;
+    return profile == RidgeProfile::rectangular ? std::min(period / 6, edge_width / 2) : period / 6;
+  }
 };
 
 enum class GeometryKind { cap, flat, surface };

@@ -86,11 +86,38 @@ TEST(SkinShape, RidgesHaveTheirPeriodHeightAndDirectionAndEndSmoothly) {
   EXPECT_NEAR(slope_in, 0.0, 1e-5);
 }
 
+Geometry rectangular_ridges(double angle_deg, double edge_width) {
+  Geometry g = ridged_layer(angle_deg);
+  g.ridges.profile = RidgeProfile::rectangular;
+  g.ridges.edge_width = edge_width;
+  return g;
+}
+
+TEST(SkinShape, RectangularRidgesHavePlateausAndC1Walls) {
+  const SkinShape s(rectangular_ridges(0.0, 0.1));  // period 0.4: crests on |ξ| ≤ 0.05, walls to 0.15
+  const auto z = [&](double xi) { return s.ridge_z(0.3 + xi, -0.2); };
+  for (double xi : {0.0, 0.03, 0.05, -0.05, 0.4}) EXPECT_NEAR(z(xi), 0.05, 1e-15) << xi;
+  for (double xi : {0.15, 0.2, -0.25, 0.6}) EXPECT_NEAR(z(xi), -0.05, 1e-15) << xi;
+  EXPECT_NEAR(z(0.1), 0.0, 1e-15);  // the wall's middle, a quarter period from the crest
+  // Steepest at the wall's middle: (height/2)·π/edge_width; flat where it meets each plateau.
+  const double d = 1e-7;
+  EXPECT_NEAR((z(0.1 + d) - z(0.1 - d)) / (2 * d), -0.05 * M_PI / 0.1, 1e-6);
+  EXPECT_NEAR((z(0.05 + d) - z(0.05)) / d, 0.0, 1e-5);
+  EXPECT_NEAR((z(0.15) - z(0.15 - d)) / d, 0.0, 1e-5);
+  // A wall half a period wide leaves no plateau: the sinusoid, to round-off.
+  const SkinShape wide(rectangular_ridges(30.0, 0.2)), sine(ridged_layer(30.0));
+  for (double x = -1.2; x <= 1.8; x += 0.0137)
+    EXPECT_NEAR(wide.ridge_z(x, 0.1 + 0.3 * x), sine.ridge_z(x, 0.1 + 0.3 * x), 1e-15) << x;
+  EXPECT_NEAR(wide.volume(), sine.volume(), 1e-12);
+}
+
 TEST(SkinShape, RidgeVolumeMatchesBruteForceQuadrature) {
   // Reference: the midpoint rule on a 3000² grid over the pattern's bounding square (the ridges are C¹,
-  // so its error is O(Δ²) ~ 1e-7 of the ridge volume's scale height/2 × area = 0.35 mm³).
-  for (double angle : {0.0, 30.0}) {
-    const Geometry g = ridged_layer(angle);
+  // so its error is O(Δ²) ~ 1e-7 of the ridge volume's scale height/2 × area = 0.35 mm³). The rectangular
+  // profile goes through its cosine series (shape.cpp); the midpoint rule sees it point by point.
+  for (const Geometry& g : {ridged_layer(0.0), ridged_layer(30.0), rectangular_ridges(0.0, 0.1),
+                            rectangular_ridges(30.0, 0.05)}) {
+    const double angle = g.ridges.angle_deg;
     const SkinShape s(g);
     const int n = 3000;
     const double L = 3.0, dx = L / n;

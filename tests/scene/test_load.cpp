@@ -432,9 +432,22 @@ TEST(SceneLoad, Ridges) {
   EXPECT_SCENE_ERROR(ridged(R"({"period": 0.22, "height": 0.05, "center": [7.5, 0], "radius": 1})"),
                      "geometry.ridges.center = [7.5,0.0]: the patterned disc must lie on the skin",
                      "<= half_width - radius = 7");
+  const Ridges rect = parse_scene(ridged(R"({"period": 0.2, "height": 0.05, "center": [0, 0], "radius": 1,
+                                              "profile": "rectangular"})"),
+                                  kSource)
+                          .geometry.ridges;
+  EXPECT_EQ(rect.profile, RidgeProfile::rectangular);
+  EXPECT_DOUBLE_EQ(rect.edge_width, 0.05);
+  EXPECT_DOUBLE_EQ(rect.mesh_size(), 0.025);
   EXPECT_SCENE_ERROR(
-      ridged(R"({"period": 0.22, "height": 0.05, "center": [0, 0], "radius": 1, "profile": "rectangular"})"),
-      "geometry.ridges.profile = \"rectangular\": must be \"sinusoidal\"");
+      ridged(R"({"period": 0.22, "height": 0.05, "center": [0, 0], "radius": 1, "profile": "square"})"),
+      "geometry.ridges.profile = \"square\": must be \"sinusoidal\" or \"rectangular\"");
+  EXPECT_SCENE_ERROR(ridged(R"({"period": 0.2, "height": 0.05, "center": [0, 0], "radius": 1,
+                                "profile": "rectangular", "edge_width": 0.11})"),
+                     "geometry.ridges.edge_width = 0.11: must be a number in (0, period/2 = 0.1]");
+  EXPECT_SCENE_ERROR(ridged(R"({"period": 0.2, "height": 0.05, "center": [0, 0], "radius": 1,
+                                "edge_width": 0.05})"),
+                     "geometry.ridges.edge_width = 0.05: is only for \"profile\": \"rectangular\"");
   EXPECT_SCENE_ERROR(with(&Doc::geometry, R"({"type": "surface", "path": "x.stl", "ridges": {}})"),
                      "geometry.ridges: unknown key");
 }
