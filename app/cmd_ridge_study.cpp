@@ -25,6 +25,7 @@
 #include "green/layer_exact.hpp"
 #include "mesh/build.hpp"
 #include "mesh/scale_ridges.hpp"
+#include "mesh/surface.hpp"
 #include "validation/richardson.hpp"
 
 namespace skinfem::app {
@@ -90,14 +91,20 @@ int run_ridge_study(const Scene& scene, const std::string& out_dir, std::vector<
     Scene level = scene;
     level.geometry.ridges.h = ridges.period / L;
     char buf[200];
-    std::snprintf(buf, sizeof buf, "ridge study: %g elements per period (h %.4g mm on the pattern)", L,
+    std::snprintf(buf, sizeof buf, "%g elements per period (h %.4g mm on the pattern)", L,
                   level.geometry.ridges.h);
-    progress(buf);
+    progress(std::string("ridge study: ") + buf);
     Stopwatch clock;
     TetMesh mesh = build_mesh(level);
     check_sensors_on_skin(level, mesh);
     const double mesh_s = clock.seconds();
-    TetMesh control = scale_ridges(mesh, level.geometry, kControl);
+    TetMesh control;
+    try {
+      control = scale_ridges(mesh, level.geometry, kControl);
+    } catch (const MeshError& e) {
+      throw MeshError(std::string("ridge study at ") + buf +
+                      ", lowering the ridges for the same-mesh control: " + e.what());
+    }
     const int straightened = mesh.straightened;
     const double h = thickness_at(level, mesh, sensor);  // the mean top's: the same for both
     const Solved r = solve_scan(level, factored_skin(level, std::move(mesh), mesh_s), h, sensor);
