@@ -139,6 +139,10 @@ check unknown_subcommand "unknown subcommand 'frobnicate'; one of: mesh" "$skinf
 check unknown_option '--frob' "$skinfem" mesh "$tmp/base.json" --frob --out "$tmp/out"
 check bad_solver '--solver' "$skinfem" solve "$tmp/base.json" --solver lu --out "$tmp/out"
 check bad_scales '--scales' "$skinfem" study "$tmp/base.json" --scales 1,-2 --out "$tmp/out"
+bad ridges_edge_width 'd["geometry"]["ridges"] = {"period": 0.2, "height": 0.05, "center": [0, 0], "radius": 1, "profile": "rectangular", "edge_width": 0.15}' 'geometry.ridges.edge_width = 0.15: must be a number in \(0, period/2 = 0.1\]' mesh
+check study_ridges_none 'geometry.ridges: --ridges needs a scene with ridges' "$skinfem" study "$tmp/base.json" --ridges 4,5,6 --out "$tmp/out"
+variant ridged 'd["geometry"]["ridges"] = {"period": 0.2, "height": 0.05, "center": [0, 0], "radius": 1}'
+check study_ridges_two '--ridges: a ridge study needs at least 3 levels' "$skinfem" study "$tmp/ridged.json" --ridges 4,5 --out "$tmp/out"
 check study_scales_huge '\(--scales 1000.0\): loads.punches\[0\].center = .*must lie on the skin with mesh.h_min = 400' "$skinfem" study "$tmp/base.json" --scales 1000,500,200 --out "$tmp/out"
 check error_scales_one '--error-scales: one coarser level' "$skinfem" report "$tmp/base.json" --error-scales 2 --out "$tmp/out"
 
