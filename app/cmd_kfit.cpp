@@ -22,7 +22,6 @@
 
 namespace skinfem::app {
 
-using green::GreenComponent;
 using green::LayerLoad;
 
 namespace {
@@ -32,13 +31,6 @@ nlohmann::json components_json(const green::KReport& r) {
     j[green::component_name(green::kComponents[c])] = {
         {"k", r.components[c].k}, {"rms_residual_over_peak", r.components[c].rms_residual_over_peak}};
   return j;
-}
-
-// max |g_c| over a profile, 1/mm².
-double peak(const std::vector<green::GreenSample>& profile, GreenComponent c) {
-  double p = 0;
-  for (const auto& g : profile) p = std::max(p, std::abs(green::component(g, c)));
-  return p;
 }
 }  // namespace
 
@@ -77,7 +69,7 @@ nlohmann::json kfit_stage(const Scene& scene, const AdjointSetup& setup, const s
                          {"k_lsq_line", fe_k.k_lsq_line},
                          {"components", components_json(fe_k)}};
     for (auto c : green::kComponents)
-      js["peak_point_per_mm2"][green::component_name(c)] = peak(prof.point, c);
+      js["peak_point_per_mm2"][green::component_name(c)] = green::peak_abs(prof.point, c);
     if (scene.geometry.kind == GeometryKind::cap) {
       std::vector<double> zz;
       for (const auto& g : prof.point) zz.push_back(g.zz);
@@ -98,7 +90,7 @@ nlohmann::json kfit_stage(const Scene& scene, const AdjointSetup& setup, const s
         const char* name = green::component_name(green::kComponents[c]);
         js[ridged ? "point_vs_smooth_max_diff_over_peak" : "fe_point_vs_exact_max_err_over_peak"][name] =
             err_point[c];
-        js["peak_point_exact_per_mm2"][name] = peak(exact, green::kComponents[c]);
+        js["peak_point_exact_per_mm2"][name] = green::peak_abs(exact, green::kComponents[c]);
       }
       js["k_central_exact"] = ex_k.k_central;
       js["k_lsq_line_exact"] = ex_k.k_lsq_line;

@@ -68,6 +68,12 @@ std::vector<GreenSample> exact_profile(const LayerGreen& layer, const std::vecto
   return g;
 }
 
+double peak_abs(const std::vector<GreenSample>& profile, GreenComponent c) {
+  double p = 0;
+  for (const auto& g : profile) p = std::max(p, std::abs(component(g, c)));
+  return p;
+}
+
 std::array<double, 4> max_error_over_peak(const std::vector<GreenSample>& fe,
                                           const std::vector<GreenSample>& exact) {
   std::array<double, 4> out{};

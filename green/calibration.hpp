@@ -39,6 +39,9 @@ KReport fit_profile(const std::vector<double>& x, const std::vector<GreenSample>
 std::vector<GreenSample> exact_profile(const LayerGreen& layer, const std::vector<double>& x,
                                        double disc_diameter = 0);
 
+// max over the offsets of |g_c|, 1/mm².
+double peak_abs(const std::vector<GreenSample>& profile, GreenComponent c);
+
 // max over the offsets of |fe − exact| / max|exact|, per component.
 std::array<double, 4> max_error_over_peak(const std::vector<GreenSample>& fe,
                                           const std::vector<GreenSample>& exact);
