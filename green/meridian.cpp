@@ -7,6 +7,8 @@
 
 #include "fem/mumps_ldlt.hpp"
 #include "green/halfspace.hpp"
+#include "mesh/gauss_legendre.hpp"
+#include "mesh/surface_quadrature.hpp"
 
 namespace skinfem {
 
@@ -51,46 +53,18 @@ MeridianMesh meridian_mesh(const std::function<double(double)>& top, double radi
 }
 
 namespace {
-// Degree-5 rule on the reference triangle (Radon's 7 points), weights summing to 1.
-struct TriPoint {
-  double xi, eta, w;
-};
-std::vector<TriPoint> triangle_rule() {
-  const double s = std::sqrt(15.0);
-  const double a1 = (6 - s) / 21, b1 = (9 + 2 * s) / 21, w1 = (155 - s) / 1200;
-  const double a2 = (6 + s) / 21, b2 = (9 - 2 * s) / 21, w2 = (155 + s) / 1200;
-  return {{1.0 / 3, 1.0 / 3, 9.0 / 40},
-          {a1, a1, w1},
-          {b1, a1, w1},
-          {a1, b1, w1},
-          {a2, a2, w2},
-          {b2, a2, w2},
-          {a2, b2, w2}};
-}
-
-// P2 shape functions and their (ξ, η) derivatives, VTK quadratic-triangle order.
-void p2_shape(double x, double y, double N[6], double dx[6], double dy[6]) {
-  const double l0 = 1 - x - y, l1 = x, l2 = y;
-  N[0] = l0 * (2 * l0 - 1), N[1] = l1 * (2 * l1 - 1), N[2] = l2 * (2 * l2 - 1);
-  N[3] = 4 * l0 * l1, N[4] = 4 * l1 * l2, N[5] = 4 * l2 * l0;
-  dx[0] = -(4 * l0 - 1), dx[1] = 4 * l1 - 1, dx[2] = 0, dx[3] = 4 * (l0 - l1), dx[4] = 4 * l2,
-  dx[5] = -4 * l2;
-  dy[0] = -(4 * l0 - 1), dy[1] = 0, dy[2] = 4 * l2 - 1, dy[3] = -4 * l1, dy[4] = 4 * l1,
-  dy[5] = 4 * (l0 - l2);
-}
-
-// 1D P2 Lagrange basis on u ∈ [0, 1] with nodes 0, 1/2, 1 (as ordered along an edge: end, middle, end).
-void p2_line(double u, double L[3]) {
+// 1D P2 Lagrange basis on u ∈ [0, 1] with nodes 0, 1/2, 1 (as ordered along an edge: end, middle, end), and
+// its derivative.
+void p2_line(double u, double L[3], double dL[3]) {
   L[0] = (1 - u) * (1 - 2 * u);
   L[1] = 4 * u * (1 - u);
   L[2] = u * (2 * u - 1);
+  dL[0] = 4 * u - 3, dL[1] = 4 - 8 * u, dL[2] = 4 * u - 1;
 }
-}  // namespace
 
-namespace {
 // One Fourier mode's adjoint solve: returns (U, V, W) at the top nodes. mode 0: u_r = U, u_z = W (V = 0);
-// mode 1: u_r = U cos θ, u_θ = V sin θ, u_z = W cos θ, p = P cos θ. base_x: the prescribed base values
-// (mode 0: W = −w; mode 1: U = w, V = −w, the x displacement w).
+// mode 1: u_r = U cos θ, u_θ = V sin θ, u_z = W cos θ, p = P cos θ. w: the reading's base weights, imposed as
+// the base displacement (mode 0: W = −w; mode 1: U = w, V = −w, the x displacement w).
 struct ModeField {
   std::vector<double> U, V, W;
   int dofs = 0;
@@ -139,15 +113,15 @@ ModeField solve_mode(const MeridianMesh& m, double nu, int mode, const Eigen::Ve
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(nf);
   const int nl = 6 * nc + 3;  // local DOFs: displacements node by node, then the 3 vertex pressures
   trip.reserve(static_cast<size_t>(m.tris.rows()) * nl * nl);
-  const auto rule = triangle_rule();
   const int nrows = mode == 0 ? 4 : 6;  // ε_rr, ε_θθ, ε_zz, γ_rz (, γ_rθ, γ_θz)
   Eigen::VectorXd D(nrows);
   D << 2 * mu, 2 * mu, 2 * mu, mu, Eigen::VectorXd::Constant(nrows - 4, mu);
   for (int e = 0; e < m.tris.rows(); ++e) {
     Eigen::MatrixXd A = Eigen::MatrixXd::Zero(nl, nl);
-    double N[6], dxi[6], deta[6];
-    for (const auto& q : rule) {
-      p2_shape(q.xi, q.eta, N, dxi, deta);
+    double dxi[6], deta[6];
+    for (const auto& q : triangle_rule_degree5()) {
+      const Eigen::Matrix<double, 6, 1> N = triangle_shape(q.s, q.t);
+      triangle_shape_gradient(q.s, q.t, dxi, deta);
       double J[2][2] = {{0, 0}, {0, 0}}, r = 0;
       for (int a = 0; a < 6; ++a) {
         const int k = m.tris(e, a);
@@ -176,7 +150,7 @@ ModeField solve_mode(const MeridianMesh& m, double nu, int mode, const Eigen::Ve
           div(v) = nr;
         }
       }
-      const Eigen::Vector3d P(1 - q.xi - q.eta, q.xi, q.eta);
+      const Eigen::Vector3d P(1 - q.s - q.t, q.s, q.t);
       const int np = 6 * nc;
       A.topLeftCorner(np, np).noalias() += wq * B.leftCols(np).transpose() * D.asDiagonal() * B.leftCols(np);
       A.block(np, 0, 3, np).noalias() -= wq * P * div.head(np);
@@ -220,17 +194,17 @@ MeridianGreen::MeridianGreen(const MeridianMesh& m, double nu) {
   // same M serves x readings: a traction τ(r) e_x has |e_x|² = 1 at every angle.
   const int nb = static_cast<int>(m.base.size());
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(nb, nb);
-  const double g[4] = {0.0694318442029737, 0.3300094782075719, 0.6699905217924281, 0.9305681557970263};
-  const double gw[4] = {0.1739274225687269, 0.3260725774312731, 0.3260725774312731, 0.1739274225687269};
+  const GaussRule1d g = gauss_legendre01(4);  // P2 × P2 × r: degree 5
   for (int s = 0; s + 2 < nb; s += 2)
-    for (int k = 0; k < 4; ++k) {
-      double L[3], dL[3] = {4 * g[k] - 3, 4 - 8 * g[k], 4 * g[k] - 1};
-      p2_line(g[k], L);
+    for (size_t k = 0; k < g.x.size(); ++k) {
+      const double u = g.x[k];
+      double L[3], dL[3];
+      p2_line(u, L, dL);
       double r = 0, drdu = 0;
       for (int a = 0; a < 3; ++a)
         r += L[a] * m.nodes(m.base[s + a], 0), drdu += dL[a] * m.nodes(m.base[s + a], 0);
       for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b) M(s + a, s + b) += gw[k] * drdu * 2 * M_PI * r * L[a] * L[b];
+        for (int b = 0; b < 3; ++b) M(s + a, s + b) += g.w[k] * drdu * 2 * M_PI * r * L[a] * L[b];
     }
   const Eigen::VectorXd w = M.ldlt().solve(Eigen::VectorXd::Unit(nb, 0));
   // σ_z = t_z (the base's traction on the skin, whose outward normal is −e_z): impose −w along z. σ_x = −t_x:
@@ -250,14 +224,14 @@ double MeridianGreen::interpolate(const std::vector<double>& f, double rho) cons
   // Invert the edge's quadratic map r(u) by Newton from the linear guess, then interpolate.
   double u = (rho - r_[s]) / (r_[s + 2] - r_[s]);
   for (int it = 0; it < 30; ++it) {
-    double L[3], dL[3] = {4 * u - 3, 4 - 8 * u, 4 * u - 1};
-    p2_line(u, L);
+    double L[3], dL[3];
+    p2_line(u, L, dL);
     const double res = L[0] * r_[s] + L[1] * r_[s + 1] + L[2] * r_[s + 2] - rho;
     const double slope = dL[0] * r_[s] + dL[1] * r_[s + 1] + dL[2] * r_[s + 2];
     u -= res / slope;
   }
-  double L[3];
-  p2_line(u, L);
+  double L[3], dL[3];
+  p2_line(u, L, dL);
   return L[0] * f[s] + L[1] * f[s + 1] + L[2] * f[s + 2];
 }
 

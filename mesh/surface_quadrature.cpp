@@ -1,5 +1,6 @@
 #include "mesh/surface_quadrature.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace skinfem {
@@ -11,25 +12,37 @@ Eigen::Matrix<double, 6, 1> triangle_shape(double s, double t) {
   return n;
 }
 
+void triangle_shape_gradient(double s, double t, double ds[6], double dt[6]) {
+  const double l = 1 - s - t;
+  const double a[6] = {-(4 * l - 1), 4 * s - 1, 0, 4 * (l - s), 4 * t, -4 * t};
+  const double b[6] = {-(4 * l - 1), 0, 4 * t - 1, -4 * s, 4 * s, 4 * (l - t)};
+  std::copy(a, a + 6, ds);
+  std::copy(b, b + 6, dt);
+}
+
+const std::array<TrianglePoint, 7>& triangle_rule_degree5() {
+  // Centroid, and two orbits of three points.
+  static constexpr double a1 = 0.059715871789770, b1 = 0.470142064105115, w1 = 0.132394152788506;
+  static constexpr double a2 = 0.797426985353087, b2 = 0.101286507323456, w2 = 0.125939180544827;
+  static const std::array<TrianglePoint, 7> rule{{{1.0 / 3, 1.0 / 3, 0.225},
+                                                  {b1, b1, w1},
+                                                  {a1, b1, w1},
+                                                  {b1, a1, w1},
+                                                  {b2, b2, w2},
+                                                  {a2, b2, w2},
+                                                  {b2, a2, w2}}};
+  return rule;
+}
+
 std::vector<FacePoint> face_quadrature(const TetMesh& m, int f) {
-  // Dunavant degree 5: centroid, and two orbits of three points; weights sum to 1 (× area 1/2).
-  static const double a1 = 0.059715871789770, b1 = 0.470142064105115, w1 = 0.132394152788506;
-  static const double a2 = 0.797426985353087, b2 = 0.101286507323456, w2 = 0.125939180544827;
-  static const double pts[7][3] = {{1.0 / 3, 1.0 / 3, 0.225},
-                                   {b1, b1, w1},
-                                   {a1, b1, w1},
-                                   {b1, a1, w1},
-                                   {b2, b2, w2},
-                                   {a2, b2, w2},
-                                   {b2, a2, w2}};
   Eigen::Matrix<double, 6, 3> X;
   for (int a = 0; a < 6; ++a) X.row(a) = m.nodes.row(m.faces(f, a));
   std::vector<FacePoint> out;
   out.reserve(7);
-  for (const auto& p : pts) {
-    const double s = p[0], t = p[1], l = 1 - s - t;
-    const double ds[6] = {-(4 * l - 1), 4 * s - 1, 0, 4 * (l - s), 4 * t, -4 * t};
-    const double dt[6] = {-(4 * l - 1), 0, 4 * t - 1, -4 * s, 4 * s, 4 * (l - t)};
+  for (const auto& p : triangle_rule_degree5()) {
+    const double s = p.s, t = p.t;
+    double ds[6], dt[6];
+    triangle_shape_gradient(s, t, ds, dt);
     Eigen::Vector3d xs = Eigen::Vector3d::Zero(), xt = Eigen::Vector3d::Zero();
     for (int a = 0; a < 6; ++a) {
       xs += ds[a] * X.row(a).transpose();
@@ -38,7 +51,7 @@ std::vector<FacePoint> face_quadrature(const TetMesh& m, int f) {
     const auto N = triangle_shape(s, t);
     const Eigen::Vector3d n = xs.cross(xt);
     out.push_back(
-        {X.transpose() * N, N, n.normalized(), 0.5 * p[2] * n.norm(), 0.5 * p[2] * std::abs(n.z()), s, t});
+        {X.transpose() * N, N, n.normalized(), 0.5 * p.w * n.norm(), 0.5 * p.w * std::abs(n.z()), s, t});
   }
   return out;
 }

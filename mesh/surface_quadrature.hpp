@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <array>
 #include <vector>
 
 #include "mesh/tet_mesh.hpp"
@@ -19,6 +20,15 @@ struct FacePoint {
 
 // Quadratic triangle shape functions at parameters (s, t): nodes 0, 1, 2, then edges 01, 12, 20.
 Eigen::Matrix<double, 6, 1> triangle_shape(double s, double t);
+// Their derivatives with respect to s and t.
+void triangle_shape_gradient(double s, double t, double ds[6], double dt[6]);
+
+// Dunavant's 7-point degree-5 rule on the reference triangle 0 ≤ s, t, s + t ≤ 1: (s, t, weight), the weights
+// summing to 1 (multiply by the area).
+struct TrianglePoint {
+  double s, t, w;
+};
+const std::array<TrianglePoint, 7>& triangle_rule_degree5();
 
 // 7-point degree-5 rule (Dunavant) mapped onto face f.
 std::vector<FacePoint> face_quadrature(const TetMesh& mesh, int f);
