@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "app/common.hpp"
 #include "fem/face_index.hpp"
@@ -41,7 +42,7 @@ void check_sensors_on_skin(const Scene& scene, const TetMesh& mesh) {
   }
 }
 
-double scan_half_width(const Scene& scene, const TetMesh& mesh, double h, const Vec2& sensor) {
+double scan_half_width(const Scene& scene, const TetMesh* mesh, double h, const Vec2& sensor) {
   const double wanted = scene.calibration.scan_half_width > 0 ? scene.calibration.scan_half_width : 4 * h;
   // The loaded disc must stay on the top: along x through the sensor, both ways, to the footprint's edge
   // (half a step inside it, so the grid's last offset is strictly on the skin).
@@ -56,7 +57,8 @@ double scan_half_width(const Scene& scene, const TetMesh& mesh, double h, const 
   } else {
     // An imported skin: walk out along x from the sensor, both ways, while the disc's rim stays above the
     // meshed top (its footprint is known only from the mesh).
-    const PlanarFaceIndex top(mesh, kTop);
+    if (!mesh) throw std::logic_error("scan_half_width: an imported skin needs its mesh");
+    const PlanarFaceIndex top(*mesh, kTop);
     double ps, pt;
     const auto on_top = [&](double x, double y) { return top.find(x, y, ps, pt) >= 0; };
     room = 0;

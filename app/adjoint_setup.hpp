@@ -31,7 +31,7 @@ double thickness_at(const Scene& scene, const TetMesh& mesh, const Vec2& p);
 void check_sensors_on_skin(const Scene& scene, const TetMesh& mesh);
 // Half-width of the calibration scan along x through a sensor: calibration.scan_half_width if given, else 4h,
 // shortened so that the loaded disc stays on the skin's footprint on both sides (flat and cap skins exactly,
-// imported skins by walking along the meshed top).
-double scan_half_width(const Scene& scene, const TetMesh& mesh, double h, const Vec2& sensor);
+// imported skins by walking along the meshed top, which `mesh` must then give).
+double scan_half_width(const Scene& scene, const TetMesh* mesh, double h, const Vec2& sensor);
 
 }  // namespace skinfem::app

@@ -41,7 +41,7 @@ ChainLevel chain_values(const Scene& s, const AdjointSetup& adj, const ContactSe
   const double h = thickness_at(s, adj.mesh, pos);
   const auto prof =
       green::scan_profile(*adj.fe, 0, green::LayerLoad::punch, 0.5 * s.calibration.punch_diameter,
-                          scan_half_width(s, adj.mesh, h, pos), s.calibration.spacing);
+                          scan_half_width(s, &adj.mesh, h, pos), s.calibration.spacing);
   const green::KReport k = green::fit_profile(prof.offset_x, prof.point, h);
   const double t_green = total_seconds(adj.wall) + clock.seconds();
   add("k_central", k.k_central, t_green);

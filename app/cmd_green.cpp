@@ -99,7 +99,7 @@ nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const 
     const auto& pos = scene.sensors.positions[s];
     const double h = thickness_at(scene, mesh, pos);
     const auto prof = green::scan_profile(fe, s, LayerLoad::punch, radius,
-                                          scan_half_width(scene, mesh, h, pos), scene.calibration.spacing);
+                                          scan_half_width(scene, &mesh, h, pos), scene.calibration.spacing);
     std::vector<GreenSample> exact, exact_disc;
     if (flat) {
       const green::LayerGreen layer(h, scene.material.nu, LayerLoad::punch, radius);

@@ -17,6 +17,7 @@
 #include "app/adjoint_setup.hpp"
 #include "app/commands.hpp"
 #include "app/common.hpp"
+#include "app/sensor_greens.hpp"
 #include "app/stages.hpp"
 #include "green/calibration.hpp"
 
@@ -34,15 +35,13 @@ nlohmann::json components_json(const green::KReport& r) {
 }
 }  // namespace
 
-nlohmann::json kfit_stage(const Scene& scene, const AdjointSetup& setup, const std::string& out_dir,
+nlohmann::json kfit_stage(const Scene& scene, const SensorGreens& greens, const std::string& out_dir,
                           const std::string& load_name) {
   const LayerLoad load = load_name == "point" ? LayerLoad::point : LayerLoad::punch;
   const double radius = 0.5 * scene.calibration.punch_diameter;
   const double paper_k = green::kPaperK;
   Stopwatch clock;
-  const ElasticModel& model = *setup.model;
-  const green::FeGreen& fe = *setup.fe;
-  nlohmann::json wall = setup.wall;
+  nlohmann::json wall = greens.wall;
 
   clock = Stopwatch();
   const bool flat = scene.geometry.kind == GeometryKind::flat;
@@ -56,8 +55,13 @@ nlohmann::json kfit_stage(const Scene& scene, const AdjointSetup& setup, const s
   for (int s = 0; s < ns; ++s) {
     progress_step("kfit: calibration scans", s, ns, clock.seconds());
     const auto& pos = scene.sensors.positions[s];
-    const double h = thickness_at(scene, setup.mesh, pos);
-    const auto prof = green::scan_profile(fe, s, load, radius, scan_half_width(scene, setup.mesh, h, pos),
+    const double h = greens.thickness[s];
+    const auto sensor_at = [&](const SensorGreens::At& at) {
+      return [&at, s](bool disc, double ox, double oy, LayerLoad l, double a) {
+        return at(s, disc, ox, oy, l, a);
+      };
+    };
+    const auto prof = green::scan_profile(sensor_at(greens.at), load, radius, greens.scan_half_width[s],
                                           scene.calibration.spacing);
     const green::KReport fe_k = green::fit_profile(prof.offset_x, prof.point, h);
     nlohmann::json js = {{"sensor", s + 1},
@@ -68,6 +72,18 @@ nlohmann::json kfit_stage(const Scene& scene, const AdjointSetup& setup, const s
                          {"k_central", fe_k.k_central},
                          {"k_lsq_line", fe_k.k_lsq_line},
                          {"components", components_json(fe_k)}};
+    if (greens.coarse_at) {
+      // The k fits again at half the resolution (point values on the fit window |x| ≤ 3h): the change bounds
+      // the error, the meridian converging at order ≥ 2 (tests/green/test_meridian).
+      std::vector<double> xs;
+      std::vector<green::GreenSample> coarse;
+      for (double x : prof.offset_x)
+        if (std::abs(x) <= 3 * h + 1e-12)
+          xs.push_back(x), coarse.push_back(greens.coarse_at(s, false, x, 0, load, radius));
+      const green::KReport ck = green::fit_profile(xs, coarse, h);
+      js["k_central_change_from_half_resolution"] = fe_k.k_central / ck.k_central - 1;
+      js["k_lsq_line_change_from_half_resolution"] = fe_k.k_lsq_line / ck.k_lsq_line - 1;
+    }
     for (auto c : green::kComponents)
       js["peak_point_per_mm2"][green::component_name(c)] = green::peak_abs(prof.point, c);
     if (scene.geometry.kind == GeometryKind::cap) {
@@ -119,9 +135,11 @@ nlohmann::json kfit_stage(const Scene& scene, const AdjointSetup& setup, const s
       {"k_lsq_line",
        "least-squares fit of k*g_half(sqrt(k)x, 0) to g_zz along y = 0, |x| <= 3h, uniform weight"}};
   summary["sensors"] = sensors;
-  summary["dofs"] = model.solver().free_dofs();
-  summary["adjoint_solves"] = fe.adjoint_solves();
-  summary["max_adjoint_residual"] = fe.max_adjoint_residual();
+  summary["path"] = greens.path;
+  summary["path_model"] = greens.model;
+  summary["dofs"] = greens.dofs;
+  summary["adjoint_solves"] = greens.adjoint_solves;
+  if (greens.path == "3d") summary["max_adjoint_residual"] = greens.max_adjoint_residual;
   summary["wall_s"] = wall;
   summary["wall_total_s"] = total_seconds(wall);
   summary["peak_rss_mb"] = peak_rss_mb();
@@ -178,13 +196,13 @@ nlohmann::json kfit_stage(const Scene& scene, const AdjointSetup& setup, const s
   summary["k_central_range_over_sensors"] = {kc_lo, kc_hi};
   summary["k_lsq_line_range_over_sensors"] = {kl_lo, kl_hi};
   std::printf(
-      "kfit %s, headline sensor #1 of %zu: h %.3f mm, nu %.3g, %s load; %d DOFs, %.2f s (mesh %.2f, assemble "
-      "%.2f, factor %.2f, adjoint "
-      "%.2f)\n",
+      "kfit %s, headline sensor #1 of %zu: h %.3f mm, nu %.3g, %s load; %s path (%s): %d DOFs, %.2f s (mesh "
+      "%.2f, "
+      "assemble %.2f, factor %.2f, adjoint %.2f)\n",
       scene.name.c_str(), sensors.size(), first["h_mm"].get<double>(), scene.material.nu,
-      summary["load"].get<std::string>().c_str(), model.solver().free_dofs(), total_seconds(wall),
-      wall["mesh"].get<double>(), wall["assemble"].get<double>(), wall["factor"].get<double>(),
-      wall["adjoint_solves"].get<double>());
+      summary["load"].get<std::string>().c_str(), greens.path.c_str(), greens.model.c_str(), greens.dofs,
+      total_seconds(wall), wall["mesh"].get<double>(), wall["assemble"].get<double>(),
+      wall["factor"].get<double>(), wall["adjoint_solves"].get<double>());
   std::printf("  k_central %.5f, k_lsq_line %.5f", kc, kl);
   if (flat) {
     const nlohmann::json& d =
@@ -205,9 +223,14 @@ nlohmann::json kfit_stage(const Scene& scene, const AdjointSetup& setup, const s
   return summary;
 }
 
-int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& load_name) {
+int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& load_name, GreenPath path) {
   check_output_dir(out_dir);
-  kfit_stage(scene, *adjoint_setup(scene), out_dir, load_name);
+  if (path == GreenPath::meridian || (path == GreenPath::automatic && meridian_unavailable(scene).empty())) {
+    kfit_stage(scene, meridian_sensor_greens(scene), out_dir, load_name);
+  } else {
+    const auto setup = adjoint_setup(scene);
+    kfit_stage(scene, sensor_greens(scene, *setup), out_dir, load_name);
+  }
   return 0;
 }
 

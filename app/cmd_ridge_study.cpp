@@ -53,7 +53,7 @@ Solved solve_scan(const Scene& scene, std::shared_ptr<Skin> skin, double h, cons
   s.dofs = setup->model->solver().free_dofs();
   const double radius = 0.5 * scene.calibration.punch_diameter;
   s.profile = green::scan_profile(*setup->fe, 0, green::LayerLoad::punch, radius,
-                                  scan_half_width(scene, setup->mesh, h, sensor), scene.calibration.spacing);
+                                  scan_half_width(scene, &setup->mesh, h, sensor), scene.calibration.spacing);
   s.k = green::fit_profile(s.profile.offset_x, s.profile.point, h);
   s.wall = setup->wall;
   return s;

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "app/sensor_greens.hpp"
 #include "fem/mixed_solver.hpp"
 #include "scene/scene.hpp"
 
@@ -12,7 +13,7 @@ namespace skinfem::app {
 int run_mesh(const Scene& scene, const std::string& out_dir);
 int run_solve(const Scene& scene, const std::string& out_dir, SolverKind solver);
 int run_green(const Scene& scene, const std::string& out_dir, double grid_dx);
-int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& load);
+int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& load, GreenPath path);
 int run_contact(const Scene& scene, const std::string& out_dir, const std::string& friction);
 int run_defect(const Scene& scene, const std::string& out_dir);
 // error_scales: coarser mesh levels (every size × s, s > 1) for the headline numbers' error bars; empty:

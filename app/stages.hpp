@@ -9,6 +9,7 @@
 
 #include "app/adjoint_setup.hpp"
 #include "app/contact_setup.hpp"
+#include "app/sensor_greens.hpp"
 #include "contact/hole_sweep.hpp"
 
 namespace skinfem::app {
@@ -18,7 +19,7 @@ nlohmann::json mesh_stage(const Scene& scene, const TetMesh& mesh, double mesh_s
 // grid_dx > 0: also the kernel on that grid over the top (kernel.h5, kernel.vti; green/kernel_grid.hpp).
 nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const std::string& out_dir,
                            double grid_dx = 0);
-nlohmann::json kfit_stage(const Scene& scene, const AdjointSetup& setup, const std::string& out_dir,
+nlohmann::json kfit_stage(const Scene& scene, const SensorGreens& greens, const std::string& out_dir,
                           const std::string& load_name);
 nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, const std::string& out_dir,
                              FrictionMode chosen);

@@ -1,5 +1,6 @@
 #include "green/calibration.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -18,15 +19,15 @@ const char* component_name(GreenComponent c) {
   }
 }
 
-ScanProfile scan_profile(const FeGreen& fe, int sensor, LayerLoad load, double radius, double half_width,
+ScanProfile scan_profile(const SensorGreen& g, LayerLoad load, double radius, double half_width,
                          double spacing) {
   ScanProfile p;
   const int n = static_cast<int>(std::floor(half_width / spacing + 1e-9));
   for (int i = -n; i <= n; ++i) {
     const double x = i * spacing;
     p.offset_x.push_back(x);
-    p.point.push_back(fe.at(sensor, false, x, 0.0, load, radius));
-    p.disc.push_back(fe.at(sensor, true, x, 0.0, load, radius));
+    p.point.push_back(g(false, x, 0.0, load, radius));
+    p.disc.push_back(g(true, x, 0.0, load, radius));
   }
   return p;
 }
@@ -53,19 +54,12 @@ KReport fit_profile(const std::vector<double>& x, const std::vector<GreenSample>
 
 std::vector<GreenSample> exact_profile(const LayerGreen& layer, const std::vector<double>& x,
                                        double disc_diameter) {
-  // The disc mean over sensor positions equals the mean over load offsets (offset = force − sensor).
-  const auto rule = disc_diameter > 0 ? load_quadrature(LayerLoad::uniform, 0.5 * disc_diameter, 6, 12)
-                                      : load_quadrature(LayerLoad::point, 0);
-  std::vector<GreenSample> g;
-  for (double xi : x) {
-    GreenSample sum;
-    for (const auto& q : rule) {
-      const GreenSample v = layer.at(xi - q[0], -q[1]);
-      sum.zz += q[2] * v.zz, sum.zx += q[2] * v.zx, sum.xz += q[2] * v.xz, sum.xx += q[2] * v.xx;
-    }
-    g.push_back(sum);
-  }
-  return g;
+  const LayerGreen disc(layer.thickness(), layer.poisson_ratio(), layer.load(), layer.load_radius(), {},
+                        0.5 * disc_diameter);
+  const LayerGreen& g = disc_diameter > 0 ? disc : layer;
+  std::vector<GreenSample> out;
+  for (double xi : x) out.push_back(g.at(xi, 0));
+  return out;
 }
 
 double peak_abs(const std::vector<GreenSample>& profile, GreenComponent c) {

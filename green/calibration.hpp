@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -20,9 +21,20 @@ struct ScanProfile {
   std::vector<GreenSample> point, disc;  // sensor-centre value and disc mean, 1/mm²
 };
 
+// A sensor's g_ab (1/mm²) for a unit load centred at offset (ox, oy) from it, spread as `load` over `radius`:
+// its disc mean (disc) or centre value (FeGreen::at with the sensor fixed, or MeridianGreen::at).
+using SensorGreen =
+    std::function<GreenSample(bool disc, double ox, double oy, LayerLoad load, double radius)>;
+
 // Offsets −half_width … +half_width at `spacing` (symmetric, 0 included).
-ScanProfile scan_profile(const FeGreen& fe, int sensor, LayerLoad load, double radius, double half_width,
+ScanProfile scan_profile(const SensorGreen& g, LayerLoad load, double radius, double half_width,
                          double spacing);
+inline ScanProfile scan_profile(const FeGreen& fe, int sensor, LayerLoad load, double radius,
+                                double half_width, double spacing) {
+  return scan_profile([&](bool disc, double ox, double oy, LayerLoad l,
+                          double a) { return fe.at(sensor, disc, ox, oy, l, a); },
+                      load, radius, half_width, spacing);
+}
 
 struct KReport {
   double k_central = 0;              // g_zz(0) / (3/(2πh²)), point value at the base
@@ -34,8 +46,7 @@ struct KReport {
 KReport fit_profile(const std::vector<double>& x, const std::vector<GreenSample>& g, double h);
 
 // The exact flat-layer reference on the same offsets: point values, or (disc_diameter > 0) the mean over
-// the sensor disc (Gauss rule, 6 radii × 12 angles: the field varies on the scale h ≫ the disc, so the
-// rule's error is far below the FE's).
+// the sensor disc (LayerGreen's sensor_radius: exact, no rule over the disc).
 std::vector<GreenSample> exact_profile(const LayerGreen& layer, const std::vector<double>& x,
                                        double disc_diameter = 0);
 

@@ -76,12 +76,23 @@ bool FeGreen::disc_map_at(int sensor, double x, double y, GreenSample& g) const 
   return true;
 }
 
+const std::vector<std::array<double, 3>>& load_rule(LayerLoad load, double radius) {
+  thread_local LayerLoad last_load = LayerLoad::point;
+  thread_local double last_radius = -1;
+  thread_local std::vector<std::array<double, 3>> rule;
+  if (load != last_load || radius != last_radius) {
+    rule = load_quadrature(load, radius);
+    last_load = load, last_radius = radius;
+  }
+  return rule;
+}
+
 GreenSample FeGreen::at(int sensor, bool disc, double ox, double oy, LayerLoad load, double radius) const {
   const auto& yz = adjoint(sensor, 'z', disc);
   const auto& yx = adjoint(sensor, 'x', disc);
   const double cx = sensors_.positions[sensor][0] + ox, cy = sensors_.positions[sensor][1] + oy;
   Eigen::Vector3d vz = Eigen::Vector3d::Zero(), vx = Eigen::Vector3d::Zero();
-  for (const auto& q : load_quadrature(load, radius)) {
+  for (const auto& q : load_rule(load, radius)) {
     vz += q[2] * displacement_at_top(yz, cx + q[0], cy + q[1]);
     vx += q[2] * displacement_at_top(yx, cx + q[0], cy + q[1]);
   }

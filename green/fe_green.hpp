@@ -24,6 +24,8 @@ namespace skinfem::green {
 // tangential punch, Johnson §7.1) or uniform (1/(πa²)). Points (dx, dy, weight), weights sum to 1.
 // nr × nt points (radial Gauss × uniform angles).
 std::vector<std::array<double, 3>> load_quadrature(LayerLoad load, double radius, int nr = 12, int nt = 32);
+// The default rule, computed once per thread while (load, radius) repeat: scans ask for it at every offset.
+const std::vector<std::array<double, 3>>& load_rule(LayerLoad load, double radius);
 
 class FeGreen {
  public:

@@ -101,8 +101,15 @@ LayerKernels LayerGreen::depth_kernels(double s, double h, double z, double nu) 
   return k;
 }
 
-LayerGreen::LayerGreen(double h, double nu, LayerLoad load, double load_radius, LayerQuadrature quadrature)
-    : h_(h), nu_(nu), load_(load), a_(load == LayerLoad::point ? 0.0 : load_radius), quad_(quadrature) {
+LayerGreen::LayerGreen(double h, double nu, LayerLoad load, double load_radius, LayerQuadrature quadrature,
+                       double sensor_radius)
+    : h_(h),
+      nu_(nu),
+      load_(load),
+      a_(load == LayerLoad::point ? 0.0 : load_radius),
+      quad_(quadrature),
+      b_(sensor_radius) {
+  if (!(sensor_radius >= 0.0)) throw std::invalid_argument("LayerGreen: sensor_radius must be >= 0");
   if (!(h > 0.0)) throw std::invalid_argument("LayerGreen: h must be > 0");
   if (!(nu >= 0.0 && nu <= 0.5)) throw std::invalid_argument("LayerGreen: nu must be in [0, 0.5]");
   if (load != LayerLoad::point && !(load_radius > 0.0))
@@ -112,22 +119,27 @@ LayerGreen::LayerGreen(double h, double nu, LayerLoad load, double load_radius, 
   for (int l = 0; l <= 6; ++l) levels_.push_back(build(h_ * std::ldexp(1.0, l), h_, true));
 }
 
+namespace {
+double disc_mean_factor(double x) { return x < 1e-4 ? 1.0 - x * x / 8.0 : 2.0 * ::j1(x) / x; }
+}  // namespace
+
 double LayerGreen::load_profile(double s) const {
-  const double x = s * a_;
+  const double x = s * a_, sensor = b_ > 0 ? disc_mean_factor(s * b_) : 1.0;
   switch (load_) {
     case LayerLoad::point:
-      return 1.0;
+      return sensor;
     case LayerLoad::uniform:
-      return x < 1e-4 ? 1.0 - x * x / 8.0 : 2.0 * ::j1(x) / x;
+      return disc_mean_factor(x) * sensor;
     case LayerLoad::punch:
-      return x < 1e-4 ? 1.0 - x * x / 6.0 : std::sin(x) / x;
+      return (x < 1e-4 ? 1.0 - x * x / 6.0 : std::sin(x) / x) * sensor;
   }
-  return 1.0;
+  return sensor;
 }
 
 // Composite Gauss–Legendre nodes on [0, s_max], s_max = s_max_depth/depth. Panel width
-//   w(s) = panel_scale · min( 2π/(r + a), max(1/h, s/2), 4/depth ):
-// one period of the fastest oscillation (J_n(sr) times the load profile, frequency ≤ r + a) per panel; width
+//   w(s) = panel_scale · min( 2π/(r + a + b), max(1/h, s/2), 4/depth ):
+// one period of the fastest oscillation (J_n(sr) times the load profile and the sensor disc's factor,
+// frequency ≤ r + a + b) per panel; width
 // 1/h near the origin, where the nearest pole of the kernels (zeros of D, at t = ±0.739i for ν = 0.5, ±1.19i
 // for ν = 0) is closest, growing geometrically further out; at most 4/depth for the exp(−s·depth) decay. With
 // 16 nodes the Bernstein-ellipse bound for each of these constraints is below 1e-16 relative.
@@ -139,7 +151,7 @@ std::vector<double> LayerGreen::panel_nodes(double r, double depth, std::vector<
   double s0 = 0.0;
   while (s0 < s_max) {
     double w = std::min(std::max(1.0 / h_, 0.5 * s0), 4.0 / depth);
-    if (r + a_ > 0.0) w = std::min(w, 2.0 * kPi / (r + a_));
+    if (r + a_ + b_ > 0.0) w = std::min(w, 2.0 * kPi / (r + a_ + b_));
     w *= quad_.panel_scale;
     const double s1 = std::min(s0 + w, s_max);
     for (int i = 0; i < kGauss; ++i) {

@@ -64,9 +64,12 @@ struct LayerKernels {
 class LayerGreen {
  public:
   /// h > 0 layer thickness [mm], 0 ≤ nu ≤ 0.5, load model and radius a [mm] (ignored for the point load, > 0
-  /// otherwise).
+  /// otherwise). sensor_radius b > 0: the readings are means over the sensor disc of radius b instead of
+  /// point values. Averaging any 2D Fourier mode e^{ik·x} over a disc multiplies it by 2J1(|k|b)/(|k|b)
+  /// (Graf's addition theorem), so the disc mean is the same Hankel integral with that factor in the load
+  /// profile.
   LayerGreen(double h, double nu, LayerLoad load = LayerLoad::point, double load_radius = 0,
-             LayerQuadrature quadrature = {});
+             LayerQuadrature quadrature = {}, double sensor_radius = 0);
 
   /// Readings at the base for the load centred at offset (x, y) (force − sensor), per unit force, 1/mm².
   GreenSample at(double x, double y) const;
@@ -75,7 +78,9 @@ class LayerGreen {
 
   double thickness() const { return h_; }
   double poisson_ratio() const { return nu_; }
-  /// Hankel-space load profile L(s).
+  LayerLoad load() const { return load_; }
+  double load_radius() const { return a_; }
+  /// Hankel-space load profile L(s), times the sensor disc's factor.
   double load_profile(double s) const;
 
   /// Closed-form base kernels (z = 0) as functions of t = s·h.
@@ -99,6 +104,7 @@ class LayerGreen {
   LayerLoad load_;
   double a_;
   LayerQuadrature quad_;
+  double b_;                     // sensor disc radius, 0 for point readings
   std::vector<NodeSet> levels_;  // r_cover = h·2^ℓ
 };
 

@@ -2,20 +2,38 @@
 
 #include <Eigen/SparseCore>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
 #include "fem/mumps_ldlt.hpp"
+#include "green/fe_green.hpp"
 #include "green/halfspace.hpp"
 #include "mesh/gauss_legendre.hpp"
 #include "mesh/surface_quadrature.hpp"
 
 namespace skinfem {
 
-MeridianMesh meridian_mesh(const std::function<double(double)>& top, double radius, int nr, int nz,
-                           double axis_grading, double layer_grading) {
-  if (nr < 1 || nz < 1 || !(radius > 0) || axis_grading < 0 || layer_grading < 0 || layer_grading >= 1)
-    throw std::invalid_argument("meridian_mesh: need nr, nz >= 1, radius > 0, gradings >= 0 and < 1");
+MeridianSizes MeridianSizes::for_thickness(double h, double scale) {
+  MeridianSizes z;
+  z.axis_cell = h / 60 * scale;
+  z.growth = std::pow(1.1, scale);
+  z.max_cell = 2 * h / 3 * scale;
+  z.layers = std::max(2, static_cast<int>(std::lround(36 / scale)));
+  return z;
+}
+
+MeridianMesh meridian_mesh(const std::function<double(double)>& top, double radius, const MeridianSizes& z) {
+  if (!(radius > 0) || !(z.axis_cell > 0) || !(z.growth >= 1) || !(z.max_cell > 0) || z.layers < 1 ||
+      z.layer_grading < 0 || z.layer_grading >= 1)
+    throw std::invalid_argument(
+        "meridian_mesh: need radius, axis_cell, max_cell > 0, growth >= 1, layers >= 1, layer_grading in [0, "
+        "1)");
+  std::vector<double> rows{0};  // vertex radii
+  for (double cell = z.axis_cell; rows.back() < radius * (1 - 1e-9); cell *= z.growth)
+    rows.push_back(rows.back() + std::min(cell, z.max_cell));
+  for (double& r : rows) r *= radius / rows.back();
+  const int nr = static_cast<int>(rows.size()) - 1, nz = z.layers;
   const int ni = 2 * nr + 1, nj = 2 * nz + 1;  // the P2 node grid
   MeridianMesh m;
   m.num_vertices = (nr + 1) * (nz + 1);
@@ -26,10 +44,9 @@ MeridianMesh meridian_mesh(const std::function<double(double)>& top, double radi
     for (int j = 0; j < nj; ++j) {
       const int k = (i % 2 == 0 && j % 2 == 0) ? next_vertex++ : next_mid++;
       id[i * nj + j] = k;
-      const double s = double(i) / (ni - 1), t = double(j) / (nj - 1);
-      const double r =
-          axis_grading > 0 ? radius * std::expm1(axis_grading * s) / std::expm1(axis_grading) : radius * s;
-      const double tau = t - layer_grading * std::sin(2 * M_PI * t) / (2 * M_PI);
+      const double t = double(j) / (nj - 1);
+      const double r = i % 2 == 0 ? rows[i / 2] : 0.5 * (rows[i / 2] + rows[i / 2 + 1]);
+      const double tau = t - z.layer_grading * std::sin(2 * M_PI * t) / (2 * M_PI);
       m.nodes(k, 0) = r;
       m.nodes(k, 1) = top(r) * tau;
     }
@@ -48,7 +65,10 @@ MeridianMesh meridian_mesh(const std::function<double(double)>& top, double radi
     m.base.push_back(at(i, 0));
     m.top.push_back(at(i, nj - 1));
   }
-  for (int j = 0; j < nj; ++j) m.axis.push_back(at(0, j));
+  for (int j = 0; j < nj; ++j) {
+    m.axis.push_back(at(0, j));
+    m.side.push_back(at(ni - 1, j));
+  }
   return m;
 }
 
@@ -62,34 +82,58 @@ void p2_line(double u, double L[3], double dL[3]) {
   dL[0] = 4 * u - 3, dL[1] = 4 - 8 * u, dL[2] = 4 * u - 1;
 }
 
-// One Fourier mode's adjoint solve: returns (U, V, W) at the top nodes. mode 0: u_r = U, u_z = W (V = 0);
-// mode 1: u_r = U cos θ, u_θ = V sin θ, u_z = W cos θ, p = P cos θ. w: the reading's base weights, imposed as
-// the base displacement (mode 0: W = −w; mode 1: U = w, V = −w, the x displacement w).
+// The parameter u ∈ [0, 1] at which an edge with node radii r0, r1 (middle), r2 reaches rho: Newton on the
+// quadratic map from the linear guess (the map is monotone: mid-edge nodes sit between the ends).
+double edge_u(double r0, double r1, double r2, double rho) {
+  double u = (rho - r0) / (r2 - r0);
+  for (int it = 0; it < 30; ++it) {
+    double L[3], dL[3];
+    p2_line(u, L, dL);
+    const double step = (L[0] * r0 + L[1] * r1 + L[2] * r2 - rho) / (dL[0] * r0 + dL[1] * r1 + dL[2] * r2);
+    u -= step;
+    if (std::abs(step) < 1e-15) break;
+  }
+  return u;
+}
+
+// One Fourier mode's adjoint solves: (U, V, W) at the top nodes for each column of w. mode 0: u_r = U, u_z =
+// W (V = 0); mode 1: u_r = U cos θ, u_θ = V sin θ, u_z = W cos θ, p = P cos θ. w (base nodes × readings): the
+// readings' base weights, imposed as the base displacement (mode 0: W = −w; mode 1: U = w, V = −w, the x
+// displacement w).
 struct ModeField {
-  std::vector<double> U, V, W;
+  std::vector<std::vector<double>> U, V, W;  // per reading
   int dofs = 0;
 };
 
-ModeField solve_mode(const MeridianMesh& m, double nu, int mode, const Eigen::VectorXd& w) {
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+ModeField solve_mode(const MeridianMesh& m, double nu, SideCondition side, int mode, const Eigen::MatrixXd& w,
+                     MeridianGreen::Cost& cost) {
+  auto clock = std::chrono::steady_clock::now();
   const int n = static_cast<int>(m.nodes.rows()), nc = mode == 0 ? 2 : 3;  // displacement components
-  const int ndof = nc * n + m.num_vertices;
+  const int ndof = nc * n + m.num_vertices, nread = static_cast<int>(w.cols());
   const auto comp = [&](int node, int c) { return nc * node + c; };  // c: 0 U, then (mode 1) 1 V, last W
   const int cW = nc - 1;
   const double mu = 1, theta = mode == 0 ? 2 * M_PI : M_PI;  // ∫ cos² nθ dθ
   const double inv_lambda = nu >= 0.5 ? 0 : (1 - 2 * nu) / (2 * mu * nu);
 
-  // Constraints. Base: every component prescribed. Axis: mode 0 U = 0; mode 1 W = 0, P = 0 and U + V = 0
-  // (the displacement single-valued there), V tied to −U.
+  // Constraints. Base: every component prescribed; a held side: every component zero. Axis: mode 0 U = 0;
+  // mode 1 W = 0, P = 0 and U + V = 0 (the displacement single-valued there), V tied to −U.
   std::vector<char> fixed(ndof, 0);
-  Eigen::VectorXd value = Eigen::VectorXd::Zero(ndof);
+  Eigen::MatrixXd value = Eigen::MatrixXd::Zero(ndof, nread);
   std::vector<int> tie(ndof, -1);
+  if (side == SideCondition::fixed)
+    for (int k : m.side)
+      for (int c = 0; c < nc; ++c) fixed[comp(k, c)] = 1;
   for (size_t s = 0; s < m.base.size(); ++s) {
     for (int c = 0; c < nc; ++c) fixed[comp(m.base[s], c)] = 1;
     if (mode == 0) {
-      value[comp(m.base[s], cW)] = -w[s];
+      value.row(comp(m.base[s], cW)) = -w.row(s);
     } else {
-      value[comp(m.base[s], 0)] = w[s];
-      value[comp(m.base[s], 1)] = -w[s];
+      value.row(comp(m.base[s], 0)) = w.row(s);
+      value.row(comp(m.base[s], 1)) = -w.row(s);
     }
   }
   for (int k : m.axis) {
@@ -109,15 +153,19 @@ ModeField solve_mode(const MeridianMesh& m, double nu, int mode, const Eigen::Ve
   for (int d = 0; d < ndof; ++d)
     if (tie[d] >= 0) index[d] = index[tie[d]], sign[d] = -1;
 
-  std::vector<Eigen::Triplet<double>> trip;
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(nf);
+  // The lower triangle straight into MUMPS's coordinate arrays (it sums duplicates): no assembled copy.
+  MumpsLdlt::Triplets lower;
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(nf, nread);
   const int nl = 6 * nc + 3;  // local DOFs: displacements node by node, then the 3 vertex pressures
-  trip.reserve(static_cast<size_t>(m.tris.rows()) * nl * nl);
+  const size_t reserve = static_cast<size_t>(m.tris.rows()) * nl * (nl + 1) / 2;
+  lower.row.reserve(reserve), lower.col.reserve(reserve), lower.value.reserve(reserve);
   const int nrows = mode == 0 ? 4 : 6;  // ε_rr, ε_θθ, ε_zz, γ_rz (, γ_rθ, γ_θz)
   Eigen::VectorXd D(nrows);
   D << 2 * mu, 2 * mu, 2 * mu, mu, Eigen::VectorXd::Constant(nrows - 4, mu);
+  Eigen::MatrixXd A(nl, nl), B(nrows, nl);
+  Eigen::RowVectorXd div(nl);
   for (int e = 0; e < m.tris.rows(); ++e) {
-    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(nl, nl);
+    A.setZero();
     double dxi[6], deta[6];
     for (const auto& q : triangle_rule_degree5()) {
       const Eigen::Matrix<double, 6, 1> N = triangle_shape(q.s, q.t);
@@ -132,8 +180,8 @@ ModeField solve_mode(const MeridianMesh& m, double nu, int mode, const Eigen::Ve
       const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
       if (!(det > 0)) throw std::runtime_error("meridian mesh: an element is inverted");
       const double wq = q.w * 0.5 * det * theta * r;
-      Eigen::MatrixXd B = Eigen::MatrixXd::Zero(nrows, nl);
-      Eigen::RowVectorXd div = Eigen::RowVectorXd::Zero(nl);
+      B.setZero();
+      div.setZero();
       for (int a = 0; a < 6; ++a) {
         const double dr = (J[1][1] * dxi[a] - J[1][0] * deta[a]) / det;
         const double dz = (-J[0][1] * dxi[a] + J[0][0] * deta[a]) / det;
@@ -166,84 +214,114 @@ ModeField solve_mode(const MeridianMesh& m, double nu, int mode, const Eigen::Ve
       if (fi < 0) continue;
       for (int j = 0; j < nl; ++j) {
         const double a = sign[g[i]] * A(i, j);
-        if (index[g[j]] >= 0)
-          trip.emplace_back(fi, index[g[j]], a * sign[g[j]]);
-        else
-          rhs[fi] -= a * value[g[j]];
+        const int fj = index[g[j]];
+        if (fj < 0) {
+          rhs.row(fi) -= a * value.row(g[j]);
+        } else if (fi >= fj) {  // both (i, j) and (j, i) land here when fi == fj (a tied pair)
+          lower.row.push_back(fi), lower.col.push_back(fj), lower.value.push_back(a * sign[g[j]]);
+        }
       }
     }
   }
-  Eigen::SparseMatrix<double> K(nf, nf);
-  K.setFromTriplets(trip.begin(), trip.end());
-  trip = {};
-  const Eigen::VectorXd y = MumpsLdlt(K).solve(rhs);
-  const auto at = [&](int d) { return fixed[d] ? value[d] : sign[d] * y[index[d]]; };
+  cost.assemble_s += seconds_since(clock);
+  clock = std::chrono::steady_clock::now();
+  const MumpsLdlt solver(nf, std::move(lower));
+  cost.factor_s += seconds_since(clock);
+  clock = std::chrono::steady_clock::now();
+  const Eigen::MatrixXd y = solver.solve(rhs);
+  const auto at = [&](int d, int c) { return fixed[d] ? value(d, c) : sign[d] * y(index[d], c); };
   ModeField f;
   f.dofs = nf;
-  for (int k : m.top) {
-    f.U.push_back(at(comp(k, 0)));
-    f.V.push_back(mode == 1 ? at(comp(k, 1)) : 0.0);
-    f.W.push_back(at(comp(k, cW)));
-  }
+  f.U.resize(nread), f.V.resize(nread), f.W.resize(nread);
+  for (int c = 0; c < nread; ++c)
+    for (int k : m.top) {
+      f.U[c].push_back(at(comp(k, 0), c));
+      f.V[c].push_back(mode == 1 ? at(comp(k, 1), c) : 0.0);
+      f.W[c].push_back(at(comp(k, cW), c));
+    }
+  cost.solve_s += seconds_since(clock);
   return f;
 }
 }  // namespace
 
-MeridianGreen::MeridianGreen(const MeridianMesh& m, double nu) {
-  // The reading's base weights w = M⁻¹ e_axis: M the base trace's mass matrix (weight 2πr), P2 along r. The
-  // same M serves x readings: a traction τ(r) e_x has |e_x|² = 1 at every angle.
+MeridianGreen::MeridianGreen(const MeridianMesh& m, double nu, SideCondition side, double disc_radius) {
+  // The readings' base weights w = M⁻¹ b: M the base trace's mass matrix (weight 2πr), P2 along r; b = e_axis
+  // for the point value, b_i = ∫_disc φ_i dA / (π a²) for the disc mean. The same M serves x readings: a
+  // traction τ(r) e_x has |e_x|² = 1 at every angle.
   const int nb = static_cast<int>(m.base.size());
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(nb, nb);
+  has_disc_ = disc_radius > 0;
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(nb, nb), b = Eigen::MatrixXd::Zero(nb, has_disc_ ? 2 : 1);
+  b(0, 0) = 1;
   const GaussRule1d g = gauss_legendre01(4);  // P2 × P2 × r: degree 5
-  for (int s = 0; s + 2 < nb; s += 2)
-    for (size_t k = 0; k < g.x.size(); ++k) {
-      const double u = g.x[k];
-      double L[3], dL[3];
-      p2_line(u, L, dL);
-      double r = 0, drdu = 0;
-      for (int a = 0; a < 3; ++a)
-        r += L[a] * m.nodes(m.base[s + a], 0), drdu += dL[a] * m.nodes(m.base[s + a], 0);
-      for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b) M(s + a, s + b) += g.w[k] * drdu * 2 * M_PI * r * L[a] * L[b];
-    }
-  const Eigen::VectorXd w = M.ldlt().solve(Eigen::VectorXd::Unit(nb, 0));
+  for (int s = 0; s + 2 < nb; s += 2) {
+    const double r0 = m.nodes(m.base[s], 0), r1 = m.nodes(m.base[s + 1], 0), r2 = m.nodes(m.base[s + 2], 0);
+    // The part of the edge inside the disc: u ∈ [0, u_disc].
+    const double u_disc = !has_disc_ || r0 >= disc_radius ? 0
+                          : r2 <= disc_radius             ? 1
+                                                          : edge_u(r0, r1, r2, disc_radius);
+    for (size_t k = 0; k < g.x.size(); ++k)
+      for (int part = 0; part < 2; ++part) {
+        const double u = part == 0 ? g.x[k] : u_disc * g.x[k], wk = part == 0 ? g.w[k] : u_disc * g.w[k];
+        if (part == 1 && u_disc == 0) continue;
+        double L[3], dL[3];
+        p2_line(u, L, dL);
+        const double r = L[0] * r0 + L[1] * r1 + L[2] * r2, drdu = dL[0] * r0 + dL[1] * r1 + dL[2] * r2;
+        for (int i = 0; i < 3; ++i) {
+          if (part == 1) b(s + i, 1) += wk * drdu * 2 * r * L[i] / (disc_radius * disc_radius);
+          for (int j = 0; j < 3 && part == 0; ++j) M(s + i, s + j) += wk * drdu * 2 * M_PI * r * L[i] * L[j];
+        }
+      }
+  }
+  const Eigen::MatrixXd w = M.ldlt().solve(b);
   // σ_z = t_z (the base's traction on the skin, whose outward normal is −e_z): impose −w along z. σ_x = −t_x:
   // impose +w along x.
-  const ModeField z = solve_mode(m, nu, 0, w), x = solve_mode(m, nu, 1, w);
+  const ModeField z = solve_mode(m, nu, side, 0, w, cost_), x = solve_mode(m, nu, side, 1, w, cost_);
   dofs_ = z.dofs + x.dofs;
   for (size_t i = 0; i < m.top.size(); ++i) r_.push_back(m.nodes(m.top[i], 0));
   // Reciprocity (green/fe_green.hpp): g_ab(X) = f_a·y_b(X), f_z = −e_z (pressing), f_x = +e_x.
-  zz_ = z.W, u0_ = z.U, w1_ = x.W, u1_ = x.U, v1_ = x.V;
-  for (double& v : zz_) v = -v;
+  for (int c = 0; c < w.cols(); ++c) {
+    Maps& f = maps_[c];
+    f.zz = z.W[c], f.u0 = z.U[c], f.w1 = x.W[c], f.u1 = x.U[c], f.v1 = x.V[c];
+    for (double& v : f.zz) v = -v;
+  }
 }
 
 double MeridianGreen::interpolate(const std::vector<double>& f, double rho) const {
   rho = std::clamp(rho, r_.front(), r_.back());
-  size_t s = 0;  // the top edge (nodes s, s+1, s+2) that holds rho
-  while (s + 4 < r_.size() && rho > r_[s + 2]) s += 2;
-  // Invert the edge's quadratic map r(u) by Newton from the linear guess, then interpolate.
-  double u = (rho - r_[s]) / (r_[s + 2] - r_[s]);
-  for (int it = 0; it < 30; ++it) {
-    double L[3], dL[3];
-    p2_line(u, L, dL);
-    const double res = L[0] * r_[s] + L[1] * r_[s + 1] + L[2] * r_[s + 2] - rho;
-    const double slope = dL[0] * r_[s] + dL[1] * r_[s + 1] + dL[2] * r_[s + 2];
-    u -= res / slope;
+  // The top edge (nodes s, s+1, s+2) that holds rho: vertices sit at even indices.
+  const size_t nv = (r_.size() + 1) / 2;
+  size_t lo = 0, hi = nv - 1;  // vertex numbers: r(2 lo) <= rho <= r(2 hi)
+  while (hi - lo > 1) {
+    const size_t mid = (lo + hi) / 2;
+    (r_[2 * mid] <= rho ? lo : hi) = mid;
   }
+  const size_t s = 2 * lo;
   double L[3], dL[3];
-  p2_line(u, L, dL);
+  p2_line(edge_u(r_[s], r_[s + 1], r_[s + 2], rho), L, dL);
   return L[0] * f[s] + L[1] * f[s + 1] + L[2] * f[s + 2];
 }
 
-green::GreenSample MeridianGreen::at(double x, double y) const {
+green::GreenSample MeridianGreen::at(double x, double y, bool disc) const {
+  if (disc && !has_disc_) throw std::logic_error("MeridianGreen: built without a disc reading");
+  const Maps& f = maps_[disc ? 1 : 0];
   const double rho = std::hypot(x, y);
   const double c = rho > 0 ? x / rho : 1, s = rho > 0 ? y / rho : 0;
   green::GreenSample g;
-  g.zz = interpolate(zz_, rho);
-  g.xz = interpolate(u0_, rho) * c;
-  g.zx = -interpolate(w1_, rho) * c;
-  g.xx = interpolate(u1_, rho) * c * c - interpolate(v1_, rho) * s * s;
+  g.zz = interpolate(f.zz, rho);
+  g.xz = interpolate(f.u0, rho) * c;
+  g.zx = -interpolate(f.w1, rho) * c;
+  g.xx = interpolate(f.u1, rho) * c * c - interpolate(f.v1, rho) * s * s;
   return g;
+}
+
+green::GreenSample MeridianGreen::at(bool disc, double x, double y, green::LayerLoad load,
+                                     double radius) const {
+  green::GreenSample v;
+  for (const auto& q : green::load_rule(load, radius)) {
+    const green::GreenSample p = at(x + q[0], y + q[1], disc);
+    v.zz += q[2] * p.zz, v.zx += q[2] * p.zx, v.xz += q[2] * p.xz, v.xx += q[2] * p.xx;
+  }
+  return v;
 }
 
 }  // namespace skinfem

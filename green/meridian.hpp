@@ -21,6 +21,8 @@
 #include <vector>
 
 #include "green/halfspace.hpp"
+#include "green/layer_exact.hpp"
+#include "scene/scene.hpp"
 
 namespace skinfem {
 
@@ -30,34 +32,62 @@ struct MeridianMesh {
   Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor> nodes;  // N×2: (r, z), mm
   Eigen::Matrix<int, Eigen::Dynamic, 6, Eigen::RowMajor> tris;      // T×6
   int num_vertices = 0;
-  std::vector<int> base, top, axis;  // node indices on z = 0, on the top (both by increasing r), on r = 0
+  // Node indices on z = 0 and on the top (both by increasing r), on the axis r = 0 and on the side r =
+  // radius.
+  std::vector<int> base, top, axis, side;
 };
 
-// The region 0 ≤ r ≤ radius, 0 ≤ z ≤ top(r) on a mapped nr × nz grid: r = radius·(e^{βs} − 1)/(e^β − 1)
-// (s uniform, β the axis grading ≥ 0, so cells grow geometrically away from the axis where the reading is), z
-// = top(r)·τ(t) with τ clustering toward the base and the top (τ = t − sin(2πt)·c/(2π), c the layer grading
-// in [0, 1)). Mid-edge nodes follow the map, so those on the top lie on it exactly.
-MeridianMesh meridian_mesh(const std::function<double(double)>& top, double radius, int nr, int nz,
-                           double axis_grading, double layer_grading);
+// Cell sizes of a meridian mesh. Radially, cells grow geometrically from the axis, where the reading is, up
+// to a cap; across the thickness they cluster toward the base and the top (τ = t − c·sin(2πt)/(2π), c the
+// layer grading in [0, 1)).
+struct MeridianSizes {
+  double axis_cell = 0.05;  // mm, radial size of the cells at the axis
+  double growth = 1.1;      // ratio of neighbouring cells' radial sizes, >= 1
+  double max_cell = 2.0;    // mm, cap on the radial size
+  int layers = 36;          // cells across the thickness
+  double layer_grading = 0.5;
+  // For a skin of thickness h: h/60 at the axis, growing ×1.1 up to 2h/3, 36 layers, which gives the flat
+  // layer's k_central and k_lsq_line within 4e-5 of the exact layer's (measured: tests/green/test_meridian);
+  // `scale` > 1 coarsens every size by it (sizes × scale, growth^scale, layers / scale).
+  static MeridianSizes for_thickness(double h, double scale = 1);
+};
 
-// The Green tensor of the point reading at the base on the axis (σ_z and σ_x, green/halfspace.hpp's
-// GreenSample conventions) for a unit force on the top at offset (x, y) from the axis, 1/mm²: mode 0 gives
-// the σ_z reading's adjoint (g_zz, g_xz), mode 1 the σ_x reading's (g_zx, g_xx). The side r = radius is
-// traction-free.
+// The region 0 ≤ r ≤ radius, 0 ≤ z ≤ top(r): radial node rows at the sizes' spacing (stretched to end at
+// radius), z = top(r)·τ. Mid-edge nodes follow the map, so those on the top lie on it exactly.
+MeridianMesh meridian_mesh(const std::function<double(double)>& top, double radius,
+                           const MeridianSizes& sizes);
+
+// The Green tensor of the base reading on the axis (σ_z and σ_x, green/halfspace.hpp's GreenSample
+// conventions) for a unit force on the top at offset (x, y) from the axis, 1/mm²: mode 0 gives the σ_z
+// reading's adjoint (g_zz, g_xz), mode 1 the σ_x reading's (g_zx, g_xx). Two readings: the point value at the
+// axis and the mean over the sensor disc of radius disc_radius about it (0: the point reading only). The side
+// r = radius is traction-free or held (u = 0).
 class MeridianGreen {
  public:
-  MeridianGreen(const MeridianMesh& mesh, double nu);
-  // Offsets beyond the meridian's radius are clamped to it.
-  green::GreenSample at(double x, double y) const;
-  double zz(double rho) const { return interpolate(zz_, rho); }
+  MeridianGreen(const MeridianMesh& mesh, double nu, SideCondition side = SideCondition::free,
+                double disc_radius = 0);
+  // The point force's map; offsets beyond the meridian's radius are clamped to it.
+  green::GreenSample at(double x, double y, bool disc = false) const;
+  // A unit load centred at offset (x, y), spread as `load` over radius `radius` (green/fe_green.hpp's
+  // load_rule, as FeGreen::at).
+  green::GreenSample at(bool disc, double x, double y, green::LayerLoad load, double radius) const;
   int dofs() const { return dofs_; }  // both modes' free DOFs
+  struct Cost {
+    double assemble_s = 0, factor_s = 0, solve_s = 0;  // both modes
+  };
+  const Cost& cost() const { return cost_; }
 
  private:
   // Quadratic along the top's edges, as the solution.
   double interpolate(const std::vector<double>& f, double rho) const;
-  std::vector<double> r_;                       // top nodes by increasing r
-  std::vector<double> zz_, u0_, w1_, u1_, v1_;  // g_zz; mode 0 U; mode 1 W, U, V at those nodes
+  struct Maps {
+    std::vector<double> zz, u0, w1, u1, v1;  // g_zz; mode 0 U; mode 1 W, U, V at the top nodes
+  };
+  std::vector<double> r_;  // top nodes by increasing r
+  Maps maps_[2];           // point reading, disc reading
+  bool has_disc_ = false;
   int dofs_ = 0;
+  Cost cost_;
 };
 
 }  // namespace skinfem

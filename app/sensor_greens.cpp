@@ -1,0 +1,110 @@
+#include "app/sensor_greens.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "app/common.hpp"
+
+namespace skinfem::app {
+
+SensorGreens sensor_greens(const Scene& scene, const AdjointSetup& setup) {
+  SensorGreens g;
+  g.path = "3d";
+  g.model = "the meshed 3D skin";
+  const green::FeGreen& fe = *setup.fe;
+  g.at = [&fe](int s, bool disc, double ox, double oy, green::LayerLoad load, double radius) {
+    return fe.at(s, disc, ox, oy, load, radius);
+  };
+  for (const auto& pos : scene.sensors.positions) {
+    g.thickness.push_back(thickness_at(scene, setup.mesh, pos));
+    g.scan_half_width.push_back(scan_half_width(scene, &setup.mesh, g.thickness.back(), pos));
+  }
+  g.dofs = setup.model->solver().free_dofs();
+  g.adjoint_solves = fe.adjoint_solves();
+  g.max_adjoint_residual = fe.max_adjoint_residual();
+  g.wall = setup.wall;
+  return g;
+}
+
+std::string meridian_unavailable(const Scene& scene) {
+  const Geometry& g = scene.geometry;
+  if (g.kind == GeometryKind::surface) return "an imported surface is not known to be a body of revolution";
+  if (g.ridges.present()) return "the ridged top is not a body of revolution";
+  if (g.kind == GeometryKind::flat) return "";
+  if (!g.cap.spherical()) return "the ellipsoidal cap (R_y ≠ R) is not a body of revolution";
+  for (size_t i = 0; i < scene.sensors.positions.size(); ++i) {
+    const Vec2& p = scene.sensors.positions[i];
+    if (std::hypot(p[0] - g.cap.apex_x, p[1] - g.cap.apex_y) > 1e-9) {
+      char buf[200];
+      std::snprintf(buf, sizeof buf, "sensor %zu at (%g, %g) mm is off the cap's axis at (%g, %g) mm", i + 1,
+                    p[0], p[1], g.cap.apex_x, g.cap.apex_y);
+      return buf;
+    }
+  }
+  return "";
+}
+
+namespace {
+// A flat scene stands for the unbounded layer (what kfit compares it with): its meridian reaches 20 h, where
+// the side's influence on the readings, exp(−0.739 r/h) (README, Truncation), is below 1e-6.
+constexpr double kUnboundedRadiusOverH = 20;
+
+struct MeridianPair {
+  MeridianGreen fine, coarse;
+};
+}  // namespace
+
+SensorGreens meridian_sensor_greens(const Scene& scene) {
+  if (const std::string why = meridian_unavailable(scene); !why.empty())
+    throw SceneError(scene.source_path + ": the meridian (axisymmetric) path does not apply: " + why +
+                     "; use the 3D path");
+  const Geometry& geo = scene.geometry;
+  const bool flat = geo.kind == GeometryKind::flat;
+  const double h = flat ? geo.flat.h : geo.cap.h, R = geo.cap.R;
+  const double radius = flat ? kUnboundedRadiusOverH * h : geo.cap.truncation_radius;
+  const std::function<double(double)> top = [&](double r) {
+    return flat ? h : h - R + std::sqrt(R * R - r * r);
+  };
+  // The unbounded layer's side is far enough not to matter; a cap's is the scene's.
+  const SideCondition side = flat ? SideCondition::free : geo.side;
+  const double disc = 0.5 * scene.sensors.disc_diameter;
+  SensorGreens g;
+  g.path = "meridian";
+  char model[300];
+  if (flat)
+    std::snprintf(model, sizeof model,
+                  "the unbounded layer h = %.4g mm (meridian radius %.4g mm = %.0f h, traction-free there)",
+                  h, radius, kUnboundedRadiusOverH);
+  else
+    std::snprintf(model, sizeof model,
+                  "the spherical cap R = %.4g mm, h = %.4g mm on its meridian to r = %.4g mm", R, h, radius);
+  g.model = model;
+  Stopwatch clock;
+  const MeridianMesh mesh = meridian_mesh(top, radius, MeridianSizes::for_thickness(h)),
+                     coarse = meridian_mesh(top, radius, MeridianSizes::for_thickness(h, 2));
+  g.wall["mesh"] = clock.seconds();
+  auto pair = std::make_shared<const MeridianPair>(
+      MeridianPair{MeridianGreen(mesh, scene.material.nu, side, disc),
+                   MeridianGreen(coarse, scene.material.nu, side, disc)});
+  const MeridianGreen::Cost& c = pair->fine.cost();
+  const MeridianGreen::Cost& cc = pair->coarse.cost();
+  g.wall["assemble"] = c.assemble_s + cc.assemble_s;
+  g.wall["factor"] = c.factor_s + cc.factor_s;
+  g.wall["adjoint_solves"] = c.solve_s + cc.solve_s;
+  g.at = [m = &pair->fine](int, bool d, double ox, double oy, green::LayerLoad load, double a) {
+    return m->at(d, ox, oy, load, a);
+  };
+  g.coarse_at = [m = &pair->coarse](int, bool d, double ox, double oy, green::LayerLoad load, double a) {
+    return m->at(d, ox, oy, load, a);
+  };
+  g.owner = pair;
+  g.dofs = pair->fine.dofs();
+  g.adjoint_solves = 4;  // two modes, two readings each, in one block solve per mode
+  for (const auto& pos : scene.sensors.positions) {
+    g.thickness.push_back(h);
+    g.scan_half_width.push_back(scan_half_width(scene, nullptr, h, pos));
+  }
+  return g;
+}
+
+}  // namespace skinfem::app

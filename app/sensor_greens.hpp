@@ -1,0 +1,46 @@
+// The Green tensors of a scene's sensors as the calibration stages read them, from whichever path computed
+// them: the 3D body (green/fe_green.hpp, every scene) or the meridian (green/meridian.hpp, sensors on the
+// axis of a body of revolution: two 2D solves instead of one 3D one).
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "app/adjoint_setup.hpp"
+#include "green/meridian.hpp"
+
+namespace skinfem::app {
+
+enum class GreenPath { automatic, full3d, meridian };
+
+struct SensorGreens {
+  // g_ab (1/mm²) of `sensor` for a unit load centred at offset (ox, oy) from it, spread as `load` over
+  // radius; disc: the sensor's disc mean, else its centre value.
+  using At = std::function<green::GreenSample(int sensor, bool disc, double ox, double oy,
+                                              green::LayerLoad load, double radius)>;
+  std::string path;   // "3d" or "meridian"
+  std::string model;  // what was solved, one sentence
+  At at;
+  // Meridian only: the same at half the resolution (every size doubled), whose change bounds the error.
+  At coarse_at;
+  std::vector<double> thickness, scan_half_width;  // per sensor, mm
+  int dofs = 0, adjoint_solves = 0;
+  double max_adjoint_residual = 0;
+  nlohmann::json wall;                // seconds: mesh, assemble, factor, adjoint_solves
+  std::shared_ptr<const void> owner;  // keeps the meridian solutions alive
+};
+
+// The 3D path on an adjoint setup, which must outlive the result.
+SensorGreens sensor_greens(const Scene& scene, const AdjointSetup& setup);
+
+// Why the meridian path cannot serve the scene (a sentence naming what breaks the symmetry); empty when it
+// can: a flat layer without ridges (read as the unbounded layer of its thickness) or a spherical cap without
+// ridges with every sensor at its apex.
+std::string meridian_unavailable(const Scene& scene);
+// The meridian path; throws SceneError (with meridian_unavailable's reason) where it does not apply.
+SensorGreens meridian_sensor_greens(const Scene& scene);
+
+}  // namespace skinfem::app

@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# kfit's two Green tensor paths (app/sensor_greens.hpp):
+# - the flat layer goes the meridian way by default and gives k_central and k_lsq_line within 1e-4 of the exact
+#   layer (measured 6e-6 and 5e-5; tests/green/test_meridian's convergence study), with the change from half
+#   resolution, which bounds that error, reported beside them;
+# - on a cap's apex sensor the meridian and the 3D path (`--path 3d`) agree within the 3D mesh's error (the
+#   meridian at these settings is 100× more accurate: test_meridian), and each says which path ran;
+# - `--path meridian` where it does not apply (sensors off the cap's axis) is a one-line error naming the
+#   sensor, exit 2 (as all bad input), nothing written.
+set -u
+skinfem=$1
+root=$(cd "$(dirname "$0")/../.." && pwd)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cat >"$tmp/apex.json" <<'JSON'
+{"geometry": {"type": "cap", "R": 20.0, "h": 3.0, "apex": [0.0, 0.0], "truncation_radius": 6.0},
+ "material": {"E": 3.0, "nu": 0.5},
+ "sensors": {"positions": [[0.0, 0.0]], "disc_diameter": 0.2},
+ "mesh": {"h_min": 0.3, "growth": 1.5, "h_max": 1.2},
+ "loads": {"punches": [{"center": [0.0, 0.0], "diameter": 0.5, "force": 1.0}]},
+ "calibration": {"punch_diameter": 0.5, "spacing": 0.1}}
+JSON
+fail=0
+for run in "flat $root/scenes/flat_layer.json auto" "apex $tmp/apex.json auto" "apex3d $tmp/apex.json 3d"; do
+  set -- $run
+  if ! "$skinfem" kfit "$2" --path "$3" --out "$tmp/$1" >"$tmp/$1.out" 2>"$tmp/err"; then
+    echo "FAIL kfit $run:"; cat "$tmp/err"; fail=1
+  fi
+done
+[ $fail -eq 0 ] || exit 1
+grep -q "meridian path" "$tmp/flat.out" || { echo "FAIL flat: stdout does not name the meridian path"; exit 1; }
+grep -q "3d path" "$tmp/apex3d.out" || { echo "FAIL apex3d: stdout does not name the 3d path"; exit 1; }
+
+"$skinfem" kfit "$root/scenes/candelier2011.json" --path meridian --out "$tmp/offaxis" >/dev/null 2>"$tmp/err"
+code=$?
+msg=$(cat "$tmp/err")
+if [ $code -ne 2 ] || [ "$(wc -l <"$tmp/err")" -ne 1 ] || [[ "$msg" != *"sensor 1 at"*"off the cap's axis"* ]] ||
+  [ -e "$tmp/offaxis" ]; then
+  echo "FAIL --path meridian on candelier2011: exit $code, message: $msg"; exit 1
+fi
+
+/usr/bin/python3 - "$tmp" <<'PY'
+import json, os, sys
+t = sys.argv[1]
+load = lambda n: json.load(open(os.path.join(t, n, "kfit.json")))
+flat, apex, apex3d = load("flat"), load("apex"), load("apex3d")
+bad = []
+for name, d, want in (("flat", flat, "meridian"), ("apex", apex, "meridian"), ("apex3d", apex3d, "3d")):
+    if d["path"] != want: bad.append(f"{name}: path {d['path']}, expected {want}")
+s = flat["sensors"][0]
+for q in ("k_central", "k_lsq_line"):
+    err, change = s[q + "_rel_error"], s[q + "_change_from_half_resolution"]
+    print(f"flat layer, meridian: {q} {s[q]:.6f} against the exact {s[q + '_exact']:.6f} ({err:+.1e}); change from "
+          f"half resolution {change:+.1e}")
+    if not abs(err) < 1e-4: bad.append(f"flat {q}: {err:+.2e} from the exact layer, more than 1e-4")
+    if not abs(err) <= abs(change): bad.append(f"flat {q}: error {err:+.2e} not bounded by the change {change:+.2e}")
+# The 3D error on this cap at h_min 0.3 mm: 3.1e-3 of peak for g_zz (test_meridian, 57k DOFs); 1 % bounds it.
+a, b = apex["sensors"][0], apex3d["sensors"][0]
+for q in ("k_central", "k_lsq_line"):
+    rel = b[q] / a[q] - 1
+    print(f"cap apex: {q} meridian {a[q]:.5f}, 3d {b[q]:.5f} ({rel:+.2e})")
+    if not abs(rel) < 0.01: bad.append(f"cap apex {q}: 3d {b[q]} vs meridian {a[q]}: {rel:+.2e}")
+for b_ in bad: print("FAIL", b_)
+sys.exit(1 if bad else 0)
+PY
