@@ -20,7 +20,8 @@ struct AdjointSetup {
   nlohmann::json wall;
 };
 
-// skin: an already factored skin of this scene, or null to mesh and factor one.
+// skin: an already factored skin of this scene, or null to mesh and factor one (its half y ≥ 0 where the
+// scene is mirror-symmetric: app/symmetry.hpp).
 std::unique_ptr<AdjointSetup> adjoint_setup(const Scene& scene, std::shared_ptr<Skin> skin = nullptr);
 
 // Skin thickness above a base point (fem/face_index.hpp skin_thickness); a point with no skin above it is a

@@ -11,7 +11,8 @@
 //                uniform weight in x, with g_half the Boussinesq value at depth h.
 // The Green tensor comes from adjoint solves (reciprocity): on the meridian where the skin is a body of
 // revolution with every sensor on its axis (app/sensor_greens.hpp; --path auto, the default), else on the 3D
-// mesh; flat scenes are also compared with the exact layer solution (Hankel transforms). Writes DIR/kfit.json.
+// mesh; flat scenes are also compared with the exact layer solution (Hankel transforms). Writes
+// DIR/kfit.json.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

@@ -10,7 +10,8 @@ namespace skinfem::app {
 SensorGreens sensor_greens(const Scene& scene, const AdjointSetup& setup) {
   SensorGreens g;
   g.path = "3d";
-  g.model = "the meshed 3D skin";
+  g.model = is_half_y(setup.mesh) ? "the meshed 3D skin, its half y >= 0 (mirror symmetry about y = 0)"
+                                  : "the meshed 3D skin";
   const green::FeGreen& fe = *setup.fe;
   g.at = [&fe](int s, bool disc, double ox, double oy, green::LayerLoad load, double radius) {
     return fe.at(s, disc, ox, oy, load, radius);

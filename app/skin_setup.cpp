@@ -7,11 +7,11 @@
 
 namespace skinfem::app {
 
-std::shared_ptr<Skin> skin_setup(const Scene& scene) {
+std::shared_ptr<Skin> skin_setup(const Scene& scene, MeshPart part) {
   Stopwatch clock;
   check_resources(scene, g_max_dofs);
-  progress("meshing " + scene.name);
-  TetMesh mesh = build_mesh(scene);
+  progress("meshing " + scene.name + (part == MeshPart::half_y ? " (the half y >= 0: mirror symmetry)" : ""));
+  TetMesh mesh = build_mesh(scene, part);
   check_sensors_on_skin(scene, mesh);
   return factored_skin(scene, std::move(mesh), clock.seconds());
 }

@@ -45,6 +45,11 @@ ElasticModel::ElasticModel(const TetMesh& mesh, const Material& material, SideCo
   for (int i = 0; i < n; ++i)
     if (mesh.node_marker(i) & held)
       for (int c = 0; c < 3; ++c) fixed_[3 * i + c] = support_[3 * i + c] = true;
+  // A half mesh's cut y = 0: the mirror-symmetric solution has u_y = 0 there and no shear across it. The
+  // constraint takes no reaction of its own (support_ stays false): it is the other half's pull, not a
+  // support.
+  for (int i = 0; i < n; ++i)
+    if (mesh.node_marker(i) & kSymmetry) fixed_[3 * i + 1] = true;
   for (const auto& p : punches) {
     punch_nodes_.push_back(punch_nodes(mesh, p));
     for (int i : punch_nodes_.back()) fixed_[3 * i + 2] = true;

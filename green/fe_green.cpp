@@ -37,6 +37,9 @@ FeGreen::FeGreen(const ElasticModel& model, const Sensors& sensors,
       for (char reading : {'z', 'x'})
         W.col(4 * s + 2 * disc + (reading == 'x')) = -functional(
             sensors.positions[s][0], sensors.positions[s][1], disc ? sensors.disc_diameter : 0.0, reading);
+  // On a half mesh a force at (x, y) stands for itself and its mirror image at (x, −y) (or, on the cut, for
+  // twice the half it carries): the reading per unit force is half the half model's.
+  if (is_half_y(m)) W *= 0.5;
   if (progress) progress("adjoint solves: " + std::to_string(4 * ns) + " readings as one block");
   const Eigen::MatrixXd Y =
       model.solver().solve_block(Eigen::MatrixXd::Zero(W.rows(), W.cols()), W, &max_residual_);
@@ -49,19 +52,21 @@ const Eigen::VectorXd& FeGreen::adjoint(int sensor, char reading, bool disc) con
 
 Eigen::Vector3d FeGreen::displacement_at_top(const Eigen::VectorXd& y, double x, double yy) const {
   double s, t;
-  const int f = top_.find(x, yy, s, t);
+  const bool mirrored = yy < 0 && is_half_y(model_.mesh());
+  const int f = top_.find(x, mirrored ? -yy : yy, s, t);
   if (f < 0)
     throw std::out_of_range("load point (" + std::to_string(x) + ", " + std::to_string(yy) +
                             ") is off the top");
   const auto N = triangle_shape(s, t);
   Eigen::Vector3d v = Eigen::Vector3d::Zero();
   for (int k = 0; k < 6; ++k) v += N[k] * y.segment<3>(3 * model_.mesh().faces(f, k));
+  if (mirrored) v.y() = -v.y();
   return v;
 }
 
 bool FeGreen::disc_map_at(int sensor, double x, double y, GreenSample& g) const {
   double s, t;
-  const int f = top_.find(x, y, s, t);
+  const int f = top_.find(x, y < 0 && is_half_y(model_.mesh()) ? -y : y, s, t);  // g_zz … g_xx are even in y
   if (f < 0) return false;
   const auto N = triangle_shape(s, t);
   Eigen::Vector3d vz = Eigen::Vector3d::Zero(), vx = Eigen::Vector3d::Zero();

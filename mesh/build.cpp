@@ -79,6 +79,7 @@ void snap_to_surface(LinearTets& lin, const SkinShape& shape) {
       const Vec3 q = shape.on_side({lin.points(i, 0), lin.points(i, 1), lin.points(i, 2)});
       lin.points.row(i) << q[0], q[1], q[2];
     }
+    if (marker(i) & kSymmetry) lin.points(i, 1) = 0;  // TetGen's points on the cut, to round-off
     if (marker(i) & kTop) lin.points(i, 2) = shape.top_z(lin.points(i, 0), lin.points(i, 1));
   }
 }
@@ -101,17 +102,19 @@ void straighten_folded_elements(TetMesh& m) {
   }
 }
 
-TetMesh build_mesh(const Scene& scene) {
+TetMesh build_mesh(const Scene& scene, MeshPart part) {
   const SizingField size(scene);
   const bool generated = scene.geometry.kind != GeometryKind::surface;
+  if (!generated && part != MeshPart::whole) throw MeshError("an imported skin is meshed whole");
   const SurfaceMesh surface =
-      generated ? layer_surface(scene, size) : import_surface(scene.geometry.surface.path);
+      generated ? layer_surface(scene, size, part) : import_surface(scene.geometry.surface.path);
   const FacetPolicy facets = !generated                        ? FacetPolicy::keep
                              : scene.geometry.ridges.present() ? FacetPolicy::preserve
                                                                : FacetPolicy::merge;
   LinearTets lin = tetrahedralize(surface, size, scene.mesh, facets);
   if (generated) snap_to_surface(lin, SkinShape(scene.geometry));
   TetMesh mesh = make_quadratic(lin.points, lin.tets, lin.faces, lin.face_marker, scene.geometry);
+  mesh.part = part;
   straighten_folded_elements(mesh);
   check_no_inverted_element(mesh);
   return mesh;

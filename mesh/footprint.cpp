@@ -116,6 +116,64 @@ std::vector<Vec2> square_loop(double w, const Size2d& size) {
   return loop;
 }
 
+std::vector<Vec2> half_circle_loop(const Vec2& centre, double radius, const Size2d& size) {
+  std::vector<double> theta{0.0};
+  while (theta.back() < M_PI) {
+    const double t = theta.back();
+    theta.push_back(t + size(centre[0] + radius * std::cos(t), centre[1] + radius * std::sin(t)) / radius);
+  }
+  const size_t n = std::max<size_t>(theta.size() - 1, 4);  // no coarser than half an octagon
+  std::vector<Vec2> loop{{centre[0] + radius, centre[1]}};
+  for (size_t i = 1; i < n; ++i) {
+    const double t = n == theta.size() - 1 ? theta[i] * M_PI / theta.back() : M_PI * i / n;
+    loop.push_back({centre[0] + radius * std::cos(t), centre[1] + radius * std::sin(t)});
+  }
+  // The cut, from (−radius, 0) (included) to (+radius, 0) (the loop's start, excluded).
+  append_graded_edge({centre[0] - radius, centre[1]}, {centre[0] + radius, centre[1]}, size, loop);
+  return loop;
+}
+
+std::vector<Vec2> half_square_loop(double w, const Size2d& size) {
+  const Vec2 corners[4] = {{-w, 0}, {w, 0}, {w, w}, {-w, w}};
+  std::vector<Vec2> loop;
+  for (int i = 0; i < 4; ++i) append_graded_edge(corners[i], corners[(i + 1) % 4], size, loop);
+  return loop;
+}
+
+RowMatrixX3i triangulate_polygon(const std::vector<Vec2>& loop) {
+  CDT cdt;
+  std::map<CDT::Vertex_handle, int> index;
+  std::vector<CDT::Vertex_handle> vh;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    vh.push_back(cdt.insert(K::Point_2(loop[i][0], loop[i][1])));
+    index[vh.back()] = static_cast<int>(i);
+  }
+  if (index.size() != loop.size()) throw std::runtime_error("triangulate_polygon: repeated points");
+  for (size_t i = 0; i < vh.size(); ++i) cdt.insert_constraint(vh[i], vh[(i + 1) % vh.size()]);
+  if (cdt.number_of_vertices() != loop.size())
+    throw std::runtime_error("triangulate_polygon: the polygon's edges cross");
+  // Inside = reached from the infinite faces across an odd number of constrained edges (flood fill).
+  std::map<CDT::Face_handle, int> depth;
+  std::vector<CDT::Face_handle> frontier{cdt.infinite_face()};
+  depth[cdt.infinite_face()] = 0;
+  for (size_t k = 0; k < frontier.size(); ++k) {
+    const auto f = frontier[k];
+    for (int e = 0; e < 3; ++e) {
+      const auto g = f->neighbor(e);
+      if (depth.count(g)) continue;
+      depth[g] = depth[f] + (cdt.is_constrained({f, e}) ? 1 : 0);
+      frontier.push_back(g);
+    }
+  }
+  std::vector<std::array<int, 3>> tris;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if (depth.at(f) % 2 == 1)
+      tris.push_back({index.at(f->vertex(0)), index.at(f->vertex(1)), index.at(f->vertex(2))});
+  RowMatrixX3i out(tris.size(), 3);
+  for (size_t i = 0; i < tris.size(); ++i) out.row(i) << tris[i][0], tris[i][1], tris[i][2];
+  return out;
+}
+
 Footprint mesh_footprint(const std::vector<Vec2>& loop, const Size2d& size,
                          const std::vector<Circle>& circles) {
   CDT cdt;

@@ -33,5 +33,13 @@ Footprint mesh_footprint(const std::vector<Vec2>& loop, const Size2d& size,
 // Boundary loops that follow the sizing field: a circle (cap) and a square (flat).
 std::vector<Vec2> circle_loop(const Vec2& centre, double radius, const Size2d& size);
 std::vector<Vec2> square_loop(double half_width, const Size2d& size);
+// Their halves y ≥ centre y (a mirror-symmetric scene's meshed part): the arc or the three sides, then the
+// cut along y = centre y, counter-clockwise.
+std::vector<Vec2> half_circle_loop(const Vec2& centre, double radius, const Size2d& size);
+std::vector<Vec2> half_square_loop(double half_width, const Size2d& size);
+
+// The constrained Delaunay triangulation of a simple polygon with no point added (its edges are shared
+// with other faces): triangles as indices into `loop`, counter-clockwise.
+RowMatrixX3i triangulate_polygon(const std::vector<Vec2>& loop);
 
 }  // namespace skinfem

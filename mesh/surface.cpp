@@ -158,9 +158,11 @@ namespace {
 Footprint face_footprint(const SkinShape& shape, const std::vector<Vec2>& loop, const Size2d& size,
                          const std::vector<Circle>& circles) {
   Footprint fp = mesh_footprint(loop, size, circles);
-  // Refinement splits boundary chords at their midpoints; put those vertices back on the circle.
+  // Refinement splits boundary chords at their midpoints; put those vertices back on the circle (not those
+  // on a half mesh's straight cut: all there have y = 0 exactly).
   if (shape.kind() == GeometryKind::cap) {
     for (int b : fp.boundary) {
+      if (fp.points(b, 1) == 0.0) continue;
       const Vec3 p = shape.on_side({fp.points(b, 0), fp.points(b, 1), 0.0});
       fp.points.row(b) << p[0], p[1];
     }
@@ -186,17 +188,25 @@ bool align_rim(Footprint& base, const Footprint& top) {
 }
 }  // namespace
 
-SurfaceMesh layer_surface(const Scene& scene, const SizingField& size) {
+SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart part) {
   const Geometry& geometry = scene.geometry;
   const SkinShape shape(geometry);
+  const bool half = part == MeshPart::half_y;
   const Vec2 centre =
       geometry.kind == GeometryKind::cap ? Vec2{geometry.cap.apex_x, geometry.cap.apex_y} : Vec2{0, 0};
+  if (half && centre[1] != 0.0) throw MeshError("a half mesh (y >= 0) needs the skin's axis on y = 0");
   const Size2d top_size = [&](double x, double y) { return size(x, y); };
-  const auto loop = geometry.kind == GeometryKind::cap
-                        ? circle_loop(centre, geometry.cap.truncation_radius, top_size)
-                        : square_loop(geometry.flat.half_width, top_size);
+  const double rim =
+      geometry.kind == GeometryKind::cap ? geometry.cap.truncation_radius : geometry.flat.half_width;
+  const auto loop =
+      geometry.kind == GeometryKind::cap
+          ? (half ? half_circle_loop(centre, rim, top_size) : circle_loop(centre, rim, top_size))
+          : (half ? half_square_loop(rim, top_size) : square_loop(rim, top_size));
+  // A half mesh keeps only the punch outlines wholly inside it: the commands that mesh a half (green, kfit)
+  // load no punch.
   std::vector<Circle> circles;
-  for (const auto& p : scene.loads.punches) circles.push_back({p.center, 0.5 * p.diameter});
+  for (const auto& p : scene.loads.punches)
+    if (!half || p.center[1] - 0.5 * p.diameter > 0) circles.push_back({p.center, 0.5 * p.diameter});
   // The base gets its own, coarser triangulation when contact regions grade with depth. The side band needs
   // both rims to be the same points; refinement splits rim chords differently on each face, so each face
   // is remeshed on the other's rim until they agree (else the base takes the top's triangulation).
@@ -263,8 +273,10 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size) {
       s.marker(f++) = kTop | (inside_circle(top, a, b, c, circles) ? kKeepOutline : 0);
     }
   }
-  for (int k = 0; k < nb; ++k)
-    for (int j = 0; j < layers; ++j) {  // counter-clockwise rim × up = outward
+  const auto on_cut = [&](int k) { return half && top.points(top.boundary[k % nb], 1) == 0.0; };
+  for (int k = 0; k < nb; ++k) {
+    if (on_cut(k) && on_cut(k + 1)) continue;  // the cut is the symmetry face, below
+    for (int j = 0; j < layers; ++j) {         // counter-clockwise rim × up = outward
       const int p0 = side_vertex(k, j), p1 = side_vertex(k + 1, j), p2 = side_vertex(k + 1, j + 1),
                 p3 = side_vertex(k, j + 1);
       s.triangles.row(f) << p0, p1, p2;
@@ -272,6 +284,46 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size) {
       s.triangles.row(f) << p0, p2, p3;
       s.marker(f++) = kSide;
     }
+  }
+  if (half) {
+    // The cut y = 0 as one polygon in (x, z): base points by increasing x, up the side at the far end, top
+    // points back, down the side at the near end. Counter-clockwise in (x, z) is an outward normal −y.
+    std::vector<int> cut;  // boundary positions on the cut, by increasing x
+    for (int k = 0; k < nb; ++k)
+      if (on_cut(k)) cut.push_back(k);
+    std::sort(cut.begin(), cut.end(),
+              [&](int a, int b) { return top.points(top.boundary[a], 0) < top.points(top.boundary[b], 0); });
+    std::vector<int> poly;
+    for (int k : cut) poly.push_back(side_vertex(k, 0));
+    for (int j = 1; j < layers; ++j) poly.push_back(side_vertex(cut.back(), j));
+    for (auto it = cut.rbegin(); it != cut.rend(); ++it) poly.push_back(side_vertex(*it, layers));
+    for (int j = layers - 1; j >= 1; --j) poly.push_back(side_vertex(cut.front(), j));
+    std::vector<Vec2> xz;
+    for (int v : poly) xz.push_back({s.vertices(v, 0), s.vertices(v, 2)});
+    const RowMatrixX3i tris = triangulate_polygon(xz);
+    s.triangles.conservativeResize(f + tris.rows(), 3);
+    s.marker.conservativeResize(f + tris.rows());
+    for (int t = 0; t < tris.rows(); ++t) {
+      s.triangles.row(f) << poly[tris(t, 0)], poly[tris(t, 1)], poly[tris(t, 2)];
+      s.marker(f++) = kSymmetry;
+    }
+    // Side-band points above the cut's inner points belong to no face: drop them.
+    std::vector<int> to(s.vertices.rows(), -1);
+    int n = 0;
+    for (int t = 0; t < f; ++t)
+      for (int c = 0; c < 3; ++c)
+        if (to[s.triangles(t, c)] < 0) to[s.triangles(t, c)] = 0;
+    RowMatrixX3d kept(s.vertices.rows(), 3);
+    for (int v = 0; v < s.vertices.rows(); ++v)
+      if (to[v] == 0) kept.row(n) = s.vertices.row(v), to[v] = n++;
+    s.vertices = kept.topRows(n);
+    s.triangles.conservativeResize(f, 3);
+    s.marker.conservativeResize(f);
+    for (int t = 0; t < f; ++t)
+      for (int c = 0; c < 3; ++c) s.triangles(t, c) = to[s.triangles(t, c)];
+  }
+  s.triangles.conservativeResize(f, 3);
+  s.marker.conservativeResize(f);
   check_watertight(s, "generated layer surface");
   return s;
 }

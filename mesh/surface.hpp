@@ -19,7 +19,7 @@ struct MeshError : std::runtime_error {
 // Cap or flat layer: a graded footprint triangulation lifted to the exact top (z = s(x, y)) and the
 // base (z = 0), joined by a side band of vertical quads split in two. The triangulation follows the
 // edge of every punch, so that a rigid punch holds exactly its disc.
-SurfaceMesh layer_surface(const Scene& scene, const SizingField& size);
+SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart part = MeshPart::whole);
 
 // Reads a closed surface (STL ASCII or binary, OBJ, OFF; mm): points with equal coordinates are merged and
 // faces are oriented like their neighbours, then outward. Faces lying on z = 0 (all three vertices within

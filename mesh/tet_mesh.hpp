@@ -7,9 +7,13 @@
 namespace skinfem {
 
 // Boundary parts; a face carries exactly one, a node the OR of those of its faces.
-enum BoundaryMarker : int { kBase = 1, kTop = 2, kSide = 4 };
+// kSymmetry: the cut y = 0 of a mirror-symmetric scene meshed as its half y ≥ 0 (MeshPart::half_y).
+enum BoundaryMarker : int { kBase = 1, kTop = 2, kSide = 4, kSymmetry = 16 };
 // Extra bit on SurfaceMesh markers only: a region whose outline TetGen must keep (a punch disc).
 inline constexpr int kKeepOutline = 8;
+
+// What of the skin is meshed: all of it, or the half y ≥ 0 of a scene symmetric about the plane y = 0.
+enum class MeshPart { whole, half_y };
 
 using RowMatrixX3d = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 using RowMatrixX3i = Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor>;
@@ -22,17 +26,22 @@ using RowMatrixX10i = Eigen::Matrix<int, Eigen::Dynamic, 10, Eigen::RowMajor>;
 // Vertices (corner nodes) are numbered first, 0 … num_vertices−1, so they double as P1 indices.
 // Mid-edge nodes on a curved boundary lie on the exact surface (isoparametric P2 geometry).
 struct TetMesh {
-  RowMatrixX3d nodes;           // N×3, mm
-  int num_vertices = 0;         // corner nodes are nodes.row(0 … num_vertices−1)
-  RowMatrixX10i tets;           // E×10, positively oriented (det J > 0)
-  RowMatrixX6i faces;           // F×6 boundary triangles, outward normal (right-hand rule)
-  Eigen::VectorXi face_marker;  // F: one BoundaryMarker
-  Eigen::VectorXi node_marker;  // N: OR of BoundaryMarker of the faces touching the node, 0 inside
-  int straightened = 0;         // elements given straight edges because curving folded them (mesh/build.hpp)
+  RowMatrixX3d nodes;               // N×3, mm
+  int num_vertices = 0;             // corner nodes are nodes.row(0 … num_vertices−1)
+  RowMatrixX10i tets;               // E×10, positively oriented (det J > 0)
+  RowMatrixX6i faces;               // F×6 boundary triangles, outward normal (right-hand rule)
+  Eigen::VectorXi face_marker;      // F: one BoundaryMarker
+  Eigen::VectorXi node_marker;      // N: OR of BoundaryMarker of the faces touching the node, 0 inside
+  MeshPart part = MeshPart::whole;  // half_y: the cut y = 0 is marked kSymmetry
+  int straightened = 0;  // elements given straight edges because curving folded them (mesh/build.hpp)
 
   int num_nodes() const { return static_cast<int>(nodes.rows()); }
   int num_tets() const { return static_cast<int>(tets.rows()); }
 };
+
+// Whether the mesh is the half y ≥ 0 of a mirror-symmetric skin (it has a kSymmetry cut). Fields on it are
+// the symmetric ones: at (x, −y), u_x, u_z and the base traction's x, z components are those at (x, y).
+inline bool is_half_y(const TetMesh& m) { return m.part == MeshPart::half_y; }
 
 // A closed triangulated boundary surface, outward oriented (input to tetrahedralization).
 struct SurfaceMesh {

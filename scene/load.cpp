@@ -19,6 +19,8 @@
 //   loads*        {"punches"*: [{"center", "diameter", "force" | "displacement"}],
 //                  "patches"*: [{"center", "diameter", "direction": [x, y, z], "force"}]}
 //   calibration*  {"punch_diameter"*, "scan_half_width"*, "spacing"*}
+//   symmetry*     "auto" (default): mesh only the half y >= 0 where the scene is mirror-symmetric about y = 0
+//                 and the command supports it (app/symmetry.hpp) | "none": always the whole skin
 //   contact*      {"indenter": {"type": "plane"} | {"type": "sphere", "R": <mm, > 0>, "center": [x, y]},
 //                  "force": <N> | "depth": <mm>,     exactly one, > 0: total normal force, or rigid approach
 //                                                    from first touch
@@ -808,7 +810,9 @@ void check_contact_zone(const Reader& r, const json& j, const Scene& scene) {
 Scene parse_scene(const std::string& json_text, const std::string& source_path) {
   const Reader r(source_path.empty() ? std::string("<scene>") : source_path);
   const json root = parse_json(json_text, r);
-  r.object(root, "", {"name", "geometry", "material", "sensors", "mesh", "loads", "calibration", "contact"});
+  r.object(
+      root, "",
+      {"name", "geometry", "material", "sensors", "mesh", "loads", "calibration", "contact", "symmetry"});
 
   Scene scene;
   scene.source_path = source_path;
@@ -818,6 +822,14 @@ Scene parse_scene(const std::string& json_text, const std::string& source_path) 
     scene.name = r.string(*name, "name", "a non-empty string");
 
   scene.geometry = read_geometry(r, r.need(root, "", "geometry", "an object"), source.parent_path());
+  if (const json* sym = Reader::find(root, "symmetry")) {
+    if (*sym == "auto")
+      scene.symmetry = SymmetryUse::automatic;
+    else if (*sym == "none")
+      scene.symmetry = SymmetryUse::none;
+    else
+      r.fail("symmetry", *sym, R"(must be "auto" or "none")");
+  }
   scene.material = read_material(r, r.need(root, "", "material", "an object {\"E\", \"nu\"}"));
   std::vector<SensorSource> sources;
   scene.sensors = read_sensors(r, r.need(root, "", "sensors", "an object"), sources);

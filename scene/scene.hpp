@@ -193,6 +193,9 @@ struct ContactLoad {
   std::optional<HoleSweep> sweep;
 };
 
+// Whether a mirror-symmetric scene may be solved on its half (app/symmetry.hpp decides where it applies).
+enum class SymmetryUse { automatic, none };
+
 struct Scene {
   std::string name;
   std::string source_path;  // the JSON file this came from (empty if built in code)
@@ -203,6 +206,7 @@ struct Scene {
   Loads loads;
   Calibration calibration;
   std::optional<ContactLoad> contact;
+  SymmetryUse symmetry = SymmetryUse::automatic;
 };
 
 // Thrown for any invalid scene; what() is one line naming the JSON path, the value and what is allowed.

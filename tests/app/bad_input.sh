@@ -62,6 +62,7 @@ bad unknown_geometry 'd["geometry"]["radius"] = 1' 'geometry.radius: unknown key
 bad unknown_material 'd["material"]["colour"] = 1' 'material.colour: unknown key'
 bad unknown_sensors 'd["sensors"]["pitch"] = 1' 'sensors.pitch: unknown key'
 bad unknown_mesh 'd["mesh"]["order"] = 2' 'mesh.order: unknown key'
+bad symmetry_word 'd["symmetry"] = "mirror"' 'symmetry = "mirror": must be "auto" or "none"'
 bad unknown_punch "$punch[\"depth\"] = 1" 'loads.punches\[0\].depth: unknown key'
 bad unknown_calibration 'd["calibration"]["k"] = 1.48' 'calibration.k: unknown key'
 bad unknown_contact 'd["contact"] = {"indenter": {"type": "sphere", "R": 50, "center": [0, 0]}, "force": 0.1, "glue": 1}' 'contact.glue: unknown key'

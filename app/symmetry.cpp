@@ -1,0 +1,27 @@
+#include "app/symmetry.hpp"
+
+#include <cstdio>
+
+namespace skinfem::app {
+
+std::string mirror_unavailable(const Scene& scene) {
+  const Geometry& g = scene.geometry;
+  if (g.kind == GeometryKind::surface) return "an imported surface is not known to be symmetric";
+  if (g.ridges.present()) return "ridged tops are meshed whole";
+  if (g.kind == GeometryKind::cap && g.cap.apex_y != 0) return "the cap's apex is off y = 0";
+  for (size_t i = 0; i < scene.sensors.positions.size(); ++i)
+    if (scene.sensors.positions[i][1] != 0) {
+      char buf[120];
+      std::snprintf(buf, sizeof buf, "sensor %zu is off y = 0 (y = %g mm)", i + 1,
+                    scene.sensors.positions[i][1]);
+      return buf;
+    }
+  return "";
+}
+
+MeshPart green_mesh_part(const Scene& scene) {
+  return scene.symmetry == SymmetryUse::automatic && mirror_unavailable(scene).empty() ? MeshPart::half_y
+                                                                                       : MeshPart::whole;
+}
+
+}  // namespace skinfem::app

@@ -1,0 +1,22 @@
+// Mirror symmetry about the plane y = 0: which scenes the Green tensor commands (green, kfit's 3D path) solve
+// on their half y ≥ 0 (mesh/build.hpp's MeshPart::half_y, u_y = 0 on the cut).
+//
+// The reduction needs every sensor reading (σ_z, σ_x) and every load the command applies to be mirror-
+// symmetric: the skin symmetric about y = 0 (a generated flat layer, or a cap whose apex lies on y = 0; no
+// ridges), every sensor on y = 0 (its disc then symmetric too) and the calibration scan along x through the
+// sensors (always). Contact, the hole sweep and `solve` still mesh the whole skin.
+#pragma once
+
+#include <string>
+
+#include "mesh/tet_mesh.hpp"
+#include "scene/scene.hpp"
+
+namespace skinfem::app {
+
+// Why the scene is not mirror-symmetric about y = 0 (a sentence naming what breaks it), or empty when it is.
+std::string mirror_unavailable(const Scene& scene);
+// half_y when the scene allows it ("symmetry": "auto", the default) and is symmetric; else whole.
+MeshPart green_mesh_part(const Scene& scene);
+
+}  // namespace skinfem::app

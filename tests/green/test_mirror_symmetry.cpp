@@ -1,0 +1,68 @@
+// The mirror-symmetric reduction (MeshPart::half_y): the half model, with u_y = 0 on its cut and a force
+// standing for itself and its mirror image, against the full body solved on the half's mirrored mesh
+// (mesh/mirror.hpp) — a second method on the same elements, so the two agree to round-off.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "fem/elastic_model.hpp"
+#include "green/calibration.hpp"
+#include "green/fe_green.hpp"
+#include "mesh/build.hpp"
+#include "mesh/mirror.hpp"
+
+namespace skinfem {
+namespace {
+
+Scene small_cap() {
+  Scene s;
+  s.geometry.kind = GeometryKind::cap;
+  s.geometry.cap = {20.0, 3.0, 0.5, 0.0, 6.0};  // apex off the origin along x: the axis lies in y = 0
+  s.sensors.positions = {{0.5, 0.0}, {-1.5, 0.0}, {2.0, 0.0}};
+  s.sensors.disc_diameter = 0.2;
+  s.mesh.h_min = 0.4, s.mesh.growth = 1.5, s.mesh.h_max = 1.5;
+  return s;
+}
+
+TEST(MirrorSymmetry, HalfModelEqualsTheMirroredWholeForEveryReading) {
+  const Scene s = small_cap();
+  const TetMesh half = build_mesh(s, MeshPart::half_y);
+  const TetMesh whole = mirror_half(half);
+  ASSERT_TRUE(is_half_y(half));
+  ASSERT_FALSE(is_half_y(whole));
+  for (int i = 0; i < half.num_nodes(); ++i) {
+    if (half.node_marker(i) & kSymmetry) {
+      ASSERT_EQ(half.nodes(i, 1), 0.0) << "node " << i << " off the cut";
+    }
+  }
+  for (auto side : {SideCondition::free, SideCondition::fixed}) {
+    const ElasticModel reduced(half, s.material, side, {}), full(whole, s.material, side, {});
+    const green::FeGreen gh(reduced, s.sensors), gw(full, s.sensors);
+    std::printf("side %s: half %d DOFs, whole %d DOFs\n", side == SideCondition::free ? "free" : "fixed",
+                reduced.solver().free_dofs(), full.solver().free_dofs());
+    EXPECT_LT(reduced.solver().free_dofs(), 0.6 * full.solver().free_dofs());
+    double worst = 0;
+    for (int k = 0; k < 3; ++k)
+      for (bool disc : {false, true})
+        for (auto load : {green::LayerLoad::point, green::LayerLoad::punch}) {
+          // Offsets on both sides of the cut and on it, every component against its peak over the set.
+          std::vector<green::GreenSample> a, b;
+          for (auto [ox, oy] :
+               {std::pair{0.0, 0.0}, {0.7, 0.4}, {-1.1, -0.6}, {1.3, -1.2}, {0.3, 0.0}, {-0.4, 1.7}}) {
+            a.push_back(gh.at(k, disc, ox, oy, load, 0.25));
+            b.push_back(gw.at(k, disc, ox, oy, load, 0.25));
+          }
+          const auto err = green::max_error_over_peak(a, b);
+          worst = std::max(worst, *std::max_element(err.begin(), err.end()));
+        }
+    std::printf("  max |half − whole| / peak over 3 sensors, point and disc, point and punch loads: %.2e\n",
+                worst);
+    // Round-off of two direct solves (MUMPS LDLᵀ, residual checked at 1e-10 relative).
+    EXPECT_LT(worst, 1e-9);
+  }
+}
+
+}  // namespace
+}  // namespace skinfem
