@@ -1,5 +1,6 @@
 // Time per stage against DOFs: the flat layer (scenes/flat_layer.json) and the paper's cap
-// (scenes/candelier2011.json) with every mesh size scaled by 2.83, 2 and 1.41 (flat) or 2 and 1.41 (cap).
+// (scenes/candelier2011.json) with every mesh size scaled by 2.83, 2 and 1.41 (flat) or 2 and 1.41 (cap),
+// and the meridian solver of kfit's axisymmetric path on the flat layer.
 // Each benchmark reports its DOFs as a counter, so bench/exponents.py can fit time ∝ DOFs^e per stage.
 //
 //   $ build/bench/skinfem_bench --benchmark_format=json > bench.json && bench/exponents.py bench.json
@@ -14,6 +15,7 @@
 #include "green/calibration.hpp"
 #include "green/fe_green.hpp"
 #include "green/kfit.hpp"
+#include "green/meridian.hpp"
 #include "mesh/build.hpp"
 #include "scene/load.hpp"
 
@@ -103,6 +105,28 @@ void BM_GreenScan(benchmark::State& st) {
                                                  k.scene.calibration.spacing));
   dofs(st, k);
 }
+
+// kfit's meridian path on the flat layer (green/meridian): mesh, assemble, factor and block-solve both Fourier
+// modes (point and disc readings) at MeridianSizes::for_thickness(h, scale), scale 2, 1.41, 1 (the default).
+void BM_MeridianGreen(benchmark::State& st) {
+  const double h = 3.04, s = st.range(0) / 100.0;
+  int n = 0;
+  for (auto _ : st) {
+    const MeridianGreen g(meridian_mesh([&](double) { return h; }, 20 * h, MeridianSizes::for_thickness(h, s)),
+                          0.5, SideCondition::free, 0.1);
+    n = g.dofs();
+  }
+  st.counters["dofs"] = n;
+  st.SetLabel("meridian_flat x" + std::to_string(s).substr(0, 4));
+}
+BENCHMARK(BM_MeridianGreen)
+    ->Arg(200)
+    ->Arg(141)
+    ->Arg(100)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(2)
+    ->ReportAggregatesOnly(false);
 
 // (scene, scale × 100): flat at 2.83, 2, 1.41; the cap at 2, 1.41.
 void levels(benchmark::internal::Benchmark* b) {

@@ -5,7 +5,8 @@
 # Tolerance 0.25 %: a study on this scene at DX = 0.1, 0.05, 0.025 mm gave errors 0.26 %, 0.064 %, 0.022 % for
 # σ_z (second order down to the FE load quadrature's 0.02–0.04 % floor); 0.25 % is 4× the DX = 0.05 error.
 # Also: the HDF5 attributes (units, convention, sensor positions), the VTI arrays, and a too-fine grid
-# refused before meshing.
+# refused before meshing. The scene is meshed whole ("symmetry": "none") so that green and solve share one mesh;
+# the half mesh's kernel equals the whole body's to round-off (tests/green/test_mirror_symmetry.cpp).
 set -u
 skinfem=$(realpath "$1")
 readme=$(realpath "$(dirname "$0")/../../README.md")
@@ -13,7 +14,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cd "$tmp"
 cat >scene.json <<'JSON'
-{"name": "kernel_layer",
+{"name": "kernel_layer", "symmetry": "none",
  "geometry": {"type": "flat", "h": 3.0, "half_width": 8.0},
  "material": {"E": 3.0, "nu": 0.5},
  "sensors": {"positions": [[0.0, 0.0], [1.5, 0.0]], "disc_diameter": 0.2},
