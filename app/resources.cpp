@@ -15,7 +15,8 @@ double estimated_memory_gb(double dofs) { return 19e3 * dofs * std::max(1.0, std
 
 double available_memory_gb() { return available_memory_mb() / 1024; }
 
-MeshEstimate check_resources(const Scene& scene, double max_dofs) {
+MeshEstimate check_resources(const Scene& scene, double max_dofs, MeshPart part) {
+  const double share = part == MeshPart::half_y ? 0.55 : 1.0;
   const double avail = available_memory_gb();
   // Stop integrating once the estimate is past every limit: the answer is already "no".
   double limit_dofs = max_dofs > 0 ? max_dofs : 1e12;
@@ -26,8 +27,9 @@ MeshEstimate check_resources(const Scene& scene, double max_dofs) {
         break;
       }
   const double stop = 2 * limit_dofs / 4.3;
-  const MeshEstimate e = estimate_mesh(scene, stop);
+  MeshEstimate e = estimate_mesh(scene, stop / share);
   if (!e.known) return e;
+  e.tets *= share, e.dofs *= share;
   const char* about = e.tets > stop ? "at least" : "about";
   const double gb = estimated_memory_gb(e.dofs);
   char buf[512];

@@ -9,7 +9,7 @@ namespace skinfem::app {
 
 std::shared_ptr<Skin> skin_setup(const Scene& scene, MeshPart part) {
   Stopwatch clock;
-  check_resources(scene, g_max_dofs);
+  check_resources(scene, g_max_dofs, part);
   progress("meshing " + scene.name + (part == MeshPart::half_y ? " (the half y >= 0: mirror symmetry)" : ""));
   TetMesh mesh = build_mesh(scene, part);
   check_sensors_on_skin(scene, mesh);

@@ -106,14 +106,16 @@ void BM_GreenScan(benchmark::State& st) {
   dofs(st, k);
 }
 
-// kfit's meridian path on the flat layer (green/meridian): mesh, assemble, factor and block-solve both Fourier
-// modes (point and disc readings) at MeridianSizes::for_thickness(h, scale), scale 2, 1.41, 1 (the default).
+// kfit's meridian path on the flat layer (green/meridian): mesh, assemble, factor and block-solve both
+// Fourier modes (point and disc readings) at MeridianSizes::for_thickness(h, scale), scale 2, 1.41, 1 (the
+// default).
 void BM_MeridianGreen(benchmark::State& st) {
   const double h = 3.04, s = st.range(0) / 100.0;
   int n = 0;
   for (auto _ : st) {
-    const MeridianGreen g(meridian_mesh([&](double) { return h; }, 20 * h, MeridianSizes::for_thickness(h, s)),
-                          0.5, SideCondition::free, 0.1);
+    const MeridianGreen g(
+        meridian_mesh([&](double) { return h; }, 20 * h, MeridianSizes::for_thickness(h, s)), 0.5,
+        SideCondition::free, 0.1);
     n = g.dofs();
   }
   st.counters["dofs"] = n;

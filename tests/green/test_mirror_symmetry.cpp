@@ -68,8 +68,10 @@ TEST(MirrorSymmetry, HalfModelEqualsTheMirroredWholeForEveryReading) {
       const auto err = green::max_error_over_peak(a, b);
       worst = std::max(worst, *std::max_element(err.begin(), err.end()));
     }
-    std::printf("  max |half − whole| / peak over 3 sensors, point and disc, point and punch loads, kernel maps: %.2e\n",
-                worst);
+    std::printf(
+        "  max |half − whole| / peak over 3 sensors, point and disc, point and punch loads, kernel maps: "
+        "%.2e\n",
+        worst);
     // Round-off of two direct solves (MUMPS LDLᵀ, residual checked at 1e-10 relative).
     EXPECT_LT(worst, 1e-9);
   }
