@@ -26,6 +26,7 @@
 #include "green/calibration.hpp"
 #include "green/kernel_grid.hpp"
 #include "mesh/mirror.hpp"
+#include "mesh/shape.hpp"
 #include "mesh/surface.hpp"
 #include "mesh/vtu.hpp"
 
@@ -64,35 +65,72 @@ void check_kernel_grid(const Scene& scene, double dx) {
   }
 }
 
+// The top of an axisymmetric skin as a polar P2 surface about (cx, cy) out to `radius`, for the meridian
+// path's maps: rings growing geometrically from the centre, 72 angles.
+TetMesh polar_top(const Scene& scene, double cx, double cy, double radius) {
+  const SkinShape shape(scene.geometry);
+  constexpr int n = 60, m = 72;   // rings, angles
+  const auto ring = [&](int i) {  // i in 0 … 2n: vertex rings at even i, mid-edge rings at odd i
+    const auto r = [&](int k) { return radius * std::expm1(3.0 * k / n) / std::expm1(3.0); };
+    return i % 2 == 0 ? r(i / 2) : 0.5 * (r(i / 2) + r(i / 2 + 1));
+  };
+  TetMesh t;
+  const auto id = [&](int i, int j) { return i == 0 ? 0 : 1 + (i - 1) * 2 * m + (j % (2 * m)); };
+  t.nodes.resize(1 + 2 * n * 2 * m, 3);
+  for (int i = 0; i <= 2 * n; ++i)
+    for (int j = 0; j < (i == 0 ? 1 : 2 * m); ++j) {
+      const double r = ring(i), th = M_PI * j / m, x = cx + r * std::cos(th), y = cy + r * std::sin(th);
+      t.nodes.row(id(i, j)) << x, y, shape.top_z(x, y);
+    }
+  std::vector<std::array<int, 6>> faces;
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < m; ++b) {
+      const int i = 2 * a, j = 2 * b;
+      if (a == 0) {
+        faces.push_back({id(0, 0), id(2, j), id(2, j + 2), id(1, j), id(2, j + 1), id(1, j + 2)});
+        continue;
+      }
+      faces.push_back(
+          {id(i, j), id(i + 2, j), id(i + 2, j + 2), id(i + 1, j), id(i + 2, j + 1), id(i + 1, j + 1)});
+      faces.push_back(
+          {id(i, j), id(i + 2, j + 2), id(i, j + 2), id(i + 1, j + 1), id(i + 1, j + 2), id(i, j + 1)});
+    }
+  t.faces.resize(faces.size(), 6);
+  for (size_t f = 0; f < faces.size(); ++f)
+    for (int k = 0; k < 6; ++k) t.faces(f, k) = faces[f][k];
+  t.face_marker = Eigen::VectorXi::Constant(faces.size(), kTop);
+  t.node_marker = Eigen::VectorXi::Constant(t.nodes.rows(), kTop);
+  return t;
+}
+
 }  // namespace
 
-nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const std::string& out_dir,
-                           double grid_dx) {
+nlohmann::json green_stage(const Scene& scene, const SensorGreens& greens, const AdjointSetup* setup,
+                           const std::string& out_dir, double grid_dx) {
   using green::GreenSample;
   using green::LayerLoad;
   const double radius = 0.5 * scene.calibration.punch_diameter;
   Stopwatch clock;
-  const TetMesh& mesh = setup.mesh;
-  const ElasticModel& model = *setup.model;
-  const green::FeGreen& fe = *setup.fe;
-  nlohmann::json wall = setup.wall;
+  nlohmann::json wall = greens.wall;
 
-  // Reciprocity check: a direct solve with a point force at 1 mm from sensor 1 against the adjoint value. On
-  // a half mesh the force lies on the cut, where the half carries half of it.
+  // The 3D path's reciprocity check: a direct solve with a point force at 1 mm from sensor 1 against the
+  // adjoint value. On a half mesh the force lies on the cut, where the half carries half of it.
+  double reciprocity_rel = 0;
+  const bool half = setup && is_half_y(setup->mesh);
+  if (setup) {
+    clock = Stopwatch();
+    const auto& s0 = scene.sensors.positions[0];
+    const ElasticModel& model = *setup->model;
+    const LoadCaseResult direct =
+        model.solve(model.point_load(s0[0] + 1.0, s0[1], {0, 0, half ? -0.5 : -1.0}), {});
+    const SensorReading direct_reading =
+        BaseTraction(setup->mesh, direct.reactions).disc_mean(s0[0], s0[1], scene.sensors.disc_diameter);
+    const GreenSample adjoint_value = greens.at(0, true, 1.0, 0.0, LayerLoad::point, 0);
+    reciprocity_rel = std::abs(direct_reading.sigma_z - adjoint_value.zz) / std::abs(direct_reading.sigma_z);
+    wall["reciprocity_check"] = clock.seconds();
+  }
+
   clock = Stopwatch();
-  const auto& s0 = scene.sensors.positions[0];
-  const bool half = is_half_y(mesh);
-  const LoadCaseResult direct =
-      model.solve(model.point_load(s0[0] + 1.0, s0[1], {0, 0, half ? -0.5 : -1.0}), {});
-  const SensorReading direct_reading =
-      BaseTraction(mesh, direct.reactions).disc_mean(s0[0], s0[1], scene.sensors.disc_diameter);
-  const GreenSample adjoint_value = fe.at(0, true, 1.0, 0.0, LayerLoad::point, 0);
-  const double reciprocity_rel =
-      std::abs(direct_reading.sigma_z - adjoint_value.zz) / std::abs(direct_reading.sigma_z);
-  wall["reciprocity_check"] = clock.seconds();
-
-  clock = Stopwatch();
-
   const bool flat = scene.geometry.kind == GeometryKind::flat;
   std::ostringstream csv;
   csv.precision(10);
@@ -102,10 +140,11 @@ nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const 
   const int ns = static_cast<int>(scene.sensors.positions.size());
   for (int s = 0; s < ns; ++s) {
     progress_step("green: calibration scans", s, ns, clock.seconds());
-    const auto& pos = scene.sensors.positions[s];
-    const double h = thickness_at(scene, mesh, pos);
-    const auto prof = green::scan_profile(fe, s, LayerLoad::punch, radius,
-                                          scan_half_width(scene, &mesh, h, pos), scene.calibration.spacing);
+    const double h = greens.thickness[s];
+    const auto prof =
+        green::scan_profile([&](bool disc, double ox, double oy, LayerLoad l,
+                                double a) { return greens.at(s, disc, ox, oy, l, a); },
+                            LayerLoad::punch, radius, greens.scan_half_width[s], scene.calibration.spacing);
     std::vector<GreenSample> exact, exact_disc;
     if (flat) {
       const green::LayerGreen layer(h, scene.material.nu, LayerLoad::punch, radius);
@@ -131,22 +170,36 @@ nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const 
   }
   wall["profiles"] = clock.seconds();
 
-  // Maps: the disc reading of each sensor for a unit point force at every top-surface node; a half mesh's
-  // maps are written on the whole top, each node's value that of the node it mirrors (g is even in y).
+  // Maps: the disc reading of each sensor for a unit point force at every top-surface node. 3D: the mesh's
+  // top (a half mesh's written whole, each node's value that of the node it mirrors: g is even in y); the
+  // meridian: a polar surface over the footprint.
   std::vector<int> source;
-  const TetMesh whole = half ? mirror_half(mesh, &source) : TetMesh{};
-  const TetMesh& shown = half ? whole : mesh;
+  TetMesh shown;
+  if (!setup) {
+    const Geometry& g = scene.geometry;
+    shown = flat ? polar_top(scene, 0, 0, g.flat.half_width)
+                 : polar_top(scene, g.cap.apex_x, g.cap.apex_y, g.cap.truncation_radius);
+  } else if (half) {
+    shown = mirror_half(setup->mesh, &source);
+  }
+  const TetMesh& top = setup && !half ? setup->mesh : shown;
   std::vector<DataArray> maps;
   for (size_t s = 0; s < scene.sensors.positions.size(); ++s)
     for (auto c : green::kComponents) {
       const char force = green::component_name(c)[0], reading = green::component_name(c)[1];
-      const Eigen::VectorXd& y = fe.adjoint(s, reading, true);
       char name[64];
       std::snprintf(name, sizeof name, "g_%s_sensor%02zu_per_mm2", green::component_name(c), s + 1);
-      DataArray a{name, 1, std::vector<double>(shown.num_nodes(), 0.0)};
-      for (int j = 0; j < shown.num_nodes(); ++j) {
-        const int i = half ? source[j] : j;
-        a.values[j] = force == 'z' ? -y[3 * i + 2] : y[3 * i];
+      DataArray a{name, 1, std::vector<double>(top.num_nodes(), 0.0)};
+      for (int j = 0; j < top.num_nodes(); ++j) {
+        if (setup) {
+          const Eigen::VectorXd& y = setup->fe->adjoint(s, reading, true);
+          const int i = half ? source[j] : j;
+          a.values[j] = force == 'z' ? -y[3 * i + 2] : y[3 * i];
+        } else {
+          GreenSample v;
+          greens.disc_map(static_cast<int>(s), top.nodes(j, 0), top.nodes(j, 1), v);
+          a.values[j] = green::component(v, c);
+        }
       }
       maps.push_back(std::move(a));
     }
@@ -154,29 +207,33 @@ nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const 
   if (grid_dx > 0) {
     clock = Stopwatch();
     const auto box = footprint_box(scene);
-    grid = green::kernel_grid(fe, scene.sensors, box[0], box[1], box[2], box[3], grid_dx);
+    grid = green::kernel_grid(greens.disc_map, scene.sensors, box[0], box[1], box[2], box[3], grid_dx);
     wall["kernel_grid"] = clock.seconds();
   }
   prepare_output_dir(out_dir);
   write_text_atomic(out_dir + "/green.csv", csv.str());
-  write_surface_vtp(out_dir + "/green_maps.vtp", shown, kTop, maps);
+  write_surface_vtp(out_dir + "/green_maps.vtp", top, kTop, maps);
   if (grid_dx > 0) {
     green::write_kernel_h5(out_dir + "/kernel.h5", grid, scene.name);
     green::write_kernel_vti(out_dir + "/kernel.vti", grid);
   }
   nlohmann::json summary = {
       {"scene", scene_json(scene)},
-      {"dofs", model.solver().free_dofs()},
-      {"mesh_part", half ? "half y >= 0 (mirror symmetry about y = 0)" : "whole"},
+      {"path", greens.path},
+      {"path_model", greens.model},
+      {"dofs", greens.dofs},
       {"sensors", per_sensor},
-      {"adjoint_solves", fe.adjoint_solves()},
-      {"max_adjoint_residual", fe.max_adjoint_residual()},
-      {"reciprocity_check_rel", reciprocity_rel},
+      {"adjoint_solves", greens.adjoint_solves},
       {"load_model", "rigid-punch half-space profile F/(2πa√(a²−r²)), normal and tangential"},
       {"punch_diameter_mm", scene.calibration.punch_diameter},
       {"wall_s", wall},
       {"wall_total_s", total_seconds(wall)},
       {"peak_rss_mb", peak_rss_mb()}};
+  if (setup) {
+    summary["mesh_part"] = half ? "half y >= 0 (mirror symmetry about y = 0)" : "whole";
+    summary["max_adjoint_residual"] = greens.max_adjoint_residual;
+    summary["reciprocity_check_rel"] = reciprocity_rel;
+  }
   if (grid_dx > 0)
     summary["kernel_grid"] = {{"spacing_mm", grid_dx},
                               {"nx", grid.x.size()},
@@ -186,14 +243,21 @@ nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const 
                               {"points_on_skin", std::count(grid.on_skin.begin(), grid.on_skin.end(), 1)}};
   write_json(out_dir + "/summary.json", summary);
   std::printf(
-      "green %s: %zu sensors × 4 components, %d adjoint solves on %d DOFs%s; %.1f s (factor %.1f s), peak "
-      "%.0f "
-      "MB\n",
-      scene.name.c_str(), scene.sensors.positions.size(), fe.adjoint_solves(), model.solver().free_dofs(),
-      half ? " (the half y >= 0: mirror symmetry)" : "", total_seconds(wall), wall["factor"].get<double>(),
-      peak_rss_mb());
-  std::printf("  reciprocity check (direct solve vs adjoint, sensor 1, offset 1 mm): %.1e relative\n",
-              reciprocity_rel);
+      "green %s: %zu sensors × 4 components, %s path (%s): %d adjoint solves on %d DOFs; %.1f s (factor "
+      "%.1f s), peak %.0f MB\n",
+      scene.name.c_str(), scene.sensors.positions.size(), greens.path.c_str(), greens.model.c_str(),
+      greens.adjoint_solves, greens.dofs, total_seconds(wall), wall["factor"].get<double>(), peak_rss_mb());
+  if (setup)
+    std::printf("  reciprocity check (direct solve vs adjoint, sensor 1, offset 1 mm): %.1e relative\n",
+                reciprocity_rel);
+  if (flat) {
+    double worst = 0;
+    for (const auto& js : per_sensor)
+      for (const auto& [c, e] : js["fe_vs_exact_max_err_over_peak"].items())
+        worst = std::max(worst, e.get<double>());
+    if (!scene.geometry.ridges.present())
+      std::printf("  disc readings against the exact layer: max |difference| / peak %.1e\n", worst);
+  }
   if (grid_dx > 0)
     std::printf("  kernel grid: %zu × %zu points at %g mm over x [%g, %g], y [%g, %g] mm (%ld on the skin)\n",
                 grid.x.size(), grid.y.size(), grid_dx, grid.x.front(), grid.x.back(), grid.y.front(),
@@ -203,10 +267,15 @@ nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const 
   return summary;
 }
 
-int run_green(const Scene& scene, const std::string& out_dir, double grid_dx) {
+int run_green(const Scene& scene, const std::string& out_dir, double grid_dx, GreenPath path) {
   check_output_dir(out_dir);
   if (grid_dx > 0) check_kernel_grid(scene, grid_dx);
-  green_stage(scene, *adjoint_setup(scene), out_dir, grid_dx);
+  if (path == GreenPath::meridian || (path == GreenPath::automatic && meridian_unavailable(scene).empty())) {
+    green_stage(scene, meridian_sensor_greens(scene), nullptr, out_dir, grid_dx);
+  } else {
+    const auto setup = adjoint_setup(scene);
+    green_stage(scene, sensor_greens(scene, *setup), setup.get(), out_dir, grid_dx);
+  }
   return 0;
 }
 

@@ -12,7 +12,7 @@ namespace skinfem::app {
 
 int run_mesh(const Scene& scene, const std::string& out_dir);
 int run_solve(const Scene& scene, const std::string& out_dir, SolverKind solver);
-int run_green(const Scene& scene, const std::string& out_dir, double grid_dx);
+int run_green(const Scene& scene, const std::string& out_dir, double grid_dx, GreenPath path);
 int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& load, GreenPath path);
 int run_contact(const Scene& scene, const std::string& out_dir, const std::string& friction);
 int run_defect(const Scene& scene, const std::string& out_dir);

@@ -47,12 +47,6 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"punch", "point"}))
       ->capture_default_str();
   std::string path_name = "auto";
-  kfit->add_option(
-          "--path", path_name,
-          "Green tensor solver: meridian (2D axisymmetric; flat layers and a cap's apex sensor), 3d, or "
-          "auto (the meridian where it applies)")
-      ->check(CLI::IsMember({"auto", "3d", "meridian"}))
-      ->capture_default_str();
   auto* green_cmd =
       cli.add_subcommand("green", "FE Green tensors of every sensor (green.csv, green_maps.vtp)");
   double grid_dx = 0;
@@ -62,6 +56,13 @@ int main(int argc, char** argv) {
           "also each sensor's kernel on a regular grid of this spacing (mm) over the top: kernel.h5, "
           "kernel.vti")
       ->check(CLI::PositiveNumber);
+  for (auto* sub : {kfit, green_cmd})
+    sub->add_option(
+           "--path", path_name,
+           "Green tensor solver: meridian (2D axisymmetric; flat layers and a cap's apex sensor), 3d, "
+           "or auto (the meridian where it applies)")
+        ->check(CLI::IsMember({"auto", "3d", "meridian"}))
+        ->capture_default_str();
   auto* contact_cmd = cli.add_subcommand(
       "contact",
       "rigid indenter in contact with the skin (pressure.vtp, fields.vtu, sensors.csv, summary.json)");
@@ -117,10 +118,10 @@ int main(int argc, char** argv) {
     const auto solver =
         solver_name == "schur_cg" ? skinfem::SolverKind::schur_cg : skinfem::SolverKind::direct_ldlt;
     if (solve->parsed()) return skinfem::app::run_solve(scene, out_dir, solver);
-    if (green_cmd->parsed()) return skinfem::app::run_green(scene, out_dir, grid_dx);
     const auto path = path_name == "3d"         ? skinfem::app::GreenPath::full3d
                       : path_name == "meridian" ? skinfem::app::GreenPath::meridian
                                                 : skinfem::app::GreenPath::automatic;
+    if (green_cmd->parsed()) return skinfem::app::run_green(scene, out_dir, grid_dx, path);
     if (kfit->parsed()) return skinfem::app::run_kfit(scene, out_dir, load_name, path);
     if (contact_cmd->parsed()) return skinfem::app::run_contact(scene, out_dir, friction);
     if (defect->parsed()) return skinfem::app::run_defect(scene, out_dir);

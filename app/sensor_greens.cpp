@@ -16,6 +16,7 @@ SensorGreens sensor_greens(const Scene& scene, const AdjointSetup& setup) {
   g.at = [&fe](int s, bool disc, double ox, double oy, green::LayerLoad load, double radius) {
     return fe.at(s, disc, ox, oy, load, radius);
   };
+  g.disc_map = [&fe](int s, double x, double y, green::GreenSample& v) { return fe.disc_map_at(s, x, y, v); };
   for (const auto& pos : scene.sensors.positions) {
     g.thickness.push_back(thickness_at(scene, setup.mesh, pos));
     g.scan_half_width.push_back(scan_half_width(scene, &setup.mesh, g.thickness.back(), pos));
@@ -97,6 +98,14 @@ SensorGreens meridian_sensor_greens(const Scene& scene) {
   };
   g.coarse_at = [m = &pair->coarse](int, bool d, double ox, double oy, green::LayerLoad load, double a) {
     return m->at(d, ox, oy, load, a);
+  };
+  // Where the skin is: the unbounded layer everywhere, a cap within its truncation radius.
+  g.disc_map = [m = &pair->fine, flat, radius, sensors = scene.sensors.positions,
+                apex = Vec2{geo.cap.apex_x, geo.cap.apex_y}](int s, double x, double y,
+                                                             green::GreenSample& v) {
+    if (!flat && std::hypot(x - apex[0], y - apex[1]) > radius) return false;
+    v = m->at(x - sensors[s][0], y - sensors[s][1], true);
+    return true;
   };
   g.owner = pair;
   g.dofs = pair->fine.dofs();

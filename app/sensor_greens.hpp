@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/adjoint_setup.hpp"
+#include "green/kernel_grid.hpp"
 #include "green/meridian.hpp"
 
 namespace skinfem::app {
@@ -26,6 +27,8 @@ struct SensorGreens {
   At at;
   // Meridian only: the same at half the resolution (every size doubled), whose change bounds the error.
   At coarse_at;
+  // The disc reading for a unit point force at an absolute top point (the kernel export).
+  green::DiscMap disc_map;
   std::vector<double> thickness, scan_half_width;  // per sensor, mm
   int dofs = 0, adjoint_solves = 0;
   double max_adjoint_residual = 0;

@@ -17,8 +17,9 @@ namespace skinfem::app {
 nlohmann::json mesh_stage(const Scene& scene, const TetMesh& mesh, double mesh_seconds,
                           const std::string& out_dir);
 // grid_dx > 0: also the kernel on that grid over the top (kernel.h5, kernel.vti; green/kernel_grid.hpp).
-nlohmann::json green_stage(const Scene& scene, const AdjointSetup& setup, const std::string& out_dir,
-                           double grid_dx = 0);
+// setup: the 3D path's adjoints (reciprocity check, maps on the mesh), or null for the meridian path.
+nlohmann::json green_stage(const Scene& scene, const SensorGreens& greens, const AdjointSetup* setup,
+                           const std::string& out_dir, double grid_dx = 0);
 nlohmann::json kfit_stage(const Scene& scene, const SensorGreens& greens, const std::string& out_dir,
                           const std::string& load_name);
 nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, const std::string& out_dir,

@@ -25,7 +25,7 @@ std::vector<double> grid_lines(double lo, double hi, double dx) {
   return v;
 }
 
-KernelGrid kernel_grid(const FeGreen& fe, const Sensors& sensors, double x_lo, double x_hi, double y_lo,
+KernelGrid kernel_grid(const DiscMap& map, const Sensors& sensors, double x_lo, double x_hi, double y_lo,
                        double y_hi, double dx) {
   KernelGrid grid;
   grid.x = grid_lines(x_lo, x_hi, dx);
@@ -42,7 +42,7 @@ KernelGrid kernel_grid(const FeGreen& fe, const Sensors& sensors, double x_lo, d
     for (size_t i = 0; i < nx; ++i)
       for (size_t s = 0; s < ns; ++s) {
         GreenSample g;
-        if (!fe.disc_map_at(static_cast<int>(s), grid.x[i], grid.y[j], g)) break;
+        if (!map(static_cast<int>(s), grid.x[i], grid.y[j], g)) break;
         grid.on_skin[j * nx + i] = 1;
         for (size_t c = 0; c < 4; ++c) grid.values[s][c][j * nx + i] = component(g, kComponents[c]);
       }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,9 +26,13 @@ struct KernelGrid {
   std::vector<std::array<std::vector<double>, 4>> values;
 };
 
-// Samples every sensor's disc-reading Green maps (FeGreen::adjoint) at the grid points over the box
-// [x_lo, x_hi] × [y_lo, y_hi] (mm) that lie on the skin's top.
-KernelGrid kernel_grid(const FeGreen& fe, const Sensors& sensors, double x_lo, double x_hi, double y_lo,
+// A sensor's disc reading for a unit point force at the top point above (x, y) (mm, absolute); false when no
+// skin lies there (FeGreen::disc_map_at).
+using DiscMap = std::function<bool(int sensor, double x, double y, GreenSample& g)>;
+
+// Samples every sensor's disc-reading Green maps at the grid points over the box [x_lo, x_hi] × [y_lo, y_hi]
+// (mm) that lie on the skin's top.
+KernelGrid kernel_grid(const DiscMap& map, const Sensors& sensors, double x_lo, double x_hi, double y_lo,
                        double y_hi, double dx);
 
 // One HDF5 file: datasets x_mm (nx), y_mm (ny), on_skin (ny×nx, uint8), sensorNN/g_<ab>_per_mm2 (ny×nx),

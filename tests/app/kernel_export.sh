@@ -5,8 +5,9 @@
 # Tolerance 0.25 %: a study on this scene at DX = 0.1, 0.05, 0.025 mm gave errors 0.26 %, 0.064 %, 0.022 % for
 # σ_z (second order down to the FE load quadrature's 0.02–0.04 % floor); 0.25 % is 4× the DX = 0.05 error.
 # Also: the HDF5 attributes (units, convention, sensor positions), the VTI arrays, and a too-fine grid
-# refused before meshing. The scene is meshed whole ("symmetry": "none") so that green and solve share one mesh;
-# the half mesh's kernel equals the whole body's to round-off (tests/green/test_mirror_symmetry.cpp).
+# refused before meshing. green takes the 3D path on the whole skin (`--path 3d`, "symmetry": "none") so that
+# green and solve share one mesh; the half mesh's kernel equals the whole body's to round-off
+# (tests/green/test_mirror_symmetry.cpp), the meridian path's is checked in tests/app/kfit_paths.sh.
 set -u
 skinfem=$(realpath "$1")
 readme=$(realpath "$(dirname "$0")/../../README.md")
@@ -22,7 +23,7 @@ cat >scene.json <<'JSON'
  "loads": {"patches": [{"center": [1.0, 0.0], "diameter": 1.0, "force": 0.01, "direction": [0, 0, -1]}]},
  "calibration": {"punch_diameter": 0.5, "spacing": 0.1}}
 JSON
-"$skinfem" green scene.json --grid 0.05 --out out/green >green.log 2>&1 || { echo "FAIL green --grid:"; cat green.log; exit 1; }
+"$skinfem" green scene.json --path 3d --grid 0.05 --out out/green >green.log 2>&1 || { echo "FAIL green --grid:"; cat green.log; exit 1; }
 "$skinfem" solve scene.json --out out/solve >solve.log 2>&1 || { echo "FAIL solve:"; cat solve.log; exit 1; }
 # The README's block after the kernel-snippet marker, exactly as a reader would copy it.
 awk '/<!-- kernel-snippet/ {on = 1; next} on && /^```python/ {inside = 1; next} inside && /^```/ {exit} inside' \

@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
-# kfit's two Green tensor paths (app/sensor_greens.hpp):
+# kfit's and green's two Green tensor paths (app/sensor_greens.hpp):
 # - the flat layer goes the meridian way by default and gives k_central and k_lsq_line within 1e-4 of the exact
 #   layer (measured 6e-6 and 5e-5; tests/green/test_meridian's convergence study), with the change from half
 #   resolution, which bounds that error, reported beside them;
 # - on a cap's apex sensor the meridian and the 3D path (`--path 3d`) agree within the 3D mesh's error (the
 #   meridian at these settings is 100× more accurate: test_meridian), and each says which path ran;
+# - green on the flat layer goes the meridian way too: its disc readings within 2e-4 of the exact layer's
+#   (measured 8e-5), its kernel grid and maps written;
 # - `--path meridian` where it does not apply (sensors off the cap's axis) is a one-line error naming the
 #   sensor, exit 2 (as all bad input), nothing written.
 set -u
@@ -27,7 +29,12 @@ for run in "flat $root/scenes/flat_layer.json auto" "apex $tmp/apex.json auto" "
     echo "FAIL kfit $run:"; cat "$tmp/err"; fail=1
   fi
 done
+"$skinfem" green "$root/scenes/flat_layer.json" --grid 1.0 --out "$tmp/green" >"$tmp/green.out" 2>"$tmp/err" ||
+  { echo "FAIL green flat_layer:"; cat "$tmp/err"; fail=1; }
 [ $fail -eq 0 ] || exit 1
+for f in green.csv green_maps.vtp kernel.h5 kernel.vti summary.json; do
+  [ -s "$tmp/green/$f" ] || { echo "FAIL green flat_layer: no $f"; exit 1; }
+done
 grep -q "meridian path" "$tmp/flat.out" || { echo "FAIL flat: stdout does not name the meridian path"; exit 1; }
 grep -q "3d path" "$tmp/apex3d.out" || { echo "FAIL apex3d: stdout does not name the 3d path"; exit 1; }
 
@@ -45,7 +52,9 @@ t = sys.argv[1]
 load = lambda n: json.load(open(os.path.join(t, n, "kfit.json")))
 flat, apex, apex3d = load("flat"), load("apex"), load("apex3d")
 bad = []
-for name, d, want in (("flat", flat, "meridian"), ("apex", apex, "meridian"), ("apex3d", apex3d, "3d")):
+green = json.load(open(os.path.join(t, "green", "summary.json")))
+for name, d, want in (("flat", flat, "meridian"), ("apex", apex, "meridian"), ("apex3d", apex3d, "3d"),
+                      ("green flat", green, "meridian")):
     if d["path"] != want: bad.append(f"{name}: path {d['path']}, expected {want}")
 s = flat["sensors"][0]
 for q in ("k_central", "k_lsq_line"):
@@ -54,6 +63,9 @@ for q in ("k_central", "k_lsq_line"):
           f"half resolution {change:+.1e}")
     if not abs(err) < 1e-4: bad.append(f"flat {q}: {err:+.2e} from the exact layer, more than 1e-4")
     if not abs(err) <= abs(change): bad.append(f"flat {q}: error {err:+.2e} not bounded by the change {change:+.2e}")
+for c, e in green["sensors"][0]["fe_vs_exact_max_err_over_peak"].items():
+    print(f"green flat layer, meridian: disc reading {c} max |difference| / peak {e:.1e}")
+    if not e < 2e-4: bad.append(f"green flat disc {c}: {e:.2e} of peak from the exact layer, more than 2e-4")
 # The 3D error on this cap at h_min 0.3 mm: 3.1e-3 of peak for g_zz (test_meridian, 57k DOFs); 1 % bounds it.
 a, b = apex["sensors"][0], apex3d["sensors"][0]
 for q in ("k_central", "k_lsq_line"):
