@@ -31,12 +31,11 @@ double thickness_at(const Scene& scene, const TetMesh& mesh, const Vec2& p) {
 void check_sensors_on_skin(const Scene& scene, const TetMesh& mesh) {
   const PlanarFaceIndex base(mesh, kBase);
   const double r = 0.5 * scene.sensors.disc_diameter;
-  const bool half = is_half_y(mesh);  // a disc's part at y < 0 is the mirror image of its part at y > 0
   for (size_t i = 0; i < scene.sensors.positions.size(); ++i) {
     const Vec2& p = scene.sensors.positions[i];
     double s, t;
     for (auto [dx, dy] : {std::pair{0.0, 0.0}, {r, 0.0}, {-r, 0.0}, {0.0, r}, {0.0, -r}})
-      if (base.find(p[0] + dx, half ? std::abs(p[1] + dy) : p[1] + dy, s, t) < 0)
+      if (base.find(p[0] + dx, p[1] + dy, s, t) < 0)
         throw SceneError(scene.source_path + ": sensors: sensor " + std::to_string(i + 1) + " at (" +
                          std::to_string(p[0]) + ", " + std::to_string(p[1]) + "): its disc (diameter " +
                          std::to_string(scene.sensors.disc_diameter) +

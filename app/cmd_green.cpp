@@ -141,10 +141,8 @@ nlohmann::json green_stage(const Scene& scene, const SensorGreens& greens, const
   for (int s = 0; s < ns; ++s) {
     progress_step("green: calibration scans", s, ns, clock.seconds());
     const double h = greens.thickness[s];
-    const auto prof =
-        green::scan_profile([&](bool disc, double ox, double oy, LayerLoad l,
-                                double a) { return greens.at(s, disc, ox, oy, l, a); },
-                            LayerLoad::punch, radius, greens.scan_half_width[s], scene.calibration.spacing);
+    const auto prof = green::scan_profile(greens.of(s), LayerLoad::punch, radius, greens.scan_half_width[s],
+                                          scene.calibration.spacing);
     std::vector<GreenSample> exact, exact_disc;
     if (flat) {
       const green::LayerGreen layer(h, scene.material.nu, LayerLoad::punch, radius);
@@ -184,25 +182,25 @@ nlohmann::json green_stage(const Scene& scene, const SensorGreens& greens, const
   }
   const TetMesh& top = setup && !half ? setup->mesh : shown;
   std::vector<DataArray> maps;
-  for (size_t s = 0; s < scene.sensors.positions.size(); ++s)
+  for (size_t s = 0; s < scene.sensors.positions.size(); ++s) {
+    std::vector<GreenSample> at_node(top.num_nodes());
+    for (int j = 0; j < top.num_nodes(); ++j) {
+      if (setup) {  // nodal values of the adjoints, as FeGreen::disc_map_at reads them
+        const Eigen::VectorXd &yz = setup->fe->adjoint(s, 'z', true), &yx = setup->fe->adjoint(s, 'x', true);
+        const int i = half ? source[j] : j;
+        at_node[j] = {-yz[3 * i + 2], -yx[3 * i + 2], yz[3 * i], yx[3 * i]};
+      } else {
+        greens.disc_map(static_cast<int>(s), top.nodes(j, 0), top.nodes(j, 1), at_node[j]);
+      }
+    }
     for (auto c : green::kComponents) {
-      const char force = green::component_name(c)[0], reading = green::component_name(c)[1];
       char name[64];
       std::snprintf(name, sizeof name, "g_%s_sensor%02zu_per_mm2", green::component_name(c), s + 1);
       DataArray a{name, 1, std::vector<double>(top.num_nodes(), 0.0)};
-      for (int j = 0; j < top.num_nodes(); ++j) {
-        if (setup) {
-          const Eigen::VectorXd& y = setup->fe->adjoint(s, reading, true);
-          const int i = half ? source[j] : j;
-          a.values[j] = force == 'z' ? -y[3 * i + 2] : y[3 * i];
-        } else {
-          GreenSample v;
-          greens.disc_map(static_cast<int>(s), top.nodes(j, 0), top.nodes(j, 1), v);
-          a.values[j] = green::component(v, c);
-        }
-      }
+      for (int j = 0; j < top.num_nodes(); ++j) a.values[j] = green::component(at_node[j], c);
       maps.push_back(std::move(a));
     }
+  }
   green::KernelGrid grid;
   if (grid_dx > 0) {
     clock = Stopwatch();

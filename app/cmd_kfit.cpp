@@ -59,13 +59,8 @@ nlohmann::json kfit_stage(const Scene& scene, const SensorGreens& greens, const 
     progress_step("kfit: calibration scans", s, ns, clock.seconds());
     const auto& pos = scene.sensors.positions[s];
     const double h = greens.thickness[s];
-    const auto sensor_at = [&](const SensorGreens::At& at) {
-      return [&at, s](bool disc, double ox, double oy, LayerLoad l, double a) {
-        return at(s, disc, ox, oy, l, a);
-      };
-    };
-    const auto prof = green::scan_profile(sensor_at(greens.at), load, radius, greens.scan_half_width[s],
-                                          scene.calibration.spacing);
+    const auto prof =
+        green::scan_profile(greens.of(s), load, radius, greens.scan_half_width[s], scene.calibration.spacing);
     const green::KReport fe_k = green::fit_profile(prof.offset_x, prof.point, h);
     nlohmann::json js = {{"sensor", s + 1},
                          {"x_mm", pos[0]},

@@ -87,7 +87,7 @@ SensorGreens meridian_sensor_greens(const Scene& scene) {
   g.wall["mesh"] = clock.seconds();
   auto pair = std::make_shared<const MeridianPair>(
       MeridianPair{MeridianGreen(mesh, scene.material.nu, side, disc),
-                   MeridianGreen(coarse, scene.material.nu, side, disc)});
+                   MeridianGreen(coarse, scene.material.nu, side)});  // only its point reading is read
   const MeridianGreen::Cost& c = pair->fine.cost();
   const MeridianGreen::Cost& cc = pair->coarse.cost();
   g.wall["assemble"] = c.assemble_s + cc.assemble_s;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/adjoint_setup.hpp"
+#include "green/calibration.hpp"
 #include "green/kernel_grid.hpp"
 #include "green/meridian.hpp"
 
@@ -25,7 +26,8 @@ struct SensorGreens {
   std::string path;   // "3d" or "meridian"
   std::string model;  // what was solved, one sentence
   At at;
-  // Meridian only: the same at half the resolution (every size doubled), whose change bounds the error.
+  // Meridian only: the point reading (disc = false) at half the resolution (every size doubled), whose
+  // change bounds the error.
   At coarse_at;
   // The disc reading for a unit point force at an absolute top point (the kernel export).
   green::DiscMap disc_map;
@@ -34,6 +36,13 @@ struct SensorGreens {
   double max_adjoint_residual = 0;
   nlohmann::json wall;                // seconds: mesh, assemble, factor, adjoint_solves
   std::shared_ptr<const void> owner;  // keeps the meridian solutions alive
+
+  // One sensor's `at`, as the calibration scan takes it.
+  green::SensorGreen of(int sensor) const {
+    return [this, sensor](bool disc, double ox, double oy, green::LayerLoad load, double radius) {
+      return at(sensor, disc, ox, oy, load, radius);
+    };
+  }
 };
 
 // The 3D path on an adjoint setup, which must outlive the result.

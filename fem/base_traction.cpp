@@ -68,14 +68,13 @@ BaseTraction::BaseTraction(BaseTraction&&) noexcept = default;
 
 std::optional<Eigen::Vector3d> BaseTraction::traction(double x, double y) const {
   const auto& s = *impl_;
-  const bool mirrored = y < 0 && is_half_y(s.mesh);  // the symmetric field's value at (x, −y)
   double ps, pt;
-  const int f = s.index.planar.find(x, mirrored ? -y : y, ps, pt);
+  const int f = s.index.planar.find(x, y, ps, pt);
   if (f < 0) return std::nullopt;
   const auto N = triangle_shape(ps, pt);
   Eigen::Vector3d v = Eigen::Vector3d::Zero();
   for (int a = 0; a < 6; ++a) v += N[a] * s.t.row(s.index.local.at(s.mesh.faces(f, a))).transpose();
-  if (mirrored) v.y() = -v.y();
+  if (s.index.planar.mirrored(y)) v.y() = -v.y();  // the symmetric field's value at (x, −y)
   return v;
 }
 
@@ -118,11 +117,9 @@ Eigen::VectorXd ReadingFunctionals::operator()(double x, double y, double diamet
   const auto pts = diameter > 0 ? uniform_disc_rule(0.5 * diameter, 12, 32)
                                 : std::vector<std::array<double, 3>>{{0.0, 0.0, 1.0}};  // the centre value
   Eigen::VectorXd w = Eigen::VectorXd::Zero(index.nodes.size());
-  const bool half = is_half_y(mesh);  // the disc's part at y < 0 reads the mirror image's values
   for (const auto& p : pts) {
     double s, t;
-    const double yq = y + p[1];
-    const int f = index.planar.find(x + p[0], half ? std::abs(yq) : yq, s, t);
+    const int f = index.planar.find(x + p[0], y + p[1], s, t);
     if (f < 0) throw std::out_of_range("sensor disc leaves the base");
     const auto N = triangle_shape(s, t);
     for (int a = 0; a < 6; ++a) w[index.local.at(mesh.faces(f, a))] += p[2] * N[a];

@@ -44,6 +44,7 @@ PlanarFaceIndex::PlanarFaceIndex(const TetMesh& m, int marker) : mesh_(m) {
 }
 
 int PlanarFaceIndex::find(double x, double y, double& s, double& t) const {
+  if (mirrored(y)) y = -y;
   const int ix = bin(x, x0_), iy = bin(y, y0_);
   if (ix < 0 || iy < 0 || ix >= nx_ || iy >= ny_) return -1;
   int best = -1;

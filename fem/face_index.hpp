@@ -14,8 +14,12 @@ class PlanarFaceIndex {
   PlanarFaceIndex(const TetMesh& mesh, int marker);
 
   // Mesh face index containing (x, y) and the face parameters (s, t) there; −1 when outside.
-  // On curved faces (s, t) are those of the straight corner triangle (exact on flat faces).
+  // On curved faces (s, t) are those of the straight corner triangle (exact on flat faces). On a half_y
+  // mesh a point at y < 0 is found at its mirror image (x, −y): the fields there are the symmetric ones, and
+  // the caller flips what is odd in y (mirrored()).
   int find(double x, double y, double& s, double& t) const;
+  // Whether find(x, y) looks up the mirror image (a half_y mesh, y < 0).
+  bool mirrored(double y) const { return y < 0 && is_half_y(mesh_); }
   const std::vector<int>& faces() const { return faces_; }
 
  private:

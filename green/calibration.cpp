@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace skinfem::green {
@@ -54,9 +55,11 @@ KReport fit_profile(const std::vector<double>& x, const std::vector<GreenSample>
 
 std::vector<GreenSample> exact_profile(const LayerGreen& layer, const std::vector<double>& x,
                                        double disc_diameter) {
-  const LayerGreen disc(layer.thickness(), layer.poisson_ratio(), layer.load(), layer.load_radius(), {},
-                        0.5 * disc_diameter);
-  const LayerGreen& g = disc_diameter > 0 ? disc : layer;
+  std::optional<LayerGreen> disc;
+  if (disc_diameter > 0)
+    disc.emplace(layer.thickness(), layer.poisson_ratio(), layer.load(), layer.load_radius(),
+                 LayerQuadrature{}, 0.5 * disc_diameter);
+  const LayerGreen& g = disc ? *disc : layer;
   std::vector<GreenSample> out;
   for (double xi : x) out.push_back(g.at(xi, 0));
   return out;

@@ -52,21 +52,20 @@ const Eigen::VectorXd& FeGreen::adjoint(int sensor, char reading, bool disc) con
 
 Eigen::Vector3d FeGreen::displacement_at_top(const Eigen::VectorXd& y, double x, double yy) const {
   double s, t;
-  const bool mirrored = yy < 0 && is_half_y(model_.mesh());
-  const int f = top_.find(x, mirrored ? -yy : yy, s, t);
+  const int f = top_.find(x, yy, s, t);
   if (f < 0)
     throw std::out_of_range("load point (" + std::to_string(x) + ", " + std::to_string(yy) +
                             ") is off the top");
   const auto N = triangle_shape(s, t);
   Eigen::Vector3d v = Eigen::Vector3d::Zero();
   for (int k = 0; k < 6; ++k) v += N[k] * y.segment<3>(3 * model_.mesh().faces(f, k));
-  if (mirrored) v.y() = -v.y();
+  if (top_.mirrored(yy)) v.y() = -v.y();
   return v;
 }
 
 bool FeGreen::disc_map_at(int sensor, double x, double y, GreenSample& g) const {
   double s, t;
-  const int f = top_.find(x, y < 0 && is_half_y(model_.mesh()) ? -y : y, s, t);  // g_zz … g_xx are even in y
+  const int f = top_.find(x, y, s, t);  // g_zz … g_xx are even in y
   if (f < 0) return false;
   const auto N = triangle_shape(s, t);
   Eigen::Vector3d vz = Eigen::Vector3d::Zero(), vx = Eigen::Vector3d::Zero();

@@ -317,8 +317,6 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
     for (int v = 0; v < s.vertices.rows(); ++v)
       if (to[v] == 0) kept.row(n) = s.vertices.row(v), to[v] = n++;
     s.vertices = kept.topRows(n);
-    s.triangles.conservativeResize(f, 3);
-    s.marker.conservativeResize(f);
     for (int t = 0; t < f; ++t)
       for (int c = 0; c < 3; ++c) s.triangles(t, c) = to[s.triangles(t, c)];
   }

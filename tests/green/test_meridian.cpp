@@ -24,12 +24,7 @@ constexpr double kA = 0.25;  // the calibration punch radius, mm
 
 // The rigid-punch load (green/fe_green.hpp's quadrature) centred at offset x on the axis sensor.
 green::GreenSample punch_readings(const MeridianGreen& g, double x) {
-  green::GreenSample v;
-  for (const auto& q : green::load_quadrature(green::LayerLoad::punch, kA)) {
-    const green::GreenSample p = g.at(x + q[0], q[1]);
-    v.zz += q[2] * p.zz, v.zx += q[2] * p.zx, v.xz += q[2] * p.xz, v.xx += q[2] * p.xx;
-  }
-  return v;
+  return g.at(false, x, 0, green::LayerLoad::punch, kA);
 }
 double punch_reading(const MeridianGreen& g, double x) { return punch_readings(g, x).zz; }
 
