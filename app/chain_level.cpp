@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "app/common.hpp"
+#include "app/symmetry.hpp"
 #include "contact/hole_sweep.hpp"
 #include "contact/metrics.hpp"
 #include "green/calibration.hpp"
@@ -50,7 +51,7 @@ ChainLevel chain_values(const Scene& s, const AdjointSetup& adj, const ContactSe
     clock = Stopwatch();
     const contact::ContactResult r = c->solver->solve(FrictionMode::coupled);
     const contact::ContactMetrics m =
-        contact::contact_metrics(*c->condensed, c->mesh, *c->top, r, contact_center(s));
+        contact::contact_metrics(*c->solver, c->mesh(), *c->top, r, contact_center(s));
     const double t_contact = t_green + c->wall["condense"].get<double>() + clock.seconds();
     add("contact_radius", m.contact_radius_mm, t_contact);
     add("contact_p0", m.p0_MPa, t_contact);
@@ -59,7 +60,7 @@ ChainLevel chain_values(const Scene& s, const AdjointSetup& adj, const ContactSe
     if (s.contact->sweep) {
       clock = Stopwatch();
       const contact::SweepResult sw =
-          contact::hole_sweep(*c->solver, c->mesh, *s.contact->sweep, FrictionMode::coupled);
+          contact::hole_sweep(*c->solver, c->mesh(), *s.contact->sweep, FrictionMode::coupled);
       double peak = 0;
       for (int j = 0; j < sw.varsigma.cols(); j += 2)
         peak = std::max(peak, sw.varsigma.col(j).cwiseAbs().maxCoeff());
@@ -73,7 +74,7 @@ ChainLevel chain_values(const Scene& s, const AdjointSetup& adj, const ContactSe
 
 ChainLevel chain_level(const Scene& base, double scale) {
   const Scene s = scaled_scene(base, scale);
-  const auto skin = skin_setup(s);
+  const auto skin = skin_setup(s, contact_mesh_part(s));
   const auto adj = adjoint_setup(s, skin);
   const auto contact = s.contact ? contact_setup(s, skin) : nullptr;
   ChainLevel l = chain_values(s, *adj, contact.get());

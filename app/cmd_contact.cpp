@@ -54,11 +54,11 @@ nlohmann::json metrics_json(const contact::ContactMetrics& m, const ContactResul
 
 nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, const std::string& out_dir,
                              FrictionMode chosen) {
-  const TetMesh& mesh = setup.mesh;
+  const TetMesh& mesh = setup.mesh();
   nlohmann::json wall = setup.wall;
   Stopwatch clock;
   const contact::ContactSolver& solver = *setup.solver;
-  const auto excluded = contact::excluded_by_holes(setup.condensed->zone, mesh, scene.contact->holes);
+  const auto excluded = contact::excluded_by_holes(solver.zone(), mesh, scene.contact->holes);
   std::map<FrictionMode, ContactResult> results;
   std::map<FrictionMode, contact::ContactMetrics> metrics;
   const Vec2 centre = contact_center(scene);
@@ -66,30 +66,32 @@ nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, cons
        {FrictionMode::none, FrictionMode::static_residual, FrictionMode::uncoupled, FrictionMode::coupled}) {
     results[mode] = solver.solve(mode, excluded);
     check_zone(scene, setup, results[mode]);
-    metrics[mode] = contact::contact_metrics(*setup.condensed, mesh, *setup.top, results[mode], centre);
+    metrics[mode] = contact::contact_metrics(solver, mesh, *setup.top, results[mode], centre);
   }
   wall["contact_solves"] = clock.seconds();
   const ContactResult& r = results[chosen];
   const contact::ContactMetrics& m = metrics[chosen];
 
-  // The volume solution of the chosen mode: one more solve with the contact load.
+  // The volume solution of the chosen mode: one more solve with the contact load, on the solved skin (the
+  // half under mirror symmetry: its zone, its multipliers).
   clock = Stopwatch();
   const auto& c = *setup.condensed;
-  const Eigen::VectorXd f = c.zone.load(r.lambda, c.direction, r.ratio);
+  const TetMesh& solved = setup.skin->mesh;
+  const Eigen::VectorXd f = c.zone.load(solver.solved_lambda(r.lambda), c.direction, r.ratio);
   const MixedSolution x = setup.model->solver().solve(f);
   const Eigen::VectorXd reactions = setup.model->solver().reactions(x, f);
-  const BaseTraction base(mesh, reactions);
+  const BaseTraction base(solved, reactions);
   // Pointwise gap at every node of the zone's faces (the constraint holds it ≥ 0 in the hat-weighted mean).
   double max_penetration = 0;
   for (int face : c.zone.faces)
     for (int k = 0; k < 6; ++k) {
-      const int n = mesh.faces(face, k);
+      const int n = solved.faces(face, k);
       const double gap = setup.indenter->z_touch() - r.depth_mm +
-                         setup.indenter->phi(mesh.nodes(n, 0), mesh.nodes(n, 1)) - mesh.nodes(n, 2) -
+                         setup.indenter->phi(solved.nodes(n, 0), solved.nodes(n, 1)) - solved.nodes(n, 2) -
                          x.u[3 * n + 2];
       const bool under_hole = [&] {
         for (const Hole& h : scene.contact->holes)
-          if (std::hypot(mesh.nodes(n, 0) - h.center[0], mesh.nodes(n, 1) - h.center[1]) <
+          if (std::hypot(solved.nodes(n, 0) - h.center[0], solved.nodes(n, 1) - h.center[1]) <
               0.5 * h.diameter + 1e-12)
             return true;
         return false;
@@ -109,8 +111,9 @@ nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, cons
 
   clock = Stopwatch();
   prepare_output_dir(out_dir);
-  write_fields_vtu(out_dir + "/fields.vtu", mesh, setup.model->lame(), x);
-  contact::write_pressure_vtp(out_dir + "/pressure.vtp", mesh, c, r);
+  write_fields_vtu(out_dir + "/fields.vtu", mesh, setup.model->lame(),
+                   setup.whole ? mirrored_solution(mesh, setup.source, x) : x);
+  contact::write_pressure_vtp(out_dir + "/pressure.vtp", mesh, solver, r);
   std::ostringstream csv, modes;
   csv.precision(10);
   modes.precision(10);
@@ -158,8 +161,11 @@ nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, cons
                                    {"dsigma_x_kPa", 1e3 * (a[2 * k + 1] - b[2 * k + 1])}});
   }
   summary["coupled_minus_uncoupled"] = coupling;
-  summary["zone"] = {
-      {"radius_mm", setup.zone_radius}, {"h_mm", setup.zone_h}, {"multipliers", c.zone.size()}};
+  summary["zone"] = {{"radius_mm", setup.zone_radius},
+                     {"h_mm", setup.zone_h},
+                     {"multipliers", solver.zone().size()},
+                     {"multipliers_solved", c.zone.size()}};
+  summary["symmetry"] = setup.whole ? "mirror y = 0 (half solved)" : "none (whole solved)";
   summary["dofs"] = setup.model->solver().free_dofs();
   summary["nodes"] = mesh.num_nodes();
   summary["elements"] = mesh.num_tets();
@@ -184,9 +190,11 @@ nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, cons
       scene.contact->mu, coupling["pressure_centroid_shift_mm"].get<double>(),
       coupling["zone_centroid_shift_mm"].get<double>(), cu.front_back_peak_ratio, un.front_back_peak_ratio);
   std::printf(
-      "  %d DOFs, %d multipliers; mesh %.2f s, assemble %.2f s, factor %.2f s, condense %.2f s (%d rhs), "
+      "  %d DOFs, %d multipliers (%s); mesh %.2f s, assemble %.2f s, factor %.2f s, condense %.2f s (%d "
+      "rhs), "
       "contact %.3f s; peak %.0f MB\n",
-      setup.model->solver().free_dofs(), c.zone.size(), wall["mesh"].get<double>(),
+      setup.model->solver().free_dofs(), c.zone.size(),
+      setup.whole ? "the half y >= 0, mirror-symmetric" : "whole skin", wall["mesh"].get<double>(),
       wall["assemble"].get<double>(), wall["factor"].get<double>(), wall["condense"].get<double>(),
       c.block_solves, wall["contact_solves"].get<double>(), peak_rss_mb());
   std::printf("  wrote %s/pressure.vtp, fields.vtu, sensors.csv, modes.csv, summary.json\n", out_dir.c_str());

@@ -35,7 +35,7 @@ DefectStage defect_stage(const Scene& scene, const ContactSetup& setup, const st
     const auto& [name, mode] = cases[ci];
     Stopwatch clock;
     results.push_back(contact::hole_sweep(
-        *setup.solver, setup.mesh, sweep, mode, [&](int i, const contact::ContactResult& r) {
+        *setup.solver, setup.mesh(), sweep, mode, [&](int i, const contact::ContactResult& r) {
           frames[ci].push_back(r);
           if ((i + 1) % 50 == 0 || i + 1 == sweep.positions) {
             char buf[128];
@@ -55,7 +55,7 @@ DefectStage defect_stage(const Scene& scene, const ContactSetup& setup, const st
     for (size_t i = 0; i < frames[ci].size(); ++i) {
       char file[64];
       std::snprintf(file, sizeof file, "%s_%03zu.vtp", cases[ci].first.c_str(), i);
-      contact::write_pressure_vtp(out_dir + "/frames/" + file, setup.mesh, *setup.condensed, frames[ci][i]);
+      contact::write_pressure_vtp(out_dir + "/frames/" + file, setup.mesh(), *setup.solver, frames[ci][i]);
       pvd << "<DataSet timestep=\"" << results[ci].centers[i][0] << "\" part=\"" << ci << "\" file=\"frames/"
           << file << "\"/>\n";
     }
@@ -102,7 +102,7 @@ DefectStage defect_stage(const Scene& scene, const ContactSetup& setup, const st
   summary["from_mm"] = {sweep.from[0], sweep.from[1]};
   summary["to_mm"] = {sweep.to[0], sweep.to[1]};
   summary["dofs"] = setup.model->solver().free_dofs();
-  summary["multipliers"] = setup.condensed->zone.size();
+  summary["multipliers"] = setup.solver->zone().size();
   summary["block_solves"] = setup.condensed->block_solves;
   summary["wall_s"] = wall;
   summary["wall_total_s"] = total_seconds(wall);
@@ -110,7 +110,7 @@ DefectStage defect_stage(const Scene& scene, const ContactSetup& setup, const st
   write_json(out_dir + "/summary.json", summary);
 
   std::printf("defect %s: %zu cases x %d positions; %d DOFs, %d multipliers\n", scene.name.c_str(),
-              cases.size(), sweep.positions, setup.model->solver().free_dofs(), setup.condensed->zone.size());
+              cases.size(), sweep.positions, setup.model->solver().free_dofs(), setup.solver->zone().size());
   std::printf("  mesh %.2f s, assemble %.2f s, factor %.2f s, condense %.2f s; sweeps",
               wall["mesh"].get<double>(), wall["assemble"].get<double>(), wall["factor"].get<double>(),
               wall["condense"].get<double>());

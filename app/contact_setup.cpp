@@ -2,21 +2,33 @@
 
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "app/common.hpp"
+#include "app/symmetry.hpp"
+#include "mesh/mirror.hpp"
 
 namespace skinfem::app {
 
 std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<Skin> skin) {
   if (!scene.contact)
     throw SceneError(scene.source_path + ": contact: missing; this command needs a \"contact\" section");
-  auto s = std::make_unique<ContactSetup>(skin ? std::move(skin) : skin_setup(scene));
+  auto s =
+      std::make_unique<ContactSetup>(skin ? std::move(skin) : skin_setup(scene, contact_mesh_part(scene)));
   s->wall = s->skin->wall;
   Stopwatch clock;
+  const TetMesh& solved = s->skin->mesh;
   s->zone_radius = contact_zone_radius(scene);
   s->zone_h = contact_zone_h(scene);
-  s->indenter = std::make_unique<contact::Indenter>(scene, s->mesh);
-  const auto zone = contact::mortar_zone(s->mesh, contact_center(scene), s->zone_radius);
+  s->indenter = std::make_unique<contact::Indenter>(scene, solved);
+  const auto zone = contact::mortar_zone(solved, contact_center(scene), s->zone_radius);
+  if (is_half_y(solved)) {
+    if (!contact_mirror_unavailable(scene).empty())
+      throw std::logic_error("contact_setup: a half skin for a contact that is not mirror-symmetric");
+    s->whole = std::make_unique<TetMesh>(mirror_half(solved, &s->source));
+    s->mirror = std::make_unique<contact::MirrorView>(
+        contact::mirror_view(*s->whole, s->source, zone, contact_center(scene), s->zone_radius));
+  }
   Stopwatch condense_clock;
   s->condensed = std::make_unique<contact::CondensedContact>(
       contact::condense(*s->model, zone, *s->indenter, scene.sensors, scene.contact->direction,
@@ -26,20 +38,20 @@ std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<
                                         condense_clock.seconds());
                           progress(buf);
                         }));
-  s->solver = std::make_unique<contact::ContactSolver>(*s->condensed, *scene.contact);
-  s->top = std::make_unique<PlanarFaceIndex>(s->mesh, kTop);
+  s->solver = std::make_unique<contact::ContactSolver>(*s->condensed, *scene.contact, s->mirror.get());
+  s->top = std::make_unique<PlanarFaceIndex>(s->mesh(), kTop);
   s->wall["condense"] = clock.seconds();
   return s;
 }
 
 void check_zone(const Scene& scene, const ContactSetup& s, const contact::ContactResult& r) {
-  const auto& z = s.condensed->zone;
+  const auto& z = s.solver->zone();
   const Vec2 c = contact_center(scene);
   double reach = 0;
   for (int i = 0; i < z.size(); ++i)
     if (r.lambda[i] > 0)
-      reach = std::max(
-          reach, std::hypot(s.mesh.nodes(z.vertices[i], 0) - c[0], s.mesh.nodes(z.vertices[i], 1) - c[1]));
+      reach = std::max(reach, std::hypot(s.mesh().nodes(z.vertices[i], 0) - c[0],
+                                         s.mesh().nodes(z.vertices[i], 1) - c[1]));
   // The outermost ring of multipliers lies within one element of the zone's edge: contact reaching it may be
   // cut short by the zone.
   if (reach > s.zone_radius - s.zone_h)

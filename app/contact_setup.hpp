@@ -1,6 +1,8 @@
 // The common first half of `contact` and `defect`: a meshed and factored skin (shared, app/skin_setup.hpp;
 // the contact zone and hole path refined), and its condensation onto the contact multipliers (block
-// right-hand sides), each stage timed into `wall` (mesh, assemble, factor, condense).
+// right-hand sides), each stage timed into `wall` (mesh, assemble, factor, condense). A mirror-symmetric
+// scene (app/symmetry.hpp) is solved on its half and seen whole: mesh(), the solver's results and `top`
+// are the mirrored whole skin's.
 #pragma once
 
 #include <memory>
@@ -13,21 +15,24 @@
 namespace skinfem::app {
 
 struct ContactSetup {
-  explicit ContactSetup(std::shared_ptr<Skin> s)
-      : skin(std::move(s)), mesh(skin->mesh), model(skin->model.get()) {}
-  std::shared_ptr<Skin> skin;
-  const TetMesh& mesh;
+  explicit ContactSetup(std::shared_ptr<Skin> s) : skin(std::move(s)), model(skin->model.get()) {}
+  std::shared_ptr<Skin> skin;  // the skin solved: the half under mirror symmetry
   const ElasticModel* model;
+  // Under mirror symmetry: the whole skin mirrored from the half, and each of its nodes' half node.
+  std::unique_ptr<TetMesh> whole;
+  std::vector<int> source;
+  const TetMesh& mesh() const { return whole ? *whole : skin->mesh; }  // the results' mesh
   std::unique_ptr<contact::Indenter> indenter;
-  std::unique_ptr<contact::CondensedContact> condensed;
-  std::unique_ptr<contact::ContactSolver> solver;  // refers to condensed
-  std::unique_ptr<PlanarFaceIndex> top;
+  std::unique_ptr<contact::CondensedContact> condensed;  // on the solved skin
+  std::unique_ptr<contact::MirrorView> mirror;           // null without mirror symmetry
+  std::unique_ptr<contact::ContactSolver> solver;        // refers to condensed and mirror
+  std::unique_ptr<PlanarFaceIndex> top;                  // of mesh()
   double zone_radius = 0, zone_h = 0;
   nlohmann::json wall;
 };
 
-// Throws SceneError when the scene has no contact section. skin: an already factored skin of this scene, or
-// null to mesh and factor one.
+// Throws SceneError when the scene has no contact section. skin: an already factored skin of this scene (its
+// half when contact_mesh_part says so), or null to mesh and factor one.
 std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<Skin> skin = nullptr);
 
 // Throws (one line, naming contact.zone_radius) when an active multiplier lies in the zone's outer ring:

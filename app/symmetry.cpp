@@ -24,4 +24,32 @@ MeshPart green_mesh_part(const Scene& scene) {
                                                                                        : MeshPart::whole;
 }
 
+std::string contact_mirror_unavailable(const Scene& scene) {
+  if (!scene.contact) return "";
+  const ContactLoad& c = *scene.contact;
+  char buf[160];
+  if (contact_center(scene)[1] != 0) {
+    std::snprintf(buf, sizeof buf, "the contact's centre is off y = 0 (y = %g mm)", contact_center(scene)[1]);
+    return buf;
+  }
+  if (c.direction[1] != 0) {
+    std::snprintf(buf, sizeof buf, "the sliding direction (%g, %g) is not along x", c.direction[0],
+                  c.direction[1]);
+    return buf;
+  }
+  for (size_t i = 0; i < c.holes.size(); ++i)
+    if (c.holes[i].center[1] != 0) {
+      std::snprintf(buf, sizeof buf, "hole %zu is off y = 0 (y = %g mm)", i + 1, c.holes[i].center[1]);
+      return buf;
+    }
+  if (c.sweep && (c.sweep->from[1] != 0 || c.sweep->to[1] != 0)) return "the hole sweep's path is off y = 0";
+  return "";
+}
+
+MeshPart contact_mesh_part(const Scene& scene) {
+  return green_mesh_part(scene) == MeshPart::half_y && contact_mirror_unavailable(scene).empty()
+             ? MeshPart::half_y
+             : MeshPart::whole;
+}
+
 }  // namespace skinfem::app

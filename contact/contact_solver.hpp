@@ -34,9 +34,29 @@ struct ContactResult {
   std::vector<int> active;
 };
 
+// A contact condensed on the half y ≥ 0 of a mirror-symmetric skin (mesh/build.hpp's MeshPart::half_y),
+// seen whole: the zone of the mirrored mesh (mesh/mirror.hpp) and, per whole multiplier, the half's
+// multiplier it is or mirrors. On the half a multiplier on the cut carries half its hat (its row of C, its
+// gap0 and area are halved) and one off the cut stands for itself and its image, so the half's problem at
+// half the force is the whole one restricted to symmetric λ; with a P-matrix its solution is unique, hence
+// symmetric, so the two agree (tests/contact/test_mirror_contact.cpp). Needs the indenter, its holes and
+// the sliding direction symmetric too (app/symmetry.hpp).
+struct MirrorView {
+  MortarZone zone;        // on the whole mesh
+  std::vector<int> half;  // zone.size(): the half's multiplier each whole one is or mirrors
+};
+
+// whole: mirror_half(half mesh, &source); half_zone: the half's zone about `center` (on y = 0) of `radius`.
+// Throws std::invalid_argument if the whole zone is not the half's and its image.
+MirrorView mirror_view(const TetMesh& whole, const std::vector<int>& source, const MortarZone& half_zone,
+                       const Vec2& center, double radius);
+
 class ContactSolver {
  public:
-  ContactSolver(const CondensedContact& condensed, const ContactLoad& load);
+  // mirror: null when `condensed` is the whole skin's; else its whole view (kept by the caller). Results,
+  // excluded flags, warm starts and active sets are then the whole zone's (zone()).
+  ContactSolver(const CondensedContact& condensed, const ContactLoad& load,
+                const MirrorView* mirror = nullptr);
 
   // excluded: per multiplier, 1 where the indenter is absent (a hole); warm: an active set to start from.
   ContactResult solve(FrictionMode mode, const std::vector<char>& excluded = {},
@@ -45,12 +65,28 @@ class ContactSolver {
   void set_reference(FrictionMode mode, const std::vector<int>& active) const;
   double ratio(FrictionMode mode) const;
   bool force_controlled() const { return load_.force.has_value(); }
+  // The problem as solved (the half's under a mirror view): small_hole.hpp works on its matrices.
   const CondensedContact& condensed() const { return c_; }
+  // The zone results refer to: the whole one.
+  const MortarZone& zone() const { return mirror_ ? mirror_->zone : c_.zone; }
+  const Eigen::Vector2d& direction() const { return c_.direction; }
+  // Whole multiplier i's index in condensed(), and the share of a gap opening at i that its row sees (½
+  // under a mirror view: an opening at i and its image average to that row's; 1 otherwise).
+  int solved_index(int i) const { return mirror_ ? mirror_->half[i] : i; }
+  double opening_share() const { return mirror_ ? 0.5 : 1.0; }
+  // Sensor readings (2·sensors, MPa) of whole-zone multipliers λ (symmetric under a mirror view) with
+  // traction ratio·p.
+  Eigen::VectorXd readings(const Eigen::VectorXd& lambda, double ratio) const;
+  // λ on the solved problem's multipliers (the half's values of a symmetric λ).
+  Eigen::VectorXd solved_lambda(const Eigen::VectorXd& lambda) const;
 
  private:
   ContactLcp& lcp(double ratio) const;
+  std::vector<int> solved_set(const std::vector<int>& whole) const;
   const CondensedContact& c_;
   ContactLoad load_;
+  const MirrorView* mirror_;
+  std::vector<int> images_;  // under a mirror view, per half multiplier: 1 on the cut, else 2
   mutable std::map<double, std::unique_ptr<ContactLcp>> lcps_;
 };
 

@@ -20,7 +20,7 @@ SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const H
     const Vec2 c{sweep.from[0] + s * (sweep.to[0] - sweep.from[0]),
                  sweep.from[1] + s * (sweep.to[1] - sweep.from[1])};
     out.centers.push_back(c);
-    const auto excluded = excluded_by_holes(solver.condensed().zone, mesh, {Hole{c, sweep.hole_diameter}});
+    const auto excluded = excluded_by_holes(solver.zone(), mesh, {Hole{c, sweep.hole_diameter}});
     const ContactResult r = solver.solve(mode, excluded, warm);
     warm = r.active;
     out.varsigma.row(i) = (r.readings - out.baseline.readings).transpose();

@@ -5,11 +5,11 @@
 
 namespace skinfem::contact {
 
-ContactMetrics contact_metrics(const CondensedContact& c, const TetMesh& m, const PlanarFaceIndex& top,
+ContactMetrics contact_metrics(const ContactSolver& solver, const TetMesh& m, const PlanarFaceIndex& top,
                                const ContactResult& r, const Vec2& center) {
   ContactMetrics out;
-  const MortarZone& z = c.zone;
-  const Eigen::Vector2d t = c.direction;
+  const MortarZone& z = solver.zone();
+  const Eigen::Vector2d t = solver.direction();
   const auto xy = [&](int i) {
     return Eigen::Vector2d(m.nodes(z.vertices[i], 0), m.nodes(z.vertices[i], 1));
   };

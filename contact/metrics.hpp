@@ -22,7 +22,8 @@ struct ContactMetrics {
          back_edge_mm = 0;  // farthest active vertex ahead / behind along the sliding direction
 };
 
-ContactMetrics contact_metrics(const CondensedContact& c, const TetMesh& mesh, const PlanarFaceIndex& top,
+// mesh, top: the mesh of solver.zone() (the whole one under a mirror view).
+ContactMetrics contact_metrics(const ContactSolver& solver, const TetMesh& mesh, const PlanarFaceIndex& top,
                                const ContactResult& r, const Vec2& center);
 
 }  // namespace skinfem::contact

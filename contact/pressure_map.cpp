@@ -6,21 +6,22 @@
 
 namespace skinfem::contact {
 
-void write_pressure_vtp(const std::string& path, const TetMesh& m, const CondensedContact& c,
+void write_pressure_vtp(const std::string& path, const TetMesh& m, const ContactSolver& solver,
                         const ContactResult& r) {
   const int N = m.num_nodes();
+  const MortarZone& zone = solver.zone();
   std::vector<double> p(N, 0.0), gap(N, 0.0), in(N, 0.0);
-  for (int i = 0; i < c.zone.size(); ++i) {
-    const int v = c.zone.vertices[i];
+  for (int i = 0; i < zone.size(); ++i) {
+    const int v = zone.vertices[i];
     p[v] = 1e3 * std::max(0.0, r.lambda[i]);
-    gap[v] = 1e3 * r.gap[i] / c.zone.area[i];
+    gap[v] = 1e3 * r.gap[i] / zone.area[i];
     in[v] = r.lambda[i] > 0 ? 1.0 : 0.0;
   }
   // Faces with every corner in the zone: elsewhere the gap is not a constraint and is not known here.
   std::vector<char> in_zone(N, 0);
-  for (int v : c.zone.vertices) in_zone[v] = 1;
+  for (int v : zone.vertices) in_zone[v] = 1;
   std::vector<int> faces;
-  for (int f : c.zone.faces)
+  for (int f : zone.faces)
     if (in_zone[m.faces(f, 0)] && in_zone[m.faces(f, 1)] && in_zone[m.faces(f, 2)]) faces.push_back(f);
   for (int f : faces)
     for (int e = 0; e < 3; ++e) {
@@ -31,8 +32,8 @@ void write_pressure_vtp(const std::string& path, const TetMesh& m, const Condens
     }
   DataArray traction{"traction_kPa", 3, std::vector<double>(3 * N, 0.0)};
   for (int j = 0; j < N; ++j) {
-    traction.values[3 * j] = r.ratio * c.direction.x() * p[j];
-    traction.values[3 * j + 1] = r.ratio * c.direction.y() * p[j];
+    traction.values[3 * j] = r.ratio * solver.direction().x() * p[j];
+    traction.values[3 * j + 1] = r.ratio * solver.direction().y() * p[j];
   }
   write_faces_vtp(path, m, faces,
                   {{"pressure_kPa", 1, p}, traction, {"gap_um", 1, gap}, {"in_contact", 1, in}});

@@ -11,7 +11,8 @@
 
 namespace skinfem::contact {
 
-void write_pressure_vtp(const std::string& path, const TetMesh& mesh, const CondensedContact& c,
+// mesh: the mesh of solver.zone() (the whole one under a mirror view).
+void write_pressure_vtp(const std::string& path, const TetMesh& mesh, const ContactSolver& solver,
                         const ContactResult& r);
 
 }  // namespace skinfem::contact

@@ -1,16 +1,23 @@
 #include "contact/small_hole.hpp"
 
 #include <Eigen/LU>
+#include <algorithm>
 
 namespace skinfem::contact {
 
 Eigen::MatrixXd small_hole_signals(const ContactSolver& solver, FrictionMode mode, const TetMesh& mesh,
                                    const PlanarFaceIndex& top, const std::vector<Vec2>& centers,
                                    double hole_diameter, double E, double nu) {
+  // K and the reading rows live on the solved problem (the half under a mirror view); the pressure, the
+  // hats and the hole centres on the whole zone and `mesh`.
   const CondensedContact& c = solver.condensed();
+  const MortarZone& z = solver.zone();
   const ContactResult r = solver.solve(mode);
   const double solved_ratio = mode == FrictionMode::uncoupled ? 0.0 : r.ratio;
-  const std::vector<int>& A = r.active;
+  std::vector<int> A;
+  for (int i : r.active) A.push_back(solver.solved_index(i));
+  std::sort(A.begin(), A.end());
+  A.erase(std::unique(A.begin(), A.end()), A.end());
   const int na = static_cast<int>(A.size()), nr = static_cast<int>(c.S_p.rows());
   // Force control borders the active block with the force row and the unknown approach δ.
   const bool force = solver.force_controlled();
@@ -27,10 +34,13 @@ Eigen::MatrixXd small_hole_signals(const ContactSolver& solver, FrictionMode mod
   }
   const Eigen::MatrixXd W = K.transpose().partialPivLu().solve(rhs);  // n × readings
 
-  std::vector<int> active_slot(mesh.num_nodes(), -1);
-  for (int a = 0; a < na; ++a) active_slot[c.zone.vertices[A[a]]] = a;
+  std::vector<int> solved_slot(c.zone.size(), -1), whole_index(mesh.num_nodes(), -1);
+  for (int a = 0; a < na; ++a) solved_slot[A[a]] = a;
   std::vector<double> pressure(mesh.num_nodes(), 0.0);
-  for (int i = 0; i < c.zone.size(); ++i) pressure[c.zone.vertices[i]] = r.lambda[i];
+  for (int i = 0; i < z.size(); ++i) {
+    pressure[z.vertices[i]] = r.lambda[i];
+    whole_index[z.vertices[i]] = i;
+  }
   const double eps = 0.5 * hole_diameter;
   const double volume_per_pressure = 8 * (1 - nu * nu) * eps * eps * eps / (3 * E);
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(centers.size(), nr);
@@ -42,8 +52,12 @@ Eigen::MatrixXd small_hole_signals(const ContactSolver& solver, FrictionMode mod
     double p = 0;
     for (int k = 0; k < 3; ++k) p += psi[k] * pressure[mesh.faces(f, k)];
     const double V = volume_per_pressure * p;
-    for (int k = 0; k < 3; ++k)
-      if (const int a = active_slot[mesh.faces(f, k)]; a >= 0) out.row(i) -= V * psi[k] * W.row(a);
+    for (int k = 0; k < 3; ++k) {
+      const int w = whole_index[mesh.faces(f, k)];
+      if (w < 0) continue;
+      if (const int a = solved_slot[solver.solved_index(w)]; a >= 0)
+        out.row(i) -= solver.opening_share() * V * psi[k] * W.row(a);
+    }
   }
   return out;
 }

@@ -73,4 +73,18 @@ void write_fields_vtu(const std::string& path, const TetMesh& m, const Lame& lam
   write_vtu(path, m, {u, p, stress}, {vm});
 }
 
+MixedSolution mirrored_solution(const TetMesh& whole, const std::vector<int>& source,
+                                const MixedSolution& half) {
+  MixedSolution x = half;
+  x.u.resize(3 * whole.num_nodes());
+  x.p.resize(whole.num_vertices);
+  for (int i = 0; i < whole.num_nodes(); ++i) {
+    const int s = source[i];
+    x.u.segment<3>(3 * i) = half.u.segment<3>(3 * s);
+    if (whole.nodes(i, 1) < 0) x.u[3 * i + 1] = -x.u[3 * i + 1];
+    if (i < whole.num_vertices) x.p[i] = half.p[s];
+  }
+  return x;
+}
+
 }  // namespace skinfem

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "fem/material.hpp"
 #include "fem/mixed_solver.hpp"
@@ -31,5 +32,10 @@ Probe probe(const TetMesh& mesh, const PointLocator& locator, const Lame& lame, 
 
 // fields.vtu: point data displacement_mm, pressure_MPa, stress_MPa (9), cell data von_mises_MPa.
 void write_fields_vtu(const std::string& path, const TetMesh& mesh, const Lame& lame, const MixedSolution& x);
+
+// The solution of a mirror-symmetric load on a half_y mesh, seen on the whole mesh mirror_half(half, &source)
+// (mesh/mirror.hpp): u_y odd in y, u_x, u_z and p even.
+MixedSolution mirrored_solution(const TetMesh& whole, const std::vector<int>& source,
+                                const MixedSolution& half);
 
 }  // namespace skinfem

@@ -11,12 +11,6 @@ namespace skinfem::validation {
 
 namespace {
 const FrictionMode kModes[2] = {FrictionMode::static_residual, FrictionMode::coupled};
-
-Eigen::VectorXd readings_of(const contact::CondensedContact& c, const Eigen::VectorXd& lambda, double ratio) {
-  Eigen::VectorXd r = c.S_p * lambda;
-  if (ratio != 0) r += ratio * (c.S_t * lambda);
-  return r;
-}
 }  // namespace
 
 SignalMetrics compare_signals(const std::vector<double>& u, const Eigen::VectorXd& model,
@@ -36,7 +30,7 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
       in.frames->size() != 2)
     throw std::invalid_argument("crosscheck: needs the mesh, solver, FE Green maps and both FE sweeps");
   const contact::ContactSolver& solver = *in.solver;
-  const contact::CondensedContact& cc = solver.condensed();
+  const contact::MortarZone& zone = solver.zone();
   const int ns = static_cast<int>(in.sensors.positions.size());
   Crosscheck out;
   for (int c = 0; c < 2; ++c) out.ratio[c] = solver.ratio(kModes[c]);
@@ -76,13 +70,13 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
   };
   add_reading("fe", "full FE: contact, friction and Green maps", [&](int c) { return full[c].readings; });
   add_reading("green_k_paper", "FE tractions, half-space Green rescaled by the paper's k", [&](int c) {
-    return convolve(fe_tractions(cc, *in.mesh, full[c].lambda, out.ratio[c]), k_paper, in.sensors);
+    return convolve(fe_tractions(zone, *in.mesh, full[c].lambda, out.ratio[c]), k_paper, in.sensors);
   });
   add_reading("green_k_best", "FE tractions, half-space Green rescaled by the best-fit k", [&](int c) {
-    return convolve(fe_tractions(cc, *in.mesh, full[c].lambda, out.ratio[c]), k_best, in.sensors);
+    return convolve(fe_tractions(zone, *in.mesh, full[c].lambda, out.ratio[c]), k_best, in.sensors);
   });
   add_reading("uncoupled", "frictionless FE pressure with p_x = ratio p_z added, FE Green",
-              [&](int c) { return readings_of(cc, none.lambda, out.ratio[c]); });
+              [&](int c) { return solver.readings(none.lambda, out.ratio[c]); });
   if (hertz) {
     add_reading("pressure_hertz", "half-space Hertz pressure (uncoupled friction), FE Green",
                 [&](int c) { return convolve(hertz_tractions(out.ratio[c]), fe, in.sensors); });
@@ -107,11 +101,11 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
   add_signal("fe", "a full FE contact solve per hole position", [&](int c) { return sweeps[c].varsigma; });
   add_signal("green_k_paper", "each position's FE tractions, Green rescaled by the paper's k", [&](int c) {
     const Eigen::VectorXd base =
-        convolve(fe_tractions(cc, *in.mesh, sweeps[c].baseline.lambda, out.ratio[c]), k_paper, in.sensors);
+        convolve(fe_tractions(zone, *in.mesh, sweeps[c].baseline.lambda, out.ratio[c]), k_paper, in.sensors);
     Eigen::MatrixXd s(n, 2 * ns);
     for (int i = 0; i < n; ++i)
       s.row(i) =
-          (convolve(fe_tractions(cc, *in.mesh, frames[c][i].lambda, out.ratio[c]), k_paper, in.sensors) -
+          (convolve(fe_tractions(zone, *in.mesh, frames[c][i].lambda, out.ratio[c]), k_paper, in.sensors) -
            base)
               .transpose();
     return s;
@@ -122,15 +116,15 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
       contact::hole_sweep(solver, *in.mesh, in.sweep, FrictionMode::none,
                           [&](int, const contact::ContactResult& r) { free_lambda.push_back(r.lambda); });
   add_signal("uncoupled", "frictionless FE sweep with p_x = ratio p_z added", [&](int c) {
-    const Eigen::VectorXd base = readings_of(cc, free_sweep.baseline.lambda, out.ratio[c]);
+    const Eigen::VectorXd base = solver.readings(free_sweep.baseline.lambda, out.ratio[c]);
     Eigen::MatrixXd s(n, 2 * ns);
-    for (int i = 0; i < n; ++i) s.row(i) = (readings_of(cc, free_lambda[i], out.ratio[c]) - base).transpose();
+    for (int i = 0; i < n; ++i) s.row(i) = (solver.readings(free_lambda[i], out.ratio[c]) - base).transpose();
     return s;
   });
   std::vector<Vec2> centers(sweeps[0].centers.begin(), sweeps[0].centers.end());
   add_signal("first_order_hole", "eqs. (2)-(3) with the FE tractions and FE Green maps", [&](int c) {
-    return first_order_hole(fe_tractions(cc, *in.mesh, full[c].lambda, out.ratio[c]), fe, in.sensors, centers,
-                            S);
+    return first_order_hole(fe_tractions(zone, *in.mesh, full[c].lambda, out.ratio[c]), fe, in.sensors,
+                            centers, S);
   });
   const PlanarFaceIndex top(*in.mesh, kTop);
   add_signal("small_hole",
@@ -156,8 +150,8 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
   }
 
   // Pressure profiles through the contact along x.
-  const Tractions fe_none = fe_tractions(cc, *in.mesh, none.lambda, 0);
-  const Tractions fe_coupled = fe_tractions(cc, *in.mesh, full[Crosscheck::kSliding].lambda, 0);
+  const Tractions fe_none = fe_tractions(zone, *in.mesh, none.lambda, 0);
+  const Tractions fe_coupled = fe_tractions(zone, *in.mesh, full[Crosscheck::kSliding].lambda, 0);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double reach = hertz ? 1.3 * std::max(hertz->a_mm, layer->a_mm) : 4.0;
   for (int i = 0; i <= 400; ++i) {

@@ -82,11 +82,10 @@ Tractions axisymmetric_tractions(std::function<double(double)> p_of_r, const Vec
   return t;
 }
 
-Tractions fe_tractions(const contact::CondensedContact& c, const TetMesh& mesh, const Eigen::VectorXd& lambda,
+Tractions fe_tractions(const contact::MortarZone& zone, const TetMesh& mesh, const Eigen::VectorXd& lambda,
                        double ratio) {
   Tractions t;
   t.ratio = ratio;
-  const auto& zone = c.zone;
   auto nodal = std::make_shared<std::vector<double>>(mesh.num_nodes(), 0.0);
   for (int i = 0; i < zone.size(); ++i) (*nodal)[zone.vertices[i]] = lambda[i];
   for (int f : zone.faces)

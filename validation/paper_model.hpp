@@ -49,7 +49,7 @@ struct Tractions {
 Tractions axisymmetric_tractions(std::function<double(double)> p_of_r, const Vec2& center, double a,
                                  double ratio, int n_theta = 48, int n_phi = 96);
 // The FE contact pressure Σ λ_i ψ_i on the mortar zone (contact/mortar.hpp), 7 points per top face.
-Tractions fe_tractions(const contact::CondensedContact& c, const TetMesh& mesh, const Eigen::VectorXd& lambda,
+Tractions fe_tractions(const contact::MortarZone& zone, const TetMesh& mesh, const Eigen::VectorXd& lambda,
                        double ratio);
 
 // σ_z and σ_x of every sensor (2·sensors, MPa) by the convolution of eq. (1).

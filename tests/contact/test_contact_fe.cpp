@@ -79,7 +79,7 @@ Fixture& layer() {
 TEST(ContactFe, SphereOnBondedLayerMatchesTheExactSolution) {
   Fixture& f = layer();
   const ContactResult r = f.solver->solve(FrictionMode::none);
-  const ContactMetrics m = contact_metrics(*f.condensed, f.mesh, *f.top, r, {0, 0});
+  const ContactMetrics m = contact_metrics(*f.solver, f.mesh, *f.top, r, {0, 0});
   const LayerHertzResult exact = layer_hertz_force(0.8, 129.7, 3.04, 3.0, 0.5);
   EXPECT_NEAR(r.force_N, 0.8, 1e-12);
   EXPECT_NEAR(m.contact_radius_mm / exact.a_mm, 1.0, 0.025);
@@ -167,8 +167,8 @@ TEST(ContactFe, CouplingShiftsPressureForwardUncoupledDoesNot) {
   EXPECT_EQ((none.lambda - un.lambda).cwiseAbs().maxCoeff(), 0.0);
   EXPECT_NEAR(un.tangential_force_N, 0.5 * 0.8, 1e-12);
   EXPECT_NEAR(co.tangential_force_N, 0.5 * 0.8, 1e-12);
-  const ContactMetrics mn = contact_metrics(*f.condensed, f.mesh, *f.top, none, {0, 0});
-  const ContactMetrics mc = contact_metrics(*f.condensed, f.mesh, *f.top, co, {0, 0});
+  const ContactMetrics mn = contact_metrics(*f.solver, f.mesh, *f.top, none, {0, 0});
+  const ContactMetrics mc = contact_metrics(*f.solver, f.mesh, *f.top, co, {0, 0});
   EXPECT_GT(mc.pressure_centroid[0], mn.pressure_centroid[0]);
 }
 
