@@ -5,6 +5,8 @@
 #   resolution, which bounds that error, reported beside them;
 # - on a cap's apex sensor the meridian and the 3D path (`--path 3d`) agree within the 3D mesh's error (the
 #   meridian at these settings is 100× more accurate: test_meridian), and each says which path ran;
+# - kfit's 3D run on the cap reports that check itself (meridian_check): the meridian run's k and the
+#   relative difference, to round-off;
 # - green on the flat layer goes the meridian way too: its disc readings within 2e-4 of the exact layer's
 #   (measured 8e-5), its kernel grid and maps written;
 # - `--path meridian` where it does not apply (sensors off the cap's axis) is a one-line error naming the
@@ -72,6 +74,12 @@ for q in ("k_central", "k_lsq_line"):
     rel = b[q] / a[q] - 1
     print(f"cap apex: {q} meridian {a[q]:.5f}, 3d {b[q]:.5f} ({rel:+.2e})")
     if not abs(rel) < 0.01: bad.append(f"cap apex {q}: 3d {b[q]} vs meridian {a[q]}: {rel:+.2e}")
+    # The 3D run's own check against the meridian is that run (same solver, same scan): equal to round-off.
+    check = apex3d.get("meridian_check", {})
+    if not abs(check.get(q, 0) / a[q] - 1) < 1e-12: bad.append(f"apex3d meridian_check {q} {check.get(q)} vs {a[q]}")
+    if not abs(check.get(q + "_3d_vs_meridian", 1) - rel) < 1e-12:
+        bad.append(f"apex3d meridian_check {q}_3d_vs_meridian {check.get(q + '_3d_vs_meridian')} vs {rel}")
+if "meridian_check" in apex: bad.append("the meridian path checks itself against itself")
 for b_ in bad: print("FAIL", b_)
 sys.exit(1 if bad else 0)
 PY
