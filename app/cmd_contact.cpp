@@ -1,7 +1,8 @@
 // skinfem contact — unilateral contact of the scene's rigid indenter (plate or sphere, optional holes)
 // with the skin, frictionless or with friction (static residual, uncoupled or coupled sliding), on one
 // factorization condensed onto the contact multipliers. All four friction modes are solved (each a
-// small dense complementarity problem once the skin is condensed); the chosen one is written in full.
+// small dense complementarity problem once the skin is condensed); the chosen one is written in full. A
+// mirror-symmetric scene (app/symmetry.hpp) is solved on its half y ≥ 0 at half the force and written whole.
 //
 //   $ skinfem contact scenes/hertz_layer.json --out out/hertz
 //   contact hertz_layer (none): 0.8000 N normal, 0.0000 N tangential; a = 2.4843 mm, p0 = 63.94 kPa, ...

@@ -1,6 +1,7 @@
 // skinfem defect — the paper's §IV: a hole in the indenter swept along a path through the contact, a
 // full contact solve at every position, static (residual traction, static_ratio) and sliding (coupled
-// Coulomb slip, μ). ς = sensor reading with the hole − without, for every sensor and position.
+// Coulomb slip, μ). ς = sensor reading with the hole − without, for every sensor and position. A hole path
+// on y = 0 in a mirror-symmetric scene is solved on the half y ≥ 0 (app/symmetry.hpp), frames written whole.
 //
 //   $ skinfem defect scenes/candelier2011.json --out out/defect
 //   defect candelier2011: 2 × 201 positions, 0.9 ms per position; ...
@@ -103,14 +104,17 @@ DefectStage defect_stage(const Scene& scene, const ContactSetup& setup, const st
   summary["to_mm"] = {sweep.to[0], sweep.to[1]};
   summary["dofs"] = setup.model->solver().free_dofs();
   summary["multipliers"] = setup.solver->zone().size();
+  summary["multipliers_solved"] = setup.condensed->zone.size();
   summary["block_solves"] = setup.condensed->block_solves;
   summary["wall_s"] = wall;
   summary["wall_total_s"] = total_seconds(wall);
   summary["peak_rss_mb"] = peak_rss_mb();
   write_json(out_dir + "/summary.json", summary);
 
-  std::printf("defect %s: %zu cases x %d positions; %d DOFs, %d multipliers\n", scene.name.c_str(),
-              cases.size(), sweep.positions, setup.model->solver().free_dofs(), setup.solver->zone().size());
+  std::printf("defect %s: %zu cases x %d positions; %d DOFs, %d multipliers (%d solved%s)\n",
+              scene.name.c_str(), cases.size(), sweep.positions, setup.model->solver().free_dofs(),
+              setup.solver->zone().size(), setup.condensed->zone.size(),
+              setup.whole ? " on the half y >= 0, mirror-symmetric" : "");
   std::printf("  mesh %.2f s, assemble %.2f s, factor %.2f s, condense %.2f s; sweeps",
               wall["mesh"].get<double>(), wall["assemble"].get<double>(), wall["factor"].get<double>(),
               wall["condense"].get<double>());
