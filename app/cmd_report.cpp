@@ -2,8 +2,8 @@
 // convolution model checked against it assumption by assumption (validation/crosscheck.hpp).
 //
 //   $ skinfem report scenes/candelier2011.json
-//   report candelier2011: 101342 DOFs, one factorization for the chain and 2 coarser for the error bars; 44.1 s,
-//   peak 1407 MB
+//   report candelier2011: 101342 DOFs, one factorization for the chain and 2 coarser for the error bars;
+//   50.3 s, peak 1407 MB
 //
 // A scene mirror-symmetric about y = 0, contact included (app/symmetry.hpp), is solved on its half y ≥ 0 and
 // every output is written for the whole skin (mesh.vtu, maps, pressure, fields).
