@@ -21,6 +21,7 @@
 #include "app/common.hpp"
 #include "app/contact_setup.hpp"
 #include "app/stages.hpp"
+#include "app/symmetry.hpp"
 #include "contact/metrics.hpp"
 #include "contact/pressure_map.hpp"
 #include "fem/fields.hpp"
@@ -166,7 +167,11 @@ nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, cons
                      {"h_mm", setup.zone_h},
                      {"multipliers", solver.zone().size()},
                      {"multipliers_solved", c.zone.size()}};
-  summary["symmetry"] = setup.whole ? "mirror y = 0 (half solved)" : "none (whole solved)";
+  const std::string why_whole = scene.symmetry == SymmetryUse::none  ? "\"symmetry\": \"none\""
+                                : !mirror_unavailable(scene).empty() ? mirror_unavailable(scene)
+                                                                     : contact_mirror_unavailable(scene);
+  summary["symmetry"] =
+      setup.whole ? "mirror y = 0: the half y >= 0 solved" : "whole skin solved: " + why_whole;
   summary["dofs"] = setup.model->solver().free_dofs();
   summary["nodes"] = mesh.num_nodes();
   summary["elements"] = mesh.num_tets();
@@ -194,10 +199,9 @@ nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, cons
       "  %d DOFs, %d multipliers (%s); mesh %.2f s, assemble %.2f s, factor %.2f s, condense %.2f s (%d "
       "rhs), "
       "contact %.3f s; peak %.0f MB\n",
-      setup.model->solver().free_dofs(), c.zone.size(),
-      setup.whole ? "the half y >= 0, mirror-symmetric" : "whole skin", wall["mesh"].get<double>(),
-      wall["assemble"].get<double>(), wall["factor"].get<double>(), wall["condense"].get<double>(),
-      c.block_solves, wall["contact_solves"].get<double>(), peak_rss_mb());
+      setup.model->solver().free_dofs(), c.zone.size(), summary["symmetry"].get<std::string>().c_str(),
+      wall["mesh"].get<double>(), wall["assemble"].get<double>(), wall["factor"].get<double>(),
+      wall["condense"].get<double>(), c.block_solves, wall["contact_solves"].get<double>(), peak_rss_mb());
   std::printf("  wrote %s/pressure.vtp, fields.vtu, sensors.csv, modes.csv, summary.json\n", out_dir.c_str());
   return summary;
 }

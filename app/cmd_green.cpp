@@ -11,9 +11,11 @@
 // Writes DIR/green.csv (sensor,component,offset_x_mm,offset_y_mm,g_point_per_mm2,g_disc_per_mm2, and
 // g_exact_point_per_mm2, g_exact_disc_per_mm2 for flat layers: the exact layer values), DIR/green_maps.vtp
 // (top surface; point data g_<ab>_sensorNN_per_mm2: the sensor-disc reading for a unit point force at that
-// surface point) and DIR/summary.json (DOFs, adjoint solves, reciprocity check, timings, memory).
-// With --grid DX: DIR/kernel.h5 and DIR/kernel.vti, every sensor's four disc-reading components on a regular
-// grid of spacing DX over the top's bounding box (green/kernel_grid.hpp; the README loads it with h5py).
+// surface point) and DIR/summary.json (DOFs, adjoint solves, reciprocity check, timings, memory; on a cap
+// solved in 3D, meridian_check: its sensor on the cap's axis against the meridian path,
+// app/sensor_greens.hpp). With --grid DX: DIR/kernel.h5 and DIR/kernel.vti, every sensor's four disc-reading
+// components on a regular grid of spacing DX over the top's bounding box (green/kernel_grid.hpp; the README
+// loads it with h5py).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -138,6 +140,8 @@ nlohmann::json green_stage(const Scene& scene, const SensorGreens& greens, const
       << (flat ? ",g_exact_point_per_mm2,g_exact_disc_per_mm2" : "") << "\n";  // ridged: the smooth layer's
   nlohmann::json per_sensor = nlohmann::json::array();
   const int ns = static_cast<int>(scene.sensors.positions.size());
+  const int axis = axis_sensor(scene, greens);
+  nlohmann::json check;
   for (int s = 0; s < ns; ++s) {
     progress_step("green: calibration scans", s, ns, clock.seconds());
     const double h = greens.thickness[s];
@@ -163,6 +167,10 @@ nlohmann::json green_stage(const Scene& scene, const SensorGreens& greens, const
         js[scene.geometry.ridges.present()
                ? "disc_vs_smooth_max_diff_over_peak"
                : "fe_vs_exact_max_err_over_peak"][green::component_name(green::kComponents[c])] = err[c];
+    }
+    if (s == axis) {
+      check = meridian_check(scene, s, prof, LayerLoad::punch, radius, h);
+      js["meridian_check"] = check;
     }
     per_sensor.push_back(js);
   }
@@ -232,6 +240,7 @@ nlohmann::json green_stage(const Scene& scene, const SensorGreens& greens, const
     summary["max_adjoint_residual"] = greens.max_adjoint_residual;
     summary["reciprocity_check_rel"] = reciprocity_rel;
   }
+  if (!check.is_null()) summary["meridian_check"] = check;
   if (grid_dx > 0)
     summary["kernel_grid"] = {{"spacing_mm", grid_dx},
                               {"nx", grid.x.size()},
@@ -248,6 +257,7 @@ nlohmann::json green_stage(const Scene& scene, const SensorGreens& greens, const
   if (setup)
     std::printf("  reciprocity check (direct solve vs adjoint, sensor 1, offset 1 mm): %.1e relative\n",
                 reciprocity_rel);
+  if (!check.is_null()) std::printf("  %s\n", meridian_check_line(check).c_str());
   if (flat && !scene.geometry.ridges.present()) {
     double worst = 0;
     for (const auto& js : per_sensor)

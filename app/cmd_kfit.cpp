@@ -55,16 +55,9 @@ nlohmann::json kfit_stage(const Scene& scene, const SensorGreens& greens, const 
   nlohmann::json sensors = nlohmann::json::array();
   nlohmann::json summary;
   const int ns = static_cast<int>(scene.sensors.positions.size());
-  // On a cap solved in 3D, the first sensor on its axis is checked against the meridian path, an independent
-  // 2D solve (app/sensor_greens.hpp) about 100× more accurate than the 3D mesh at a fraction of its cost.
-  int axis_sensor = -1;
-  if (greens.path == "3d" && scene.geometry.kind == GeometryKind::cap)
-    for (int s = 0; s < ns && axis_sensor < 0; ++s) {
-      Scene axis = scene;
-      axis.sensors.positions = {scene.sensors.positions[s]};
-      if (meridian_unavailable(axis).empty()) axis_sensor = s;
-    }
-  nlohmann::json meridian_check;
+  // On a cap solved in 3D, the first sensor on its axis is checked against the meridian path.
+  const int axis = axis_sensor(scene, greens);
+  nlohmann::json check;
   for (int s = 0; s < ns; ++s) {
     progress_step("kfit: calibration scans", s, ns, clock.seconds());
     const auto& pos = scene.sensors.positions[s];
@@ -94,31 +87,9 @@ nlohmann::json kfit_stage(const Scene& scene, const SensorGreens& greens, const 
     }
     for (auto c : green::kComponents)
       js["peak_point_per_mm2"][green::component_name(c)] = green::peak_abs(prof.point, c);
-    if (s == axis_sensor) {
-      Stopwatch check_clock;
-      Scene axis = scene;
-      axis.sensors.positions = {pos};
-      const SensorGreens m = meridian_sensor_greens(axis);
-      const auto mp =
-          green::scan_profile(m.of(0), load, radius, prof.offset_x.back(), scene.calibration.spacing);
-      const green::KReport mk = green::fit_profile(mp.offset_x, mp.point, h);
-      const auto point = green::max_error_over_peak(prof.point, mp.point);
-      const auto disc = green::max_error_over_peak(prof.disc, mp.disc);
-      meridian_check = {{"sensor", s + 1},
-                        {"path_model", m.model},
-                        {"dofs", m.dofs},
-                        {"k_central", mk.k_central},
-                        {"k_lsq_line", mk.k_lsq_line},
-                        {"k_central_3d_vs_meridian", fe_k.k_central / mk.k_central - 1},
-                        {"k_lsq_line_3d_vs_meridian", fe_k.k_lsq_line / mk.k_lsq_line - 1}};
-      for (size_t c = 0; c < 4; ++c) {
-        const char* name = green::component_name(green::kComponents[c]);
-        meridian_check["component_k_3d_minus_meridian"][name] = fe_k.components[c].k - mk.components[c].k;
-        meridian_check["point_max_diff_over_peak"][name] = point[c];
-        meridian_check["disc_max_diff_over_peak"][name] = disc[c];
-      }
-      meridian_check["wall_s"] = check_clock.seconds();
-      js["meridian_check"] = meridian_check;
+    if (s == axis) {
+      check = meridian_check(scene, s, prof, load, radius, h);
+      js["meridian_check"] = check;
     }
     if (scene.geometry.kind == GeometryKind::cap) {
       std::vector<double> zz;
@@ -169,7 +140,7 @@ nlohmann::json kfit_stage(const Scene& scene, const SensorGreens& greens, const 
       {"k_lsq_line",
        "least-squares fit of k*g_half(sqrt(k)x, 0) to g_zz along y = 0, |x| <= 3h, uniform weight"}};
   summary["sensors"] = sensors;
-  if (!meridian_check.is_null()) summary["meridian_check"] = meridian_check;
+  if (!check.is_null()) summary["meridian_check"] = check;
   summary["path"] = greens.path;
   summary["path_model"] = greens.model;
   summary["dofs"] = greens.dofs;
@@ -252,20 +223,7 @@ nlohmann::json kfit_stage(const Scene& scene, const SensorGreens& greens, const 
   if (sensors.size() > 1)
     std::printf("  over all %zu sensors: k_central %.4f–%.4f, k_lsq_line %.4f–%.4f\n", sensors.size(), kc_lo,
                 kc_hi, kl_lo, kl_hi);
-  if (!meridian_check.is_null()) {
-    const nlohmann::json& c = meridian_check;
-    const nlohmann::json &k = c["component_k_3d_minus_meridian"], &d = c["disc_max_diff_over_peak"];
-    std::printf(
-        "  independent check, sensor #%d on the cap's axis against the meridian path (%d DOFs, %.2f s): 3D "
-        "k_central "
-        "%+.1e, k_lsq_line %+.1e relative; component k zz %+.1e zx %+.1e xz %+.1e xx %+.1e; disc readings "
-        "max "
-        "|difference| / peak zz %.1e zx %.1e xz %.1e xx %.1e\n",
-        c["sensor"].get<int>(), c["dofs"].get<int>(), c["wall_s"].get<double>(),
-        c["k_central_3d_vs_meridian"].get<double>(), c["k_lsq_line_3d_vs_meridian"].get<double>(),
-        k["zz"].get<double>(), k["zx"].get<double>(), k["xz"].get<double>(), k["xx"].get<double>(),
-        d["zz"].get<double>(), d["zx"].get<double>(), d["xz"].get<double>(), d["xx"].get<double>());
-  }
+  if (!check.is_null()) std::printf("  %s\n", meridian_check_line(check).c_str());
   if (summary.contains("explanation"))
     std::printf("  %s\n", summary["explanation"].get<std::string>().c_str());
   std::printf("  wrote %s/kfit.json\n", out_dir.c_str());

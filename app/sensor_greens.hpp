@@ -55,4 +55,15 @@ std::string meridian_unavailable(const Scene& scene);
 // The meridian path; throws SceneError (with meridian_unavailable's reason) where it does not apply.
 SensorGreens meridian_sensor_greens(const Scene& scene);
 
+// The first sensor on the axis of a cap solved in 3D (greens.path "3d"), or −1: the one sensor the meridian
+// path, an independent 2D solve about 100× more accurate than the 3D mesh, can check.
+int axis_sensor(const Scene& scene, const SensorGreens& greens);
+// That check: the 3D scan `prof` of `sensor` (thickness h) against the meridian's over the same offsets, for
+// the same load. Returns sensor, path_model, dofs, k_central and k_lsq_line (meridian) and the 3D's relative
+// differences, component_k_3d_minus_meridian, point_ and disc_max_diff_over_peak (per component), wall_s.
+nlohmann::json meridian_check(const Scene& scene, int sensor, const green::ScanProfile& prof,
+                              green::LayerLoad load, double radius, double h);
+// One line for stdout, from meridian_check's numbers.
+std::string meridian_check_line(const nlohmann::json& check);
+
 }  // namespace skinfem::app
