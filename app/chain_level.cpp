@@ -88,15 +88,23 @@ std::vector<ChainError> chain_errors(const std::vector<ChainLevel>& levels) {
   std::vector<ChainError> out;
   for (size_t i = 0; i < levels[n - 1].names.size(); ++i) {
     const std::array<double, 3> q{levels[n - 3].value[i], levels[n - 2].value[i], levels[n - 1].value[i]};
-    const validation::Richardson r =
-        validation::richardson(q, {levels[n - 3].scale, levels[n - 2].scale, levels[n - 1].scale});
+    const validation::Richardson r = validation::richardson(
+        q, {levels[n - 3].scale, levels[n - 2].scale, levels[n - 1].scale}, kMaxPlausibleOrder);
     ChainError e;
     e.name = levels[n - 1].names[i];
     e.value = q[2];
     e.asymptotic = r.asymptotic;
     e.order = r.order;
     e.reference = r.limit;
-    e.error = r.asymptotic ? std::abs(q[2] - r.limit) : std::abs(q[2] - q[1]);
+    if (r.above_max_order) {
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "observed order %.2f above %g, not P2-P1 convergence", r.order,
+                    kMaxPlausibleOrder);
+      e.why_not = buf;
+    } else if (!r.asymptotic) {
+      e.why_not = "differences change sign or grow";
+    }
+    e.error = e.asymptotic ? std::abs(q[2] - r.limit) : std::abs(q[2] - q[1]);
     out.push_back(e);
   }
   return out;
@@ -119,13 +127,13 @@ nlohmann::json write_chain_study(const Scene& scene, const std::vector<ChainLeve
   for (size_t i = 0; i < errors.size(); ++i) {
     const ChainError& e = errors[i];
     extrap[e.name] = {
-        {"observed_order", e.asymptotic ? nlohmann::json(e.order) : nlohmann::json("none: not asymptotic")},
+        {"observed_order", e.asymptotic ? nlohmann::json(e.order) : nlohmann::json("none: " + e.why_not)},
         {"reference", e.reference},
         {"reference_is", e.asymptotic ? "Richardson limit" : "finest level"}};
     std::printf("%s: %s, reference %.6g; errors", e.name.c_str(),
                 e.asymptotic
                     ? ("observed order " + std::to_string(e.order)).c_str()
-                    : "no asymptotic regime (differences change sign or grow; finest level as reference)",
+                    : ("no asymptotic regime (" + e.why_not + "; finest level as reference)").c_str(),
                 e.reference);
     for (size_t l = 0; l < n; ++l) {
       const double err = std::abs(levels[l].value[i] - e.reference) / std::abs(e.reference);

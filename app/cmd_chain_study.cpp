@@ -7,8 +7,9 @@
 //   level 3 (scale 1): 188,439 DOFs; k_central 1.5424 (error 0.05 %, 62 s) ...
 //
 // Errors are against the Richardson limit of the three finest levels (validation/richardson.hpp: Q = Q∞ + C
-// sᵖ through them, p the observed order); when the differences change sign or grow (no asymptotic regime yet)
-// the finest level is the reference and its own error is not given. The seconds of a quantity are those of
+// sᵖ through them, p the observed order); when the differences change sign or grow, or p exceeds what P2–P1
+// can give (app/chain_level.hpp's kMaxPlausibleOrder), there is no asymptotic regime yet: the finest level is
+// the reference and its own error is not given. The seconds of a quantity are those of
 // every stage it needs (mesh, assemble, factor, then adjoints, condensation, sweep). Writes
 // DIR/chain_study.csv (stage,level,dofs,seconds,error; read by scripts/figures.py for the Pareto plot) and
 // DIR/chain_study.json (every level's values, stage times, orders and limits).

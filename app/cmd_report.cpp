@@ -223,8 +223,8 @@ nlohmann::json error_bars(const std::vector<ChainError>& errors, const std::vect
              {"method", e.asymptotic ? "|value - Richardson limit| over mesh scales " + levels +
                                            ", observed order " + fmt("%.2f", e.order)
                                      : "last change between mesh scales " + fmt("%g", coarse_scales.back()) +
-                                           " and 1; no asymptotic regime over " + levels +
-                                           ", so an order of magnitude only"}});
+                                           " and 1; no asymptotic regime over " + levels + " (" + e.why_not +
+                                           "), so an order of magnitude only"}});
   return j;
 }
 

@@ -4,7 +4,7 @@
 
 namespace skinfem::validation {
 
-Richardson richardson(const std::array<double, 3>& q, const std::array<double, 3>& s) {
+Richardson richardson(const std::array<double, 3>& q, const std::array<double, 3>& s, double max_order) {
   Richardson r;
   r.limit = q[2];
   const double d1 = q[0] - q[1], d2 = q[1] - q[2];
@@ -21,8 +21,12 @@ Richardson richardson(const std::array<double, 3>& q, const std::array<double, 3
     const double mid = 0.5 * (lo + hi);
     (ratio(mid) < target ? lo : hi) = mid;
   }
-  r.asymptotic = true;
   r.order = 0.5 * (lo + hi);
+  if (r.order > max_order) {
+    r.above_max_order = true;
+    return r;
+  }
+  r.asymptotic = true;
   const double C = d2 / (std::pow(s[1], r.order) - std::pow(s[2], r.order));
   r.limit = q[2] - C * std::pow(s[2], r.order);
   return r;

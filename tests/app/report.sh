@@ -76,6 +76,14 @@ for q in ["k_central", "k_lsq_line", "contact_radius", "contact_p0", "indentatio
     v, e = eb[q]["value"], eb[q]["error"]
     if not (math.isfinite(v) and math.isfinite(e) and e >= 0): bad.append(f"error_bars {q}: {v} +- {e}")
     if not eb[q].get("method"): bad.append(f"error_bars {q} does not say how its error was estimated")
+    # A Richardson bar only where the observed order is one P2-P1 can give (app/chain_level.hpp: at most 4).
+    m = re.search(r"observed order ([0-9.]+)", eb[q].get("method", ""))
+    if m and float(m.group(1)) > 4: bad.append(f"error_bars {q}: Richardson at implausible order {m.group(1)}")
+    # A last-change bar is the change between the two finest levels (relative, so units drop out).
+    lv = [l["values"][q] for l in r.get("chain_study", {}).get("levels", [])]
+    if "last change" in eb[q].get("method", "") and len(lv) >= 2 and \
+       abs(eb[q]["relative_error"] - abs(lv[-1] - lv[-2]) / abs(lv[-1])) > 1e-9 * abs(eb[q]["relative_error"]) + 1e-15:
+        bad.append(f"error_bars {q}: last-change bar {eb[q]['relative_error']} is not the levels' change {lv[-2:]}")
 def same(a, b, what):
     if abs(a - b) > 1e-9 * abs(b): bad.append(f"{what}: error_bars {a} against the stage's {b}")
 if "k_central" in eb: same(eb["k_central"]["value"], r["kfit"]["sensors"][0]["k_central"], "k_central #1")

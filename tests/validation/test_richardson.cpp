@@ -37,6 +37,23 @@ TEST(Richardson, RefusesANonAsymptoticSequence) {
   EXPECT_EQ(richardson({1.0, 1.2, 1.1}, {2, 1.41, 1}).limit, 1.1);
 }
 
+// Q = 1 + s⁶ with a P2-like ceiling of 4: the order is found (6) but not taken, and the finest value stays
+// the reference; with the default ceiling the same sequence is asymptotic.
+TEST(Richardson, RefusesAnOrderAboveTheCeiling) {
+  const std::array<double, 3> s{2.0, std::sqrt(2.0), 1.0};
+  std::array<double, 3> q;
+  for (int i = 0; i < 3; ++i) q[i] = 1 + std::pow(s[i], 6);
+  const Richardson capped = richardson(q, s, 4);
+  EXPECT_FALSE(capped.asymptotic);
+  EXPECT_TRUE(capped.above_max_order);
+  EXPECT_NEAR(capped.order, 6.0, 1e-10);
+  EXPECT_EQ(capped.limit, q[2]);
+  const Richardson free = richardson(q, s);
+  EXPECT_TRUE(free.asymptotic);
+  EXPECT_FALSE(free.above_max_order);
+  EXPECT_NEAR(free.limit, 1.0, 1e-10);
+}
+
 TEST(LogLogSlope, RecoversThePowerOfAPowerLawAndRefusesBadInput) {
   const std::vector<double> x{1e4, 3e4, 1e5, 2e5};
   std::vector<double> y;
