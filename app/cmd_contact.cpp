@@ -5,7 +5,8 @@
 // mirror-symmetric scene (app/symmetry.hpp) is solved on its half y ≥ 0 at half the force and written whole.
 //
 //   $ skinfem contact scenes/hertz_layer.json --out out/hertz
-//   contact hertz_layer (none): 0.8000 N normal, 0.0000 N tangential; a = 2.4843 mm, p0 = 63.94 kPa, ...
+//   contact hertz_layer (none): 0.8000 N normal, 0.0000 N tangential; a = 2.4776 mm, p0 = 63.74 kPa, ...
+//     80680 DOFs, 257 multipliers (mirror y = 0: the half y >= 0 solved); ...
 //
 // Writes DIR/pressure.vtp (contact zone: pressure_kPa, traction_kPa, gap_um, in_contact), DIR/fields.vtu
 // (the volume solution of the chosen mode), DIR/sensors.csv (sensor,x_mm,y_mm,sigma_z_kPa,sigma_x_kPa),
@@ -196,9 +197,8 @@ nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, cons
       scene.contact->mu, coupling["pressure_centroid_shift_mm"].get<double>(),
       coupling["zone_centroid_shift_mm"].get<double>(), cu.front_back_peak_ratio, un.front_back_peak_ratio);
   std::printf(
-      "  %d DOFs, %d multipliers (%s); mesh %.2f s, assemble %.2f s, factor %.2f s, condense %.2f s (%d "
-      "rhs), "
-      "contact %.3f s; peak %.0f MB\n",
+      "  %d DOFs, %d multipliers (%s); mesh %.2f s, assemble %.2f s, factor %.2f s, "
+      "condense %.2f s (%d rhs), contact %.3f s; peak %.0f MB\n",
       setup.model->solver().free_dofs(), c.zone.size(), summary["symmetry"].get<std::string>().c_str(),
       wall["mesh"].get<double>(), wall["assemble"].get<double>(), wall["factor"].get<double>(),
       wall["condense"].get<double>(), c.block_solves, wall["contact_solves"].get<double>(), peak_rss_mb());
