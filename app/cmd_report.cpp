@@ -381,8 +381,10 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
   wall = skin->wall;
   report["dofs"] = skin->model->solver().free_dofs();
   // A half skin is shown, and its quality and volume checked, as the whole it stands for.
-  report["mesh"] = mesh_stage(scene, is_half_y(skin->mesh) ? mirror_half(skin->mesh) : skin->mesh,
-                              skin->wall["mesh"].get<double>(), out_dir + "/mesh");
+  const bool half = is_half_y(skin->mesh);
+  const TetMesh mirrored = half ? mirror_half(skin->mesh) : TetMesh{};
+  report["mesh"] =
+      mesh_stage(scene, half ? mirrored : skin->mesh, skin->wall["mesh"].get<double>(), out_dir + "/mesh");
 
   Stopwatch clock;
   auto adjoints = adjoint_setup(scene, skin);

@@ -117,22 +117,26 @@ SensorGreens meridian_sensor_greens(const Scene& scene) {
   return g;
 }
 
+namespace {
+// The scene with only sensor s.
+Scene with_sensor(const Scene& scene, size_t s) {
+  Scene one = scene;
+  one.sensors.positions = {scene.sensors.positions[s]};
+  return one;
+}
+}  // namespace
+
 int axis_sensor(const Scene& scene, const SensorGreens& greens) {
   if (greens.path != "3d" || scene.geometry.kind != GeometryKind::cap) return -1;
-  for (size_t s = 0; s < scene.sensors.positions.size(); ++s) {
-    Scene axis = scene;
-    axis.sensors.positions = {scene.sensors.positions[s]};
-    if (meridian_unavailable(axis).empty()) return static_cast<int>(s);
-  }
+  for (size_t s = 0; s < scene.sensors.positions.size(); ++s)
+    if (meridian_unavailable(with_sensor(scene, s)).empty()) return static_cast<int>(s);
   return -1;
 }
 
 nlohmann::json meridian_check(const Scene& scene, int sensor, const green::ScanProfile& prof,
                               green::LayerLoad load, double radius, double h) {
   Stopwatch clock;
-  Scene axis = scene;
-  axis.sensors.positions = {scene.sensors.positions[sensor]};
-  const SensorGreens m = meridian_sensor_greens(axis);
+  const SensorGreens m = meridian_sensor_greens(with_sensor(scene, sensor));
   const auto mp = green::scan_profile(m.of(0), load, radius, prof.offset_x.back(), scene.calibration.spacing);
   const green::KReport k3 = green::fit_profile(prof.offset_x, prof.point, h);
   const green::KReport mk = green::fit_profile(mp.offset_x, mp.point, h);

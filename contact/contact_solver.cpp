@@ -73,11 +73,14 @@ Eigen::VectorXd ContactSolver::solved_lambda(const Eigen::VectorXd& lambda) cons
   return out;
 }
 
-Eigen::VectorXd ContactSolver::readings(const Eigen::VectorXd& lambda, double ratio) const {
-  const Eigen::VectorXd l = solved_lambda(lambda);
+Eigen::VectorXd ContactSolver::solved_readings(const Eigen::VectorXd& l, double ratio) const {
   Eigen::VectorXd r = c_.S_p * l;
   if (ratio != 0) r += ratio * (c_.S_t * l);
   return r;
+}
+
+Eigen::VectorXd ContactSolver::readings(const Eigen::VectorXd& lambda, double ratio) const {
+  return solved_readings(solved_lambda(lambda), ratio);
 }
 
 double ContactSolver::ratio(FrictionMode mode) const {
@@ -129,8 +132,7 @@ ContactResult ContactSolver::solve(FrictionMode mode, const std::vector<char>& e
   Eigen::VectorXd gap = s.gap;
   if (mode == FrictionMode::uncoupled) gap += out.ratio * (c_.C_zt * s.lambda);
   out.depth_mm = s.delta;
-  out.readings = c_.S_p * s.lambda;
-  if (out.ratio != 0) out.readings += out.ratio * (c_.S_t * s.lambda);
+  out.readings = solved_readings(s.lambda, out.ratio);
   out.complementarity = s.complementarity;
   out.min_lambda = s.min_lambda;
   out.min_gap = s.min_gap;

@@ -73,6 +73,8 @@ class ContactSolver {
   // Whole multiplier i's index in condensed(), and the share of a gap opening at i that its row sees (½
   // under a mirror view: an opening at i and its image average to that row's; 1 otherwise).
   int solved_index(int i) const { return mirror_ ? mirror_->half[i] : i; }
+  // A set of whole multipliers as the solved problem's (ascending, each once).
+  std::vector<int> solved_set(const std::vector<int>& whole) const;
   double opening_share() const { return mirror_ ? 0.5 : 1.0; }
   // Sensor readings (2·sensors, MPa) of whole-zone multipliers λ (symmetric under a mirror view) with
   // traction ratio·p.
@@ -82,7 +84,7 @@ class ContactSolver {
 
  private:
   ContactLcp& lcp(double ratio) const;
-  std::vector<int> solved_set(const std::vector<int>& whole) const;
+  Eigen::VectorXd solved_readings(const Eigen::VectorXd& solved_lambda, double ratio) const;
   const CondensedContact& c_;
   ContactLoad load_;
   const MirrorView* mirror_;

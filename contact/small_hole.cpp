@@ -1,7 +1,6 @@
 #include "contact/small_hole.hpp"
 
 #include <Eigen/LU>
-#include <algorithm>
 
 namespace skinfem::contact {
 
@@ -14,10 +13,7 @@ Eigen::MatrixXd small_hole_signals(const ContactSolver& solver, FrictionMode mod
   const MortarZone& z = solver.zone();
   const ContactResult r = solver.solve(mode);
   const double solved_ratio = mode == FrictionMode::uncoupled ? 0.0 : r.ratio;
-  std::vector<int> A;
-  for (int i : r.active) A.push_back(solver.solved_index(i));
-  std::sort(A.begin(), A.end());
-  A.erase(std::unique(A.begin(), A.end()), A.end());
+  const std::vector<int> A = solver.solved_set(r.active);
   const int na = static_cast<int>(A.size()), nr = static_cast<int>(c.S_p.rows());
   // Force control borders the active block with the force row and the unknown approach δ.
   const bool force = solver.force_controlled();
