@@ -15,14 +15,24 @@ double distance_to_segment(double x, double y, const Vec2& a, const Vec2& b) {
 }
 }  // namespace
 
+double sensor_mesh_size(const Scene& scene) {
+  if (scene.mesh.sensor_h > 0) return scene.mesh.sensor_h;
+  const double disc_radius = 0.5 * scene.sensors.disc_diameter;
+  return disc_radius > 0 ? std::min(scene.mesh.h_min, disc_radius) : scene.mesh.h_min;
+}
+
 SizingField::SizingField(const Scene& scene)
     : through_(scene.mesh.regions), growth_(scene.mesh.growth), h_max_(scene.mesh.h_max) {
   const double h_min = scene.mesh.h_min;
   for (auto& r : through_)
     if (r.h <= 0) r.h = h_min;
-  if (scene.mesh.refine_sensors)
-    for (const auto& s : scene.sensors.positions)
-      through_.push_back({s, s, 0.5 * scene.sensors.disc_diameter, h_min});
+  if (scene.mesh.refine_sensors) {
+    const double disc_radius = 0.5 * scene.sensors.disc_diameter, sensor_h = sensor_mesh_size(scene);
+    for (const auto& s : scene.sensors.positions) {
+      through_.push_back({s, s, disc_radius, h_min});
+      if (sensor_h < h_min) base_.push_back({s, s, disc_radius, sensor_h});
+    }
+  }
   for (const auto& p : scene.loads.punches) through_.push_back({p.center, p.center, 0.5 * p.diameter, h_min});
   for (const auto& p : scene.loads.patches) through_.push_back({p.center, p.center, 0.5 * p.diameter, h_min});
   if (scene.contact) {
@@ -51,6 +61,10 @@ double SizingField::at(double x, double y, double depth) const {
   };
   for (const auto& r : through_) grow(r, 0.0);
   for (const auto& r : top_) grow(r, depth);
+  if (!base_.empty()) {
+    const double height = shape_ ? std::max(0.0, shape_->top_z(x, y) - depth) : 0.0;
+    for (const auto& r : base_) grow(r, height);
+  }
   return size;
 }
 

@@ -14,8 +14,10 @@
 //   material      {"E", "nu"}
 //   sensors       {"positions": [[x, y], ...]} or {"line": {"start": [x, y], "step": [dx, dy], "count"}},
 //                 plus "disc_diameter"
-//   mesh          {"h_min", "growth", "h_max", "refine_sensors"*, "min_dihedral_deg"*, "max_radius_edge"*,
-//                  "regions"*: [{"from": [x, y], "to": [x, y], "radius", "h"*}]}
+//   mesh          {"h_min", "growth", "h_max", "refine_sensors"*, "sensor_h"*, "min_dihedral_deg"*,
+//                  "max_radius_edge"*, "regions"*: [{"from": [x, y], "to": [x, y], "radius", "h"*}]}
+//                 sensor_h: <mm, in (0, h_min]>, size at each sensor disc on the base (default min(h_min,
+//                 disc radius))
 //   loads*        {"punches"*: [{"center", "diameter", "force" | "displacement"}],
 //                  "patches"*: [{"center", "diameter", "direction": [x, y, z], "force"}]}
 //   calibration*  {"punch_diameter"*, "scan_half_width"*, "spacing"*}
@@ -493,13 +495,16 @@ void check_sensor_footprint(const Reader& r, const Geometry& geo, const Sensors&
 MeshControls read_mesh(const Reader& r, const json& m) {
   const std::string P = "mesh";
   r.object(m, P,
-           {"h_min", "growth", "h_max", "refine_sensors", "min_dihedral_deg", "max_radius_edge", "regions"});
+           {"h_min", "growth", "h_max", "refine_sensors", "sensor_h", "min_dihedral_deg", "max_radius_edge",
+            "regions"});
   MeshControls mc;
   mc.h_min = r.number(m, P, "h_min", length());
   mc.growth = r.number(m, P, "growth", greater(1));
   mc.h_max = r.number(m, P, "h_max", at_least(mc.h_min, "mesh.h_min = " + fmt(mc.h_min)));
   if (const json* v = Reader::find(m, "refine_sensors"))
     mc.refine_sensors = r.boolean(*v, sub(P, "refine_sensors"));
+  mc.sensor_h =
+      r.number_or(m, P, "sensor_h", 0.0, half_open_interval(0, mc.h_min, "mesh.h_min = " + fmt(mc.h_min)));
   mc.min_dihedral_deg = r.number_or(m, P, "min_dihedral_deg", mc.min_dihedral_deg, open_interval(0, 30));
   mc.max_radius_edge = r.number_or(
       m, P, "max_radius_edge", mc.max_radius_edge,

@@ -117,6 +117,9 @@ struct MeshControls {
   double growth = 1.3;         // geometric growth rate of the edge length away from them (> 1)
   double h_max = 2.0;          // mm, cap on the edge length
   bool refine_sensors = true;  // sensor discs are regions of interest
+  // mm, ≤ h_min: edge length at each sensor disc on the base, growing with the distance from the disc in
+  // every direction (if refine_sensors); 0 → min(h_min, disc radius), or h_min for point sensors.
+  double sensor_h = 0.0;
   std::vector<RegionOfInterest> regions;
   double max_radius_edge = 1.5;  // TetGen quality bound (q switch): max radius-edge ratio, >= 1.1
   double min_dihedral_deg = 10;  // TetGen quality bound (q switch): min dihedral angle, in (0, 30)

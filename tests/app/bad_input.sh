@@ -83,6 +83,7 @@ bad sensor_off_layer 'd["sensors"]["positions"] = [[7.95, 0]]' 'sensors.position
 bad sensor_duplicate 'd["sensors"]["positions"] = [[0, 0], [1, 0], [0, 0]]' 'sensors.positions\[2\] = .*same place as sensors.positions\[0\]'
 bad disc_zero 'd["sensors"]["disc_diameter"] = 0' 'sensors.disc_diameter = 0: must be a length'
 bad h_min_above_h_max 'd["mesh"]["h_min"] = 4' 'mesh.h_max = 3.0: must be a number >= mesh.h_min = 4'
+bad sensor_h_above_h_min 'd["mesh"]["sensor_h"] = 0.5' 'mesh.sensor_h = 0.5: must be a number in \(0, mesh.h_min = 0.4\]'
 bad growth_one 'd["mesh"]["growth"] = 1' 'mesh.growth = 1: must be a number > 1'
 bad h_min_negative 'd["mesh"]["h_min"] = -0.4' 'mesh.h_min = -0.4: must be a length'
 bad punch_both "$punch[\"displacement\"] = 0.01" 'loads.punches\[0\] = .*exactly one of "force" \(N\) or "displacement"'

@@ -18,6 +18,9 @@ import copy, json, sys
 s = json.load(open(sys.argv[1]))
 for key in ("h_min", "h_max"):
     s["mesh"][key] *= 2
+# No finer disc at the base: with it (at 0.1 or 0.2 mm) these coarse levels leave a folded top element when
+# the ridges are lowered for the control (TetGen's different interior points; the shipped sizes are finer).
+s["mesh"]["sensor_h"] = s["mesh"]["h_min"]
 s["calibration"]["spacing"] = 0.2
 r = s["geometry"]["ridges"]
 r["radius"] = 2 * r["period"]

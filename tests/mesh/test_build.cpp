@@ -25,6 +25,7 @@ Scene small_cap(double scale) {
   s.mesh.h_min = 0.4 * scale;
   s.mesh.h_max = 1.6 * scale;
   s.mesh.growth = 1.5;
+  s.mesh.sensor_h = 0.1 * scale;  // the default (the disc radius) at scale 1; scaled, the meshes stay alike
   return s;
 }
 
@@ -43,7 +44,10 @@ TEST(MeshBuild, CapVolumeConvergesToTruncatedCapVolumeAtFourthOrder) {
   // integrated against a smooth surface, with first-order cancellation); straight tets give O(h²).
   std::vector<double> size, err_p2, err_p1;
   for (double scale : {2.0, 1.0, 0.5}) {
-    const Scene s = small_cap(scale);
+    Scene s = small_cap(scale);
+    // No base refinement at the sensor: the base then takes the top's triangulation. With its own, the rim
+    // is remeshed differently per level and these three coarse levels show orders 3.4 and 1.7.
+    s.mesh.sensor_h = s.mesh.h_min;
     const MeshQuality q = assess_quality(build_mesh(s));
     const double exact = SkinShape(s.geometry).volume();
     size.push_back(s.mesh.h_max);
@@ -221,6 +225,42 @@ TEST(MeshBuild, ElementsAreSmallNearRegionsOfInterestAndLargeFarAway) {
 }
 
 double size_top_z(const Scene& s, double x, double y) { return SkinShape(s.geometry).top_z(x, y); }
+
+// A sensor disc (radius 0.1 at the origin) is a region at the base of size mesh.sensor_h (default: the disc
+// radius), growing as h + (g − 1)·distance with the height counted; above it, the h_min column.
+TEST(MeshBuild, SensorDiscsRefineTheBaseAndGradeUpwards) {
+  Scene s = small_cap(1.0);  // h_min 0.4, h_max 1.6, growth 1.5, sensor at the origin, disc diameter 0.2
+  s.mesh.sensor_h = 0;       // the default
+  const SizingField size(s);
+  EXPECT_DOUBLE_EQ(sensor_mesh_size(s), 0.1);
+  EXPECT_DOUBLE_EQ(size.on_base(0, 0), 0.1);
+  EXPECT_NEAR(size.on_base(0.6, 0), 0.1 + 0.5 * 0.5, 1e-12);  // the column would give 0.4 + 0.5·0.5
+  EXPECT_NEAR(size.in_volume(0, 0, 0.4), 0.1 + 0.5 * 0.4, 1e-12);
+  EXPECT_DOUBLE_EQ(size.in_volume(0, 0, 1.0), 0.4);  // the column: 0.1 + 0.5·1.0 exceeds h_min
+  EXPECT_DOUBLE_EQ(size(0, 0), 0.4);                 // the top, 3 mm above the disc
+
+  auto mean_base_edge_on_disc = [](const TetMesh& m) {
+    double sum = 0;
+    int n = 0;
+    for (int f = 0; f < m.faces.rows(); ++f) {
+      if (m.face_marker(f) != kBase) continue;
+      const Eigen::Vector3d a = m.nodes.row(m.faces(f, 0)), b = m.nodes.row(m.faces(f, 1)),
+                            d = m.nodes.row(m.faces(f, 2));
+      const Eigen::Vector3d g = (a + b + d) / 3;
+      if (std::hypot(g.x(), g.y()) > 0.1) continue;
+      sum += ((a - b).norm() + (b - d).norm() + (d - a).norm()) / 3, ++n;
+    }
+    return n ? sum / n : 0.0;
+  };
+  const double fine = mean_base_edge_on_disc(build_mesh(s));
+  s.mesh.sensor_h = s.mesh.h_min;  // only the column
+  const SizingField column(s);
+  EXPECT_DOUBLE_EQ(column.on_base(0, 0), 0.4);
+  const double coarse = mean_base_edge_on_disc(build_mesh(s));
+  // Edges sit at about 0.6–0.8 of their bound (0.1 and 0.4): the mean over the disc must follow the bound.
+  EXPECT_LT(fine, 0.1);
+  EXPECT_GT(coarse, 2 * fine);
+}
 
 // With a contact, the candidate zone (about the apex for a plate on a cap) gets contact.h, a hole its h (or
 // contact.h), and the sweep path (radius hole_diameter/2 + sweep.h about the segment) gets sweep.h; the size
