@@ -10,12 +10,14 @@
 #include "contact/metrics.hpp"
 #include "green/calibration.hpp"
 #include "green/kfit.hpp"
+#include "mesh/sizing.hpp"
 #include "validation/richardson.hpp"
 
 namespace skinfem::app {
 
 Scene scaled_scene(const Scene& base, double s) {
   Scene scene = base;
+  scene.mesh.sensor_h = sensor_mesh_size(base) * s;
   scene.mesh.h_min *= s;
   scene.mesh.h_max *= s;
   scene.mesh.growth = 1 + s * (scene.mesh.growth - 1);

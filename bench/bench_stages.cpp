@@ -17,6 +17,7 @@
 #include "green/kfit.hpp"
 #include "green/meridian.hpp"
 #include "mesh/build.hpp"
+#include "mesh/sizing.hpp"
 #include "scene/load.hpp"
 
 namespace skinfem {
@@ -27,6 +28,7 @@ const char* kScenes[2] = {"flat_layer", "candelier2011"};
 Scene scaled(int scene, double s) {
   Scene sc = load_scene(std::string(SKINFEM_SOURCE_DIR) + "/scenes/" + kScenes[scene] + ".json");
   sc.contact.reset();  // the Green and k stages: the skin without the contact refinement
+  sc.mesh.sensor_h = sensor_mesh_size(sc) * s;
   sc.mesh.h_min *= s;
   sc.mesh.h_max *= s;
   for (auto& r : sc.mesh.regions) r.h *= s;

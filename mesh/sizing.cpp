@@ -26,13 +26,16 @@ SizingField::SizingField(const Scene& scene)
   const double h_min = scene.mesh.h_min;
   for (auto& r : through_)
     if (r.h <= 0) r.h = h_min;
-  if (scene.mesh.refine_sensors) {
-    const double disc_radius = 0.5 * scene.sensors.disc_diameter, sensor_h = sensor_mesh_size(scene);
+  // Imported surfaces have no exact height above the base: their discs keep an h_min column.
+  const bool generated = scene.geometry.kind != GeometryKind::surface;
+  if (scene.mesh.refine_sensors)
     for (const auto& s : scene.sensors.positions) {
-      through_.push_back({s, s, disc_radius, h_min});
-      if (sensor_h < h_min) base_.push_back({s, s, disc_radius, sensor_h});
+      const RegionOfInterest disc{s, s, 0.5 * scene.sensors.disc_diameter, sensor_mesh_size(scene)};
+      if (generated)
+        base_.push_back(disc);
+      else
+        through_.push_back({s, s, disc.radius, h_min});
     }
-  }
   for (const auto& p : scene.loads.punches) through_.push_back({p.center, p.center, 0.5 * p.diameter, h_min});
   for (const auto& p : scene.loads.patches) through_.push_back({p.center, p.center, 0.5 * p.diameter, h_min});
   if (scene.contact) {
@@ -62,7 +65,7 @@ double SizingField::at(double x, double y, double depth) const {
   for (const auto& r : through_) grow(r, 0.0);
   for (const auto& r : top_) grow(r, depth);
   if (!base_.empty()) {
-    const double height = shape_ ? std::max(0.0, shape_->top_z(x, y) - depth) : 0.0;
+    const double height = std::max(0.0, shape_->top_z(x, y) - depth);
     for (const auto& r : base_) grow(r, height);
   }
   return size;

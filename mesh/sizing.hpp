@@ -3,17 +3,18 @@
 // Inside a region the size is its h (default mesh.h_min). Elements then grow geometrically by the
 // growth rate g from one to the next; summing h₀, h₀g, h₀g², … shows that after a distance d the
 // element size is h₀ + (g − 1)·d. So size = min(h_max, min over regions of h_r + (g − 1)·dist(p, r)).
-// Two kinds of region:
-//  - through the thickness (mesh.regions, sensor discs, punches, traction patches): dist is the
-//    horizontal distance, the same at every z — a thin skin's Green maps need it at every depth;
+// Three kinds of region:
+//  - through the thickness (mesh.regions, punches, traction patches; sensor discs of imported surfaces):
+//    dist is the horizontal distance, the same at every z — a thin skin's Green maps need it at every depth;
 //  - at the top (the contact zone, holes, the hole's path): dist also counts the depth below the top
 //    surface, so the mesh coarsens towards the base. Contact needs its resolution where the pressure
 //    acts; sensors read it through the layer, smoothed over ~h;
 //  - at the base (each sensor disc at mesh.sensor_h): dist also counts the height above the base. A disc
 //    reading is the mean traction over the disc, whose edge the reading's adjoint sees as a dislocation
-//    edge: with one element across the disc the candelier2011 axis sensor's disc maps are 2× and its point
-//    maps 4–10× closer to the meridian solution than with h_min = 0.25 mm over a 0.1 mm disc radius.
-//  Imported surfaces have no exact top, so there top and base regions are extruded like the others.
+//    edge. candelier2011's axis sensor, against the meridian solution: an h_min = 0.25 mm column over the
+//    0.1 mm disc radius had 101k DOFs and disc-map errors 1.4–1.8e-3 of the peak; the disc at 0.1 mm on the
+//    base with the column kept, 119k and 0.5–0.7e-3; the disc alone (this), 89k and 0.8–1.1e-3.
+//  Imported surfaces have no exact top, so there top regions are extruded like the others.
 #pragma once
 
 #include <optional>
@@ -34,7 +35,8 @@ class SizingField {
   // contact_center) of size contact_zone_h, every hole disc of its own h (default contact_zone_h); the sweep
   // path (every point within hole_diameter/2 + sweep.h of the segment from → to) of size sweep.h, if sweep.h
   // > 0; and then every sensor disc becomes a through region of size contact_zone_h (at most). Base regions:
-  // the sensor discs at sensor_mesh_size, where it is below h_min.
+  // the sensor discs at sensor_mesh_size (if mesh.refine_sensors; through regions of size h_min on imported
+  // surfaces).
   explicit SizingField(const Scene& scene);
   double operator()(double x, double y) const { return at(x, y, 0.0); }  // on the top surface, mm
   double on_base(double x, double y) const;                              // on the base z = 0, mm

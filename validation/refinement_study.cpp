@@ -10,6 +10,7 @@
 #include "fem/elastic_model.hpp"
 #include "green/layer_exact.hpp"
 #include "mesh/build.hpp"
+#include "mesh/sizing.hpp"
 #include "validation/load_metrics.hpp"
 
 namespace skinfem {
@@ -36,6 +37,7 @@ StudyResult refinement_study(const Scene& base_scene, const std::vector<double>&
   for (double scale : scales) {
     Scene scene = base_scene;
     // Every size scales: at distance d the target is h + (g − 1)d, so the grading g − 1 scales too.
+    scene.mesh.sensor_h = sensor_mesh_size(base_scene) * scale;
     scene.mesh.h_min *= scale;
     scene.mesh.h_max *= scale;
     scene.mesh.growth = 1 + scale * (scene.mesh.growth - 1);

@@ -41,8 +41,9 @@ struct SmallLayer {
     s.sensors.disc_diameter = 0.2;
     s.mesh.h_min = 0.25, s.mesh.h_max = 1.0, s.mesh.growth = 1.5;
     // The quadrature and exactness checks below are about the mesh they were written for (one with an
-    // all-held corner tet): no finer disc at the base.
-    s.mesh.sensor_h = s.mesh.h_min;
+    // all-held corner tet): each disc an h_min column through the layer, no finer disc at the base.
+    s.mesh.refine_sensors = false;
+    for (const Vec2& p : s.sensors.positions) s.mesh.regions.push_back({p, p, 0.5 * s.sensors.disc_diameter, 0});
     return s;
   }
   SmallLayer()

@@ -45,9 +45,7 @@ TEST(MeshBuild, CapVolumeConvergesToTruncatedCapVolumeAtFourthOrder) {
   std::vector<double> size, err_p2, err_p1;
   for (double scale : {2.0, 1.0, 0.5}) {
     Scene s = small_cap(scale);
-    // No base refinement at the sensor: the base then takes the top's triangulation. With its own, the rim
-    // is remeshed differently per level and these three coarse levels show orders 3.4 and 1.7.
-    s.mesh.sensor_h = s.mesh.h_min;
+    s.mesh.refine_sensors = false;  // the base then takes the top's triangulation: one family of meshes
     const MeshQuality q = assess_quality(build_mesh(s));
     const double exact = SkinShape(s.geometry).volume();
     size.push_back(s.mesh.h_max);
@@ -215,19 +213,20 @@ TEST(MeshBuild, ElementsAreSmallNearRegionsOfInterestAndLargeFarAway) {
   for (int t = 0; t < m.num_tets(); ++t) {
     Eigen::Vector3d c = Eigen::Vector3d::Zero();
     for (int k = 0; k < 4; ++k) c += m.nodes.row(m.tets(t, k)).transpose() / 4;
-    const double r = std::hypot(c.x(), c.y());  // the sensor disc (radius 0.1) is at the origin
-    if (r < 0.1) near_max = std::max(near_max, tet_longest_edge(m, t));
+    const double r = std::hypot(c.x(), c.y());  // the sensor disc (radius 0.1) is at the origin, on the base
+    if (r < 0.1 && c.z() < 0.2) near_max = std::max(near_max, tet_longest_edge(m, t));
     if (r > 4.0) far_sum += tet_longest_edge(m, t), ++far_n;
   }
-  // The sizing field bounds the longest edge at the centroid by h_min + (g − 1)·distance.
-  EXPECT_LE(near_max, 0.2 + 0.5 * 0.2);
+  // The sizing field bounds the longest edge at the centroid by sensor_h + (g − 1)·distance (height < 0.2),
+  // with (g − 1)·0.2 to spare as before for the faces, which the surface mesher sizes.
+  EXPECT_LE(near_max, 0.1 + 0.5 * 0.2 + 0.5 * 0.2);
   EXPECT_GT(far_sum / far_n, 0.5 * 1.5);
 }
 
 double size_top_z(const Scene& s, double x, double y) { return SkinShape(s.geometry).top_z(x, y); }
 
 // A sensor disc (radius 0.1 at the origin) is a region at the base of size mesh.sensor_h (default: the disc
-// radius), growing as h + (g − 1)·distance with the height counted; above it, the h_min column.
+// radius), growing as h + (g − 1)·distance with the height counted.
 TEST(MeshBuild, SensorDiscsRefineTheBaseAndGradeUpwards) {
   Scene s = small_cap(1.0);  // h_min 0.4, h_max 1.6, growth 1.5, sensor at the origin, disc diameter 0.2
   s.mesh.sensor_h = 0;       // the default
@@ -236,8 +235,8 @@ TEST(MeshBuild, SensorDiscsRefineTheBaseAndGradeUpwards) {
   EXPECT_DOUBLE_EQ(size.on_base(0, 0), 0.1);
   EXPECT_NEAR(size.on_base(0.6, 0), 0.1 + 0.5 * 0.5, 1e-12);  // the column would give 0.4 + 0.5·0.5
   EXPECT_NEAR(size.in_volume(0, 0, 0.4), 0.1 + 0.5 * 0.4, 1e-12);
-  EXPECT_DOUBLE_EQ(size.in_volume(0, 0, 1.0), 0.4);  // the column: 0.1 + 0.5·1.0 exceeds h_min
-  EXPECT_DOUBLE_EQ(size(0, 0), 0.4);                 // the top, 3 mm above the disc
+  EXPECT_NEAR(size.in_volume(0, 0, 1.0), 0.1 + 0.5 * 1.0, 1e-12);
+  EXPECT_NEAR(size(0, 0), 0.1 + 0.5 * size_top_z(s, 0, 0), 1e-12);  // the top, about 3 mm above the disc
 
   auto mean_base_edge_on_disc = [](const TetMesh& m) {
     double sum = 0;
@@ -247,18 +246,20 @@ TEST(MeshBuild, SensorDiscsRefineTheBaseAndGradeUpwards) {
       const Eigen::Vector3d a = m.nodes.row(m.faces(f, 0)), b = m.nodes.row(m.faces(f, 1)),
                             d = m.nodes.row(m.faces(f, 2));
       const Eigen::Vector3d g = (a + b + d) / 3;
-      if (std::hypot(g.x(), g.y()) > 0.1) continue;
+      if (std::hypot(g.x(), g.y()) > 0.3) continue;
       sum += ((a - b).norm() + (b - d).norm() + (d - a).norm()) / 3, ++n;
     }
     return n ? sum / n : 0.0;
   };
   const double fine = mean_base_edge_on_disc(build_mesh(s));
-  s.mesh.sensor_h = s.mesh.h_min;  // only the column
-  const SizingField column(s);
-  EXPECT_DOUBLE_EQ(column.on_base(0, 0), 0.4);
+  s.mesh.sensor_h = s.mesh.h_min;
+  const SizingField coarser(s);
+  EXPECT_DOUBLE_EQ(coarser.on_base(0, 0), 0.4);
   const double coarse = mean_base_edge_on_disc(build_mesh(s));
-  // Edges sit at about 0.6–0.8 of their bound (0.1 and 0.4): the mean over the disc must follow the bound.
-  EXPECT_LT(fine, 0.1);
+  std::printf("mean base edge within 0.3 mm of the disc centre: %.3f mm (sensor_h 0.1), %.3f mm (0.4)\n",
+              fine, coarse);
+  // Within 0.3 mm of the centre the bounds are 0.1…0.2 and 0.4…0.5 mm; edges sit at about 0.6–0.8 of them.
+  EXPECT_LT(fine, 0.2);
   EXPECT_GT(coarse, 2 * fine);
 }
 

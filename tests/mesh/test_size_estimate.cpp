@@ -54,8 +54,10 @@ TEST(SizeEstimate, RidgedLayerCountsItsFineTop) {
 }
 
 TEST(SizeEstimate, StopsEarlyAboveItsLimitAndSaysSo) {
-  // h_min 1 µm over the sensor disc: ~1e9 elements; the integration stops at the limit.
-  const MeshEstimate e = estimate_mesh(layer(3.0, 0.001), 1e6);
+  // h_min 1 µm over a 0.1 mm column through the layer: ~1e9 elements; the integration stops at the limit.
+  Scene s = layer(3.0, 0.001);
+  s.mesh.regions.push_back({{0, 0}, {0, 0}, 0.1, 0.0});
+  const MeshEstimate e = estimate_mesh(s, 1e6);
   EXPECT_GT(e.tets, 1e6);
   EXPECT_LT(e.tets, 1e8);
 }
