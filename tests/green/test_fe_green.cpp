@@ -43,7 +43,8 @@ struct SmallLayer {
     // The quadrature and exactness checks below are about the mesh they were written for (one with an
     // all-held corner tet): each disc an h_min column through the layer, no finer disc at the base.
     s.mesh.refine_sensors = false;
-    for (const Vec2& p : s.sensors.positions) s.mesh.regions.push_back({p, p, 0.5 * s.sensors.disc_diameter, 0});
+    for (const Vec2& p : s.sensors.positions)
+      s.mesh.regions.push_back({p, p, 0.5 * s.sensors.disc_diameter, 0});
     return s;
   }
   SmallLayer()
