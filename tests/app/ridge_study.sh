@@ -18,8 +18,9 @@ import copy, json, sys
 s = json.load(open(sys.argv[1]))
 for key in ("h_min", "h_max"):
     s["mesh"][key] *= 2
-# No finer disc at the base: with it (at 0.1 or 0.2 mm) these coarse levels leave a folded top element when
-# the ridges are lowered for the control (TetGen's different interior points; the shipped sizes are finer).
+# No finer disc at the base: with it (the default 0.1 mm, or 0.2) these doubled sizes leave a folded top
+# element when the ridges are lowered for the control (TetGen places other interior points). The shipped
+# sizes study without it: `study --ridges 3,4,5` on scenes/ridged_layer.json.
 s["mesh"]["sensor_h"] = s["mesh"]["h_min"]
 s["calibration"]["spacing"] = 0.2
 r = s["geometry"]["ridges"]
