@@ -225,6 +225,22 @@ TEST(MeshBuild, ElementsAreSmallNearRegionsOfInterestAndLargeFarAway) {
 
 double size_top_z(const Scene& s, double x, double y) { return SkinShape(s.geometry).top_z(x, y); }
 
+// Mean edge length of the faces with `marker` whose centroid (x, y) passes `keep`, mm (0 if none).
+template <class Keep>
+double mean_face_edge(const TetMesh& m, int marker, Keep keep) {
+  double sum = 0;
+  int n = 0;
+  for (int f = 0; f < m.faces.rows(); ++f) {
+    if (m.face_marker(f) != marker) continue;
+    const Eigen::Vector3d a = m.nodes.row(m.faces(f, 0)), b = m.nodes.row(m.faces(f, 1)),
+                          d = m.nodes.row(m.faces(f, 2));
+    const Eigen::Vector3d g = (a + b + d) / 3;
+    if (!keep(g.x(), g.y())) continue;
+    sum += ((a - b).norm() + (b - d).norm() + (d - a).norm()) / 3, ++n;
+  }
+  return n ? sum / n : 0.0;
+}
+
 // A sensor disc (radius 0.1 at the origin) is a region at the base of size mesh.sensor_h (default: the disc
 // radius), growing as h + (g − 1)·distance with the height counted.
 TEST(MeshBuild, SensorDiscsRefineTheBaseAndGradeUpwards) {
@@ -239,17 +255,7 @@ TEST(MeshBuild, SensorDiscsRefineTheBaseAndGradeUpwards) {
   EXPECT_NEAR(size(0, 0), 0.1 + 0.5 * size_top_z(s, 0, 0), 1e-12);  // the top, about 3 mm above the disc
 
   auto mean_base_edge_on_disc = [](const TetMesh& m) {
-    double sum = 0;
-    int n = 0;
-    for (int f = 0; f < m.faces.rows(); ++f) {
-      if (m.face_marker(f) != kBase) continue;
-      const Eigen::Vector3d a = m.nodes.row(m.faces(f, 0)), b = m.nodes.row(m.faces(f, 1)),
-                            d = m.nodes.row(m.faces(f, 2));
-      const Eigen::Vector3d g = (a + b + d) / 3;
-      if (std::hypot(g.x(), g.y()) > 0.3) continue;
-      sum += ((a - b).norm() + (b - d).norm() + (d - a).norm()) / 3, ++n;
-    }
-    return n ? sum / n : 0.0;
+    return mean_face_edge(m, kBase, [](double x, double y) { return std::hypot(x, y) <= 0.3; });
   };
   const double fine = mean_base_edge_on_disc(build_mesh(s));
   s.mesh.sensor_h = s.mesh.h_min;
@@ -313,17 +319,9 @@ TEST(MeshBuild, ContactRefinementGradesWithDepth) {
   s.contact = c;
   const TetMesh m = build_mesh(s);
   auto mean_edge = [&](int marker) {
-    double sum = 0;
-    int n = 0;
-    for (int f = 0; f < m.faces.rows(); ++f) {
-      if (m.face_marker(f) != marker) continue;
-      const Eigen::Vector3d a = m.nodes.row(m.faces(f, 0)), b = m.nodes.row(m.faces(f, 1)),
-                            d = m.nodes.row(m.faces(f, 2));
-      const Eigen::Vector3d g = (a + b + d) / 3;
-      if (std::hypot(g.x() - 0.5, g.y()) > 1.5 || std::hypot(g.x(), g.y()) < 0.6) continue;
-      sum += ((a - b).norm() + (b - d).norm() + (d - a).norm()) / 3, ++n;
-    }
-    return sum / n;
+    return mean_face_edge(m, marker, [](double x, double y) {
+      return std::hypot(x - 0.5, y) <= 1.5 && std::hypot(x, y) >= 0.6;
+    });
   };
   // Sizes bound the longest edge: top ≤ 0.25; base, 3 mm below, 0.25 + 0.5·3 (or the sensor disc's 0.4 +
   // 0.5·d, at least 0.65 in this ring). Means sit at about 0.6–0.8 of the bound.
