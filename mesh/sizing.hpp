@@ -30,13 +30,12 @@ double sensor_mesh_size(const Scene& scene);
 
 class SizingField {
  public:
-  // Through regions: mesh.regions, the sensor discs (if mesh.refine_sensors), every punch and traction
-  // patch. Top regions, with a contact: the candidate zone (disc of radius contact_zone_radius about
-  // contact_center) of size contact_zone_h, every hole disc of its own h (default contact_zone_h); the sweep
-  // path (every point within hole_diameter/2 + sweep.h of the segment from → to) of size sweep.h, if sweep.h
-  // > 0; and then every sensor disc becomes a through region of size contact_zone_h (at most). Base regions:
-  // the sensor discs at sensor_mesh_size (if mesh.refine_sensors; through regions of size h_min on imported
-  // surfaces).
+  // Through regions: mesh.regions, every punch and traction patch. Top regions, with a contact: the candidate
+  // zone (disc of radius contact_zone_radius about contact_center) of size contact_zone_h, every hole disc of
+  // its own h (default contact_zone_h); the sweep path (every point within hole_diameter/2 + sweep.h of the
+  // segment from → to) of size sweep.h, if sweep.h > 0; and then every sensor disc becomes a through region
+  // of size contact_zone_h (at most). Base regions (if mesh.refine_sensors): the sensor discs at
+  // sensor_mesh_size; on imported surfaces, through regions of size h_min instead.
   explicit SizingField(const Scene& scene);
   double operator()(double x, double y) const { return at(x, y, 0.0); }  // on the top surface, mm
   double on_base(double x, double y) const;                              // on the base z = 0, mm
