@@ -12,7 +12,8 @@
 // (the volume solution of the chosen mode), DIR/sensors.csv (sensor,x_mm,y_mm,sigma_z_kPa,sigma_x_kPa),
 // DIR/modes.csv (the same readings for every friction mode) and DIR/summary.json (contact_radius_mm,
 // p0_kPa, indentation_um, force_N, tangential_force_N, max_penetration_um, min_pressure_kPa,
-// pressure_centroid_x_mm, complementarity, every mode's metrics, coupled − uncoupled differences, dofs,
+// pressure_centroid_x_mm, complementarity, every mode's metrics, coupled − uncoupled differences (centroid
+// shifts along the sliding direction and as (x, y) vectors), dofs,
 // wall_s per stage, peak_rss_mb).
 #include <cmath>
 #include <cstdio>
@@ -69,6 +70,9 @@ nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, cons
        {FrictionMode::none, FrictionMode::static_residual, FrictionMode::uncoupled, FrictionMode::coupled}) {
     results[mode] = solver.solve(mode, excluded);
     check_zone(scene, setup, results[mode]);
+    for (size_t h = 0; h < scene.contact->holes.size(); ++h)
+      contact::require_hole_resolved(solver.zone(), mesh, scene.contact->holes[h], results[mode].active,
+                                     "contact.holes[" + std::to_string(h) + "]");
     metrics[mode] = contact::contact_metrics(solver, mesh, *setup.top, results[mode], centre);
   }
   wall["contact_solves"] = clock.seconds();
@@ -147,14 +151,21 @@ nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, cons
   // What coupling changes: coupled − uncoupled at the same μ (the paper's assumption is "nothing").
   const auto& cu = metrics[FrictionMode::coupled];
   const auto& un = metrics[FrictionMode::uncoupled];
-  nlohmann::json coupling = {
-      {"mu", scene.contact->mu},
-      {"pressure_centroid_shift_mm", cu.pressure_centroid[0] - un.pressure_centroid[0]},
-      {"zone_centroid_shift_mm", cu.zone_centroid[0] - un.zone_centroid[0]},
-      {"front_back_peak_ratio_coupled", cu.front_back_peak_ratio},
-      {"front_back_peak_ratio_uncoupled", un.front_back_peak_ratio},
-      {"indentation_change_um",
-       1e3 * (results[FrictionMode::coupled].depth_mm - results[FrictionMode::uncoupled].depth_mm)}};
+  // Shifts along the sliding direction t (positive: ahead), and their (x, y) vectors.
+  const Vec2 t = scene.contact->direction;
+  const Vec2 dp{cu.pressure_centroid[0] - un.pressure_centroid[0],
+                cu.pressure_centroid[1] - un.pressure_centroid[1]};
+  const Vec2 dz{cu.zone_centroid[0] - un.zone_centroid[0], cu.zone_centroid[1] - un.zone_centroid[1]};
+  nlohmann::json coupling = {{"mu", scene.contact->mu},
+                             {"direction", {t[0], t[1]}},
+                             {"pressure_centroid_shift_mm", dp[0] * t[0] + dp[1] * t[1]},
+                             {"pressure_centroid_shift_xy_mm", {dp[0], dp[1]}},
+                             {"zone_centroid_shift_mm", dz[0] * t[0] + dz[1] * t[1]},
+                             {"zone_centroid_shift_xy_mm", {dz[0], dz[1]}},
+                             {"front_back_peak_ratio_coupled", cu.front_back_peak_ratio},
+                             {"front_back_peak_ratio_uncoupled", un.front_back_peak_ratio},
+                             {"indentation_change_um", 1e3 * (results[FrictionMode::coupled].depth_mm -
+                                                              results[FrictionMode::uncoupled].depth_mm)}};
   for (size_t k = 0; k < scene.sensors.positions.size(); ++k) {
     const auto& a = results[FrictionMode::coupled].readings;
     const auto& b = results[FrictionMode::uncoupled].readings;
@@ -192,9 +203,9 @@ nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, cons
       r.complementarity, 1e3 * r.min_lambda, 1e3 * max_penetration,
       summary["readings_condensed_vs_reactions_rel"].get<double>());
   std::printf(
-      "  coupled - uncoupled (mu %.3g): pressure centroid %+.4f mm, contact zone %+.4f mm, front/back peak "
-      "%.4f vs %.4f\n",
-      scene.contact->mu, coupling["pressure_centroid_shift_mm"].get<double>(),
+      "  coupled - uncoupled (mu %.3g, sliding along (%.3g, %.3g)): pressure centroid %+.4f mm ahead "
+      "(x %+.4f, y %+.4f), contact zone %+.4f mm ahead, front/back peak %.4f vs %.4f\n",
+      scene.contact->mu, t[0], t[1], coupling["pressure_centroid_shift_mm"].get<double>(), dp[0], dp[1],
       coupling["zone_centroid_shift_mm"].get<double>(), cu.front_back_peak_ratio, un.front_back_peak_ratio);
   std::printf(
       "  %d DOFs, %d multipliers (%s); mesh %.2f s, assemble %.2f s, factor %.2f s, "

@@ -16,8 +16,6 @@
 // peak_shift_mm,shape_error). Then figures/*.png (scripts/figures.py, matplotlib) and DIR/report.json (the
 // headline numbers with units, wall seconds per stage, peak memory) and DIR/index.html (figures, tables,
 // links to every VTK file).
-#include <sys/wait.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -100,14 +98,15 @@ int variant_index(const std::vector<validation::Variant>& v, const std::string& 
 
 // Does coupling explain the front sensors' excess? FE coupled against FE uncoupled sliding signals on the
 // sensors at or ahead of the contact centre along x.
-nlohmann::json front_sensor_answer(const validation::Crosscheck& x, const Sensors& sensors, double center_x) {
+// front: the sensors ahead along the sliding direction (validation::front_sensors).
+nlohmann::json front_sensor_answer(const validation::Crosscheck& x, const std::vector<int>& front_sensors,
+                                   const Vec2& direction) {
   const int unc = variant_index(x.signal_variants, "uncoupled"),
             paper = variant_index(x.signal_variants, "paper_model");
   nlohmann::json j;
   double lo[2] = {1e300, 1e300}, hi[2] = {0, 0}, plo[2] = {1e300, 1e300}, phi[2] = {0, 0};
   std::string front;
-  for (size_t k = 0; k < sensors.positions.size(); ++k) {
-    if (sensors.positions[k][0] < center_x - 1e-9) continue;
+  for (const int k : front_sensors) {
     front += (front.empty() ? "#" : ", #") + std::to_string(k + 1);
     for (int b = 0; b < 2; ++b) {
       // FE coupled / FE uncoupled is 1 / (uncoupled / FE).
@@ -121,7 +120,13 @@ nlohmann::json front_sensor_answer(const validation::Crosscheck& x, const Sensor
       }
     }
   }
-  if (front.empty()) return j;
+  if (front.empty()) {
+    j["front_sensors"] = "";
+    j["answer"] = "No sensor lies ahead of the contact centre along the sliding direction (" +
+                  fmt("%.3g", direction[0]) + ", " + fmt("%.3g", direction[1]) +
+                  "): the front sensors' excess cannot be examined on this scene";
+    return j;
+  }
   j["front_sensors"] = front;
   j["coupling_amplitude_factor_z"] = {lo[0], hi[0]};
   j["coupling_amplitude_factor_x"] = {lo[1], hi[1]};
@@ -429,7 +434,9 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
       in.sweep = *scene.contact->sweep;
       x = validation::crosscheck(in);
       write_crosscheck(*x, scene.sensors, out_dir + "/crosscheck");
-      report["front_sensors"] = front_sensor_answer(*x, scene.sensors, in.center[0]);
+      report["front_sensors"] = front_sensor_answer(
+          *x, validation::front_sensors(scene.sensors, in.center, scene.contact->direction),
+          scene.contact->direction);
       wall["crosscheck"] = clock.seconds();
     }
   }
@@ -464,10 +471,8 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
 
   clock = Stopwatch();
   const std::string script = std::string(SKINFEM_SOURCE_DIR) + "/scripts/figures.py";
-  const std::string cmd = "/usr/bin/python3 '" + script + "' '" + out_dir + "' 1>&2";
   progress("figures: " + script);
-  const int status = std::system(cmd.c_str());
-  const int rc = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  const int rc = run_child({"/usr/bin/python3", script, out_dir});
   report["figures_exit_code"] = rc;
   wall["figures"] = clock.seconds();
 

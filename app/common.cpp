@@ -1,9 +1,13 @@
 #include "app/common.hpp"
 
+#include <spawn.h>
 #include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -43,6 +47,40 @@ void write_text_atomic(const std::string& path, const std::string& text) {
 
 void write_json(const std::string& path, const nlohmann::json& j) {
   write_text_atomic(path, j.dump(2) + "\n");
+}
+
+int run_child(const std::vector<std::string>& argv) {
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, STDERR_FILENO, STDOUT_FILENO);
+  pid_t pid = 0;
+  const int err = posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (err != 0) return -1;
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+void check_levels(const std::string& option, const std::vector<double>& levels, bool decreasing) {
+  const auto show = [](double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return std::string(buf);
+  };
+  for (size_t i = 0; i < levels.size(); ++i) {
+    if (!std::isfinite(levels[i]))
+      throw SceneError(option + ": level " + std::to_string(i + 1) + " = " + show(levels[i]) +
+                       ": every level must be a finite number");
+    if (i > 0 && (decreasing ? !(levels[i] < levels[i - 1]) : !(levels[i] > levels[i - 1])))
+      throw SceneError(option + ": " + show(levels[i - 1]) + " then " + show(levels[i]) +
+                       ": levels must be distinct and " +
+                       (decreasing ? "decreasing (coarse to fine)" : "increasing (coarse to fine)"));
+  }
 }
 
 double peak_rss_mb() {

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "scene/scene.hpp"
 
@@ -16,6 +17,16 @@ void prepare_output_dir(const std::string& dir);
 // Writes text to path through a temporary file and a rename: never a half-written file.
 void write_text_atomic(const std::string& path, const std::string& text);
 void write_json(const std::string& path, const nlohmann::json& j);
+
+// Runs argv[0] with these arguments, no shell in between (nothing in them is ever parsed as a command),
+// its stdout sent to our stderr so that stdout stays the summary; waits for it. Returns its exit code, or
+// -1 when it could not start or was killed.
+int run_child(const std::vector<std::string>& argv);
+
+// Study levels given on the command line (--scales, --ridges, --error-scales): each finite, no two equal,
+// in the order the option states (coarse to fine); otherwise the finest level, the reference of every
+// error, would be the wrong one. Throws SceneError naming the option and the offending value.
+void check_levels(const std::string& option, const std::vector<double>& levels, bool decreasing);
 
 double peak_rss_mb();
 // Sum of the numbers in a {"stage": seconds} object.

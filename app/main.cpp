@@ -2,9 +2,11 @@
 // Subcommands: mesh, solve, study, kfit, green, contact, defect, report (see each cmd_*.cpp for what it
 // computes and writes). Exit codes: 0 success, 2 bad input (scene or arguments), 1 any other failure.
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "app/common.hpp"
 #include "app/resources.hpp"
 #include "mesh/surface.hpp"
 #include "scene/load.hpp"
@@ -112,6 +114,20 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
+    // CLI11's number checks let nan and inf through.
+    for (const auto& [option, value] : {std::pair{"--grid", grid_dx}, std::pair{"--max-dofs", max_dofs}})
+      if (!std::isfinite(value))
+        throw skinfem::SceneError(std::string(option) + ": " + std::to_string(value) +
+                                  ": must be a finite number");
+    if (study->parsed()) {
+      skinfem::app::check_levels("--scales", scales, true);
+      skinfem::app::check_levels("--ridges", ridge_levels, false);
+      for (double l : ridge_levels)
+        if (l < 3)
+          throw skinfem::SceneError("--ridges: " + std::to_string(l) +
+                                    ": a level must give at least 3 mesh elements per ridge period");
+    }
+    if (report->parsed() && !no_error_bars) skinfem::app::check_levels("--error-scales", error_scales, true);
     skinfem::app::g_max_dofs = max_dofs;
     const skinfem::Scene scene = skinfem::load_scene(scene_path);
     if (mesh->parsed()) return skinfem::app::run_mesh(scene, out_dir);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -174,6 +175,27 @@ std::vector<char> excluded_by_holes(const MortarZone& zone, const TetMesh& mesh,
                      mesh.nodes(zone.vertices[i], 1) - h.center[1]) < 0.5 * h.diameter)
         out[i] = 1;
   return out;
+}
+
+void require_hole_resolved(const MortarZone& zone, const TetMesh& mesh, const Hole& hole,
+                           const std::vector<int>& active, const std::string& where) {
+  int nearest = -1;
+  double best = 1e300;
+  for (int i = 0; i < zone.size(); ++i) {
+    const double d = std::hypot(mesh.nodes(zone.vertices[i], 0) - hole.center[0],
+                                mesh.nodes(zone.vertices[i], 1) - hole.center[1]);
+    if (d < 0.5 * hole.diameter) return;  // it holds a multiplier
+    if (d < best) best = d, nearest = i;
+  }
+  if (nearest < 0 || std::find(active.begin(), active.end(), nearest) == active.end()) return;
+  char buf[256];
+  std::snprintf(
+      buf, sizeof buf,
+      "%s: the hole of diameter %.4g mm at (%.4g, %.4g) lies in the contact but holds no contact "
+      "vertex (the nearest is %.4g mm away): the mesh over it is too coarse to see it; give a finer "
+      "mesh over the hole",
+      where.c_str(), hole.diameter, hole.center[0], hole.center[1], best);
+  throw SceneError(buf);
 }
 
 }  // namespace skinfem::contact

@@ -22,6 +22,8 @@ SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const H
     out.centers.push_back(c);
     const auto excluded = excluded_by_holes(solver.zone(), mesh, {Hole{c, sweep.hole_diameter}});
     const ContactResult r = solver.solve(mode, excluded, warm);
+    require_hole_resolved(solver.zone(), mesh, Hole{c, sweep.hole_diameter}, r.active,
+                          "contact.sweep.hole_diameter (contact.sweep.h)");
     warm = r.active;
     out.varsigma.row(i) = (r.readings - out.baseline.readings).transpose();
     out.pivots.push_back(r.pivots);

@@ -1,14 +1,16 @@
 // Scene files: JSON → Scene, with validation. The only JSON reader in skinfem.
 //
 // Format (units mm, N, MPa; keys marked * are optional, defaults from scene.hpp):
-//   name*         string; default: the file stem
+//   name*         string; default: the file stem. One file name (the report's folder out/<name>): 1 to 100
+//                 letters, digits, space and . _ - + ( ), not starting with '.', '-' or a space
 //   geometry      {"type": "cap", "R", "R_y"*, "h", "apex": [x, y], "truncation_radius", "side"*}
 //                 R_y: the apex radius of curvature along y (default R: spherical; else an ellipsoid)
 //               | {"type": "flat", "h", "half_width", "side"*}
 //                 cap and flat: "ridges"*: {"period", "height" (crest to trough, < h), "angle_deg"* (0:
-//                 crests along y), "center": [x, y], "radius" (>= 2 periods), "h"* (mesh size, default
-//                 period/6), "profile"*: "sinusoidal" (default) | "rectangular", "edge_width"* (rectangular
-//                 only: wall width in (0, period/2], default period/4)} (scene.hpp's Ridges)
+//                 crests along y), "center": [x, y], "radius" (>= 2 periods), "h"* (mesh size, at most
+//                 period/3, default period/6), "profile"*: "sinusoidal" (default) | "rectangular",
+//                 "edge_width"* (rectangular only: wall width in (0, period/2], default period/4)}
+//                 (scene.hpp's Ridges)
 //               | {"type": "surface", "path", "side"*}      path: .stl/.obj/.off, relative to the scene file
 //                 side: "free" (default) | "fixed"
 //   material      {"E", "nu"}
@@ -34,7 +36,7 @@
 //                  "h"*: <mm, > 0>,                  mesh size inside the zone; absent: mesh.h_min
 //                  "friction"*: {"mode"*: "none" (default) | "static" | "uncoupled" | "coupled",
 //                                "mu"*: >= 0 (default 0; 0 allowed with every mode),
-//                                "static_ratio"*: >= 0 (default 0; used by "static"),
+//                                "static_ratio"*: in [0, mu] (default 0; used by "static"),
 //                                "direction"*: [dx, dy] non-zero, normalised (default [1, 0])},
 //                  "sweep"*: {"from": [x, y], "to": [x, y],  a hole swept for `skinfem defect`
 //                             "positions"*: integer in [2, 100000] (default 201),
@@ -304,6 +306,20 @@ json parse_json(const std::string& text, const Reader& r) {
 std::string off_footprint(const Geometry& g, const Vec2& p, double rad, const std::string& rad_name);
 json point(const Vec2& p);
 
+constexpr const char* kNameRule =
+    "a file name of 1 to 100 characters: letters, digits, space and . _ - + ( ), not starting with '.', '-' "
+    "or a space";
+// The name becomes the report's folder (out/<name>) and appears in commands people paste into a shell: one
+// path component that cannot climb out (no separator, not "." or ".."), hide, pose as an option or carry a
+// quote, NUL or control character (a JSON string may hold "\u0000").
+bool is_path_component(const std::string& s) {
+  if (s.empty() || s.size() > 100 || s[0] == '.' || s[0] == '-' || s[0] == ' ') return false;
+  return std::all_of(s.begin(), s.end(), [](char c) {
+    // strchr finds the terminator too: NUL must be refused before it is looked up.
+    return std::isalnum(static_cast<unsigned char>(c)) || (c != '\0' && std::strchr(" ._-+()", c));
+  });
+}
+
 // Ridges on a cap or flat layer (scene.hpp's Ridges); `thickness` is the layer's h (the apex's for a cap).
 Ridges read_ridges(const Reader& r, const json& j, const std::string& P, const Geometry& geo,
                    double thickness) {
@@ -326,7 +342,10 @@ Ridges read_ridges(const Reader& r, const json& j, const std::string& P, const G
   out.angle_deg = r.number_or(j, P, "angle_deg", 0.0, closed_interval(-360, 360));
   out.center = r.vec2(j, P, "center");
   out.radius = r.number(j, P, "radius", at_least(2 * out.period, "2 x period = " + fmt(2 * out.period)));
-  out.h = r.number_or(j, P, "h", 0.0, length());
+  // Three elements per period at least (the ridge study's coarsest level): a coarser mesh cannot hold the
+  // profile (its P2 top would alias it) and the volume check would not notice.
+  out.h = r.number_or(j, P, "h", 0.0,
+                      half_open_interval(0, out.period / 3, "period/3 = " + fmt(out.period / 3) + " mm"));
   const std::string off = off_footprint(geo, out.center, out.radius, "radius");
   if (!off.empty())
     r.fail(sub(P, "center"), point(out.center), "the patterned disc must lie on the skin; " + off);
@@ -699,7 +718,12 @@ void read_friction(const Reader& r, const json& f, const std::string& path, Cont
   }
   // μ = 0 is allowed with every mode: coupled friction with μ = 0 must then reproduce frictionless contact.
   out.mu = r.number_or(f, path, "mu", 0.0, non_negative());
-  out.static_ratio = r.number_or(f, path, "static_ratio", 0.0, non_negative());
+  // At rest the plate keeps what sliding left behind, bounded by Coulomb's cone: |p_t| <= mu p_z.
+  out.static_ratio = r.number_or(
+      f, path, "static_ratio", 0.0,
+      {"a number in [0, mu = " + fmt(out.mu) + "] (a residual traction at rest stays inside Coulomb's cone " +
+           "|p_t| <= mu p_z; give contact.friction.mu)",
+       [mu = out.mu](double x) { return x >= 0 && x <= mu; }});
   if (const json* d = Reader::find(f, "direction")) {
     const Vec2 v = r.vec<2>(*d, sub(path, "direction"));
     const double n = std::hypot(v[0], v[1]);
@@ -810,6 +834,28 @@ void check_contact_zone(const Reader& r, const json& j, const Scene& scene) {
              "it would reach the truncated side; " + fix);
 }
 
+// A hole removes the multipliers whose vertex lies inside it: a mesh coarser than the hole can leave it
+// holding none, a zero signal that means "not resolved". The mesh over a hole must be at most its diameter
+// (contact/contact_solver.hpp's hole_unresolved catches the rare position that still falls between vertices).
+void check_hole_meshes(const Reader& r, const Scene& scene) {
+  const ContactLoad& c = *scene.contact;
+  const double zone_h = contact_zone_h(scene);
+  const std::string zone_words = c.h > 0 ? "contact.h = " + fmt(c.h) : "mesh.h_min = " + fmt(zone_h);
+  const auto check = [&](const std::string& path, double diameter, double h, const std::string& h_field) {
+    const double mesh_h = h > 0 ? std::min(h, zone_h) : zone_h;
+    if (mesh_h > diameter)
+      r.fail(path, json(diameter),
+             "must be >= the mesh size over the hole (" +
+                 (h > 0 && h < zone_h ? h_field + " = " + fmt(h) : zone_words) +
+                 " mm), or the hole can fall between contact vertices and read zero; give " + h_field +
+                 " <= " + fmt(diameter));
+  };
+  for (std::size_t i = 0; i < c.holes.size(); ++i)
+    check(at("contact.holes", i) + ".diameter", c.holes[i].diameter, c.holes[i].h,
+          at("contact.holes", i) + ".h");
+  if (c.sweep) check("contact.sweep.hole_diameter", c.sweep->hole_diameter, c.sweep->h, "contact.sweep.h");
+}
+
 }  // namespace
 
 Scene parse_scene(const std::string& json_text, const std::string& source_path) {
@@ -822,9 +868,14 @@ Scene parse_scene(const std::string& json_text, const std::string& source_path) 
   Scene scene;
   scene.source_path = source_path;
   const fs::path source(source_path);
-  scene.name = source.stem().string();
-  if (const json* name = Reader::find(root, "name"))
-    scene.name = r.string(*name, "name", "a non-empty string");
+  scene.name = source.stem().empty() ? "scene" : source.stem().string();
+  const json* name = Reader::find(root, "name");
+  if (name) scene.name = r.string(*name, "name", kNameRule);
+  // The name becomes the report's folder (out/<name>): one path component, never a way out of out/.
+  if (!is_path_component(scene.name))
+    r.fail(
+        "name", json(scene.name),
+        std::string("must be ") + kNameRule + (name ? "" : " (taken from the file name; give a \"name\")"));
 
   scene.geometry = read_geometry(r, r.need(root, "", "geometry", "an object"), source.parent_path());
   if (const json* sym = Reader::find(root, "symmetry")) {
@@ -859,6 +910,7 @@ Scene parse_scene(const std::string& json_text, const std::string& source_path) 
   if (const json* contact = Reader::find(root, "contact")) {
     scene.contact = read_contact(r, *contact, scene.geometry);
     check_contact_zone(r, *contact, scene);
+    check_hole_meshes(r, scene);
   }
   return scene;
 }

@@ -167,4 +167,17 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
   return out;
 }
 
+std::vector<int> front_sensors(const Sensors& sensors, const Vec2& center, const Vec2& direction) {
+  constexpr double kOnLine = 1e-9;  // mm
+  std::vector<int> out;
+  bool any_ahead = false;
+  for (size_t k = 0; k < sensors.positions.size(); ++k) {
+    const auto& p = sensors.positions[k];
+    const double ahead = (p[0] - center[0]) * direction[0] + (p[1] - center[1]) * direction[1];
+    if (ahead >= -kOnLine) out.push_back(static_cast<int>(k));
+    any_ahead = any_ahead || ahead > kOnLine;
+  }
+  return any_ahead ? out : std::vector<int>{};
+}
+
 }  // namespace skinfem::validation

@@ -80,4 +80,9 @@ Crosscheck crosscheck(const CrosscheckInput& in);
 SignalMetrics compare_signals(const std::vector<double>& u, const Eigen::VectorXd& model,
                               const Eigen::VectorXd& reference);
 
+// The paper's "front" sensors (§IV): those ahead of the contact centre along the sliding direction
+// (unit, in the base plane), those on the centre's line across it included. 0-based, ascending; empty when
+// no sensor lies strictly ahead (the front-sensor question does not arise).
+std::vector<int> front_sensors(const Sensors& sensors, const Vec2& center, const Vec2& direction);
+
 }  // namespace skinfem::validation

@@ -3,7 +3,7 @@
 # naming the field (and value) and what is allowed, exit code 2, no crash, no hang (each run is given 60 s),
 # and nothing written to --out. Base scene: a 16 mm wide, 3 mm flat layer, one 0.5 mm punch, 1 N.
 set -u
-skinfem=$1
+skinfem=$(realpath "$1")
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail=0 passed=0
@@ -147,6 +147,43 @@ variant ridged 'd["geometry"]["ridges"] = {"period": 0.2, "height": 0.05, "cente
 check study_ridges_two '--ridges: a ridge study needs at least 3 levels' "$skinfem" study "$tmp/ridged.json" --ridges 4,5 --out "$tmp/out"
 check study_scales_huge '\(--scales 1000.0\): loads.punches\[0\].center = .*must lie on the skin with mesh.h_min = 400' "$skinfem" study "$tmp/base.json" --scales 1000,500,200 --out "$tmp/out"
 check error_scales_one '--error-scales: one coarser level' "$skinfem" report "$tmp/base.json" --error-scales 2 --out "$tmp/out"
+
+# A scene file is untrusted input: its name becomes the report's folder (out/<name>) and once reached a shell.
+# Run from an empty folder with the default --out; nothing may appear there or anywhere above it.
+mkdir "$tmp/cwd"
+named() {  # NAME JSON_STRING: report on the base scene with that "name", from $tmp/cwd
+  variant "$1" "d['name'] = $2"
+  check "$1" 'name = .*must be a file name of 1 to 100 characters' env -C "$tmp/cwd" "$skinfem" report "$tmp/$1.json" --no-error-bars
+  if [ -n "$(ls -A "$tmp/cwd")" ] || [ -e "$tmp/SOMEFILE" ] || [ -e "$tmp/escaped" ] || [ -e "$(dirname "$tmp")/escaped" ]; then
+    echo "FAIL $1: wrote $(ls -A "$tmp/cwd") $(ls -d "$tmp/SOMEFILE" "$tmp/escaped" "$(dirname "$tmp")/escaped" 2>/dev/null)"
+    passed=$((passed - 1)) fail=$((fail + 1))
+  fi
+}
+named name_shell_injection "\"x'; touch SOMEFILE; echo '\""
+named name_shell_substitution '"$(touch SOMEFILE)"'
+named name_climbs_out '"../../escaped"'
+named name_dot_dot '".."'
+named name_separator '"a/b"'
+named name_nul '"a\u0000b"'
+named name_option '"-rf"'
+
+# Command-line levels and numbers that CLI11 lets through.
+check grid_nan '--grid: nan: must be a finite number' "$skinfem" green "$tmp/base.json" --grid nan --out "$tmp/out"
+check max_dofs_nan '--max-dofs: nan: must be a finite number' "$skinfem" mesh "$tmp/base.json" --max-dofs nan --out "$tmp/out"
+check study_scales_fine_first '--scales: 1 then 1.41: levels must be distinct and decreasing' "$skinfem" study "$tmp/base.json" --scales 1,1.41,2 --out "$tmp/out"
+check study_scales_equal '--scales: 1 then 1: levels must be distinct' "$skinfem" study "$tmp/base.json" --scales 1,1,1 --chain --out "$tmp/out"
+check study_ridges_equal '--ridges: 2 then 2: levels must be distinct and increasing' "$skinfem" study "$tmp/ridged.json" --ridges 2,2,2 --out "$tmp/out"
+check study_ridges_nan '--ridges: level 2 = nan: every level must be a finite number' "$skinfem" study "$tmp/ridged.json" --ridges 4,nan,6 --out "$tmp/out"
+check study_ridges_coarse '--ridges: 2.000000: a level must give at least 3 mesh elements per ridge period' "$skinfem" study "$tmp/ridged.json" --ridges 2,3,4 --out "$tmp/out"
+check error_scales_equal '--error-scales: 2 then 2: levels must be distinct and decreasing' "$skinfem" report "$tmp/base.json" --error-scales 2,2 --out "$tmp/out"
+
+# Physics the scene cannot mean.
+sphere='d["contact"] = {"indenter": {"type": "sphere", "R": 50, "center": [0, 0]}, "force": 0.1'
+bad static_above_coulomb "$sphere, \"friction\": {\"mode\": \"static\", \"mu\": 1, \"static_ratio\": 5}}" 'contact.friction.static_ratio = 5: must be a number in \[0, mu = 1\]' contact
+bad hole_below_mesh "$sphere, \"h\": 0.8, \"holes\": [{\"center\": [0.5, 0], \"diameter\": 0.5}]}" 'contact.holes\[0\].diameter = 0.5: must be >= the mesh size over the hole \(contact.h = 0.8 mm\)' contact
+bad sweep_hole_below_mesh "$sphere, \"h\": 0.8, \"sweep\": {\"from\": [-1, 0], \"to\": [1, 0]}}" 'contact.sweep.hole_diameter = 0.5: must be >= the mesh size over the hole' defect
+bad ridges_mesh_coarse 'd["geometry"]["ridges"] = {"period": 0.5, "height": 0.05, "center": [0, 0], "radius": 1, "h": 5}' 'geometry.ridges.h = 5: must be a number in \(0, period/3 = 0.166667 mm\]' mesh
+bad ridges_period_tiny 'd["geometry"]["ridges"] = {"period": 1e-6, "height": 0.05, "center": [0, 0], "radius": 1, "h": 0.2}' 'geometry.ridges.h = 0.2: must be a number in \(0, period/3' mesh
 
 echo "$passed passed, $fail failed"
 [ $fail -eq 0 ]

@@ -351,8 +351,8 @@ TEST(SceneLoad, WrongTypes) {
                      "mesh.refine_sensors = 1: must be true or false");
   EXPECT_SCENE_ERROR(with(&Doc::mesh, R"({"h_min": 0.25, "growth": 1.3, "h_max": 2.0, "regions": {}})"),
                      "mesh.regions = {}: must be an array of regions");
-  EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "name": 5)"), "name = 5: must be a non-empty string");
-  EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "name": "")"), "name = \"\": must be a non-empty string");
+  EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "name": 5)"), "name = 5: must be a file name of 1 to 100");
+  EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "name": "")"), "name = \"\": must be a file name of 1 to 100");
   EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "loads": {"punches": {"center": [0, 0]}})"),
                      "loads.punches = {\"center\":[0,0]}: must be an array of punches");
   EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "loads": [])"),
@@ -417,6 +417,23 @@ TEST(SceneLoad, EllipsoidalCapGeometry) {
   EXPECT_TRUE(parse_scene(cap("15", "3", "6"), kSource).geometry.cap.spherical());
 }
 
+// The name is the report's folder: one path component that no shell or path can misread.
+TEST(SceneLoad, NameIsOneSafeFileName) {
+  EXPECT_EQ(parse_scene(with(&Doc::extra, R"j(, "name": "Candelier 2011 (run-2.b+)")j"), kSource).name,
+            "Candelier 2011 (run-2.b+)");
+  for (const char* bad : {R"(x'; touch SOMEFILE; echo ')", "../../escaped", "..", ".", "a/b", R"(a\\b)",
+                          "-rf", " lead", ".hidden", "a\\u0000b", "tab\\there", "$(id)", "a`b`", "a\\\"b"})
+    EXPECT_SCENE_ERROR(with(&Doc::extra, std::string(R"(, "name": ")") + bad + "\""),
+                       "name = ", "must be a file name of 1 to 100 characters");
+  EXPECT_SCENE_ERROR(with(&Doc::extra, R"(, "name": ")" + std::string(101, 'a') + "\""),
+                     "must be a file name");
+  // The default, the file's stem, follows the same rule and says so.
+  EXPECT_EQ(parse_scene(with(&Doc::extra, ""), "dir/my scene.json").name, "my scene");
+  const std::string msg = error_of(with(&Doc::extra, ""), "dir/x;y.json");
+  EXPECT_NE(msg.find("name = \"x;y\": must be a file name"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("give a \"name\""), std::string::npos) << msg;
+}
+
 TEST(SceneLoad, Ridges) {
   const auto ridged = [](const std::string& ridges) {
     return with(&Doc::geometry, R"({"type": "flat", "h": 3, "half_width": 8, "ridges": )" + ridges + "}");
@@ -445,6 +462,11 @@ TEST(SceneLoad, Ridges) {
   EXPECT_SCENE_ERROR(ridged(R"({"period": 0.2, "height": 0.05, "center": [0, 0], "radius": 1,
                                 "profile": "rectangular", "edge_width": 0.11})"),
                      "geometry.ridges.edge_width = 0.11: must be a number in (0, period/2 = 0.1]");
+  // A ridge mesh coarser than a third of the period cannot hold the profile (the probe's 5 mm over 0.5 mm).
+  EXPECT_SCENE_ERROR(ridged(R"({"period": 0.5, "height": 0.05, "center": [0, 0], "radius": 1, "h": 5})"),
+                     "geometry.ridges.h = 5: must be a number in (0, period/3 = 0.166667 mm]");
+  EXPECT_SCENE_ERROR(ridged(R"({"period": 1e-6, "height": 0.05, "center": [0, 0], "radius": 1, "h": 0.2})"),
+                     "geometry.ridges.h = 0.2: must be a number in (0, period/3 = 3.33333e-07 mm]");
   EXPECT_SCENE_ERROR(ridged(R"({"period": 0.2, "height": 0.05, "center": [0, 0], "radius": 1,
                                 "edge_width": 0.05})"),
                      "geometry.ridges.edge_width = 0.05: is only for \"profile\": \"rectangular\"");
@@ -664,7 +686,7 @@ TEST(SceneLoad, ContactEveryFieldIsRead) {
   // A sphere on a flat layer, depth-controlled; every friction mode name.
   const Scene f = parse_scene(
       flat_contact(R"("indenter": {"type": "sphere", "R": 100, "center": [1.5, -2]}, "depth": 0.02,
-                      "friction": {"mode": "static", "static_ratio": 0.2})"),
+                      "friction": {"mode": "static", "mu": 0.5, "static_ratio": 0.2})"),
       kSource);
   ASSERT_TRUE(f.contact);
   EXPECT_EQ(f.contact->indenter, IndenterKind::sphere);
@@ -887,7 +909,27 @@ TEST(SceneLoad, ContactErrors) {
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "friction": {"mu": -1})"),
                      "contact.friction.mu = -1: must be a number >= 0");
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "friction": {"static_ratio": -0.1})"),
-                     "contact.friction.static_ratio = -0.1: must be a number >= 0");
+                     "contact.friction.static_ratio = -0.1: must be a number in [0, mu = 0]");
+  // At rest the plate cannot hold more than Coulomb's cone: static_ratio 5 with mu 1 was 1.5 N on 0.3 N.
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "friction": {"mu": 1, "static_ratio": 5})"),
+                     "contact.friction.static_ratio = 5: must be a number in [0, mu = 1]");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "friction": {"mode": "static", "static_ratio": 0.1})"),
+                     "contact.friction.static_ratio = 0.1: must be a number in [0, mu = 0]",
+                     "give contact.friction.mu");
+  // A hole coarser than its mesh can fall between contact vertices and read zero (contact.h 0.8 here).
+  EXPECT_SCENE_ERROR(
+      contact(kPlane + R"(, "h": 0.8, "holes": [{"center": [0.5, 0], "diameter": 0.5}])"),
+      "contact.holes[0].diameter = 0.5: must be >= the mesh size over the hole (contact.h = 0.8 mm)",
+      "give contact.holes[0].h <= 0.5");
+  EXPECT_SCENE_ERROR(
+      contact(kPlane + R"(, "h": 0.8, "sweep": {"from": [-1, 0], "to": [1, 0]})"),
+      "contact.sweep.hole_diameter = 0.5: must be >= the mesh size over the hole (contact.h = 0.8",
+      "give contact.sweep.h <= 0.5");
+  // Refined over the hole, it is accepted: the hole's own h (or the sweep's path h) is the size there.
+  EXPECT_NO_THROW(
+      parse_scene(contact(kPlane + R"(, "h": 0.8, "holes": [{"center": [0.5, 0], "diameter": 0.5, "h": 0.25}],
+                          "sweep": {"from": [-1, 0], "to": [1, 0], "h": 0.4})"),
+                  kSource));
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "friction": {"direction": [0, 0]})"),
                      "contact.friction.direction = [0,0]: must be a non-zero vector");
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "friction": {"direction": [1, 0, 0]})"),
