@@ -73,7 +73,8 @@ nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, cons
     for (size_t h = 0; h < scene.contact->holes.size(); ++h)
       contact::require_hole_resolved(solver.zone(), mesh, scene.contact->holes[h], results[mode].active,
                                      "contact.holes[" + std::to_string(h) + "]");
-    metrics[mode] = contact::contact_metrics(solver, mesh, *setup.top, results[mode], centre);
+    metrics[mode] =
+        contact::contact_metrics(solver, mesh, *setup.top, results[mode], centre, scene.contact->holes);
   }
   wall["contact_solves"] = clock.seconds();
   const ContactResult& r = results[chosen];

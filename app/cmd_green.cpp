@@ -280,7 +280,8 @@ int run_green(const Scene& scene, const std::string& out_dir, double grid_dx, Gr
     green_stage(scene, meridian_sensor_greens(scene), nullptr, out_dir, grid_dx);
   } else {
     const auto setup = adjoint_setup(scene);
-    green_stage(scene, sensor_greens(scene, *setup), setup.get(), out_dir, grid_dx);
+    green_stage(scene, with_path_reason(sensor_greens(scene, *setup), scene, path), setup.get(), out_dir,
+                grid_dx);
   }
   return 0;
 }

@@ -236,7 +236,7 @@ int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& 
     kfit_stage(scene, meridian_sensor_greens(scene), out_dir, load_name);
   } else {
     const auto setup = adjoint_setup(scene);
-    kfit_stage(scene, sensor_greens(scene, *setup), out_dir, load_name);
+    kfit_stage(scene, with_path_reason(sensor_greens(scene, *setup), scene, path), out_dir, load_name);
   }
   return 0;
 }

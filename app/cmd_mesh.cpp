@@ -71,6 +71,7 @@ int run_mesh(const Scene& scene, const std::string& out_dir) {
   const MeshEstimate estimate = check_resources(scene, g_max_dofs);
   progress("meshing " + scene.name);
   const TetMesh mesh = build_mesh(scene);
+  check_meshed_dofs(scene, mesh, g_max_dofs);
   nlohmann::json summary = mesh_stage(scene, mesh, clock.seconds(), out_dir);
   if (estimate.known) {
     summary["estimated_tets"] = estimate.tets;

@@ -94,6 +94,7 @@ int run_ridge_study(const Scene& scene, const std::string& out_dir, std::vector<
     progress(std::string("ridge study: ") + buf);
     Stopwatch clock;
     TetMesh mesh = build_mesh(level);
+    check_meshed_dofs(level, mesh, g_max_dofs);
     check_sensors_on_skin(level, mesh);
     const double mesh_s = clock.seconds();
     TetMesh control;

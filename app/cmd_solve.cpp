@@ -33,6 +33,7 @@ int run_solve(const Scene& scene, const std::string& out_dir, SolverKind solver)
   check_resources(scene, g_max_dofs);
   progress("meshing " + scene.name);
   const TetMesh mesh = build_mesh(scene);
+  check_meshed_dofs(scene, mesh, g_max_dofs);
   check_sensors_on_skin(scene, mesh);
   wall["mesh"] = clock.seconds();
 

@@ -56,4 +56,26 @@ MeshEstimate check_resources(const Scene& scene, double max_dofs, MeshPart part)
   return e;
 }
 
+void check_meshed_dofs(const Scene& scene, const TetMesh& mesh, double max_dofs) {
+  const double dofs = 3.0 * mesh.num_nodes() + mesh.num_vertices;
+  const double gb = estimated_memory_gb(dofs), avail = available_memory_gb();
+  char buf[512];
+  const char* fields = scene.geometry.kind == GeometryKind::surface
+                           ? "mesh.h_min, mesh.growth, mesh.h_max, mesh.regions[].h, contact.h"
+                           : "mesh.h_min, mesh.growth, mesh.regions[].h, contact.h, contact.sweep.h";
+  if (max_dofs > 0 && dofs > max_dofs) {
+    std::snprintf(buf, sizeof buf,
+                  "%s: the mesh has %d tetrahedra and %.0f DOFs, above --max-dofs = %.3g; coarsen %s",
+                  scene.source_path.c_str(), mesh.num_tets(), dofs, max_dofs, fields);
+    throw SceneError(buf);
+  }
+  if (avail > 0 && gb > avail) {
+    std::snprintf(buf, sizeof buf,
+                  "%s: the mesh has %d tetrahedra and %.0f DOFs, needing about %.3g GB, above the %.3g GB "
+                  "available; coarsen %s",
+                  scene.source_path.c_str(), mesh.num_tets(), dofs, gb, avail, fields);
+    throw SceneError(buf);
+  }
+}
+
 }  // namespace skinfem::app

@@ -21,6 +21,11 @@ double available_memory_gb();
 // 0.54 on candelier2011: TetGen refines the cut face).
 MeshEstimate check_resources(const Scene& scene, double max_dofs, MeshPart part = MeshPart::whole);
 
+// The same limits on a built mesh, before anything is assembled: the backstop where no estimate exists
+// (imported surfaces) or where the estimate fell short. DOFs counted as 3 per node plus 1 per vertex (the
+// Taylor–Hood unknowns before boundary conditions: an upper bound on the free ones).
+void check_meshed_dofs(const Scene& scene, const TetMesh& mesh, double max_dofs);
+
 // The --max-dofs of this process (0: only the memory limit), set once by main.
 extern double g_max_dofs;
 

@@ -28,11 +28,42 @@ SensorGreens sensor_greens(const Scene& scene, const AdjointSetup& setup) {
   return g;
 }
 
+SensorGreens with_path_reason(SensorGreens greens, const Scene& scene, GreenPath path) {
+  if (path == GreenPath::automatic) greens.model += "; not the meridian path: " + meridian_unavailable(scene);
+  return greens;
+}
+
+namespace {
+// Distance from the farthest calibration load to a flat layer's side, in thicknesses, beyond which the
+// unbounded layer stands for it (meridian_unavailable).
+constexpr double kSideMarginOverH = 2.5;
+}  // namespace
+
 std::string meridian_unavailable(const Scene& scene) {
   const Geometry& g = scene.geometry;
   if (g.kind == GeometryKind::surface) return "an imported surface is not known to be a body of revolution";
   if (g.ridges.present()) return "the ridged top is not a body of revolution";
-  if (g.kind == GeometryKind::flat) return "";
+  if (g.kind == GeometryKind::flat) {
+    // The meridian stands for the unbounded layer: it answers the scene only where the layer's side is far
+    // from every calibration load. The side's influence decays as exp(−0.739 d/h) (README, Truncation); at
+    // the shipped scenes' margin, 2.5 h beyond the farthest load, it is below 0.2 % of g_xx's peak.
+    const double h = g.flat.h;
+    for (size_t i = 0; i < scene.sensors.positions.size(); ++i) {
+      const Vec2& p = scene.sensors.positions[i];
+      const double reach = std::abs(p[0]) + scan_half_width(scene, nullptr, h, p);
+      const double margin = g.flat.half_width - std::max(reach, std::abs(p[1]));
+      if (margin < kSideMarginOverH * h) {
+        char buf[300];
+        std::snprintf(buf, sizeof buf,
+                      "sensor %zu's calibration scan ends %.3g mm (%.2g h) from the layer's %s side, closer "
+                      "than %.3g h: the unbounded layer of the meridian path would not be this scene",
+                      i + 1, margin, margin / h, g.side == SideCondition::fixed ? "clamped" : "free",
+                      kSideMarginOverH);
+        return buf;
+      }
+    }
+    return "";
+  }
   if (!g.cap.spherical()) return "the ellipsoidal cap (R_y ≠ R) is not a body of revolution";
   for (size_t i = 0; i < scene.sensors.positions.size(); ++i) {
     const Vec2& p = scene.sensors.positions[i];

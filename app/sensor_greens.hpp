@@ -52,6 +52,9 @@ SensorGreens sensor_greens(const Scene& scene, const AdjointSetup& setup);
 // can: a flat layer without ridges (read as the unbounded layer of its thickness) or a spherical cap without
 // ridges with every sensor at its apex.
 std::string meridian_unavailable(const Scene& scene);
+// greens (the 3D path's) with, when `path` was automatic, why the meridian did not serve the scene appended
+// to its model (said in stdout and summary.json).
+SensorGreens with_path_reason(SensorGreens greens, const Scene& scene, GreenPath path);
 // The meridian path; throws SceneError (with meridian_unavailable's reason) where it does not apply.
 SensorGreens meridian_sensor_greens(const Scene& scene);
 

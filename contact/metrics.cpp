@@ -5,8 +5,37 @@
 
 namespace skinfem::contact {
 
+namespace {
+// Mean position of the outer edge of the contact: active vertices sharing a top face with an inactive one
+// that lies outside every hole (a hole's own rim is not the contact's edge).
+Eigen::Vector2d outer_edge_center(const MortarZone& z, const TetMesh& m, const ContactResult& r,
+                                  const std::vector<Hole>& holes, const Eigen::Vector2d& fallback) {
+  std::vector<int> index(m.num_nodes(), -1);
+  for (int i = 0; i < z.size(); ++i) index[z.vertices[i]] = i;
+  const auto in_hole = [&](int i) {
+    for (const Hole& h : holes)
+      if (std::hypot(m.nodes(z.vertices[i], 0) - h.center[0], m.nodes(z.vertices[i], 1) - h.center[1]) <
+          0.5 * h.diameter)
+        return true;
+    return false;
+  };
+  std::vector<char> edge(z.size(), 0);
+  for (const int f : z.faces)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) {
+        const int i = index[m.faces(f, a)], j = index[m.faces(f, b)];
+        if (i >= 0 && j >= 0 && r.lambda[i] > 0 && !(r.lambda[j] > 0) && !in_hole(j)) edge[i] = 1;
+      }
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  int n = 0;
+  for (int i = 0; i < z.size(); ++i)
+    if (edge[i]) sum += Eigen::Vector2d(m.nodes(z.vertices[i], 0), m.nodes(z.vertices[i], 1)), ++n;
+  return n >= 3 ? Eigen::Vector2d(sum / n) : fallback;
+}
+}  // namespace
+
 ContactMetrics contact_metrics(const ContactSolver& solver, const TetMesh& m, const PlanarFaceIndex& top,
-                               const ContactResult& r, const Vec2& center) {
+                               const ContactResult& r, const Vec2& center, const std::vector<Hole>& holes) {
   ContactMetrics out;
   const MortarZone& z = solver.zone();
   const Eigen::Vector2d t = solver.direction();
@@ -46,20 +75,29 @@ ContactMetrics contact_metrics(const ContactSolver& solver, const TetMesh& m, co
   }
 
   // Edge fit: p² = α + βr² + γr⁴ over the outer part of the contact, root nearest the last active ring.
+  const Eigen::Vector2d fc = holes.empty() ? pc : outer_edge_center(z, m, r, holes, pc);
+  const auto fitted = [&](int i) {
+    if (!(r.lambda[i] > 0)) return false;
+    for (const Hole& h : holes)
+      if ((xy(i) - Eigen::Vector2d(h.center[0], h.center[1])).norm() < h.diameter) return false;
+    return true;
+  };
   double r_max = 0;
   for (int i = 0; i < z.size(); ++i)
-    if (r.lambda[i] > 0) r_max = std::max(r_max, (xy(i) - pc).norm());
+    if (fitted(i)) r_max = std::max(r_max, (xy(i) - fc).norm());
   std::vector<Eigen::Vector3d> rows;
   std::vector<double> rhs;
   for (int i = 0; i < z.size(); ++i) {
-    const double rr = (xy(i) - pc).norm();
-    if (r.lambda[i] > 0 && rr >= 0.6 * r_max) {
+    const double rr = (xy(i) - fc).norm();
+    if (fitted(i) && rr >= 0.6 * r_max) {
       const double X = rr * rr / (r_max * r_max);  // scaled for conditioning
       rows.emplace_back(1.0, X, X * X);
       rhs.push_back(r.lambda[i] * r.lambda[i]);
     }
   }
-  out.contact_radius_mm = out.equivalent_radius_mm;
+  // Too few rows for the fit: the area-equivalent radius, or with holes (whose area it misses) the farthest
+  // fitted vertex.
+  out.contact_radius_mm = holes.empty() ? out.equivalent_radius_mm : r_max;
   if (rows.size() >= 6) {
     Eigen::MatrixXd A(rows.size(), 3);
     Eigen::VectorXd b(rows.size());

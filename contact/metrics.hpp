@@ -22,8 +22,12 @@ struct ContactMetrics {
          back_edge_mm = 0;  // farthest active vertex ahead / behind along the sliding direction
 };
 
-// mesh, top: the mesh of solver.zone() (the whole one under a mirror view).
+// mesh, top: the mesh of solver.zone() (the whole one under a mirror view). holes: where the indenter is
+// absent (r solved with them). With holes the contact radius is the outer boundary's: the edge fit is made
+// about the mean of the outer edge's vertices (active, next to an inactive one outside every hole) and
+// leaves out the vertices within a hole diameter of a hole's centre, whose pressure the rim reloads.
 ContactMetrics contact_metrics(const ContactSolver& solver, const TetMesh& mesh, const PlanarFaceIndex& top,
-                               const ContactResult& r, const Vec2& center);
+                               const ContactResult& r, const Vec2& center,
+                               const std::vector<Hole>& holes = {});
 
 }  // namespace skinfem::contact

@@ -103,7 +103,7 @@ void straighten_folded_elements(TetMesh& m) {
 }
 
 TetMesh build_mesh(const Scene& scene, MeshPart part) {
-  const SizingField size(scene);
+  const SizingField size(scene, part);
   const bool generated = scene.geometry.kind != GeometryKind::surface;
   if (!generated && part != MeshPart::whole) throw MeshError("an imported skin is meshed whole");
   const SurfaceMesh surface =

@@ -21,7 +21,7 @@ double sensor_mesh_size(const Scene& scene) {
   return disc_radius > 0 ? std::min(scene.mesh.h_min, disc_radius) : scene.mesh.h_min;
 }
 
-SizingField::SizingField(const Scene& scene)
+SizingField::SizingField(const Scene& scene, MeshPart part)
     : through_(scene.mesh.regions), growth_(scene.mesh.growth), h_max_(scene.mesh.h_max) {
   const double h_min = scene.mesh.h_min;
   for (auto& r : through_)
@@ -54,6 +54,16 @@ SizingField::SizingField(const Scene& scene)
   if (const Ridges& r = scene.geometry.ridges; r.present())
     top_.push_back({r.center, r.center, r.radius, r.mesh_size()});
   if (scene.geometry.kind != GeometryKind::surface) shape_.emplace(scene.geometry);
+  if (part == MeshPart::half_y)
+    for (auto* list : {&through_, &top_, &base_}) {
+      const size_t n = list->size();
+      for (size_t i = 0; i < n; ++i) {
+        RegionOfInterest m = (*list)[i];
+        if (m.a[1] == 0 && m.b[1] == 0) continue;  // its own mirror image
+        m.a[1] = -m.a[1], m.b[1] = -m.b[1];
+        list->push_back(m);
+      }
+    }
 }
 
 double SizingField::at(double x, double y, double depth) const {

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "mesh/shape.hpp"
+#include "mesh/tet_mesh.hpp"
 #include "scene/scene.hpp"
 
 namespace skinfem {
@@ -36,7 +37,10 @@ class SizingField {
   // segment from → to) of size sweep.h, if sweep.h > 0; and then every sensor disc becomes a through region
   // of size contact_zone_h (at most). Base regions (if mesh.refine_sensors): the sensor discs at
   // sensor_mesh_size; on imported surfaces, through regions of size h_min instead.
-  explicit SizingField(const Scene& scene);
+  // part half_y: the field of the whole skin seen on the half y >= 0, every region mirrored into it (a
+  // region at y < 0 refines the half where its mirror image lies), so the mirrored half has the whole's
+  // refinement on both sides.
+  explicit SizingField(const Scene& scene, MeshPart part = MeshPart::whole);
   double operator()(double x, double y) const { return at(x, y, 0.0); }  // on the top surface, mm
   double on_base(double x, double y) const;                              // on the base z = 0, mm
   double in_volume(double x, double y, double z) const;                  // at a point of the skin, mm

@@ -128,6 +128,9 @@ check stl_sensor_off 'sensor 1 at \(7.95.*not entirely on the skin' "$skinfem" s
 /usr/bin/python3 "$(dirname "$0")/box_stl.py" "$tmp/edge.off" --edge
 variant off_non_manifold 'd["geometry"] = {"type": "surface", "path": "edge.off"}; d["loads"] = {}'
 check off_non_manifold 'edge.off: 4 faces share the edge at \(8, 8, 1.5\) mm' "$skinfem" mesh "$tmp/off_non_manifold.json" --out "$tmp/out"
+# No size estimate exists for an imported surface: the built mesh is checked before anything is assembled.
+variant stl_max_dofs 'd["geometry"] = {"type": "surface", "path": "box.stl"}; d["loads"] = {}'
+check stl_max_dofs 'stl_max_dofs.json: the mesh has [0-9]+ tetrahedra and [0-9]+ DOFs, above --max-dofs = 1e\+03' "$skinfem" green "$tmp/stl_max_dofs.json" --max-dofs 1000 --out "$tmp/out"
 variant stl_missing 'd["geometry"] = {"type": "surface", "path": "none.stl"}'
 check stl_missing 'geometry.path = "none.stl": must name an existing file' "$skinfem" mesh "$tmp/stl_missing.json" --out "$tmp/out"
 variant stl_extension 'd["geometry"] = {"type": "surface", "path": "base.json"}'

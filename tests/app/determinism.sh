@@ -15,7 +15,7 @@ cat >"$tmp/scene.json" <<'JSON'
  "calibration": {"punch_diameter": 0.5, "spacing": 0.2},
  "contact": {"indenter": {"type": "plane"}, "force": 0.8, "zone_radius": 4.0, "h": 0.8,
              "friction": {"mode": "coupled", "mu": 3.0, "static_ratio": 0.1},
-             "sweep": {"from": [-2.0, 0.0], "to": [3.0, 0.0], "positions": 7, "hole_diameter": 0.5}}}
+             "sweep": {"from": [-2.0, 0.0], "to": [3.0, 0.0], "positions": 7, "hole_diameter": 0.8}}}
 JSON
 fail=0
 for cmd in mesh solve green kfit contact defect; do

@@ -40,6 +40,25 @@ done
 grep -q "meridian path" "$tmp/flat.out" || { echo "FAIL flat: stdout does not name the meridian path"; exit 1; }
 grep -q "3d path" "$tmp/apex3d.out" || { echo "FAIL apex3d: stdout does not name the 3d path"; exit 1; }
 
+# A flat layer whose clamped side is 3 mm from the sensor: the unbounded layer of the meridian is not this
+# scene (g_xx differed by 101 % of its peak, k_xx 1.714 against 0.830), so `auto` takes the 3D path and says
+# why; the same layer with its side 2.5 h beyond the scan still goes the meridian way.
+cat >"$tmp/side.json" <<'JSON'
+{"geometry": {"type": "flat", "h": 3.0, "half_width": 8.0, "side": "fixed"},
+ "material": {"E": 3.0, "nu": 0.5},
+ "sensors": {"positions": [[5.0, 0.0]], "disc_diameter": 0.2},
+ "mesh": {"h_min": 0.4, "growth": 1.5, "h_max": 2.0},
+ "calibration": {"punch_diameter": 0.5, "spacing": 0.1}}
+JSON
+"$skinfem" kfit "$tmp/side.json" --out "$tmp/side" >"$tmp/side.out" 2>"$tmp/err" || { echo "FAIL kfit side:"; cat "$tmp/err"; exit 1; }
+if ! grep -q "3d path.*not the meridian path: sensor 1's calibration scan ends .* from the layer's clamped side" "$tmp/side.out" ||
+  ! grep -q '"path": "3d"' "$tmp/side/kfit.json"; then
+  echo "FAIL kfit side: auto did not take the 3D path with its reason:"; cat "$tmp/side.out"; exit 1
+fi
+sed 's/"half_width": 8.0/"half_width": 20.0/; s/\[5.0, 0.0\]/[0.0, 0.0]/' "$tmp/side.json" >"$tmp/far.json"
+"$skinfem" kfit "$tmp/far.json" --out "$tmp/far" >"$tmp/far.out" 2>"$tmp/err" || { echo "FAIL kfit far:"; cat "$tmp/err"; exit 1; }
+grep -q "meridian path" "$tmp/far.out" || { echo "FAIL far side: not the meridian path"; cat "$tmp/far.out"; exit 1; }
+
 "$skinfem" kfit "$root/scenes/candelier2011.json" --path meridian --out "$tmp/offaxis" >/dev/null 2>"$tmp/err"
 code=$?
 msg=$(cat "$tmp/err")

@@ -17,13 +17,15 @@ cat >"$tmp/scene.json" <<'JSON'
  "calibration": {"punch_diameter": 0.5, "spacing": 0.2},
  "contact": {"indenter": {"type": "plane"}, "force": 0.8, "zone_radius": 4.0, "h": 0.8,
              "friction": {"mode": "coupled", "mu": 3.0, "static_ratio": 0.1},
-             "sweep": {"from": [-2.0, 0.0], "to": [3.0, 0.0], "positions": 11, "hole_diameter": 0.5}}}
+             "sweep": {"from": [-2.0, 0.0], "to": [3.0, 0.0], "positions": 11, "hole_diameter": 0.8}}}
 JSON
 fail=0
-"$skinfem" report "$tmp/scene.json" --out "$tmp/out" >"$tmp/stdout" 2>"$tmp/stderr"
+# An output folder with a quote and a space: the figures script gets it as one argument, no shell between.
+out="$tmp/rep 'q"
+"$skinfem" report "$tmp/scene.json" --out "$out" >"$tmp/stdout" 2>"$tmp/stderr"
 code=$?
 if [ $code -ne 0 ]; then echo "FAIL report: exit $code"; cat "$tmp/stderr"; exit 1; fi
-/usr/bin/python3 - "$tmp/out" <<'PY' || fail=1
+/usr/bin/python3 - "$out" <<'PY' || fail=1
 import csv, json, os, re, sys
 out = sys.argv[1]
 bad = []
@@ -41,6 +43,9 @@ for path in ["dofs", "wall_total_s", "peak_rss_mb", "units", "kfit/k_lsq_line", 
         if not isinstance(node, dict) or key not in node:
             bad.append(f"report.json lacks {path}"); break
         node = node[key]
+if r.get("figures_exit_code") != 0: bad.append(f"figures exited with {r.get('figures_exit_code')}")
+if not os.path.isdir(os.path.join(out, "figures")) or not os.listdir(os.path.join(out, "figures")):
+    bad.append("no figure written")
 for stage in ["mesh", "assemble", "factor", "green_adjoints", "condense", "defect", "crosscheck"]:
     if stage not in r.get("wall_s", {}): bad.append(f"report.json wall_s lacks {stage}")
 # Headline numbers name their unit (or are counts, ratios or flags).
