@@ -166,6 +166,29 @@ TEST(ContactFe, ContactRadiusWithHolesIsTheOuterBoundarys) {
   }
 }
 
+// A hole that falls between the contact's vertices removes no multiplier: inside the contact that is "not
+// resolved" and must not read as a zero signal; outside the contact it is the exact answer (no change).
+TEST(ContactFe, AHoleInTheContactHoldingNoVertexIsRefused) {
+  Fixture& f = layer();
+  const ContactResult base = f.solver->solve(FrictionMode::none);
+  // The centroid of a top face near the centre, inside the contact (a ≈ 2.5 mm): a 0.05 mm hole there
+  // holds no vertex of a 0.6 mm mesh.
+  const auto centroid_near = [&](double x, double y) {
+    double s, t;
+    const int face = f.top->find(x, y, s, t);
+    Eigen::Vector2d c = Eigen::Vector2d::Zero();
+    for (int a = 0; a < 3; ++a) c += f.mesh.nodes.row(f.mesh.faces(face, a)).head<2>().transpose() / 3;
+    return Vec2{c.x(), c.y()};
+  };
+  const Hole inside{centroid_near(0.3, 0.2), 0.05};
+  const auto excluded = excluded_by_holes(f.condensed->zone, f.mesh, {inside});
+  ASSERT_EQ(std::count(excluded.begin(), excluded.end(), 1), 0);
+  EXPECT_THROW(require_hole_resolved(f.condensed->zone, f.mesh, inside, base.active, "test hole"), SceneError);
+  EXPECT_NO_THROW(require_hole_resolved(f.condensed->zone, f.mesh, Hole{centroid_near(0.3, 3.0), 0.05},
+                                        base.active, "test hole"));
+  EXPECT_NO_THROW(require_hole_resolved(f.condensed->zone, f.mesh, Hole{{0.3, 0.2}, 1.0}, base.active, "test hole"));
+}
+
 // μ = 0 in the coupled and uncoupled modes is the frictionless problem.
 TEST(ContactFe, ZeroFrictionEqualsFrictionless) {
   Fixture& f = layer();
