@@ -183,10 +183,12 @@ TEST(ContactFe, AHoleInTheContactHoldingNoVertexIsRefused) {
   const Hole inside{centroid_near(0.3, 0.2), 0.05};
   const auto excluded = excluded_by_holes(f.condensed->zone, f.mesh, {inside});
   ASSERT_EQ(std::count(excluded.begin(), excluded.end(), 1), 0);
-  EXPECT_THROW(require_hole_resolved(f.condensed->zone, f.mesh, inside, base.active, "test hole"), SceneError);
+  EXPECT_THROW(require_hole_resolved(f.condensed->zone, f.mesh, inside, base.active, "test hole"),
+               SceneError);
   EXPECT_NO_THROW(require_hole_resolved(f.condensed->zone, f.mesh, Hole{centroid_near(0.3, 3.0), 0.05},
                                         base.active, "test hole"));
-  EXPECT_NO_THROW(require_hole_resolved(f.condensed->zone, f.mesh, Hole{{0.3, 0.2}, 1.0}, base.active, "test hole"));
+  EXPECT_NO_THROW(
+      require_hole_resolved(f.condensed->zone, f.mesh, Hole{{0.3, 0.2}, 1.0}, base.active, "test hole"));
 }
 
 // μ = 0 in the coupled and uncoupled modes is the frictionless problem.
