@@ -26,6 +26,14 @@ Scene scaled_scene(const Scene& base, double s) {
     scene.contact->h = contact_zone_h(base) * s;
     for (auto& hole : scene.contact->holes) hole.h *= s;
     if (scene.contact->sweep) scene.contact->sweep->h *= s;
+    // A coarse level still resolves every hole (the scene rule: the mesh over a hole at most its diameter),
+    // or its hole would fall between vertices and the solve stop (contact::require_hole_resolved).
+    const double zone_h = scene.contact->h;
+    const auto cap = [zone_h](double& h, double diameter) {
+      if ((h > 0 ? std::min(h, zone_h) : zone_h) > diameter) h = diameter;
+    };
+    for (auto& hole : scene.contact->holes) cap(hole.h, hole.diameter);
+    if (scene.contact->sweep) cap(scene.contact->sweep->h, scene.contact->sweep->hole_diameter);
   }
   return scene;
 }

@@ -13,7 +13,8 @@
 
 namespace skinfem::app {
 
-// Every mesh size of the scene scaled by s (h_min, h_max, growth − 1, regions, contact zone, holes, path).
+// Every mesh size of the scene scaled by s (h_min, h_max, growth − 1, regions, contact zone, holes, path),
+// except that the mesh over a hole never exceeds its diameter (a coarse level still resolves it).
 Scene scaled_scene(const Scene& base, double s);
 
 struct ChainLevel {
