@@ -15,7 +15,7 @@
 
 namespace skinfem::app {
 
-Scene scaled_scene(const Scene& base, double s) {
+Scene scaled_scene(const Scene& base, double s, bool cap_holes) {
   Scene scene = base;
   scene.mesh.sensor_h = sensor_mesh_size(base) * s;
   scene.mesh.h_min *= s;
@@ -26,8 +26,9 @@ Scene scaled_scene(const Scene& base, double s) {
     scene.contact->h = contact_zone_h(base) * s;
     for (auto& hole : scene.contact->holes) hole.h *= s;
     if (scene.contact->sweep) scene.contact->sweep->h *= s;
-    // A coarse level still resolves every hole (the scene rule: the mesh over a hole at most its diameter),
-    // or its hole would fall between vertices and the solve stop (contact::require_hole_resolved).
+  }
+  if (scene.contact && cap_holes) {
+    // The scene rule: the mesh over a hole at most its diameter.
     const double zone_h = scene.contact->h;
     const auto cap = [zone_h](double& h, double diameter) {
       if ((h > 0 ? std::min(h, zone_h) : zone_h) > diameter) h = diameter;
@@ -82,14 +83,27 @@ ChainLevel chain_values(const Scene& s, const AdjointSetup& adj, const ContactSe
   return l;
 }
 
-ChainLevel chain_level(const Scene& base, double scale) {
-  const Scene s = scaled_scene(base, scale);
+namespace {
+ChainLevel level_of(const Scene& s, double scale) {
   const auto skin = skin_setup(s, contact_mesh_part(s));
   const auto adj = adjoint_setup(s, skin);
   const auto contact = s.contact ? contact_setup(s, skin) : nullptr;
   ChainLevel l = chain_values(s, *adj, contact.get());
   l.scale = scale;
   return l;
+}
+}  // namespace
+
+ChainLevel chain_level(const Scene& base, double scale) {
+  try {
+    return level_of(scaled_scene(base, scale), scale);
+  } catch (const contact::HoleUnresolved& e) {
+    progress(std::string("level x") + std::to_string(scale) + ": " + e.what() +
+             "; redone with the mesh over the hole at most its diameter");
+    ChainLevel l = level_of(scaled_scene(base, scale, true), scale);
+    l.note = "the mesh over the hole capped at its diameter (the scaled one could not see it)";
+    return l;
+  }
 }
 
 std::vector<ChainError> chain_errors(const std::vector<ChainLevel>& levels) {
@@ -131,6 +145,7 @@ nlohmann::json write_chain_study(const Scene& scene, const std::vector<ChainLeve
     nlohmann::json jl = {
         {"scale", c.scale}, {"dofs", c.dofs}, {"wall_s", c.wall}, {"peak_rss_mb", c.peak_rss_mb}};
     for (size_t i = 0; i < c.names.size(); ++i) jl["values"][c.names[i]] = c.value[i];
+    if (!c.note.empty()) jl["note"] = c.note;
     jlevels.push_back(jl);
   }
   const auto errors = chain_errors(levels);

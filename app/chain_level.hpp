@@ -13,9 +13,10 @@
 
 namespace skinfem::app {
 
-// Every mesh size of the scene scaled by s (h_min, h_max, growth − 1, regions, contact zone, holes, path),
-// except that the mesh over a hole never exceeds its diameter (a coarse level still resolves it).
-Scene scaled_scene(const Scene& base, double s);
+// Every mesh size of the scene scaled by s (h_min, h_max, growth − 1, regions, contact zone, holes, path).
+// cap_holes: the mesh over each hole at most its diameter, for a coarse level whose hole the scaled mesh
+// cannot see.
+Scene scaled_scene(const Scene& base, double s, bool cap_holes = false);
 
 struct ChainLevel {
   double scale = 1;
@@ -25,11 +26,15 @@ struct ChainLevel {
   std::vector<double> seconds;  // per name: every stage the quantity needs (mesh, factor, adjoints, ...)
   nlohmann::json wall;          // seconds per stage
   double peak_rss_mb = 0;
+  // Set when the uniformly scaled level left a hole unresolved and was redone with cap_holes: this level
+  // is then not a uniform scaling of the scene, which Richardson assumes.
+  std::string note;
 };
 
 // On an already set-up skin (contact null when the scene has none).
 ChainLevel chain_values(const Scene& scene, const AdjointSetup& adjoints, const ContactSetup* contact);
-// Meshes and factors the scene scaled by `scale`, then chain_values.
+// Meshes and factors the scene scaled by `scale`, then chain_values; once more with cap_holes (and a note)
+// if the scaled mesh cannot see the scene's hole.
 ChainLevel chain_level(const Scene& base, double scale);
 
 // Per quantity, over the three finest levels (validation/richardson.hpp): the finest value, its error

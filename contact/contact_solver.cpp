@@ -195,7 +195,7 @@ void require_hole_resolved(const MortarZone& zone, const TetMesh& mesh, const Ho
       "vertex (the nearest is %.4g mm away): the mesh over it is too coarse to see it; give a finer "
       "mesh over the hole",
       where.c_str(), hole.diameter, hole.center[0], hole.center[1], best);
-  throw SceneError(buf);
+  throw HoleUnresolved(buf);
 }
 
 }  // namespace skinfem::contact

@@ -95,7 +95,11 @@ class ContactSolver {
 // Multipliers whose vertex lies strictly inside one of the holes (the indenter is absent there).
 std::vector<char> excluded_by_holes(const MortarZone& zone, const TetMesh& mesh,
                                     const std::vector<Hole>& holes);
-// Throws SceneError when `hole` holds no multiplier's vertex although the vertex nearest its centre is in
+// A hole in the contact that the mesh cannot see (require_hole_resolved).
+struct HoleUnresolved : SceneError {
+  using SceneError::SceneError;
+};
+// Throws HoleUnresolved when `hole` holds no multiplier's vertex although the vertex nearest its centre is in
 // contact (`active`: zone indices): the indenter is absent there and the mesh cannot see it, so the signal
 // would read zero for "not resolved". `where` names the hole in the message (its scene field).
 void require_hole_resolved(const MortarZone& zone, const TetMesh& mesh, const Hole& hole,
