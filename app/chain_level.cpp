@@ -29,9 +29,8 @@ Scene scaled_scene(const Scene& base, double s, bool cap_holes) {
   }
   if (scene.contact && cap_holes) {
     // The scene rule: the mesh over a hole at most its diameter.
-    const double zone_h = scene.contact->h;
-    const auto cap = [zone_h](double& h, double diameter) {
-      if ((h > 0 ? std::min(h, zone_h) : zone_h) > diameter) h = diameter;
+    const auto cap = [&scene](double& h, double diameter) {
+      if (hole_mesh_h(scene, h) > diameter) h = diameter;
     };
     for (auto& hole : scene.contact->holes) cap(hole.h, hole.diameter);
     if (scene.contact->sweep) cap(scene.contact->sweep->h, scene.contact->sweep->hole_diameter);

@@ -12,19 +12,13 @@ Eigen::Vector2d outer_edge_center(const MortarZone& z, const TetMesh& m, const C
                                   const std::vector<Hole>& holes, const Eigen::Vector2d& fallback) {
   std::vector<int> index(m.num_nodes(), -1);
   for (int i = 0; i < z.size(); ++i) index[z.vertices[i]] = i;
-  const auto in_hole = [&](int i) {
-    for (const Hole& h : holes)
-      if (std::hypot(m.nodes(z.vertices[i], 0) - h.center[0], m.nodes(z.vertices[i], 1) - h.center[1]) <
-          0.5 * h.diameter)
-        return true;
-    return false;
-  };
+  const std::vector<char> in_hole = excluded_by_holes(z, m, holes);
   std::vector<char> edge(z.size(), 0);
   for (const int f : z.faces)
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) {
         const int i = index[m.faces(f, a)], j = index[m.faces(f, b)];
-        if (i >= 0 && j >= 0 && r.lambda[i] > 0 && !(r.lambda[j] > 0) && !in_hole(j)) edge[i] = 1;
+        if (i >= 0 && j >= 0 && r.lambda[i] > 0 && !(r.lambda[j] > 0) && !in_hole[j]) edge[i] = 1;
       }
   Eigen::Vector2d sum = Eigen::Vector2d::Zero();
   int n = 0;

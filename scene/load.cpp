@@ -836,14 +836,14 @@ void check_contact_zone(const Reader& r, const json& j, const Scene& scene) {
 
 // A hole removes the multipliers whose vertex lies inside it: a mesh coarser than the hole can leave it
 // holding none, a zero signal that means "not resolved". The mesh over a hole must be at most its diameter
-// (contact/contact_solver.hpp's hole_unresolved catches the rare position that still falls between vertices).
+// (contact/contact_solver.hpp's require_hole_resolved catches the rare position that still falls between
+// vertices).
 void check_hole_meshes(const Reader& r, const Scene& scene) {
   const ContactLoad& c = *scene.contact;
   const double zone_h = contact_zone_h(scene);
   const std::string zone_words = c.h > 0 ? "contact.h = " + fmt(c.h) : "mesh.h_min = " + fmt(zone_h);
   const auto check = [&](const std::string& path, double diameter, double h, const std::string& h_field) {
-    const double mesh_h = h > 0 ? std::min(h, zone_h) : zone_h;
-    if (mesh_h > diameter)
+    if (hole_mesh_h(scene, h) > diameter)
       r.fail(path, json(diameter),
              "must be >= the mesh size over the hole (" +
                  (h > 0 && h < zone_h ? h_field + " = " + fmt(h) : zone_words) +

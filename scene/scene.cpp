@@ -82,4 +82,8 @@ double contact_zone_h(const Scene& scene) {
   return scene.contact && scene.contact->h > 0 ? scene.contact->h : scene.mesh.h_min;
 }
 
+double hole_mesh_h(const Scene& scene, double hole_h) {
+  return hole_h > 0 ? std::min(hole_h, contact_zone_h(scene)) : contact_zone_h(scene);
+}
+
 }  // namespace skinfem

@@ -237,5 +237,7 @@ std::optional<double> equivalent_sphere_radius(const Scene& scene);
 double contact_zone_radius(const Scene& scene);
 // Mesh size inside the candidate zone: contact.h, else mesh.h_min.
 double contact_zone_h(const Scene& scene);
+// Mesh size over a hole whose own size is hole_h (0: none): the finer of it and the zone's, mm.
+double hole_mesh_h(const Scene& scene, double hole_h);
 
 }  // namespace skinfem
