@@ -24,6 +24,7 @@
 #include "app/contact_setup.hpp"
 #include "app/stages.hpp"
 #include "app/symmetry.hpp"
+#include "contact/hole_cover.hpp"
 #include "contact/metrics.hpp"
 #include "contact/pressure_map.hpp"
 #include "fem/fields.hpp"
@@ -36,6 +37,7 @@ using contact::ContactResult;
 nlohmann::json metrics_json(const contact::ContactMetrics& m, const ContactResult& r) {
   return {{"friction", contact::to_string(r.mode)},
           {"ratio", r.ratio},
+          {"shear_kPa", 1e3 * r.tau},
           {"force_N", r.force_N},
           {"tangential_force_N", r.tangential_force_N},
           {"indentation_um", 1e3 * r.depth_mm},
@@ -63,12 +65,13 @@ nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, cons
   Stopwatch clock;
   const contact::ContactSolver& solver = *setup.solver;
   const auto excluded = contact::excluded_by_holes(solver.zone(), mesh, scene.contact->holes);
+  const Eigen::VectorXd covered = contact::hole_cover(solver.zone(), mesh, scene.contact->holes);
   std::map<FrictionMode, ContactResult> results;
   std::map<FrictionMode, contact::ContactMetrics> metrics;
   const Vec2 centre = contact_center(scene);
   for (FrictionMode mode :
        {FrictionMode::none, FrictionMode::static_residual, FrictionMode::uncoupled, FrictionMode::coupled}) {
-    results[mode] = solver.solve(mode, excluded);
+    results[mode] = solver.solve(mode, excluded, {}, covered);
     check_zone(scene, setup, results[mode]);
     for (size_t h = 0; h < scene.contact->holes.size(); ++h)
       contact::require_hole_resolved(solver.zone(), mesh, scene.contact->holes[h], results[mode].active,
@@ -85,7 +88,8 @@ nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, cons
   clock = Stopwatch();
   const auto& c = *setup.condensed;
   const TetMesh& solved = setup.skin->mesh;
-  const Eigen::VectorXd f = c.zone.load(solver.solved_lambda(r.lambda), c.direction, r.ratio);
+  const Eigen::VectorXd f =
+      c.zone.load(solver.solved_lambda(r.lambda), c.direction, r.ratio, solver.solved_lambda(r.shear));
   const MixedSolution x = setup.model->solver().solve(f);
   const Eigen::VectorXd reactions = setup.model->solver().reactions(x, f);
   const BaseTraction base(solved, reactions);
@@ -141,6 +145,8 @@ nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, cons
 
   nlohmann::json summary = metrics_json(m, r);
   summary["scene"] = scene_json(scene);
+  summary["friction_law"] = contact::to_string(scene.contact->law);
+  if (scene.contact->law != FrictionLaw::coulomb) summary["tau0_kPa"] = 1e3 * solver.tau0();
   summary["indenter"] = scene.contact->indenter == IndenterKind::plane ? "plane" : "sphere";
   summary["p0_kPa"] = 1e3 * m.p0_MPa;
   summary["max_penetration_um"] = 1e3 * max_penetration;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
@@ -20,6 +21,18 @@ const char* to_string(FrictionMode mode) {
       return "coupled";
   }
   return "none";
+}
+
+const char* to_string(FrictionLaw law) {
+  switch (law) {
+    case FrictionLaw::coulomb:
+      return "coulomb";
+    case FrictionLaw::shear_strength:
+      return "shear_strength";
+    case FrictionLaw::mixed:
+      return "mixed";
+  }
+  return "coulomb";
 }
 
 MirrorView mirror_view(const TetMesh& whole, const std::vector<int>& source, const MortarZone& half_zone,
@@ -58,6 +71,16 @@ ContactSolver::ContactSolver(const CondensedContact& condensed, const ContactLoa
   }
 }
 
+std::vector<int> ContactSolver::whole_set(const std::vector<int>& solved) const {
+  if (!mirror_) return solved;
+  std::vector<char> in(c_.zone.size(), 0);
+  for (int j : solved) in[j] = 1;
+  std::vector<int> out;
+  for (int i = 0; i < zone().size(); ++i)
+    if (in[mirror_->half[i]]) out.push_back(i);
+  return out;
+}
+
 std::vector<int> ContactSolver::solved_set(const std::vector<int>& whole) const {
   if (!mirror_) return whole;
   std::vector<int> out;
@@ -80,8 +103,11 @@ Eigen::VectorXd ContactSolver::solved_readings(const Eigen::VectorXd& l, double 
   return r;
 }
 
-Eigen::VectorXd ContactSolver::readings(const Eigen::VectorXd& lambda, double ratio) const {
-  return solved_readings(solved_lambda(lambda), ratio);
+Eigen::VectorXd ContactSolver::readings(const Eigen::VectorXd& lambda, double ratio,
+                                        const Eigen::VectorXd& shear) const {
+  Eigen::VectorXd r = solved_readings(solved_lambda(lambda), ratio);
+  if (shear.size()) r += c_.S_t * solved_lambda(shear);
+  return r;
 }
 
 double ContactSolver::ratio(FrictionMode mode) const {
@@ -89,12 +115,43 @@ double ContactSolver::ratio(FrictionMode mode) const {
     case FrictionMode::none:
       return 0.0;
     case FrictionMode::static_residual:
-      return load_.static_ratio;
+      return load_.law == FrictionLaw::shear_strength ? 0.0 : load_.static_ratio;
     case FrictionMode::uncoupled:
     case FrictionMode::coupled:
-      return load_.mu;
+      return load_.law == FrictionLaw::shear_strength ? 0.0 : load_.mu;
   }
   return 0.0;
+}
+
+double ContactSolver::shear(FrictionMode mode) const {
+  if (load_.law == FrictionLaw::coulomb || mode == FrictionMode::none) return 0.0;
+  if (mode == FrictionMode::static_residual)
+    return load_.mu > 0 ? tau0() * load_.static_ratio / load_.mu : 0.0;
+  return tau0();
+}
+
+double ContactSolver::tau0() const {
+  if (load_.tau0) return *load_.tau0;
+  if (!tau0_) {
+    const ContactResult r = solve(FrictionMode::none);
+    double area = 0;
+    for (int i : r.active) area += zone().area[i];
+    tau0_ = area > 0 ? load_.mu * r.force_N / area : 0.0;
+  }
+  return *tau0_;
+}
+
+const Eigen::VectorXd& ContactSolver::touched(FrictionMode mode) const {
+  auto it = touched_.find(mode);
+  if (it != touched_.end()) return it->second;
+  const ContactResult r = solve(mode);
+  Eigen::VectorXd w = Eigen::VectorXd::Zero(zone().size());
+  if (r.tau != 0) {
+    w = r.shear / r.tau;
+  } else {
+    for (int i : r.active) w[i] = 1;
+  }
+  return touched_.emplace(mode, std::move(w)).first->second;
 }
 
 ContactLcp& ContactSolver::lcp(double ratio) const {
@@ -112,10 +169,14 @@ void ContactSolver::set_reference(FrictionMode mode, const std::vector<int>& act
 }
 
 ContactResult ContactSolver::solve(FrictionMode mode, const std::vector<char>& excluded,
-                                   const std::vector<int>& warm) const {
+                                   const std::vector<int>& warm, const Eigen::VectorXd& covered) const {
+  if (covered.size() && covered.size() != zone().size())
+    throw std::invalid_argument("ContactSolver::solve: covered has " + std::to_string(covered.size()) +
+                                " values for " + std::to_string(zone().size()) + " multipliers");
   ContactResult out;
   out.mode = mode;
   out.ratio = ratio(mode);
+  out.tau = shear(mode);
   // The pressure is solved with the traction acting, except in the uncoupled mode.
   const double solved_ratio = mode == FrictionMode::uncoupled ? 0.0 : out.ratio;
   const ContactLcp& problem = lcp(solved_ratio);
@@ -128,12 +189,113 @@ ContactResult ContactSolver::solve(FrictionMode mode, const std::vector<char>& e
   }
   const std::vector<char>& ex = mirror_ ? half_excluded : excluded;
   const double share = mirror_ ? 0.5 : 1.0;
-  const LcpSolution s = load_.force ? problem.solve_force(share * *load_.force, ex, solved_set(warm))
-                                    : problem.solve_depth(*load_.depth, ex, solved_set(warm));
+  const auto lcp_solve = [&](const std::vector<int>& start, const Eigen::VectorXd& shift) {
+    return load_.force ? problem.solve_force(share * *load_.force, ex, start, shift)
+                       : problem.solve_depth(*load_.depth, ex, start, shift);
+  };
+  LcpSolution s = lcp_solve(solved_set(warm), {});
+  // The shear's gaps where it acts while the pressure is solved: iterate its touched set to a fixed point.
+  Eigen::VectorXd shear_solved;  // on the solved problem's multipliers
+  if (out.tau != 0) {
+    // partial: solved multipliers whose shear is a fixed fraction (edge vertices that lift under their own
+    // shear and touch without it; see below).
+    std::map<int, double> partial;
+    const auto shear_for = [&](const std::vector<int>& active) {
+      Eigen::VectorXd v = Eigen::VectorXd::Zero(zone().size());
+      for (int i : whole_set(active)) v[i] = out.tau;
+      for (int i = 0; i < zone().size(); ++i)
+        if (const auto it = partial.find(solved_index(i)); it != partial.end()) v[i] = it->second * out.tau;
+      return v;
+    };
+    const auto free_part = [&](const std::vector<int>& a) {
+      std::vector<int> out_set;
+      for (int j : a)
+        if (!partial.count(j)) out_set.push_back(j);
+      return out_set;
+    };
+    const auto solve_with = [&](const std::vector<int>& active) {
+      return lcp_solve(active, c_.C_zt * solved_lambda(shear_for(active)));
+    };
+    const bool holed = std::find(excluded.begin(), excluded.end(), 1) != excluded.end() ||
+                       (covered.size() && covered.maxCoeff() > 0);
+    const bool acting = mode != FrictionMode::uncoupled;
+    if (holed) {
+      out.shear = out.tau * touched(mode);
+      if (covered.size()) out.shear = out.shear.cwiseProduct((1.0 - covered.array()).matrix());
+      if (acting) s = lcp_solve(s.active, c_.C_zt * solved_lambda(out.shear));
+    }
+    constexpr int kMaxRounds = 50, kBisections = 50;
+    std::vector<std::vector<int>> seen{s.active};
+    for (int round = 0; acting && !holed; ++round) {
+      if (round == kMaxRounds)
+        throw std::runtime_error("contact: the set the shear strength acts on did not settle after " +
+                                 std::to_string(kMaxRounds) + " re-solves (friction." + to_string(mode) +
+                                 ", tau = " + std::to_string(out.tau) + " MPa)");
+      LcpSolution next = solve_with(s.active);
+      const bool settled = free_part(next.active) == free_part(s.active);
+      if (settled) {
+        s = std::move(next);
+        break;
+      }
+      const auto again = std::find(seen.begin(), seen.end(), next.active);
+      if (again == seen.end()) {
+        seen.push_back(next.active);
+        s = std::move(next);
+        continue;
+      }
+      // A cycle: the multipliers D that flip touch without their own shear and lift under it. The consistent
+      // state lies between: D just touching (λ_D = g_D = 0) under a fraction w of the shear. Bisect w
+      // (each step one warm-started LCP solve) to round-off and keep the side where D still touches.
+      std::vector<int> D;
+      for (auto it = again; it != seen.end(); ++it) {
+        std::vector<int> d;
+        std::set_symmetric_difference(it->begin(), it->end(), next.active.begin(), next.active.end(),
+                                      std::back_inserter(d));
+        for (int j : d)
+          if (!partial.count(j)) D.push_back(j);
+      }
+      std::sort(D.begin(), D.end());
+      D.erase(std::unique(D.begin(), D.end()), D.end());
+      const auto touches = [&](const LcpSolution& x) {
+        for (int j : D)
+          if (std::binary_search(x.active.begin(), x.active.end(), j)) return true;
+        return false;
+      };
+      const auto at = [&](double w) {
+        for (int j : D) partial[j] = w;
+        return solve_with(next.active);
+      };
+      LcpSolution lo = at(0.0);
+      if (!touches(lo) || touches(at(1.0)))
+        throw std::runtime_error(
+            "contact: the shear strength's edge multipliers cycle without a crossing (friction." +
+            std::string(to_string(mode)) + ")");
+      double wlo = 0, whi = 1;
+      for (int b = 0; b < kBisections && whi - wlo > 1e-12; ++b) {
+        const double w = 0.5 * (wlo + whi);
+        LcpSolution x = at(w);
+        if (touches(x)) {
+          wlo = w;
+          lo = std::move(x);
+        } else {
+          whi = w;
+        }
+      }
+      for (int j : D) partial[j] = wlo;
+      s = std::move(lo);
+      seen.assign(1, s.active);
+    }
+    if (!holed) out.shear = shear_for(s.active);
+    shear_solved = solved_lambda(out.shear);
+    for (int i = 0; i < zone().size(); ++i) out.partial_shear += partial.count(solved_index(i)) ? 1 : 0;
+  }
   Eigen::VectorXd gap = s.gap;
   if (mode == FrictionMode::uncoupled) gap += out.ratio * (c_.C_zt * s.lambda);
+  if (mode == FrictionMode::uncoupled && out.tau != 0) gap += c_.C_zt * shear_solved;
   out.depth_mm = s.delta;
   out.readings = solved_readings(s.lambda, out.ratio);
+  if (out.tau != 0) out.readings += c_.S_t * shear_solved;
+  if (out.tau == 0) out.shear = Eigen::VectorXd::Zero(zone().size());
   out.complementarity = s.complementarity;
   out.min_lambda = s.min_lambda;
   out.min_gap = s.min_gap;
@@ -162,7 +324,7 @@ ContactResult ContactSolver::solve(FrictionMode mode, const std::vector<char>& e
     }
   }
   out.force_N = zone().area.dot(out.lambda);
-  out.tangential_force_N = out.ratio * out.force_N;
+  out.tangential_force_N = out.ratio * out.force_N + zone().area.dot(out.shear);
   return out;
 }
 

@@ -6,10 +6,23 @@
 //   coupled    p_t = μ p acting while pressure and zone are solved (steady Coulomb slip along the
 //              sliding direction): in a bonded incompressible layer the shear tilts the pressure.
 // Each is an exact linear complementarity problem on the multipliers (contact/lcp.hpp).
+//
+// The friction law (scene.hpp, FrictionLaw) says what "traction" is: coulomb p_t = ratio·p as above;
+// shear_strength p_t = τ wherever the skin touches; mixed both. Without holes τ acts on the active
+// multipliers' hats. Where it acts while the pressure is solved (static, coupled) it is a load that depends
+// on the active set: the LCP is re-solved with that load's gaps until the set repeats (a fixed point; two or
+// three warm-started solves). An edge multiplier may touch without its own shear and lift under it (a
+// cycle): it then holds the fraction of τ at which it just touches, found by bisection. With holes τ acts on
+// the hole-free contact of the same mode minus the holes, lumped on the hats with the share of each hat
+// outside them (contact/hole_cover.hpp): the hole removes exactly τ S_d, a point force that the plate
+// does not put back on the rim, and the signal varies continuously with the hole's position. (Letting the
+// holed contact's own edge decide would move whole hats of τ, each larger than τ S_d on the default scene,
+// in and out of the load as the hole moves: noise, not physics.)
 #pragma once
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "contact/condensed.hpp"
@@ -18,16 +31,20 @@
 namespace skinfem::contact {
 
 const char* to_string(FrictionMode mode);
+const char* to_string(FrictionLaw law);
 
 struct ContactResult {
   FrictionMode mode = FrictionMode::none;
-  double ratio = 0;        // p_t / p applied along the sliding direction
+  double ratio = 0;        // p_t / p applied along the sliding direction (Coulomb part)
+  double tau = 0;          // MPa, shear-strength part of p_t where the skin touches
+  Eigen::VectorXd shear;   // n_c nodal shear-strength traction along the sliding direction, MPa (0: none)
+  int partial_shear = 0;   // edge multipliers holding a fraction of τ (touching only without their shear)
   Eigen::VectorXd lambda;  // n_c nodal pressures, MPa
   Eigen::VectorXd gap;  // n_c weighted gaps ∫ψ_i gap, mm³, in the final state (uncoupled: traction added)
   double depth_mm = 0;  // rigid approach of the indenter from first touch
   double force_N = 0;   // ∫ p dA
-  double tangential_force_N = 0;
-  Eigen::VectorXd readings;  // 2·sensors, MPa: σ_z of sensor k at 2k, σ_x at 2k + 1
+  double tangential_force_N = 0;  // ratio·force + ∫ shear
+  Eigen::VectorXd readings;       // 2·sensors, MPa: σ_z of sensor k at 2k, σ_x at 2k + 1
   // Complementarity of the solved LCP (before an uncoupled traction is added), contact/lcp.hpp.
   double complementarity = 0, min_lambda = 0, min_gap = 0;
   int pivots = 0;
@@ -58,12 +75,24 @@ class ContactSolver {
   ContactSolver(const CondensedContact& condensed, const ContactLoad& load,
                 const MirrorView* mirror = nullptr);
 
-  // excluded: per multiplier, 1 where the indenter is absent (a hole); warm: an active set to start from.
+  // excluded: per multiplier, 1 where the indenter is absent (a hole); warm: an active set to start from;
+  // covered: empty or, per multiplier, the share of its hat under a hole (hole_cover; the shear's cut).
+  // Throws std::runtime_error when the shear's touched set does not settle.
   ContactResult solve(FrictionMode mode, const std::vector<char>& excluded = {},
-                      const std::vector<int>& warm = {}) const;
+                      const std::vector<int>& warm = {}, const Eigen::VectorXd& covered = {}) const;
   // From now on solves of `mode` reuse the factorized principal system of this active set (sweeps).
   void set_reference(FrictionMode mode, const std::vector<int>& active) const;
-  double ratio(FrictionMode mode) const;
+  double ratio(FrictionMode mode) const;  // Coulomb part p_t / p of `mode`
+  double shear(FrictionMode mode) const;  // shear-strength part of `mode`, MPa
+  // τ0 of the scene, MPa: contact.friction.tau0, else μ F / A with F and A the force and the area Σ∫ψ_i
+  // of the active multipliers of the hole-free frictionless contact (so the sliding shear totals μF).
+  double tau0() const;
+  FrictionLaw law() const { return load_.law; }
+  const ContactLoad& load() const { return load_; }
+  // Where the hole-free contact of `mode` touches, per whole multiplier: 1 if active, 0 if not, the
+  // fraction of the shear an edge multiplier holds (ContactResult::partial_shear). The shear of a holed
+  // contact is τ·touched·(1 − covered).
+  const Eigen::VectorXd& touched(FrictionMode mode) const;
   bool force_controlled() const { return load_.force.has_value(); }
   // The problem as solved (the half's under a mirror view): small_hole.hpp works on its matrices.
   const CondensedContact& condensed() const { return c_; }
@@ -75,10 +104,13 @@ class ContactSolver {
   int solved_index(int i) const { return mirror_ ? mirror_->half[i] : i; }
   // A set of whole multipliers as the solved problem's (ascending, each once).
   std::vector<int> solved_set(const std::vector<int>& whole) const;
+  // A set of the solved problem's multipliers as the whole zone's (ascending).
+  std::vector<int> whole_set(const std::vector<int>& solved) const;
   double opening_share() const { return mirror_ ? 0.5 : 1.0; }
   // Sensor readings (2·sensors, MPa) of whole-zone multipliers λ (symmetric under a mirror view) with
   // traction ratio·p.
-  Eigen::VectorXd readings(const Eigen::VectorXd& lambda, double ratio) const;
+  Eigen::VectorXd readings(const Eigen::VectorXd& lambda, double ratio,
+                           const Eigen::VectorXd& shear = {}) const;
   // λ on the solved problem's multipliers (the half's values of a symmetric λ).
   Eigen::VectorXd solved_lambda(const Eigen::VectorXd& lambda) const;
 
@@ -90,6 +122,8 @@ class ContactSolver {
   const MirrorView* mirror_;
   std::vector<int> images_;  // under a mirror view, per half multiplier: 1 on the cut, else 2
   mutable std::map<double, std::unique_ptr<ContactLcp>> lcps_;
+  mutable std::optional<double> tau0_;
+  mutable std::map<FrictionMode, Eigen::VectorXd> touched_;
 };
 
 // Multipliers whose vertex lies strictly inside one of the holes (the indenter is absent there).

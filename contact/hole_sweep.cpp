@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "contact/hole_cover.hpp"
+
 namespace skinfem::contact {
 
 SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const HoleSweep& sweep,
@@ -20,8 +22,10 @@ SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const H
     const Vec2 c{sweep.from[0] + s * (sweep.to[0] - sweep.from[0]),
                  sweep.from[1] + s * (sweep.to[1] - sweep.from[1])};
     out.centers.push_back(c);
-    const auto excluded = excluded_by_holes(solver.zone(), mesh, {Hole{c, sweep.hole_diameter}});
-    const ContactResult r = solver.solve(mode, excluded, warm);
+    const std::vector<Hole> hole{Hole{c, sweep.hole_diameter}};
+    const ContactResult r =
+        solver.solve(mode, excluded_by_holes(solver.zone(), mesh, hole), warm,
+                     solver.shear(mode) != 0 ? hole_cover(solver.zone(), mesh, hole) : Eigen::VectorXd());
     require_hole_resolved(solver.zone(), mesh, Hole{c, sweep.hole_diameter}, r.active,
                           "contact.sweep.hole_diameter (contact.sweep.h)");
     warm = r.active;

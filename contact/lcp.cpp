@@ -256,18 +256,28 @@ ContactLcp::ContactLcp(Eigen::MatrixXd M, Eigen::VectorXd q, Eigen::VectorXd m)
   }
 }
 
-LcpSolution ContactLcp::solve_force(double F, const std::vector<char>& excluded,
-                                    const std::vector<int>& warm) const {
+namespace {
+VectorXd shifted(const VectorXd& q, const VectorXd& shift) {
+  if (shift.size() == 0) return q;
+  if (shift.size() != q.size() || !shift.allFinite())
+    throw std::invalid_argument("ContactLcp: q_shift must hold " + std::to_string(q.size()) +
+                                " finite values, got " + std::to_string(shift.size()));
+  return q + shift;
+}
+}  // namespace
+
+LcpSolution ContactLcp::solve_force(double F, const std::vector<char>& excluded, const std::vector<int>& warm,
+                                    const VectorXd& q_shift) const {
   if (!(F > 0) || !std::isfinite(F))
     throw std::invalid_argument("ContactLcp::solve_force: F must be finite and > 0, got " +
                                 std::to_string(F));
-  return solve(true, F, excluded, warm);
+  return solve(true, F, excluded, warm, shifted(q_, q_shift));
 }
 
 LcpSolution ContactLcp::solve_depth(double delta, const std::vector<char>& excluded,
-                                    const std::vector<int>& warm) const {
+                                    const std::vector<int>& warm, const VectorXd& q_shift) const {
   if (!std::isfinite(delta)) throw std::invalid_argument("ContactLcp::solve_depth: delta must be finite");
-  return solve(false, delta, excluded, warm);
+  return solve(false, delta, excluded, warm, shifted(q_, q_shift));
 }
 
 void ContactLcp::set_reference(const std::vector<int>& active) {
@@ -296,7 +306,7 @@ void ContactLcp::clear_reference() {
 }
 
 LcpSolution ContactLcp::solve(bool force, double value, const std::vector<char>& excluded,
-                              const std::vector<int>& warm) const {
+                              const std::vector<int>& warm, const VectorXd& q) const {
   const int n = size();
   if (!excluded.empty() && static_cast<int>(excluded.size()) != n)
     throw std::invalid_argument("ContactLcp: excluded has " + std::to_string(excluded.size()) +
@@ -316,7 +326,7 @@ LcpSolution ContactLcp::solve(bool force, double value, const std::vector<char>&
   }
   const bool cold = std::find(in.begin(), in.end(), 1) == in.end();
   if (cold && !force) {  // the rigid overlap
-    for (int i = 0; i < n; ++i) in[i] = !is_excluded(i) && q_[i] < value * m_[i];
+    for (int i = 0; i < n; ++i) in[i] = !is_excluded(i) && q[i] < value * m_[i];
   } else if (cold) {
     // The overlap of the local model λ_i = (δ m_i − q_i)/M_ii, whose force Σ m_i λ_i over the overlap is
     // piecewise linear in δ: exact in one pass over q_i/m_i ascending. Without M's coupling it is stiffer
@@ -325,24 +335,24 @@ LcpSolution ContactLcp::solve(bool force, double value, const std::vector<char>&
     std::vector<int> order;
     for (int i = 0; i < n; ++i)
       if (!is_excluded(i)) order.push_back(i);
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return q_[a] / m_[a] < q_[b] / m_[b]; });
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return q[a] / m_[a] < q[b] / m_[b]; });
     double sa = 0, sb = 0;  // Σ m_i²/M_ii, Σ m_i q_i/M_ii over the overlap
     size_t k = 0;
     for (; k < order.size(); ++k) {
       const int i = order[k];
       const double d = std::max(std::abs(M_(i, i)), kEps);
-      if (k > 0 && (value + sb) / sa <= q_[i] / m_[i]) break;
+      if (k > 0 && (value + sb) / sa <= q[i] / m_[i]) break;
       sa += m_[i] * m_[i] / d;
-      sb += m_[i] * q_[i] / d;
+      sb += m_[i] * q[i] / d;
     }
     for (size_t c = 0; c < std::max<size_t>(k, 1); ++c) in[order[c]] = 1;
   }
 
-  const System sys{M_, q_, m_, sigma_, force, value, n};
+  const System sys{M_, q, m_, sigma_, force, value, n};
   Principal principal(sys, ref_set_.empty() ? nullptr : &ref_set_, ref_set_.empty() ? nullptr : &Z_);
   VectorXd b(n + 1);
   for (int i = 0; i <= n; ++i) b[i] = i < n ? sys.rhs(i) : (force ? sys.rhs(n) : 0.0);
-  const double q_scale = q_.size() ? q_.cwiseAbs().maxCoeff() : 0.0;
+  const double q_scale = q.size() ? q.cwiseAbs().maxCoeff() : 0.0;
   const double m_max = m_.size() ? m_.maxCoeff() : 0.0;
 
   LcpSolution s;
@@ -365,7 +375,7 @@ LcpSolution ContactLcp::solve(bool force, double value, const std::vector<char>&
       for (int refine = 0; refine < 2; ++refine) {
         s.lambda = x.head(n);
         delta = force ? sigma_ * x[n] : value;
-        s.gap = M_ * s.lambda + q_ - delta * m_;
+        s.gap = M_ * s.lambda + q - delta * m_;
         if (refine == 1) break;
         VectorXd r = VectorXd::Zero(n + 1);
         for (int i : B) r[i] = i < n ? -s.gap[i] : sigma_ * (value - m_.dot(s.lambda));

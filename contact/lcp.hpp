@@ -59,10 +59,12 @@ class ContactLcp {
   // empty: the rigid overlap {q_i < δ m_i} under depth control, a one-pass estimate under force control.
   // Throws std::runtime_error (one line, naming the pivot count) when pivoting does not converge within
   // 10n + 20 pivots or a principal system is singular; std::invalid_argument on bad arguments (F ≤ 0).
-  LcpSolution solve_force(double F, const std::vector<char>& excluded = {},
-                          const std::vector<int>& warm = {}) const;
+  // q_shift: empty, or n weighted gaps added to q for this solve only (a load that does not depend on λ,
+  // such as a shear strength's traction; the stored factorizations do not depend on q).
+  LcpSolution solve_force(double F, const std::vector<char>& excluded = {}, const std::vector<int>& warm = {},
+                          const Eigen::VectorXd& q_shift = {}) const;
   LcpSolution solve_depth(double delta, const std::vector<char>& excluded = {},
-                          const std::vector<int>& warm = {}) const;
+                          const std::vector<int>& warm = {}, const Eigen::VectorXd& q_shift = {}) const;
 
   // Inverts the force-control principal system of `active` (typically the solution without a hole) once;
   // later solves whose principal sets differ from it by at most a quarter of its size use low-rank updates
@@ -75,7 +77,7 @@ class ContactLcp {
 
  private:
   LcpSolution solve(bool force_control, double value, const std::vector<char>& excluded,
-                    const std::vector<int>& warm) const;
+                    const std::vector<int>& warm, const Eigen::VectorXd& q) const;
 
   Eigen::MatrixXd M_;
   Eigen::VectorXd q_, m_;

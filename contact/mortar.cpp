@@ -61,13 +61,15 @@ Eigen::VectorXd MortarZone::weighted(const TetMesh& m,
   return out;
 }
 
-Eigen::VectorXd MortarZone::load(const Eigen::VectorXd& lambda, const Eigen::Vector2d& t_dir,
-                                 double ratio) const {
+Eigen::VectorXd MortarZone::load(const Eigen::VectorXd& lambda, const Eigen::Vector2d& t_dir, double ratio,
+                                 const Eigen::VectorXd& shear) const {
   const Eigen::VectorXd nodal = D.transpose() * lambda;  // ∫ p φ_j
+  Eigen::VectorXd tangential = ratio * nodal;            // ∫ p_t φ_j
+  if (shear.size()) tangential += D.transpose() * shear;
   Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * nodal.size());
   for (int j = 0; j < nodal.size(); ++j) {
-    f[3 * j] = ratio * t_dir.x() * nodal[j];
-    f[3 * j + 1] = ratio * t_dir.y() * nodal[j];
+    f[3 * j] = t_dir.x() * tangential[j];
+    f[3 * j + 1] = t_dir.y() * tangential[j];
     f[3 * j + 2] = -nodal[j];
   }
   return f;

@@ -31,8 +31,10 @@ struct MortarZone {
   int size() const { return static_cast<int>(vertices.size()); }
   // ∫ ψ_i f(x) dx dy for every multiplier, f evaluated at the physical (curved) top point.
   Eigen::VectorXd weighted(const TetMesh& mesh, const std::function<double(const Eigen::Vector3d&)>& f) const;
-  // 3N load vector of multipliers λ: traction −Σλψ e_z + t_dir·Σλψ (t_dir in the (x, y) plane).
-  Eigen::VectorXd load(const Eigen::VectorXd& lambda, const Eigen::Vector2d& t_dir, double ratio) const;
+  // 3N load vector of multipliers λ: traction −Σλψ e_z + t_dir·(ratio Σλψ + Σ shear_i ψ) (t_dir in the
+  // (x, y) plane; shear: empty or n_c nodal values, MPa).
+  Eigen::VectorXd load(const Eigen::VectorXd& lambda, const Eigen::Vector2d& t_dir, double ratio,
+                       const Eigen::VectorXd& shear = {}) const;
 };
 
 // Multipliers at the top vertices with (x, y) within `radius` of `center` (excluding vertices on the side).

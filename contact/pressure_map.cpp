@@ -10,10 +10,11 @@ void write_pressure_vtp(const std::string& path, const TetMesh& m, const Contact
                         const ContactResult& r) {
   const int N = m.num_nodes();
   const MortarZone& zone = solver.zone();
-  std::vector<double> p(N, 0.0), gap(N, 0.0), in(N, 0.0);
+  std::vector<double> p(N, 0.0), gap(N, 0.0), in(N, 0.0), pt(N, 0.0);
   for (int i = 0; i < zone.size(); ++i) {
     const int v = zone.vertices[i];
     p[v] = 1e3 * std::max(0.0, r.lambda[i]);
+    pt[v] = r.ratio * p[v] + (r.shear.size() ? 1e3 * r.shear[i] : 0.0);
     gap[v] = 1e3 * r.gap[i] / zone.area[i];
     in[v] = r.lambda[i] > 0 ? 1.0 : 0.0;
   }
@@ -27,13 +28,14 @@ void write_pressure_vtp(const std::string& path, const TetMesh& m, const Contact
     for (int e = 0; e < 3; ++e) {
       const int a = m.faces(f, e), b = m.faces(f, (e + 1) % 3), mid = m.faces(f, 3 + e);
       p[mid] = 0.5 * (p[a] + p[b]);
+      pt[mid] = 0.5 * (pt[a] + pt[b]);
       gap[mid] = 0.5 * (gap[a] + gap[b]);
       in[mid] = in[a] * in[b];
     }
   DataArray traction{"traction_kPa", 3, std::vector<double>(3 * N, 0.0)};
   for (int j = 0; j < N; ++j) {
-    traction.values[3 * j] = r.ratio * solver.direction().x() * p[j];
-    traction.values[3 * j + 1] = r.ratio * solver.direction().y() * p[j];
+    traction.values[3 * j] = solver.direction().x() * pt[j];
+    traction.values[3 * j + 1] = solver.direction().y() * pt[j];
   }
   write_faces_vtp(path, m, faces,
                   {{"pressure_kPa", 1, p}, traction, {"gap_um", 1, gap}, {"in_contact", 1, in}});

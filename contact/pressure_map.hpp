@@ -1,8 +1,8 @@
 // pressure.vtp: the contact zone's top faces with, per node, pressure_kPa (the P1 multiplier field),
-// traction_kPa (3 components: the friction traction ratio·p along the sliding direction), gap_um (mean gap
-// over each vertex's hat, ∫ψ gap / ∫ψ: the quantity held ≥ 0) and in_contact (1 where p > 0).
-// Only faces whose three corners carry multipliers. Mid-edge nodes carry the mean of their two vertices
-// (exact for the linear multiplier field).
+// traction_kPa (3 components: the friction traction ratio·p + shear along the sliding direction), gap_um
+// (mean gap over each vertex's hat, ∫ψ gap / ∫ψ: the quantity held ≥ 0) and in_contact (1 where p > 0). Only
+// faces whose three corners carry multipliers. Mid-edge nodes carry the mean of their two vertices (exact for
+// the linear multiplier field).
 #pragma once
 
 #include <string>

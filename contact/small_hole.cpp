@@ -1,6 +1,7 @@
 #include "contact/small_hole.hpp"
 
 #include <Eigen/LU>
+#include <cmath>
 
 namespace skinfem::contact {
 
@@ -37,6 +38,13 @@ Eigen::MatrixXd small_hole_signals(const ContactSolver& solver, FrictionMode mod
     pressure[z.vertices[i]] = r.lambda[i];
     whole_index[z.vertices[i]] = i;
   }
+  // A shear strength τ is missing over the hole too: the nodal shear drops by S_d ψ_i(u) τ / ∫ψ_i (the
+  // hole's area lumped on the hats, contact/hole_cover.hpp), read directly through S_t and, where it acts
+  // while the pressure is solved, through the gaps it opens, C_zt Δτ, on the kept zone.
+  const bool shear = r.tau != 0;
+  const bool shear_acting = shear && mode != FrictionMode::uncoupled;
+  const double S_d = M_PI * 0.25 * hole_diameter * hole_diameter;
+  Eigen::VectorXd drop = Eigen::VectorXd::Zero(z.size());
   const double eps = 0.5 * hole_diameter;
   const double volume_per_pressure = 8 * (1 - nu * nu) * eps * eps * eps / (3 * E);
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(centers.size(), nr);
@@ -53,6 +61,17 @@ Eigen::MatrixXd small_hole_signals(const ContactSolver& solver, FrictionMode mod
       if (w < 0) continue;
       if (const int a = solved_slot[solver.solved_index(w)]; a >= 0)
         out.row(i) -= solver.opening_share() * V * psi[k] * W.row(a);
+    }
+    if (!shear) continue;
+    drop.setZero();
+    for (int k = 0; k < 3; ++k)
+      if (const int w = whole_index[mesh.faces(f, k)]; w >= 0)
+        drop[w] = S_d * psi[k] * r.shear[w] / z.area[w];
+    const Eigen::VectorXd d = solver.solved_lambda(drop);
+    out.row(i) -= (c.S_t * d).transpose();
+    if (shear_acting) {
+      const Eigen::VectorXd dq = c.C_zt * d;
+      for (int a = 0; a < na; ++a) out.row(i) += dq[A[a]] * W.row(a);
     }
   }
   return out;

@@ -7,7 +7,9 @@
 // zone is kept (the active set of the hole-free solution) and the force too, so with the bordered matrix
 // K = [M_AA, −m_A; m_Aᵀ, 0] of contact/lcp.hpp the readings change by
 //   ς(u) = −V(u) · S_A [K⁻¹]_λ ψ_A(u),
-// for every sensor (S = S_p + ratio S_t, contact/condensed.hpp). One factorization of K and one solve with
+// for every sensor (S = S_p + ratio S_t, contact/condensed.hpp). Under a shear strength τ the hole also
+// removes the shear τ S_d, lumped on the hats at u: read through S_t, and through the gaps C_zt opens where
+// the shear acts while the pressure is solved (static, coupled). One factorization of K and one solve with
 // the 2·sensors reading rows give every position at the cost of a hat evaluation. Accurate to the next
 // multipole, (ε/d)² for a sensor at distance d, and to the pressure's variation over the hole; checked
 // against resolved holes in tests/contact/test_hole.cpp.

@@ -36,7 +36,12 @@
 //                  "h"*: <mm, > 0>,                  mesh size inside the zone; absent: mesh.h_min
 //                  "friction"*: {"mode"*: "none" (default) | "static" | "uncoupled" | "coupled",
 //                                "mu"*: >= 0 (default 0; 0 allowed with every mode),
-//                                "static_ratio"*: in [0, mu] (default 0; used by "static"),
+//                                "law"*: "coulomb" (default: p_t = mu p) | "shear_strength" (p_t = tau0
+//                                        where the skin touches) | "mixed" (p_t = tau0 + mu p),
+//                                "tau0"*: <MPa, in [0, 1e6]> | "from_force" (default: mu F / the
+//                                         frictionless contact area); shear_strength and mixed only,
+//                                "static_ratio"*: in [0, mu] (default 0; used by "static": at rest the
+//                                                 plate keeps static_ratio/mu of the sliding traction),
 //                                "direction"*: [dx, dy] non-zero, normalised (default [1, 0])},
 //                  "sweep"*: {"from": [x, y], "to": [x, y],  a hole swept for `skinfem defect`
 //                             "positions"*: integer in [2, 100000] (default 201),
@@ -703,7 +708,7 @@ void check_loads(const Reader& r, const Scene& scene) {
 }
 
 void read_friction(const Reader& r, const json& f, const std::string& path, ContactLoad& out) {
-  r.object(f, path, {"mode", "mu", "static_ratio", "direction"});
+  r.object(f, path, {"mode", "law", "mu", "tau0", "static_ratio", "direction"});
   if (const json* mode = Reader::find(f, "mode")) {
     if (*mode == "none")
       out.friction = FrictionMode::none;
@@ -724,6 +729,25 @@ void read_friction(const Reader& r, const json& f, const std::string& path, Cont
       {"a number in [0, mu = " + fmt(out.mu) + "] (a residual traction at rest stays inside Coulomb's cone " +
            "|p_t| <= mu p_z; give contact.friction.mu)",
        [mu = out.mu](double x) { return x >= 0 && x <= mu; }});
+  if (const json* law = Reader::find(f, "law")) {
+    if (*law == "coulomb")
+      out.law = FrictionLaw::coulomb;
+    else if (*law == "shear_strength")
+      out.law = FrictionLaw::shear_strength;
+    else if (*law == "mixed")
+      out.law = FrictionLaw::mixed;
+    else
+      r.fail(sub(path, "law"), *law, R"(must be one of "coulomb", "shear_strength", "mixed")");
+  }
+  if (const json* tau0 = Reader::find(f, "tau0")) {
+    if (out.law == FrictionLaw::coulomb)
+      r.fail(sub(path, "tau0"), *tau0,
+             R"(is the shear strength of "law": "shear_strength" or "mixed"; Coulomb friction has none)");
+    if (*tau0 != "from_force")
+      out.tau0 = r.number(*tau0, sub(path, "tau0"),
+                          {R"(a shear strength in [0, 1e6] MPa, or "from_force" (mu F / contact area))",
+                           [](double x) { return x >= 0 && x <= 1e6; }});
+  }
   if (const json* d = Reader::find(f, "direction")) {
     const Vec2 v = r.vec<2>(*d, sub(path, "direction"));
     const double n = std::hypot(v[0], v[1]);

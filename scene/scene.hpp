@@ -164,6 +164,11 @@ enum class IndenterKind { plane, sphere };
 //   none: frictionless; static: p_t = static_ratio·p_z; uncoupled: frictionless pressure, then p_t = μ p_z
 //   added (the paper's assumption); coupled: p_t = μ p_z acting while pressure and zone are solved.
 enum class FrictionMode { none, static_residual, uncoupled, coupled };
+// What the tangential traction of a sliding plate is (contact/contact_solver.hpp):
+//   coulomb: p_t = μ p; shear_strength: p_t = τ0 wherever the skin touches (a pressure-independent shear
+//   strength, as measured for PDMS on smooth glass); mixed: p_t = τ0 + μ p. At rest (the static mode) the
+//   plate keeps the fraction static_ratio/μ of the sliding traction.
+enum class FrictionLaw { coulomb, shear_strength, mixed };
 
 struct Hole {
   Vec2 center{0, 0};
@@ -191,7 +196,11 @@ struct ContactLoad {
   double h = 0;                 // mm, mesh size inside the candidate zone; 0 → mesh.h_min
   double mu = 0;                // sliding friction coefficient μ ≥ 0
   double static_ratio = 0;      // residual p_t / p_z at rest ≥ 0
-  Vec2 direction{1, 0};         // unit sliding direction of the indenter over the skin (x, y)
+  FrictionLaw law = FrictionLaw::coulomb;
+  // MPa, τ0 of shear_strength and mixed (≥ 0); absent: μ F / A, the sliding force μF spread over the
+  // frictionless contact area A (ContactSolver::tau0)
+  std::optional<double> tau0;
+  Vec2 direction{1, 0};                        // unit sliding direction of the indenter over the skin (x, y)
   FrictionMode friction = FrictionMode::none;  // default mode of `skinfem contact`
   std::optional<HoleSweep> sweep;
 };

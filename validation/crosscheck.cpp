@@ -4,6 +4,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "contact/hole_cover.hpp"
 #include "contact/layer_hertz.hpp"
 #include "contact/small_hole.hpp"
 
@@ -33,7 +34,11 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
   const contact::MortarZone& zone = solver.zone();
   const int ns = static_cast<int>(in.sensors.positions.size());
   Crosscheck out;
-  for (int c = 0; c < 2; ++c) out.ratio[c] = solver.ratio(kModes[c]);
+  for (int c = 0; c < 2; ++c) {
+    out.ratio[c] = solver.ratio(kModes[c]);
+    out.shear[c] = solver.shear(kModes[c]);
+    out.paper_ratio[c] = c == Crosscheck::kSliding ? solver.load().mu : solver.load().static_ratio;
+  }
   const GreenKernel fe = fe_kernel(*in.fe);
   const GreenKernel k_paper = rescaled_halfspace_kernel(in.thickness, in.k_paper);
   const GreenKernel k_best = rescaled_halfspace_kernel(in.thickness, in.k_best);
@@ -50,15 +55,25 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
     hertz = contact::hertz_halfspace(in.force, *in.equivalent_radius, in.E, in.nu);
     layer = contact::layer_hertz_force(in.force, *in.equivalent_radius, in.center_thickness, in.E, in.nu);
   }
-  const auto hertz_tractions = [&](double ratio) {
+  const auto hertz_tractions = [&](double ratio, double shear) {
     const double a = hertz->a_mm, p0 = hertz->p0_MPa;
     return axisymmetric_tractions(
-        [a, p0](double r) { return p0 * std::sqrt(std::max(0.0, 1 - r * r / (a * a))); }, in.center, a,
-        ratio);
+        [a, p0](double r) { return p0 * std::sqrt(std::max(0.0, 1 - r * r / (a * a))); }, in.center, a, ratio,
+        shear);
   };
-  const auto layer_tractions = [&](double ratio) {
+  const auto layer_tractions = [&](double ratio, double shear) {
     const contact::LayerHertzResult l = *layer;
-    return axisymmetric_tractions([l](double r) { return l.pressure_MPa(r); }, in.center, l.a_mm, ratio);
+    return axisymmetric_tractions([l](double r) { return l.pressure_MPa(r); }, in.center, l.a_mm, ratio,
+                                  shear);
+  };
+  // The FE's traction on a frictionless solution (the paper's uncoupled friction with the FE's law).
+  const auto free_shear = [&](int c, const Eigen::VectorXd& covered = {}) {
+    Eigen::VectorXd v = out.shear[c] * solver.touched(FrictionMode::none);
+    if (covered.size()) v = v.cwiseProduct((1.0 - covered.array()).matrix());
+    return v;
+  };
+  const auto tractions = [&](int c, const contact::ContactResult& r) {
+    return fe_tractions(zone, *in.mesh, r.lambda, out.ratio[c], r.shear);
   };
 
   // Mean stresses.
@@ -69,21 +84,19 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
     out.readings.push_back(r);
   };
   add_reading("fe", "full FE: contact, friction and Green maps", [&](int c) { return full[c].readings; });
-  add_reading("green_k_paper", "FE tractions, half-space Green rescaled by the paper's k", [&](int c) {
-    return convolve(fe_tractions(zone, *in.mesh, full[c].lambda, out.ratio[c]), k_paper, in.sensors);
-  });
-  add_reading("green_k_best", "FE tractions, half-space Green rescaled by the best-fit k", [&](int c) {
-    return convolve(fe_tractions(zone, *in.mesh, full[c].lambda, out.ratio[c]), k_best, in.sensors);
-  });
-  add_reading("uncoupled", "frictionless FE pressure with p_x = ratio p_z added, FE Green",
-              [&](int c) { return solver.readings(none.lambda, out.ratio[c]); });
+  add_reading("green_k_paper", "FE tractions, half-space Green rescaled by the paper's k",
+              [&](int c) { return convolve(tractions(c, full[c]), k_paper, in.sensors); });
+  add_reading("green_k_best", "FE tractions, half-space Green rescaled by the best-fit k",
+              [&](int c) { return convolve(tractions(c, full[c]), k_best, in.sensors); });
+  add_reading("uncoupled", "frictionless FE pressure with the FE's traction added, FE Green",
+              [&](int c) { return solver.readings(none.lambda, out.ratio[c], free_shear(c)); });
   if (hertz) {
     add_reading("pressure_hertz", "half-space Hertz pressure (uncoupled friction), FE Green",
-                [&](int c) { return convolve(hertz_tractions(out.ratio[c]), fe, in.sensors); });
+                [&](int c) { return convolve(hertz_tractions(out.ratio[c], out.shear[c]), fe, in.sensors); });
     add_reading("pressure_layer", "exact bonded-layer Hertz pressure (uncoupled friction), FE Green",
-                [&](int c) { return convolve(layer_tractions(out.ratio[c]), fe, in.sensors); });
+                [&](int c) { return convolve(layer_tractions(out.ratio[c], out.shear[c]), fe, in.sensors); });
     add_reading("paper_model", "exact-layer pressure, uncoupled friction, Green rescaled by the paper's k",
-                [&](int c) { return convolve(layer_tractions(out.ratio[c]), k_paper, in.sensors); });
+                [&](int c) { return convolve(layer_tractions(out.paper_ratio[c], 0), k_paper, in.sensors); });
   }
 
   // Hole signals.
@@ -100,32 +113,35 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
   };
   add_signal("fe", "a full FE contact solve per hole position", [&](int c) { return sweeps[c].varsigma; });
   add_signal("green_k_paper", "each position's FE tractions, Green rescaled by the paper's k", [&](int c) {
-    const Eigen::VectorXd base =
-        convolve(fe_tractions(zone, *in.mesh, sweeps[c].baseline.lambda, out.ratio[c]), k_paper, in.sensors);
+    const Eigen::VectorXd base = convolve(tractions(c, sweeps[c].baseline), k_paper, in.sensors);
     Eigen::MatrixXd s(n, 2 * ns);
     for (int i = 0; i < n; ++i)
-      s.row(i) =
-          (convolve(fe_tractions(zone, *in.mesh, frames[c][i].lambda, out.ratio[c]), k_paper, in.sensors) -
-           base)
-              .transpose();
+      s.row(i) = (convolve(tractions(c, frames[c][i]), k_paper, in.sensors) - base).transpose();
     return s;
   });
   // One frictionless sweep serves both cases' uncoupled friction.
-  std::vector<Eigen::VectorXd> free_lambda;
-  const contact::SweepResult free_sweep =
-      contact::hole_sweep(solver, *in.mesh, in.sweep, FrictionMode::none,
-                          [&](int, const contact::ContactResult& r) { free_lambda.push_back(r.lambda); });
-  add_signal("uncoupled", "frictionless FE sweep with p_x = ratio p_z added", [&](int c) {
-    const Eigen::VectorXd base = solver.readings(free_sweep.baseline.lambda, out.ratio[c]);
+  std::vector<Eigen::VectorXd> free_lambda, covered;
+  const bool any_shear = out.shear[0] != 0 || out.shear[1] != 0;
+  const contact::SweepResult free_sweep = contact::hole_sweep(
+      solver, *in.mesh, in.sweep, FrictionMode::none, [&](int i, const contact::ContactResult& r) {
+        free_lambda.push_back(r.lambda);
+        if (any_shear)
+          covered.push_back(
+              contact::hole_cover(zone, *in.mesh, {Hole{sweeps[0].centers[i], in.sweep.hole_diameter}}));
+      });
+  add_signal("uncoupled", "frictionless FE sweep with the FE's traction added", [&](int c) {
+    const Eigen::VectorXd base = solver.readings(free_sweep.baseline.lambda, out.ratio[c], free_shear(c));
     Eigen::MatrixXd s(n, 2 * ns);
-    for (int i = 0; i < n; ++i) s.row(i) = (solver.readings(free_lambda[i], out.ratio[c]) - base).transpose();
+    for (int i = 0; i < n; ++i)
+      s.row(i) = (solver.readings(free_lambda[i], out.ratio[c],
+                                  any_shear ? free_shear(c, covered[i]) : Eigen::VectorXd()) -
+                  base)
+                     .transpose();
     return s;
   });
   std::vector<Vec2> centers(sweeps[0].centers.begin(), sweeps[0].centers.end());
-  add_signal("first_order_hole", "eqs. (2)-(3) with the FE tractions and FE Green maps", [&](int c) {
-    return first_order_hole(fe_tractions(zone, *in.mesh, full[c].lambda, out.ratio[c]), fe, in.sensors,
-                            centers, S);
-  });
+  add_signal("first_order_hole", "eqs. (2)-(3) with the FE tractions and FE Green maps",
+             [&](int c) { return first_order_hole(tractions(c, full[c]), fe, in.sensors, centers, S); });
   const PlanarFaceIndex top(*in.mesh, kTop);
   add_signal("small_hole",
              "the hole as its penny-crack bulge in the intact FE contact (contact/small_hole.hpp)",
@@ -136,7 +152,8 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
   if (layer)
     add_signal("paper_model",
                "eqs. (2)-(3), exact-layer pressure, uncoupled, Green rescaled by the paper's k", [&](int c) {
-                 return first_order_hole(layer_tractions(out.ratio[c]), k_paper, in.sensors, centers, S);
+                 return first_order_hole(layer_tractions(out.paper_ratio[c], 0), k_paper, in.sensors, centers,
+                                         S);
                });
 
   for (size_t v = 0; v < out.signals.size(); ++v) {
@@ -151,7 +168,7 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
 
   // Pressure profiles through the contact along x.
   const Tractions fe_none = fe_tractions(zone, *in.mesh, none.lambda, 0);
-  const Tractions fe_coupled = fe_tractions(zone, *in.mesh, full[Crosscheck::kSliding].lambda, 0);
+  const Tractions fe_coupled = tractions(Crosscheck::kSliding, full[Crosscheck::kSliding]);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double reach = hertz ? 1.3 * std::max(hertz->a_mm, layer->a_mm) : 4.0;
   for (int i = 0; i <= 400; ++i) {
@@ -161,8 +178,7 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
         hertz ? hertz->p0_MPa * std::sqrt(std::max(0.0, 1 - r * r / (hertz->a_mm * hertz->a_mm))) : nan;
     const double pl = layer ? layer->pressure_MPa(r) : nan;
     const double pc = fe_coupled.pressure(x, y);
-    out.pressure_profile.push_back(
-        {x, ph, pl, fe_none.pressure(x, y), pc, out.ratio[Crosscheck::kSliding] * pc});
+    out.pressure_profile.push_back({x, ph, pl, fe_none.pressure(x, y), pc, fe_coupled.tangential(x, y)});
   }
   return out;
 }

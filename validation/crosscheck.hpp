@@ -7,18 +7,22 @@
 //     fe                 full FE;
 //     green_k_paper      FE tractions convolved with the half-space Green tensor rescaled by the paper's k;
 //     green_k_best       the same with the best-fit k (kfit);
-//     uncoupled          the frictionless FE pressure with p_x = ratio·p_z added (the paper's friction);
+//     uncoupled          the frictionless FE pressure with the FE's traction added (the paper's friction:
+//                        p_x = ratio·p_z, plus a shear strength on the frictionless contact where the
+//                        scene's law has one);
 //     pressure_hertz     half-space Hertz pressure (same force, equivalent radius), FE Green;
 //     pressure_layer     the exact bonded-layer Hertz pressure (the paper's finite-thickness Hertz), FE
-//     Green; paper_model        exact-layer pressure, uncoupled friction, Green rescaled by the paper's k.
+//     Green; paper_model        exact-layer pressure, Coulomb friction p_x = μ p_z uncoupled (whatever the
+//                        scene's law: it is the paper's model), Green rescaled by the paper's k.
 //   hole signals ς(u) (paper figs. 3–4):
 //     fe                 a full FE contact solve per hole position (contact/hole_sweep.hpp);
 //     green_k_paper      each position's FE tractions convolved with the rescaled half-space;
-//     uncoupled          the frictionless FE sweep with p_x = ratio·p_z added;
+//     uncoupled          the frictionless FE sweep with the FE's traction added;
 //     first_order_hole   eqs. (2)–(3) with the FE hole-free tractions and the FE Green maps;
 //     small_hole         the hole as the penny-crack bulge it lets into it, in the intact FE contact
 //                        (contact/small_hole.hpp): the first-order formula with the right physics;
-//     paper_model        eqs. (2)–(3), exact-layer pressure, uncoupled, Green rescaled by the paper's k.
+//     paper_model        eqs. (2)–(3), exact-layer pressure, uncoupled Coulomb, Green rescaled by the
+//                        paper's k.
 // Metrics of a signal against FE per sensor and component: amplitude ratio max|ς| / max|ς_FE|, peak shift
 // u(max|ς|) − u(max|ς_FE|) and shape error ‖ς/‖ς‖ − ς_FE/‖ς_FE‖‖ (L2 over u: 0 same shape, √2 orthogonal,
 // 2 opposite). Units: mm, MPa.
@@ -62,7 +66,9 @@ struct SignalMetrics {
 
 struct Crosscheck {
   static constexpr int kStatic = 0, kSliding = 1;
-  double ratio[2] = {0, 0};  // p_x / p_z of each case
+  double ratio[2] = {0, 0};        // p_x / p_z of each case (the FE's Coulomb part)
+  double shear[2] = {0, 0};        // MPa, the FE's shear-strength part of p_x where the skin touches
+  double paper_ratio[2] = {0, 0};  // the paper's p_x / p_z (static_ratio, μ) whatever the FE's law
   std::vector<Variant> reading_variants;
   std::vector<std::array<Eigen::VectorXd, 2>> readings;  // [variant][case]: 2·sensors, MPa
   std::vector<Variant> signal_variants;

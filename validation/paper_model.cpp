@@ -62,48 +62,59 @@ double Tractions::force() const {
 }
 
 Tractions axisymmetric_tractions(std::function<double(double)> p_of_r, const Vec2& center, double a,
-                                 double ratio, int n_theta, int n_phi) {
+                                 double ratio, double shear, int n_theta, int n_phi) {
   Tractions t;
-  t.ratio = ratio;
   t.pressure = [p_of_r, center, a](double x, double y) {
     const double r = std::hypot(x - center[0], y - center[1]);
     return r < a ? p_of_r(r) : 0.0;
+  };
+  t.tangential = [p_of_r, center, a, ratio, shear](double x, double y) {
+    const double r = std::hypot(x - center[0], y - center[1]);
+    return r < a ? ratio * p_of_r(r) + shear : 0.0;
   };
   const GaussRule1d g = gauss_legendre01(n_theta);
   for (int i = 0; i < n_theta; ++i) {
     const double theta = 0.5 * M_PI * g.x[i];
     const double r = a * std::sin(theta), dr = a * std::cos(theta) * 0.5 * M_PI * g.w[i];
-    const double pr = p_of_r(r) * r * dr * 2 * M_PI / n_phi;
+    const double w = r * dr * 2 * M_PI / n_phi, pr = p_of_r(r) * w;
     for (int j = 0; j < n_phi; ++j) {
       const double phi = 2 * M_PI * (j + 0.5) / n_phi;
-      t.points.push_back({center[0] + r * std::cos(phi), center[1] + r * std::sin(phi), pr});
+      t.points.push_back(
+          {center[0] + r * std::cos(phi), center[1] + r * std::sin(phi), pr, ratio * pr + shear * w});
     }
   }
   return t;
 }
 
 Tractions fe_tractions(const contact::MortarZone& zone, const TetMesh& mesh, const Eigen::VectorXd& lambda,
-                       double ratio) {
+                       double ratio, const Eigen::VectorXd& shear) {
   Tractions t;
-  t.ratio = ratio;
   auto nodal = std::make_shared<std::vector<double>>(mesh.num_nodes(), 0.0);
-  for (int i = 0; i < zone.size(); ++i) (*nodal)[zone.vertices[i]] = lambda[i];
+  auto nodal_t = std::make_shared<std::vector<double>>(mesh.num_nodes(), 0.0);
+  for (int i = 0; i < zone.size(); ++i) {
+    (*nodal)[zone.vertices[i]] = lambda[i];
+    (*nodal_t)[zone.vertices[i]] = ratio * lambda[i] + (shear.size() ? shear[i] : 0.0);
+  }
+  const auto interpolate = [&mesh](const std::vector<double>& v, int f, double s, double tt) {
+    return (1 - s - tt) * v[mesh.faces(f, 0)] + s * v[mesh.faces(f, 1)] + tt * v[mesh.faces(f, 2)];
+  };
   for (int f : zone.faces)
     for (const FacePoint& q : face_quadrature(mesh, f)) {
-      const double p = (1 - q.s - q.t) * (*nodal)[mesh.faces(f, 0)] + q.s * (*nodal)[mesh.faces(f, 1)] +
-                       q.t * (*nodal)[mesh.faces(f, 2)];
-      if (p != 0) t.points.push_back({q.x.x(), q.x.y(), q.weight_xy * p});
+      const double p = interpolate(*nodal, f, q.s, q.t), pt = interpolate(*nodal_t, f, q.s, q.t);
+      if (p != 0 || pt != 0) t.points.push_back({q.x.x(), q.x.y(), q.weight_xy * p, q.weight_xy * pt});
     }
   // The face index is built on the first pointwise query only: sweeps convolve many of these and never ask.
   auto top = std::make_shared<std::unique_ptr<PlanarFaceIndex>>();
-  t.pressure = [top, nodal, &mesh](double x, double y) {
-    if (!*top) *top = std::make_unique<PlanarFaceIndex>(mesh, kTop);
-    double s = 0, tt = 0;
-    const int f = (*top)->find(x, y, s, tt);
-    if (f < 0) return 0.0;
-    return (1 - s - tt) * (*nodal)[mesh.faces(f, 0)] + s * (*nodal)[mesh.faces(f, 1)] +
-           tt * (*nodal)[mesh.faces(f, 2)];
+  const auto pointwise = [top, &mesh, interpolate](std::shared_ptr<std::vector<double>> v) {
+    return [top, &mesh, interpolate, v](double x, double y) {
+      if (!*top) *top = std::make_unique<PlanarFaceIndex>(mesh, kTop);
+      double s = 0, tt = 0;
+      const int f = (*top)->find(x, y, s, tt);
+      return f < 0 ? 0.0 : interpolate(*v, f, s, tt);
+    };
   };
+  t.pressure = pointwise(nodal);
+  t.tangential = pointwise(nodal_t);
   return t;
 }
 
@@ -113,8 +124,8 @@ Eigen::VectorXd convolve(const Tractions& t, const GreenKernel& g, const Sensors
   for (int k = 0; k < ns; ++k)
     for (const auto& p : t.points) {
       const green::GreenSample G = g(k, p[0] - sensors.positions[k][0], p[1] - sensors.positions[k][1]);
-      out[2 * k] += p[2] * (G.zz + t.ratio * G.xz);
-      out[2 * k + 1] += p[2] * (G.zx + t.ratio * G.xx);
+      out[2 * k] += p[2] * G.zz + p[3] * G.xz;
+      out[2 * k + 1] += p[2] * G.zx + p[3] * G.xx;
     }
   return out;
 }
@@ -124,7 +135,8 @@ Eigen::MatrixXd first_order_hole(const Tractions& t, const GreenKernel& g, const
   const int ns = static_cast<int>(sensors.positions.size());
   Eigen::MatrixXd out(centers.size(), 2 * ns);
   for (size_t i = 0; i < centers.size(); ++i) {
-    const double pz = t.pressure(centers[i][0], centers[i][1]), px = t.ratio * pz;
+    const double pz = t.pressure(centers[i][0], centers[i][1]),
+                 px = t.tangential(centers[i][0], centers[i][1]);
     for (int k = 0; k < ns; ++k) {
       const green::GreenSample G =
           g(k, centers[i][0] - sensors.positions[k][0], centers[i][1] - sensors.positions[k][1]);

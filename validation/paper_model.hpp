@@ -2,7 +2,8 @@
 //   σ_b(x_i) = ∬ [p_z(x) g_zb(x − x_i) + p_x(x) g_xb(x − x_i)] dx dy,                      b ∈ {z, x}
 //   ς_b(u)  ≈ −[p_x(u) g_xb(u − x_i) + p_z(u) g_zb(u − x_i)] S_d        (first-order hole of area S_d)
 // Pressure: half-space Hertz, the exact bonded layer (contact/layer_hertz.hpp) or FE contact; friction:
-// p_x = ratio·p_z (none, static c, μ uncoupled, or the FE's coupled pressure with μ); Green tensor: the
+// p_x = ratio·p_z (none, static c, μ uncoupled, or the FE's coupled pressure with μ), plus a shear strength
+// where the skin touches (contact::FrictionLaw); Green tensor: the
 // half-space rescaled by any k, the exact layer, or the FE reciprocity maps of each sensor.
 //
 // Conventions, the same everywhere in skinfem (green/halfspace.hpp): g_ab(offset) is reading b of a sensor
@@ -35,22 +36,25 @@ GreenKernel layer_exact_kernel(double h, double nu, double reach, double step = 
 // The FE Green maps (reciprocity): the sensor-disc mean reading for a point force on the skin's top.
 GreenKernel fe_kernel(const green::FeGreen& fe);
 
-// Interfacial tractions: pressure p_z and p_x = ratio·p_z, as a pointwise function and as quadrature
-// points (x, y, weight·p_z) covering the contact, weights in mm² (projection on the (x, y) plane).
+// Interfacial tractions: pressure p_z and p_x = ratio·p_z + shear (a shear strength where the pressure
+// acts), as pointwise functions and as quadrature points (x, y, weight·p_z, weight·p_x) covering the
+// contact, weights in mm² (projection on the (x, y) plane).
 struct Tractions {
-  std::function<double(double, double)> pressure;  // MPa
-  std::vector<std::array<double, 3>> points;
-  double ratio = 0;
+  std::function<double(double, double)> pressure;    // p_z, MPa
+  std::function<double(double, double)> tangential;  // p_x, MPa
+  std::vector<std::array<double, 4>> points;
   double force() const;  // Σ weight·p_z, N
 };
 
 // An axisymmetric pressure p(r) on the disc r < a about `center`: polar Gauss rule with r = a sin θ (exact
 // for the square-root edge of Hertz-like pressures), n_theta × n_phi points.
+// shear: MPa, uniform on the disc.
 Tractions axisymmetric_tractions(std::function<double(double)> p_of_r, const Vec2& center, double a,
-                                 double ratio, int n_theta = 48, int n_phi = 96);
-// The FE contact pressure Σ λ_i ψ_i on the mortar zone (contact/mortar.hpp), 7 points per top face.
+                                 double ratio, double shear = 0, int n_theta = 48, int n_phi = 96);
+// The FE contact pressure Σ λ_i ψ_i on the mortar zone (contact/mortar.hpp) and its traction
+// ratio·p + Σ shear_i ψ_i (shear: empty or nodal, contact::ContactResult::shear), 7 points per top face.
 Tractions fe_tractions(const contact::MortarZone& zone, const TetMesh& mesh, const Eigen::VectorXd& lambda,
-                       double ratio);
+                       double ratio, const Eigen::VectorXd& shear = {});
 
 // σ_z and σ_x of every sensor (2·sensors, MPa) by the convolution of eq. (1).
 Eigen::VectorXd convolve(const Tractions& t, const GreenKernel& g, const Sensors& sensors);

@@ -183,6 +183,9 @@ check error_scales_equal '--error-scales: 2 then 2: levels must be distinct and 
 # Physics the scene cannot mean.
 sphere='d["contact"] = {"indenter": {"type": "sphere", "R": 50, "center": [0, 0]}, "force": 0.1'
 bad static_above_coulomb "$sphere, \"friction\": {\"mode\": \"static\", \"mu\": 1, \"static_ratio\": 5}}" 'contact.friction.static_ratio = 5: must be a number in \[0, mu = 1\]' contact
+bad friction_law_unknown "$sphere, \"friction\": {\"law\": \"tresca\"}}" 'contact.friction.law = "tresca": must be one of "coulomb", "shear_strength", "mixed"' contact
+bad tau0_negative "$sphere, \"friction\": {\"law\": \"shear_strength\", \"tau0\": -0.1}}" 'contact.friction.tau0 = -0.1: must be a shear strength in \[0, 1e6\] MPa' defect
+bad tau0_with_coulomb "$sphere, \"friction\": {\"mu\": 1, \"tau0\": 0.1}}" 'contact.friction.tau0 = 0.1: is the shear strength of "law": "shear_strength" or "mixed"' report
 bad hole_below_mesh "$sphere, \"h\": 0.8, \"holes\": [{\"center\": [0.5, 0], \"diameter\": 0.5}]}" 'contact.holes\[0\].diameter = 0.5: must be >= the mesh size over the hole \(contact.h = 0.8 mm\)' contact
 bad sweep_hole_below_mesh "$sphere, \"h\": 0.8, \"sweep\": {\"from\": [-1, 0], \"to\": [1, 0]}}" 'contact.sweep.hole_diameter = 0.5: must be >= the mesh size over the hole' defect
 bad ridges_mesh_coarse 'd["geometry"]["ridges"] = {"period": 0.5, "height": 0.05, "center": [0, 0], "radius": 1, "h": 5}' 'geometry.ridges.h = 5: must be a number in \(0, period/3 = 0.166667 mm\]' mesh

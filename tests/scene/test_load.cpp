@@ -934,8 +934,32 @@ TEST(SceneLoad, ContactErrors) {
                      "contact.friction.direction = [0,0]: must be a non-zero vector");
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "friction": {"direction": [1, 0, 0]})"),
                      "contact.friction.direction = [1,0,0]: must be a point [x, y]");
-  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "friction": {"mu": 1, "speed": 2})"),
-                     "contact.friction.speed: unknown key; allowed: mode, mu, static_ratio, direction");
+  EXPECT_SCENE_ERROR(
+      contact(kPlane + R"(, "friction": {"mu": 1, "speed": 2})"),
+      "contact.friction.speed: unknown key; allowed: mode, law, mu, tau0, static_ratio, direction");
+  // Friction laws: a shear strength is a stress >= 0 or "from_force", and only a shear-strength law has one.
+  EXPECT_SCENE_ERROR(
+      contact(kPlane + R"(, "friction": {"law": "tresca"})"),
+      R"(contact.friction.law = "tresca": must be one of "coulomb", "shear_strength", "mixed")");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "friction": {"law": "shear_strength", "tau0": -0.1})"),
+                     "contact.friction.tau0 = -0.1: must be a shear strength in [0, 1e6] MPa");
+  EXPECT_SCENE_ERROR(
+      contact(kPlane + R"(, "friction": {"law": "mixed", "tau0": "auto"})"),
+      R"(contact.friction.tau0 = "auto": must be a shear strength in [0, 1e6] MPa, or "from_force")");
+  EXPECT_SCENE_ERROR(
+      contact(kPlane + R"(, "friction": {"mu": 1, "tau0": 0.1})"),
+      R"(contact.friction.tau0 = 0.1: is the shear strength of "law": "shear_strength" or "mixed")");
+  {
+    const Scene s =
+        parse_scene(contact(kPlane + R"(, "friction": {"law": "mixed", "mu": 0.5, "tau0": 0.12})"), kSource);
+    EXPECT_EQ(s.contact->law, FrictionLaw::mixed);
+    EXPECT_EQ(s.contact->tau0, 0.12);
+    const Scene f = parse_scene(
+        contact(kPlane + R"(, "friction": {"law": "shear_strength", "mu": 3, "tau0": "from_force"})"),
+        kSource);
+    EXPECT_EQ(f.contact->law, FrictionLaw::shear_strength);
+    EXPECT_FALSE(f.contact->tau0.has_value());
+  }
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "sweep": {"to": [1, 0]})"),
                      "contact.sweep.from: required key is missing");
   for (const char* n : {"1", "2.5", "100001", "\"5\""})
