@@ -315,11 +315,59 @@ void write_index(const std::string& dir, const Scene& scene, const nlohmann::jso
   if (report.contains("front_sensors") && report["front_sensors"].contains("answer"))
     h << "<h2>Does friction-pressure coupling explain the front sensors?</h2><p>"
       << html_escape(report["front_sensors"]["answer"].get<std::string>()) << "</p>\n";
+  if (report.contains("hole_budget") && report["hole_budget"].contains("hypotheses")) {
+    const auto& b = report["hole_budget"];
+    const std::vector<int> front =
+        validation::front_sensors(scene.sensors, contact_center(scene), scene.contact->direction);
+    const auto range = [&](const nlohmann::json& ratios, bool in_front) {
+      double lo = 1e300, hi = 0;
+      for (size_t k = 0; k < ratios.size(); ++k)
+        if ((std::find(front.begin(), front.end(), static_cast<int>(k)) != front.end()) == in_front)
+          lo = std::min(lo, ratios[k].get<double>()), hi = std::max(hi, ratios[k].get<double>());
+      return hi > 0 ? fmt("%.2f", lo) + "–" + fmt("%.2f", hi) : std::string("–");
+    };
+    h << "<h2>Why is a hole so loud? The hole-signal budget</h2><p>"
+      << html_escape(b["answer"].get<std::string>())
+      << " Sliding amplitude of full FE over the paper's model per hypothesis; a fact is judged from the "
+         "numbers "
+         "(hover or open a row for the sentence). Detection: "
+      << fmt("%.0f", b["noise"]["k_sigma"].get<double>()) << " standard deviations of a "
+      << b["noise"]["passages"].get<int>() << "-passage mean, "
+      << fmt("%.3f", b["noise"]["threshold_z_kPa"].get<double>()) << " kPa (ςz) and "
+      << fmt("%.3f", b["noise"]["threshold_x_kPa"].get<double>())
+      << " kPa (ςx).</p>\n<table><tr><th>hypothesis</th><th>τ0 kPa</th><th>back z</th><th>back "
+         "x</th><th>front "
+         "z</th><th>front x</th><th>F1</th><th>F2</th><th>F3</th><th>F4</th><th>F5</th></tr>\n";
+    for (const auto& y : b["hypotheses"]) {
+      const auto& r = y["amplitude_ratio"]["sliding"];
+      h << "<tr><td style=\"text-align:left\" title=\"" << html_escape(y["what"].get<std::string>()) << "\">"
+        << y["name"].get<std::string>() << "</td><td>" << fmt("%.1f", y["tau0_kPa"].get<double>())
+        << "</td><td>" << range(r["z"], false) << "</td><td>" << range(r["x"], false) << "</td><td>"
+        << range(r["z"], true) << "</td><td>" << range(r["x"], true) << "</td>";
+      for (const auto& [fact, v] : y["facts"].items())
+        h << "<td title=\"" << html_escape(v["why"].get<std::string>()) << "\">"
+          << (v["met"].get<bool>() ? "yes" : "no") << "</td>";
+      h << "</tr>\n";
+    }
+    h << "</table>\n";
+    for (const auto& y : b["hypotheses"]) {
+      h << "<details><summary>" << y["name"].get<std::string>() << ": "
+        << html_escape(y["what"].get<std::string>()) << "</summary><ul>\n";
+      for (const auto& [fact, v] : y["facts"].items())
+        h << "<li>" << fact << (v["met"].get<bool>() ? " met: " : " not met: ")
+          << html_escape(v["why"].get<std::string>()) << "</li>\n";
+      h << "</ul></details>\n";
+    }
+    h << "<p>Per sensor: <a href=\"crosscheck/hole_budget.csv\">crosscheck/hole_budget.csv</a>; signals: <a "
+         "href=\"crosscheck/hole_budget_signals.csv\">crosscheck/hole_budget_signals.csv</a>.</p>\n";
+  }
   if (x) {
     const int ns = static_cast<int>(scene.sensors.positions.size());
     h << "<h2>Mean sensor stresses (kPa), each variant swaps one assumption into full FE</h2>\n";
     for (int c = 0; c < 2; ++c) {
-      h << "<h3>" << (c ? "sliding" : "static") << " (p_x/p_z = " << fmt("%.3g", x->ratio[c])
+      h << "<h3>" << (c ? "sliding" : "static") << " (p_x = "
+        << (x->shear[c] != 0 ? fmt("%.3g kPa", 1e3 * x->shear[c]) + (x->ratio[c] != 0 ? " + " : "") : "")
+        << (x->ratio[c] != 0 || x->shear[c] == 0 ? fmt("%.3g p_z", x->ratio[c]) : "")
         << ")</h3><table><tr><th>variant</th>";
       for (int k = 0; k < ns; ++k) h << "<th>#" << k + 1 << " σz</th><th>σx</th>";
       h << "</tr>\n";
@@ -365,7 +413,8 @@ void write_index(const std::string& dir, const Scene& scene, const nlohmann::jso
        {"mesh/mesh.vtu", "mesh/boundary.vtu", "green/green_maps.vtp", "green/green.csv", "kfit/kfit.json",
         "contact/pressure.vtp", "contact/fields.vtu", "contact/modes.csv", "defect/defect.pvd",
         "defect/defect.csv", "crosscheck/readings.csv", "crosscheck/defect.csv", "crosscheck/pressure.csv",
-        "crosscheck/attribution.csv", "study/chain_study.csv", "report.json"})
+        "crosscheck/attribution.csv", "crosscheck/hole_budget.csv", "crosscheck/hole_budget_signals.csv",
+        "study/chain_study.csv", "report.json"})
     if (fs::exists(dir + "/" + f)) h << "<li><a href=\"" << f << "\">" << f << "</a></li>\n";
   h << "</ul></body></html>\n";
   write_text_atomic(dir + "/index.html", h.str());
@@ -438,6 +487,9 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
           *x, validation::front_sensors(scene.sensors, in.center, scene.contact->direction),
           scene.contact->direction);
       wall["crosscheck"] = clock.seconds();
+      clock = Stopwatch();
+      report["hole_budget"] = hole_budget_stage(scene, *contact, *x, out_dir + "/crosscheck");
+      wall["hole_budget"] = clock.seconds();
     }
   }
 

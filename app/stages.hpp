@@ -11,6 +11,7 @@
 #include "app/contact_setup.hpp"
 #include "app/sensor_greens.hpp"
 #include "contact/hole_sweep.hpp"
+#include "validation/crosscheck.hpp"
 
 namespace skinfem::app {
 
@@ -32,5 +33,10 @@ struct DefectStage {
   std::vector<std::vector<contact::ContactResult>> frames;  // [sweep][position]
 };
 DefectStage defect_stage(const Scene& scene, const ContactSetup& setup, const std::string& out_dir);
+
+// The hole-signal budget (app/hole_budget_stage.cpp): friction hypotheses against the paper's facts, judged
+// against the crosscheck's paper_model signals; writes its tables into out_dir (the crosscheck's).
+nlohmann::json hole_budget_stage(const Scene& scene, const ContactSetup& setup,
+                                 const validation::Crosscheck& x, const std::string& out_dir);
 
 }  // namespace skinfem::app

@@ -98,6 +98,23 @@ mesh_rows = [row for row in csv.DictReader(open(os.path.join(out, "kfit", "k_swe
 if sorted(float(row["value"]) for row in mesh_rows) != [1.0, 1.41, 2.0]:
     bad.append(f"kfit/k_sweep.csv mesh_scale rows {[row['value'] for row in mesh_rows]}")
 if "study/chain_study.csv" not in links: bad.append("index.html does not link study/chain_study.csv")
+# The hole-signal budget: every friction hypothesis with the five facts judged, each with its sentence, and the
+# amplitude ratios equal to the per-sensor table's.
+hb = r.get("hole_budget", {})
+names = [h["name"] for h in hb.get("hypotheses", [])]
+if names != ["coulomb", "shear_strength", "mixed"]: bad.append(f"hole_budget hypotheses {names}")
+for h in hb.get("hypotheses", []):
+    if sorted(h.get("facts", {})) != ["F1", "F2", "F3", "F4", "F5"]: bad.append(f"hole_budget {h['name']} facts {sorted(h.get('facts', {}))}")
+    for f, v in h.get("facts", {}).items():
+        if not isinstance(v.get("met"), bool) or not v.get("why"): bad.append(f"hole_budget {h['name']} {f}: {v}")
+    if h.get("facts_met") != sum(v["met"] for v in h.get("facts", {}).values()): bad.append(f"hole_budget {h['name']} facts_met")
+budget = list(csv.DictReader(open(os.path.join(out, "crosscheck", "hole_budget.csv"))))
+for h in hb.get("hypotheses", []):
+    for row in budget:
+        if row["hypothesis"] == h["name"]:
+            want = h["amplitude_ratio"][row["case"]][row["component"]][int(row["sensor"]) - 1]
+            if abs(float(row["ratio"]) - want) > 1e-6 * abs(want): bad.append(f"hole_budget.csv {row} against {want}")
+if not hb.get("answer") or "crosscheck/hole_budget.csv" not in links: bad.append("index.html or report.json lacks the hole budget")
 for b in bad: print("FAIL", b)
 sys.exit(1 if bad else 0)
 PY
