@@ -37,6 +37,10 @@
 #   k_sweep.png              kfit/k_sweep.csv (parameter,value,k_central,k_lsq_line), kfit.json: the exact
 #                            layer's k as one protocol reading changes at a time, against the paper's k ± 0.01,
 #                            and the FE k per mesh scale (rows mesh_scale) when the report computed error bars.
+#   budget_<hypothesis>.png  crosscheck/hole_budget_signals.csv (hypothesis,case,u_mm,sensor,varsigma_z_kPa,
+#                            varsigma_x_kPa), crosscheck/defect.csv: per hypothesis of the hole-signal budget,
+#                            sliding ς_z (top) and ς_x (bottom) against u, one panel per sensor, FE against the
+#                            paper_model variant, titled with the amplitude ratio FE/model.
 #   pareto.png               study/chain_study.csv (the report's error levels, or skinfem study --chain --out
 #                            DIR/study): error vs seconds (log-log), one series per stage, labelled by DOFs.
 # Each PNG is written to a hidden temporary name in DIR/figures and renamed into place. A figure whose inputs
@@ -469,6 +473,60 @@ def pareto(d):
     return fig
 
 
+def fig_budget(d, hypothesis):
+    t = read_csv(os.path.join(d, "crosscheck/hole_budget_signals.csv"),
+                 {"hypothesis": text, "case": one_of(*CASES), "u_mm": number, "sensor": sensor_number,
+                  "varsigma_z_kPa": number, "varsigma_x_kPa": number})
+    m = read_csv(os.path.join(d, "crosscheck/defect.csv"),
+                 {"case": one_of(*CASES), "variant": text, "u_mm": number, "sensor": sensor_number,
+                  "varsigma_z_kPa": number, "varsigma_x_kPa": number})
+    sensors = sorted(set(t["sensor"].tolist()))
+    fig, axes = plt.subplots(2, len(sensors), figsize=(2.3 * len(sensors) + 1, 5.4), squeeze=False, sharex=True)
+    for row, comp in enumerate(("z", "x")):
+        col = f"varsigma_{comp}_kPa"
+        for i, s in enumerate(sensors):
+            ax = axes[row, i]
+            fe = (t["hypothesis"] == hypothesis) & (t["case"] == "sliding") & (t["sensor"] == s)
+            model = (m["case"] == "sliding") & (m["variant"] == "paper_model") & (m["sensor"] == s)
+            if fe.any():
+                ax.plot(*series(t, fe, "u_mm", col), color=sensor_color(s), lw=1.4, label="FE")
+            if model.any():
+                ax.plot(*series(m, model, "u_mm", col), color="k", ls="--", lw=1.0, label="paper's model")
+            if fe.any() and model.any():
+                ratio = np.abs(t[col][fe]).max() / max(np.abs(m[col][model]).max(), 1e-300)
+                ax.set_title(f"#{s} ς_{comp}: FE/model {ratio:.2f}", fontsize=9)
+            else:
+                no_data(ax, "no rows")
+            ax.tick_params(labelsize=7)
+            if row == 1:
+                ax.set_xlabel("u (mm)", fontsize=8)
+        axes[row, 0].set_ylabel(f"ς_{comp} sliding (kPa)")
+    axes[0, 0].legend(fontsize=7, loc="best")
+    fig.suptitle(f"Hole signals under hypothesis '{hypothesis}' (sliding, coupled) against the paper's model, "
+                 "laid out like the paper's fig. 3")
+    fig.tight_layout(rect=(0, 0, 1, 0.95))
+    return fig
+
+
+def budget_figures(d):
+    """(name, inputs, draw) per hypothesis of crosscheck/hole_budget_signals.csv, in file order."""
+    path = os.path.join(d, "crosscheck/hole_budget_signals.csv")
+    if not os.path.isfile(path):
+        return []
+    names = []
+    with open(path, newline="") as f:
+        rows = csv.DictReader(f)
+        for row in rows:
+            h = row.get("hypothesis") or ""
+            # The name becomes part of a file name: letters, digits and underscores only.
+            if not h or not all(c.isascii() and (c.isalnum() or c == "_") for c in h):
+                raise InputError(f"{path}: line {rows.line_num}: hypothesis {h!r}: must be letters, digits, _")
+            if h not in names:
+                names.append(h)
+    inputs = ("crosscheck/hole_budget_signals.csv", "crosscheck/defect.csv")
+    return [(f"budget_{h}.png", inputs, lambda d, h=h: fig_budget(d, h)) for h in names]
+
+
 FIGURES = [
     ("fig1_calibration.png", ("green/green.csv", "kfit/kfit.json"), fig1_calibration),
     ("fig2_static_sliding.png", ("crosscheck/readings.csv",), fig2_static_sliding),
@@ -500,11 +558,16 @@ def main(argv):
     d = argv[1]
     out = os.path.join(d, "figures")
     os.makedirs(out, exist_ok=True)
-    for name, _, _ in FIGURES:  # figures/ then holds exactly what this run drew, nothing from an earlier one
-        if os.path.exists(os.path.join(out, name)):
+    for name in os.listdir(out):  # figures/ then holds exactly what this run drew, nothing from an earlier one
+        if name.endswith(".png"):
             os.remove(os.path.join(out, name))
     written = skipped = 0
-    for name, inputs, draw in FIGURES:
+    try:
+        figures = FIGURES + budget_figures(d)
+    except InputError as e:
+        print(f"figures: error: {e}", file=sys.stderr)
+        return 2
+    for name, inputs, draw in figures:
         path = os.path.join(out, name)
         missing = [f for f in inputs if not os.path.isfile(os.path.join(d, f))]
         if missing:
