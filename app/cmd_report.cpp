@@ -335,13 +335,18 @@ void write_index(const std::string& dir, const Scene& scene, const nlohmann::jso
       << b["noise"]["passages"].get<int>() << "-passage mean, "
       << fmt("%.3f", b["noise"]["threshold_z_kPa"].get<double>()) << " kPa (ςz) and "
       << fmt("%.3f", b["noise"]["threshold_x_kPa"].get<double>())
-      << " kPa (ςx).</p>\n<table><tr><th>hypothesis</th><th>τ0 kPa</th><th>back z</th><th>back "
+      << " kPa (ςx).</p>\n<table><tr><th>hypothesis</th><th>τ0 kPa</th><th>K MPa/mm</th><th>back "
+         "z</th><th>back "
          "x</th><th>front "
          "z</th><th>front x</th><th>F1</th><th>F2</th><th>F3</th><th>F4</th><th>F5</th></tr>\n";
     for (const auto& y : b["hypotheses"]) {
       const auto& r = y["amplitude_ratio"]["sliding"];
       h << "<tr><td style=\"text-align:left\" title=\"" << html_escape(y["what"].get<std::string>()) << "\">"
         << y["name"].get<std::string>() << "</td><td>" << fmt("%.1f", y["tau0_kPa"].get<double>())
+        << "</td><td>"
+        << (y["interface_K_MPa_per_mm"].get<double>() > 0
+                ? fmt("%.4g", y["interface_K_MPa_per_mm"].get<double>())
+                : std::string("hard"))
         << "</td><td>" << range(r["z"], false) << "</td><td>" << range(r["x"], false) << "</td><td>"
         << range(r["z"], true) << "</td><td>" << range(r["x"], true) << "</td>";
       for (const auto& [fact, v] : y["facts"].items())

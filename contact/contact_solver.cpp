@@ -159,6 +159,8 @@ ContactLcp& ContactSolver::lcp(double ratio) const {
   if (!slot) {
     Eigen::MatrixXd M = c_.C_zz;
     if (ratio != 0) M += ratio * c_.C_zt;
+    // A linear interface closes by p/K over each hat: ∫ψ_i p/K, lumped to ∫ψ_i · λ_i/K.
+    if (load_.interface.law == InterfaceLaw::linear) M.diagonal() += c_.zone.area / load_.interface.K;
     slot = std::make_unique<ContactLcp>(std::move(M), c_.gap0, c_.zone.area);
   }
   return *slot;

@@ -43,6 +43,8 @@
 //                                "static_ratio"*: in [0, mu] (default 0; used by "static": at rest the
 //                                                 plate keeps static_ratio/mu of the sliding traction),
 //                                "direction"*: [dx, dy] non-zero, normalised (default [1, 0])},
+//                  "interface"*: {"law": "hard" (default: no interpenetration) | "linear" (a rough
+//                                 interface closing by p/K), "K": <MPa/mm, in (0, 1e12]> (linear only)},
 //                  "sweep"*: {"from": [x, y], "to": [x, y],  a hole swept for `skinfem defect`
 //                             "positions"*: integer in [2, 100000] (default 201),
 //                             "hole_diameter"*: > 0 (default 0.5),
@@ -779,7 +781,8 @@ HoleSweep read_sweep(const Reader& r, const json& j, const std::string& path, co
 
 ContactLoad read_contact(const Reader& r, const json& c, const Geometry& geo) {
   const std::string P = "contact";
-  r.object(c, P, {"indenter", "force", "depth", "holes", "zone_radius", "h", "friction", "sweep"});
+  r.object(c, P,
+           {"indenter", "force", "depth", "holes", "zone_radius", "h", "friction", "interface", "sweep"});
   ContactLoad out;
 
   const std::string PI = sub(P, "indenter");
@@ -826,6 +829,23 @@ ContactLoad read_contact(const Reader& r, const json& c, const Geometry& geo) {
   out.zone_radius = r.number_or(c, P, "zone_radius", 0.0, length());
   out.h = r.number_or(c, P, "h", 0.0, length());
   if (const json* f = Reader::find(c, "friction")) read_friction(r, *f, sub(P, "friction"), out);
+  if (const json* i = Reader::find(c, "interface")) {
+    const std::string path = sub(P, "interface");
+    r.object(*i, path, {"law", "K"});
+    const json& law = r.need(*i, path, "law", R"("hard" or "linear")");
+    if (law == "hard")
+      out.interface.law = InterfaceLaw::hard;
+    else if (law == "linear")
+      out.interface.law = InterfaceLaw::linear;
+    else
+      r.fail(sub(path, "law"), law, R"(must be one of "hard", "linear")");
+    if (out.interface.law == InterfaceLaw::linear)
+      out.interface.K = r.number(*i, path, "K", {"an interface stiffness in (0, 1e12] MPa/mm", [](double x) {
+                                                   return x > 0 && x <= 1e12;
+                                                 }});
+    else if (const json* K = Reader::find(*i, "K"))
+      r.fail(sub(path, "K"), *K, R"(is the stiffness of "law": "linear"; a hard interface has none)");
+  }
   if (const json* sw = Reader::find(c, "sweep")) out.sweep = read_sweep(r, *sw, sub(P, "sweep"), geo);
   return out;
 }

@@ -185,6 +185,15 @@ struct HoleSweep {
   double h = 0;  // mm, mesh size along the path (a region of interest of radius hole/2 + h); 0 → none
 };
 
+// The skin–indenter interface (contact/contact_solver.hpp): hard (exact complementarity: no interpenetration)
+// or linear (a rough interface that closes by p/K before the surfaces meet: p = K·max(0, −gap); K in MPa/mm;
+// the Winkler layer of asperities in series with the skin).
+enum class InterfaceLaw { hard, linear };
+struct Interface {
+  InterfaceLaw law = InterfaceLaw::hard;
+  double K = 0;  // MPa/mm, linear only
+};
+
 struct ContactLoad {
   IndenterKind indenter = IndenterKind::plane;
   double sphere_R = 0;          // mm, sphere only
@@ -200,6 +209,7 @@ struct ContactLoad {
   // MPa, τ0 of shear_strength and mixed (≥ 0); absent: μ F / A, the sliding force μF spread over the
   // frictionless contact area A (ContactSolver::tau0)
   std::optional<double> tau0;
+  Interface interface;
   Vec2 direction{1, 0};                        // unit sliding direction of the indenter over the skin (x, y)
   FrictionMode friction = FrictionMode::none;  // default mode of `skinfem contact`
   std::optional<HoleSweep> sweep;

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
 
 #include "contact/hole_sweep.hpp"
 #include "contact/metrics.hpp"
@@ -214,6 +215,30 @@ std::vector<Hypothesis> friction_hypotheses(const ContactLoad& scene_load) {
   return out;
 }
 
+std::vector<Hypothesis> interface_hypotheses(const ContactLoad& scene_load, double p_mean,
+                                             const std::vector<double>& u0) {
+  std::vector<Hypothesis> out;
+  for (const Hypothesis& base : friction_hypotheses(scene_load)) {
+    if (base.load.law == FrictionLaw::mixed) continue;
+    for (double u : u0) {
+      Hypothesis h = base;
+      const double um = 1e3 * u;
+      char name[64];
+      std::snprintf(name, sizeof name, "%s_interface_%s",
+                    base.load.law == FrictionLaw::coulomb ? "coulomb" : "shear",
+                    um < 1 ? (std::to_string(static_cast<int>(std::lround(1e3 * um))) + "nm").c_str()
+                           : (std::to_string(static_cast<int>(std::lround(um))) + "um").c_str());
+      h.name = name;
+      h.load.interface = {InterfaceLaw::linear, p_mean / u};
+      h.what =
+          base.what + format("; a rough interface in series, u0 = %.3g um: K = p_mean / u0 = %.4g MPa/mm", um,
+                             p_mean / u);
+      out.push_back(h);
+    }
+  }
+  return out;
+}
+
 HypothesisResult run_hypothesis(const Hypothesis& h, const contact::CondensedContact& condensed,
                                 const contact::MirrorView* mirror, const TetMesh& mesh,
                                 const PlanarFaceIndex& top, const HoleSweep& sweep, FactsInput base) {
@@ -223,6 +248,21 @@ HypothesisResult run_hypothesis(const Hypothesis& h, const contact::CondensedCon
   const contact::ContactSolver solver(condensed, h.load, mirror);
   out.tau0_MPa = h.load.law == FrictionLaw::coulomb ? 0.0 : solver.tau0();
   const contact::ContactResult sliding = solver.solve(FrictionMode::coupled);
+  {
+    const contact::MortarZone& z = solver.zone();
+    std::vector<int> local(mesh.num_vertices, -1);
+    for (int i = 0; i < z.size(); ++i) local[z.vertices[i]] = i;
+    std::vector<char> edge(z.size(), 0);
+    for (int f : z.faces)
+      if (local[mesh.faces(f, 0)] < 0 || local[mesh.faces(f, 1)] < 0 || local[mesh.faces(f, 2)] < 0)
+        for (int a = 0; a < 3; ++a)
+          if (local[mesh.faces(f, a)] >= 0) edge[local[mesh.faces(f, a)]] = 1;
+    for (int i : sliding.active)
+      if (edge[i])
+        throw std::runtime_error(
+            "the sliding contact reaches the candidate zone's edge: give a larger "
+            "contact.zone_radius");
+  }
   out.tangential_force_N = sliding.tangential_force_N;
   out.contact_radius_mm = contact::contact_metrics(solver, mesh, top, sliding, base.center).contact_radius_mm;
   const FrictionMode modes[2] = {FrictionMode::static_residual, FrictionMode::coupled};

@@ -66,6 +66,11 @@ struct Hypothesis {
 // The friction laws at the scene's μ and static ratio: Coulomb; a shear strength with τ0 = μF/A (the same
 // sliding force); both at half strength (the same sliding force again).
 std::vector<Hypothesis> friction_hypotheses(const ContactLoad& scene_load);
+// A rough interface in series (InterfaceLaw::linear) under Coulomb friction and under the shear strength, for
+// asperity heights u0 (mm): K = p_mean / u0, the stiffness of an exponential law p = p_ref exp(−gap/u0) at
+// the mean contact pressure p_mean (MPa, F/A of the hard frictionless contact).
+std::vector<Hypothesis> interface_hypotheses(const ContactLoad& scene_load, double p_mean,
+                                             const std::vector<double>& u0 = {0.3e-3, 1e-3, 3e-3, 10e-3});
 
 struct HypothesisResult {
   Hypothesis hypothesis;
@@ -75,7 +80,9 @@ struct HypothesisResult {
   std::vector<FactVerdict> facts;
 };
 // One static and one coupled sliding sweep on `condensed` (seen whole through `mirror` when not null), judged
-// against base.model. mesh, top: the whole mesh and its top index.
+// against base.model. mesh, top: the whole mesh and its top index. Throws std::runtime_error when the contact
+// reaches the candidate zone's edge (a multiplier next to a face outside the zone is active): the zone would
+// cut it, so the hypothesis needs a larger contact.zone_radius.
 HypothesisResult run_hypothesis(const Hypothesis& h, const contact::CondensedContact& condensed,
                                 const contact::MirrorView* mirror, const TetMesh& mesh,
                                 const PlanarFaceIndex& top, const HoleSweep& sweep, FactsInput base);

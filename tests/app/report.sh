@@ -102,7 +102,10 @@ if "study/chain_study.csv" not in links: bad.append("index.html does not link st
 # amplitude ratios equal to the per-sensor table's.
 hb = r.get("hole_budget", {})
 names = [h["name"] for h in hb.get("hypotheses", [])]
-if names != ["coulomb", "shear_strength", "mixed"]: bad.append(f"hole_budget hypotheses {names}")
+skipped = [h["name"] for h in hb.get("skipped", [])]
+every = ["coulomb", "shear_strength", "mixed"] + [f"{law}_interface_{u}" for law in ("coulomb", "shear")
+                                                  for u in ("300nm", "1um", "3um", "10um")]
+if sorted(names + skipped) != sorted(every) or names[:1] != ["coulomb"]: bad.append(f"hole_budget hypotheses {names}, skipped {skipped}")
 for h in hb.get("hypotheses", []):
     if sorted(h.get("facts", {})) != ["F1", "F2", "F3", "F4", "F5"]: bad.append(f"hole_budget {h['name']} facts {sorted(h.get('facts', {}))}")
     for f, v in h.get("facts", {}).items():

@@ -949,6 +949,21 @@ TEST(SceneLoad, ContactErrors) {
   EXPECT_SCENE_ERROR(
       contact(kPlane + R"(, "friction": {"mu": 1, "tau0": 0.1})"),
       R"(contact.friction.tau0 = 0.1: is the shear strength of "law": "shear_strength" or "mixed")");
+  // Interfaces: hard, or linear with a stiffness > 0 that only the linear law has.
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "interface": {"law": "linear"})"),
+                     "contact.interface.K: required key is missing");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "interface": {"law": "linear", "K": -1})"),
+                     "contact.interface.K = -1: must be an interface stiffness in (0, 1e12] MPa/mm");
+  EXPECT_SCENE_ERROR(
+      contact(kPlane + R"(, "interface": {"law": "hard", "K": 5})"),
+      R"(contact.interface.K = 5: is the stiffness of "law": "linear"; a hard interface has none)");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "interface": {"law": "exponential"})"),
+                     R"(contact.interface.law = "exponential": must be one of "hard", "linear")");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "interface": {"K": 5})"),
+                     "contact.interface.law: required key is missing");
+  EXPECT_EQ(parse_scene(contact(kPlane + R"(, "interface": {"law": "linear", "K": 40})"), kSource)
+                .contact->interface.K,
+            40.0);
   {
     const Scene s =
         parse_scene(contact(kPlane + R"(, "friction": {"law": "mixed", "mu": 0.5, "tau0": 0.12})"), kSource);
