@@ -10,11 +10,11 @@
 //
 // Writes DIR/pressure.vtp (contact zone: pressure_kPa, traction_kPa, gap_um, in_contact), DIR/fields.vtu
 // (the volume solution of the chosen mode), DIR/sensors.csv (sensor,x_mm,y_mm,sigma_z_kPa,sigma_x_kPa),
-// DIR/modes.csv (the same readings for every friction mode) and DIR/summary.json (contact_radius_mm,
-// p0_kPa, indentation_um, force_N, tangential_force_N, max_penetration_um, min_pressure_kPa,
-// pressure_centroid_x_mm, complementarity, every mode's metrics, coupled − uncoupled differences (centroid
-// shifts along the sliding direction and as (x, y) vectors), dofs,
-// wall_s per stage, peak_rss_mb).
+// DIR/modes.csv (the same readings for every friction mode) and DIR/summary.json (friction_law, tau0_kPa,
+// interface, contact_radius_mm, p0_kPa, indentation_um, force_N, tangential_force_N, max_penetration_um,
+// min_pressure_kPa, pressure_centroid_x_mm, complementarity, every mode's metrics, coupled − uncoupled
+// differences (centroid shifts along the sliding direction and as (x, y) vectors), dofs, wall_s per stage,
+// peak_rss_mb).
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -147,6 +147,9 @@ nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, cons
   summary["scene"] = scene_json(scene);
   summary["friction_law"] = contact::to_string(scene.contact->law);
   if (scene.contact->law != FrictionLaw::coulomb) summary["tau0_kPa"] = 1e3 * solver.tau0();
+  summary["interface"] = scene.contact->interface.law == InterfaceLaw::linear ? "linear" : "hard";
+  if (scene.contact->interface.law == InterfaceLaw::linear)
+    summary["interface_K_MPa_per_mm"] = scene.contact->interface.K;
   summary["indenter"] = scene.contact->indenter == IndenterKind::plane ? "plane" : "sphere";
   summary["p0_kPa"] = 1e3 * m.p0_MPa;
   summary["max_penetration_um"] = 1e3 * max_penetration;

@@ -5,7 +5,8 @@
 //              tangential traction changes the readings and the gaps, not the pressure;
 //   coupled    p_t = μ p acting while pressure and zone are solved (steady Coulomb slip along the
 //              sliding direction): in a bonded incompressible layer the shear tilts the pressure.
-// Each is an exact linear complementarity problem on the multipliers (contact/lcp.hpp).
+// Each is an exact linear complementarity problem on the multipliers (contact/lcp.hpp). A linear interface
+// (scene.hpp, Interface) adds its closure λ_i ∫ψ_i / K to every weighted gap: C_zz + diag(area/K).
 //
 // The friction law (scene.hpp, FrictionLaw) says what "traction" is: coulomb p_t = ratio·p as above;
 // shear_strength p_t = τ wherever the skin touches; mixed both. Without holes τ acts on the active
@@ -40,9 +41,11 @@ struct ContactResult {
   Eigen::VectorXd shear;   // n_c nodal shear-strength traction along the sliding direction, MPa (0: none)
   int partial_shear = 0;   // edge multipliers holding a fraction of τ (touching only without their shear)
   Eigen::VectorXd lambda;  // n_c nodal pressures, MPa
-  Eigen::VectorXd gap;  // n_c weighted gaps ∫ψ_i gap, mm³, in the final state (uncoupled: traction added)
-  double depth_mm = 0;  // rigid approach of the indenter from first touch
-  double force_N = 0;   // ∫ p dA
+  // n_c weighted gaps ∫ψ_i gap, mm³, in the final state (uncoupled: traction added); under a linear
+  // interface the closure is included, ∫ψ_i (gap + p/K): the quantity held ≥ 0.
+  Eigen::VectorXd gap;
+  double depth_mm = 0;            // rigid approach of the indenter from first touch
+  double force_N = 0;             // ∫ p dA
   double tangential_force_N = 0;  // ratio·force + ∫ shear
   Eigen::VectorXd readings;       // 2·sensors, MPa: σ_z of sensor k at 2k, σ_x at 2k + 1
   // Complementarity of the solved LCP (before an uncoupled traction is added), contact/lcp.hpp.
