@@ -1,7 +1,8 @@
 // skinfem defect — the paper's §IV: a hole in the indenter swept along a path through the contact, a
-// full contact solve at every position, static (residual traction, static_ratio) and sliding (coupled
-// Coulomb slip, μ). ς = sensor reading with the hole − without, for every sensor and position. A hole path
-// on y = 0 in a mirror-symmetric scene is solved on the half y ≥ 0 (app/symmetry.hpp), frames written whole.
+// full contact solve at every position, static (residual traction, static_ratio/μ of the sliding one) and
+// sliding (coupled, with the scene's friction law: Coulomb μp, a shear strength τ0 or both; docs/contact.md).
+// ς = sensor reading with the hole − without, for every sensor and position. A hole path on y = 0 in a
+// mirror-symmetric scene is solved on the half y ≥ 0 (app/symmetry.hpp), frames written whole.
 //
 //   $ skinfem defect scenes/candelier2011.json --out out/defect
 //   defect candelier2011: 2 × 201 positions, 0.9 ms per position; ...
@@ -75,6 +76,7 @@ DefectStage defect_stage(const Scene& scene, const ContactSetup& setup, const st
     nlohmann::json c;
     c["friction"] = contact::to_string(res.mode);
     c["ratio"] = setup.solver->ratio(res.mode);
+    c["shear_kPa"] = 1e3 * setup.solver->shear(res.mode);
     c["seconds"] = res.seconds;
     c["ms_per_position"] = 1e3 * res.seconds / sweep.positions;
     c["max_complementarity"] = res.max_complementarity;
@@ -98,6 +100,7 @@ DefectStage defect_stage(const Scene& scene, const ContactSetup& setup, const st
   wall["write"] = clock.seconds();
 
   summary["scene"] = scene_json(scene);
+  summary["friction_law"] = contact::to_string(scene.contact->law);
   summary["positions"] = sweep.positions;
   summary["hole_diameter_mm"] = sweep.hole_diameter;
   summary["from_mm"] = {sweep.from[0], sweep.from[1]};
