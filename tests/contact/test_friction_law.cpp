@@ -17,7 +17,7 @@
 #include "contact/hole_cover.hpp"
 #include "fem/base_traction.hpp"
 #include "green/fe_green.hpp"
-#include "mesh/build.hpp"
+#include "layer_fixture.hpp"
 
 namespace skinfem::contact {
 namespace {
@@ -26,47 +26,24 @@ constexpr double kHoleH = 0.05;  // mm, mesh size over the hole region
 constexpr double kTau = 0.1;     // MPa
 constexpr double kMu = 0.5;
 
-struct Fixture {
-  Scene scene;
-  TetMesh mesh;
-  std::unique_ptr<ElasticModel> model;
-  std::unique_ptr<Indenter> indenter;
-  std::unique_ptr<CondensedContact> condensed;
+struct Fixture : testing::CondensedLayer {
   std::unique_ptr<green::FeGreen> green;
 };
 
 Fixture& layer() {
-  static Fixture f = [] {
-    Fixture x;
-    Scene& s = x.scene;
-    s.name = "test_friction_law";
-    s.geometry.kind = GeometryKind::flat;
-    s.geometry.flat = {3.04, 12.0};
-    s.material = {3.0, 0.5};
-    s.sensors.positions = {{0, 0}, {1, 0}, {2, 0}};
-    s.sensors.disc_diameter = 0.2;
-    s.mesh.h_min = 0.6;
-    s.mesh.h_max = 3.0;
-    s.mesh.growth = 1.7;
-    s.mesh.refine_sensors = false;
+  static Fixture f;
+  static const bool ready = [] {
     ContactLoad c;
-    c.indenter = IndenterKind::sphere;
-    c.sphere_R = 129.7;
     c.force = 0.8;
-    c.zone_radius = 3.2;
-    c.h = 0.6;
     c.mu = kMu;
     c.static_ratio = 0.1;
     c.holes = {Hole{{0, 0}, 0.5, kHoleH}};  // meshing only: solves pass their own holes
-    s.contact = c;
-    x.mesh = build_mesh(s);
-    x.model = std::make_unique<ElasticModel>(x.mesh, s.material, s.geometry.side, std::vector<Punch>{});
-    x.indenter = std::make_unique<Indenter>(s, x.mesh);
-    x.condensed = std::make_unique<CondensedContact>(
-        condense(*x.model, mortar_zone(x.mesh, {0, 0}, 3.2), *x.indenter, s.sensors, {1, 0}));
-    x.green = std::make_unique<green::FeGreen>(*x.model, s.sensors);
-    return x;
+    testing::condense_layer(f,
+                            testing::layer_scene("test_friction_law", 0.6, {{0, 0}, {1, 0}, {2, 0}}, c, 3.2));
+    f.green = std::make_unique<green::FeGreen>(*f.model, f.scene.sensors);
+    return true;
   }();
+  (void)ready;
   return f;
 }
 

@@ -19,58 +19,34 @@
 
 #include "contact/contact_solver.hpp"
 #include "contact/small_hole.hpp"
-#include "mesh/build.hpp"
+#include "layer_fixture.hpp"
 
 namespace skinfem::contact {
 namespace {
 
 constexpr double kHoleH = 0.05;  // mesh size over the hole's disc, mm
-constexpr double kE = 3.0, kNu = 0.5;
+constexpr double kE = testing::kLayerE, kNu = testing::kLayerNu;
 
 // The paper's layer (h = 3.04 mm) under a sphere R = 129.7 mm at 0.8 N (a ≈ 2.5 mm, p0 ≈ 64 kPa, which
 // varies by 1 % over the largest hole); a hole disc of radius 0.25 at the contact centre meshed at kHoleH.
 // Smaller holes reuse the same mesh (the multipliers strictly inside their disc are dropped).
-struct Fixture {
-  Scene scene;
-  TetMesh mesh;
-  std::unique_ptr<ElasticModel> model;
-  std::unique_ptr<Indenter> indenter;
-  std::unique_ptr<CondensedContact> condensed;
+struct Fixture : testing::CondensedLayer {
   std::unique_ptr<ContactSolver> solver;
   ContactResult intact;
 };
 
 Fixture& layer_with_hole() {
-  static Fixture f = [] {
-    Fixture x;
-    Scene& s = x.scene;
-    s.name = "test_hole";
-    s.geometry.kind = GeometryKind::flat;
-    s.geometry.flat = {3.04, 12.0};
-    s.material = {kE, kNu};
-    s.sensors.positions = {{0, 0}, {1, 0}};
-    s.sensors.disc_diameter = 0.2;
-    s.mesh.h_min = 0.6;
-    s.mesh.h_max = 3.0;
-    s.mesh.growth = 1.7;
-    s.mesh.refine_sensors = false;
+  static Fixture f;
+  static const bool ready = [] {
     ContactLoad c;
-    c.indenter = IndenterKind::sphere;
-    c.sphere_R = 129.7;
     c.force = 0.8;
-    c.zone_radius = 3.2;
-    c.h = 0.6;
     c.holes = {Hole{{0, 0}, 0.5, kHoleH}};
-    s.contact = c;
-    x.mesh = build_mesh(s);
-    x.model = std::make_unique<ElasticModel>(x.mesh, s.material, s.geometry.side, std::vector<Punch>{});
-    x.indenter = std::make_unique<Indenter>(s, x.mesh);
-    x.condensed = std::make_unique<CondensedContact>(
-        condense(*x.model, mortar_zone(x.mesh, {0, 0}, 3.2), *x.indenter, s.sensors, {1, 0}));
-    x.solver = std::make_unique<ContactSolver>(*x.condensed, c);
-    x.intact = x.solver->solve(FrictionMode::none);
-    return x;
+    testing::condense_layer(f, testing::layer_scene("test_hole", 0.6, {{0, 0}, {1, 0}}, c, 3.2));
+    f.solver = std::make_unique<ContactSolver>(*f.condensed, *f.scene.contact);
+    f.intact = f.solver->solve(FrictionMode::none);
+    return true;
   }();
+  (void)ready;
   return f;
 }
 

@@ -10,49 +10,22 @@
 #include <memory>
 
 #include "contact/contact_solver.hpp"
-#include "mesh/build.hpp"
+#include "layer_fixture.hpp"
 
 namespace skinfem::contact {
 namespace {
 
-constexpr double kR = 129.7;
+constexpr double kR = testing::kSphereR;
 
-struct Fixture {
-  Scene scene;
-  TetMesh mesh;
-  std::unique_ptr<ElasticModel> model;
-  std::unique_ptr<Indenter> indenter;
-  std::unique_ptr<CondensedContact> condensed;
-};
-
-Fixture& layer() {
-  static Fixture f = [] {
-    Fixture x;
-    Scene& s = x.scene;
-    s.name = "test_interface";
-    s.geometry.kind = GeometryKind::flat;
-    s.geometry.flat = {3.04, 12.0};
-    s.material = {3.0, 0.5};
-    s.sensors.positions = {{0, 0}, {1.5, 0}};
-    s.sensors.disc_diameter = 0.2;
-    s.mesh.h_min = 0.4;
-    s.mesh.h_max = 3.0;
-    s.mesh.growth = 1.7;
-    s.mesh.refine_sensors = false;
+testing::CondensedLayer& layer() {
+  static testing::CondensedLayer f;
+  static const bool ready = [] {
     ContactLoad c;
-    c.indenter = IndenterKind::sphere;
-    c.sphere_R = kR;
     c.depth = 0.01;
-    c.zone_radius = 2.6;
-    c.h = 0.4;
-    s.contact = c;
-    x.mesh = build_mesh(s);
-    x.model = std::make_unique<ElasticModel>(x.mesh, s.material, s.geometry.side, std::vector<Punch>{});
-    x.indenter = std::make_unique<Indenter>(s, x.mesh);
-    x.condensed = std::make_unique<CondensedContact>(
-        condense(*x.model, mortar_zone(x.mesh, {0, 0}, 2.6), *x.indenter, s.sensors, {1, 0}));
-    return x;
+    testing::condense_layer(f, testing::layer_scene("test_interface", 0.4, {{0, 0}, {1.5, 0}}, c, 2.6));
+    return true;
   }();
+  (void)ready;
   return f;
 }
 
