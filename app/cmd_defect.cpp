@@ -10,7 +10,8 @@
 // Writes DIR/defect.csv (case,u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa; u = the hole centre's x),
 // DIR/defect.pvd with DIR/frames/<case>_NNN.vtp (the contact pressure at each position: a ParaView
 // animation, part 0 static, part 1 sliding) and DIR/summary.json (positions, wall_s per stage, time per
-// position, peak |ς| per sensor and case, complementarity, peak_rss_mb).
+// position, peak |ς| per sensor and case, complementarity, max_roughness: the largest second difference
+// along u over its curve's peak (validation::roughness), peak_rss_mb).
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -22,6 +23,7 @@
 #include "app/stages.hpp"
 #include "contact/hole_sweep.hpp"
 #include "contact/pressure_map.hpp"
+#include "validation/hole_budget.hpp"
 
 namespace skinfem::app {
 
@@ -83,6 +85,15 @@ DefectStage defect_stage(const Scene& scene, const ContactSetup& setup, const st
     double pivots = 0;
     for (int p : res.pivots) pivots += p;
     c["mean_pivots"] = pivots / res.pivots.size();
+    // The jaggedness of each curve (validation::roughness), and the worst.
+    double rough = 0;
+    int rough_col = 0;
+    for (int col = 0; col < 2 * ns; ++col)
+      if (const double r = validation::roughness(res.varsigma.col(col)); r > rough)
+        rough = r, rough_col = col;
+    c["max_roughness"] = rough;
+    c["max_roughness_curve"] =
+        "#" + std::to_string(rough_col / 2 + 1) + (rough_col % 2 ? " varsigma_x" : " varsigma_z");
     for (int k = 0; k < ns; ++k) {
       Eigen::Index iz, ix;
       const double z = res.varsigma.col(2 * k).cwiseAbs().maxCoeff(&iz);
@@ -126,6 +137,10 @@ DefectStage defect_stage(const Scene& scene, const ContactSetup& setup, const st
                 1e3 * results[ci].seconds / sweep.positions);
   std::printf("; total %.1f s, peak %.0f MB\n", total_seconds(wall), peak_rss_mb());
   for (size_t ci = 0; ci < cases.size(); ++ci) {
+    const auto& c = summary["cases"][cases[ci].first];
+    std::printf("  %s: largest second difference along u %.1f %% of its curve's peak (%s)\n",
+                cases[ci].first.c_str(), 100 * c["max_roughness"].get<double>(),
+                c["max_roughness_curve"].get<std::string>().c_str());
     std::printf("  %s: peak |varsigma_z| per sensor (kPa):", cases[ci].first.c_str());
     for (int k = 0; k < ns; ++k)
       std::printf(" %.2f", 1e3 * results[ci].varsigma.col(2 * k).cwiseAbs().maxCoeff());

@@ -97,6 +97,10 @@ nlohmann::json hole_budget_stage(const Scene& scene, const ContactSetup& setup,
           signals << h.name << "," << cases[c] << "," << x.u[i] << "," << k + 1 << ","
                   << 1e3 * r.signals[c](i, 2 * k) << "," << 1e3 * r.signals[c](i, 2 * k + 1) << "\n";
     j["facts_met"] = met;
+    double rough = 0;
+    for (int col = 0; col < 2 * ns; ++col)
+      rough = std::max(rough, validation::roughness(r.signals[1].col(col)));
+    j["sliding_roughness"] = rough;
     out["hypotheses"].push_back(j);
     if (met > best_met) best_met = met, best = h.name;
   }

@@ -65,6 +65,15 @@ std::string names(const std::vector<int>& sensors) {
 
 }  // namespace
 
+double roughness(const Eigen::VectorXd& c) {
+  const double peak = c.size() ? c.cwiseAbs().maxCoeff() : 0.0;
+  if (!(peak > 0) || c.size() < 3) return 0.0;
+  return (c.tail(c.size() - 2) - 2 * c.segment(1, c.size() - 2) + c.head(c.size() - 2))
+             .cwiseAbs()
+             .maxCoeff() /
+         peak;
+}
+
 double NoiseModel::threshold(int component) const {
   return k * (component == 0 ? sigma_z_MPa : sigma_x_MPa) / std::sqrt(double(passages));
 }

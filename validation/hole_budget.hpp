@@ -55,6 +55,11 @@ struct FactsInput {
   FactRules rules;
 };
 
+// How jagged a signal curve sampled at even steps is: max |ς_{i+1} − 2ς_i + ς_{i−1}| / max |ς| (0 for a zero
+// curve). A smooth curve sampled finely gives a small value that falls as the steps shrink; a jump (a
+// multiplier entering or leaving the hole) keeps a fixed share of its size whatever the step.
+double roughness(const Eigen::VectorXd& curve);
+
 // FE/model amplitude ratio (max|ς_FE| / max|ς_model|) per case, sensor and component.
 std::array<std::vector<std::array<double, 2>>, 2> amplitude_ratios(const FactsInput& in);
 std::vector<FactVerdict> judge_facts(const FactsInput& in);

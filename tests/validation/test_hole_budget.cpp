@@ -93,6 +93,20 @@ TEST(HoleBudget, EachFactFailsOnItsOwn) {
   }
 }
 
+// A smooth curve's second difference falls like the step squared (sin sampled at step s: 4 sin²(s/2) of its
+// peak); a jump keeps its size; a zero curve is smooth.
+TEST(HoleBudget, RoughnessSeparatesJumpsFromSmoothCurves) {
+  for (int n : {101, 201}) {
+    const double step = M_PI / (n - 1);
+    Eigen::VectorXd c(n);
+    for (int i = 0; i < n; ++i) c[i] = std::sin(i * step);
+    EXPECT_NEAR(roughness(c), 4 * std::pow(std::sin(step / 2), 2), 1e-12);
+    c[n / 2] += 0.2;  // one multiplier in or out: a spike of a fifth of the peak
+    EXPECT_GT(roughness(c), 0.3);
+  }
+  EXPECT_EQ(roughness(Eigen::VectorXd::Zero(10)), 0.0);
+}
+
 // The detection threshold is k σ / √passages.
 TEST(HoleBudget, DetectionThresholdIsTheNoiseOfTheMean) {
   const NoiseModel n;
