@@ -11,10 +11,10 @@
 // Writes DIR/pressure.vtp (contact zone: pressure_kPa, traction_kPa, gap_um, in_contact), DIR/fields.vtu
 // (the volume solution of the chosen mode), DIR/sensors.csv (sensor,x_mm,y_mm,sigma_z_kPa,sigma_x_kPa),
 // DIR/modes.csv (the same readings for every friction mode) and DIR/summary.json (friction_law, tau0_kPa,
-// interface, contact_radius_mm, p0_kPa, indentation_um, force_N, tangential_force_N, max_penetration_um,
-// min_pressure_kPa, pressure_centroid_x_mm, complementarity, every mode's metrics, coupled − uncoupled
-// differences (centroid shifts along the sliding direction and as (x, y) vectors), dofs, wall_s per stage,
-// peak_rss_mb).
+// interface (interface_K_MPa_per_mm or interface_u0_um, interface_p_ref_kPa), contact_radius_mm, p0_kPa,
+// indentation_um, force_N, tangential_force_N, max_penetration_um, min_pressure_kPa, pressure_centroid_x_mm,
+// complementarity, every mode's metrics, coupled − uncoupled differences (centroid shifts along the sliding
+// direction and as (x, y) vectors), dofs, wall_s per stage, peak_rss_mb).
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -147,9 +147,13 @@ nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, cons
   summary["scene"] = scene_json(scene);
   summary["friction_law"] = contact::to_string(scene.contact->law);
   if (scene.contact->law != FrictionLaw::coulomb) summary["tau0_kPa"] = 1e3 * solver.tau0();
-  summary["interface"] = scene.contact->interface.law == InterfaceLaw::linear ? "linear" : "hard";
-  if (scene.contact->interface.law == InterfaceLaw::linear)
-    summary["interface_K_MPa_per_mm"] = scene.contact->interface.K;
+  const Interface& interface = scene.contact->interface;
+  summary["interface"] = contact::to_string(interface.law);
+  if (interface.law == InterfaceLaw::linear) summary["interface_K_MPa_per_mm"] = interface.K;
+  if (interface.law == InterfaceLaw::exponential) {
+    summary["interface_u0_um"] = 1e3 * interface.u0;
+    summary["interface_p_ref_kPa"] = 1e3 * interface.p_ref;
+  }
   summary["indenter"] = scene.contact->indenter == IndenterKind::plane ? "plane" : "sphere";
   summary["p0_kPa"] = 1e3 * m.p0_MPa;
   summary["max_penetration_um"] = 1e3 * max_penetration;
@@ -207,6 +211,12 @@ nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, cons
       "contact %s (%s): %.4f N normal, %.4f N tangential; a = %.4f mm, p0 = %.2f kPa, indentation %.3f um\n",
       scene.name.c_str(), contact::to_string(chosen), r.force_N, r.tangential_force_N, m.contact_radius_mm,
       1e3 * m.p0_MPa, 1e3 * r.depth_mm);
+  if (interface.law == InterfaceLaw::linear)
+    std::printf("  linear interface: K = %.4g MPa/mm, it closes by %.3g um under p0\n", interface.K,
+                1e3 * m.p0_MPa / interface.K);
+  if (interface.law == InterfaceLaw::exponential)
+    std::printf("  exponential interface: u0 = %.4g um, p_ref = %.4g kPa; %d Newton steps, residual %.1e\n",
+                1e3 * interface.u0, 1e3 * interface.p_ref, r.pivots, r.complementarity);
   std::printf(
       "  complementarity %.1e, min pressure %.2e kPa, max pointwise penetration %.3g um, condensed vs "
       "reaction readings %.1e\n",

@@ -48,10 +48,10 @@ void check_zone(const Scene& scene, const ContactSetup& s, const contact::Contac
   const auto& z = s.solver->zone();
   const Vec2 c = contact_center(scene);
   double reach = 0;
-  for (int i = 0; i < z.size(); ++i)
-    if (r.lambda[i] > 0)
-      reach = std::max(reach, std::hypot(s.mesh().nodes(z.vertices[i], 0) - c[0],
-                                         s.mesh().nodes(z.vertices[i], 1) - c[1]));
+  // The active set: λ > 0 in a hard or linear contact, λ ≥ 1e-6 of its peak through an exponential one.
+  for (int i : r.active)
+    reach = std::max(
+        reach, std::hypot(s.mesh().nodes(z.vertices[i], 0) - c[0], s.mesh().nodes(z.vertices[i], 1) - c[1]));
   // The outermost ring of multipliers lies within one element of the zone's edge: contact reaching it may be
   // cut short by the zone.
   if (reach > s.zone_radius - s.zone_h)

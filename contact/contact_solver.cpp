@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "contact/exponential_interface.hpp"
+
 namespace skinfem::contact {
 
 const char* to_string(FrictionMode mode) {
@@ -33,6 +35,18 @@ const char* to_string(FrictionLaw law) {
       return "mixed";
   }
   return "coulomb";
+}
+
+const char* to_string(InterfaceLaw law) {
+  switch (law) {
+    case InterfaceLaw::hard:
+      return "hard";
+    case InterfaceLaw::linear:
+      return "linear";
+    case InterfaceLaw::exponential:
+      return "exponential";
+  }
+  return "hard";
 }
 
 MirrorView mirror_view(const TetMesh& whole, const std::vector<int>& source, const MortarZone& half_zone,
@@ -192,8 +206,13 @@ ContactResult ContactSolver::solve(FrictionMode mode, const std::vector<char>& e
   const std::vector<char>& ex = mirror_ ? half_excluded : excluded;
   const double share = mirror_ ? 0.5 : 1.0;
   const auto lcp_solve = [&](const std::vector<int>& start, const Eigen::VectorXd& shift) {
-    return load_.force ? problem.solve_force(share * *load_.force, ex, start, shift)
-                       : problem.solve_depth(*load_.depth, ex, start, shift);
+    LcpSolution hard = load_.force ? problem.solve_force(share * *load_.force, ex, start, shift)
+                                   : problem.solve_depth(*load_.depth, ex, start, shift);
+    if (load_.interface.law != InterfaceLaw::exponential) return hard;
+    return solve_exponential(
+        problem.matrix(), shift.size() ? Eigen::VectorXd(problem.gaps() + shift) : problem.gaps(),
+        problem.areas(), {load_.interface.u0, load_.interface.p_ref}, load_.force.has_value(),
+        load_.force ? share * *load_.force : *load_.depth, ex, hard);
   };
   LcpSolution s = lcp_solve(solved_set(warm), {});
   // The shear's gaps where it acts while the pressure is solved: iterate its touched set to a fixed point.

@@ -33,6 +33,7 @@ namespace skinfem::contact {
 
 const char* to_string(FrictionMode mode);
 const char* to_string(FrictionLaw law);
+const char* to_string(InterfaceLaw law);
 
 struct ContactResult {
   FrictionMode mode = FrictionMode::none;

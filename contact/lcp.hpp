@@ -74,6 +74,9 @@ class ContactLcp {
   const std::vector<int>& reference() const { return ref_active_; }
 
   int size() const { return static_cast<int>(q_.size()); }
+  const Eigen::MatrixXd& matrix() const { return M_; }
+  const Eigen::VectorXd& gaps() const { return q_; }
+  const Eigen::VectorXd& areas() const { return m_; }
 
  private:
   LcpSolution solve(bool force_control, double value, const std::vector<char>& excluded,

@@ -8,7 +8,7 @@ namespace skinfem::contact {
 namespace {
 // Mean position of the outer edge of the contact: active vertices sharing a top face with an inactive one
 // that lies outside every hole (a hole's own rim is not the contact's edge).
-Eigen::Vector2d outer_edge_center(const MortarZone& z, const TetMesh& m, const ContactResult& r,
+Eigen::Vector2d outer_edge_center(const MortarZone& z, const TetMesh& m, const std::vector<char>& touching,
                                   const std::vector<Hole>& holes, const Eigen::Vector2d& fallback) {
   std::vector<int> index(m.num_nodes(), -1);
   for (int i = 0; i < z.size(); ++i) index[z.vertices[i]] = i;
@@ -18,7 +18,7 @@ Eigen::Vector2d outer_edge_center(const MortarZone& z, const TetMesh& m, const C
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) {
         const int i = index[m.faces(f, a)], j = index[m.faces(f, b)];
-        if (i >= 0 && j >= 0 && r.lambda[i] > 0 && !(r.lambda[j] > 0) && !in_hole[j]) edge[i] = 1;
+        if (i >= 0 && j >= 0 && touching[i] && !touching[j] && !in_hole[j]) edge[i] = 1;
       }
   Eigen::Vector2d sum = Eigen::Vector2d::Zero();
   int n = 0;
@@ -37,12 +37,15 @@ ContactMetrics contact_metrics(const ContactSolver& solver, const TetMesh& m, co
     return Eigen::Vector2d(m.nodes(z.vertices[i], 0), m.nodes(z.vertices[i], 1));
   };
   const Eigen::Vector2d c0(center[0], center[1]);
+  // The active set (an exponential interface's λ is > 0 everywhere: its set holds λ ≥ 1e-6 of the peak).
+  std::vector<char> touching(z.size(), 0);
+  for (int i : r.active) touching[i] = 1;
 
   double F = 0, area = 0, peak_front = 0, peak_back = 0;
   Eigen::Vector2d moment = Eigen::Vector2d::Zero(), zone_moment = Eigen::Vector2d::Zero();
   for (int i = 0; i < z.size(); ++i) {
     const double p = r.lambda[i];
-    if (!(p > 0)) continue;
+    if (!touching[i]) continue;
     F += p * z.area[i];
     moment += p * z.area[i] * xy(i);
     area += z.area[i];
@@ -69,9 +72,12 @@ ContactMetrics contact_metrics(const ContactSolver& solver, const TetMesh& m, co
   }
 
   // Edge fit: p² = α + βr² + γr⁴ over the outer part of the contact, root nearest the last active ring.
-  const Eigen::Vector2d fc = holes.empty() ? pc : outer_edge_center(z, m, r, holes, pc);
+  const Eigen::Vector2d fc = holes.empty() ? pc : outer_edge_center(z, m, touching, holes, pc);
+  // An exponential interface has no edge, only a tail: fit the loaded part (λ ≥ 5 % of the peak, the
+  // asperities closed to within u0 ln 20 of the mean plane) and extrapolate it to its hard-contact edge.
+  const double floor = solver.load().interface.law == InterfaceLaw::exponential ? 0.05 * out.p_max_MPa : 0.0;
   const auto fitted = [&](int i) {
-    if (!(r.lambda[i] > 0)) return false;
+    if (!touching[i] || r.lambda[i] < floor) return false;
     for (const Hole& h : holes)
       if ((xy(i) - Eigen::Vector2d(h.center[0], h.center[1])).norm() < h.diameter) return false;
     return true;

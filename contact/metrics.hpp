@@ -9,7 +9,8 @@ namespace skinfem::contact {
 struct ContactMetrics {
   // Sub-element contact radius: p² fitted by α + βr² + γr⁴ over the active vertices in the outer 40 % of
   // the contact (r about the pressure centroid), then its root; exact for Hertz (p² ∝ a² − r²) and
-  // following the square-root vanishing of any smooth contact at its edge.
+  // following the square-root vanishing of any smooth contact at its edge. Through an exponential interface
+  // (no edge, a tail) the fit covers λ ≥ 5 % of the peak: the loaded part's hard-contact edge.
   double contact_radius_mm = 0;
   double equivalent_radius_mm = 0;  // sqrt(Σ_active ∫ψ_i / π): mesh-resolution estimate of the same
   double p0_MPa = 0;                // pressure at the first-touch point (P1 interpolation)

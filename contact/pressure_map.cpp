@@ -11,12 +11,12 @@ void write_pressure_vtp(const std::string& path, const TetMesh& m, const Contact
   const int N = m.num_nodes();
   const MortarZone& zone = solver.zone();
   std::vector<double> p(N, 0.0), gap(N, 0.0), in(N, 0.0), pt(N, 0.0);
+  for (int i : r.active) in[zone.vertices[i]] = 1.0;  // an exponential interface's λ > 0 everywhere
   for (int i = 0; i < zone.size(); ++i) {
     const int v = zone.vertices[i];
     p[v] = 1e3 * std::max(0.0, r.lambda[i]);
     pt[v] = r.ratio * p[v] + (r.shear.size() ? 1e3 * r.shear[i] : 0.0);
     gap[v] = 1e3 * r.gap[i] / zone.area[i];
-    in[v] = r.lambda[i] > 0 ? 1.0 : 0.0;
   }
   // Faces with every corner in the zone: elsewhere the gap is not a constraint and is not known here.
   std::vector<char> in_zone(N, 0);

@@ -44,7 +44,9 @@
 //                                                 plate keeps static_ratio/mu of the sliding traction),
 //                                "direction"*: [dx, dy] non-zero, normalised (default [1, 0])},
 //                  "interface"*: {"law": "hard" (default: no interpenetration) | "linear" (a rough
-//                                 interface closing by p/K), "K": <MPa/mm, in (0, 1e12]> (linear only)},
+//                                 interface closing by p/K) | "exponential" (p = p_ref exp(-gap/u0)),
+//                                 "K": <MPa/mm, in (0, 1e12]> (linear only),
+//                                 "u0": <mm, in (0, 1]>, "p_ref": <MPa, in (0, 1e6]> (exponential only)},
 //                  "sweep"*: {"from": [x, y], "to": [x, y],  a hole swept for `skinfem defect`
 //                             "positions"*: integer in [2, 100000] (default 201),
 //                             "hole_diameter"*: > 0 (default 0.5),
@@ -831,20 +833,39 @@ ContactLoad read_contact(const Reader& r, const json& c, const Geometry& geo) {
   if (const json* f = Reader::find(c, "friction")) read_friction(r, *f, sub(P, "friction"), out);
   if (const json* i = Reader::find(c, "interface")) {
     const std::string path = sub(P, "interface");
-    r.object(*i, path, {"law", "K"});
-    const json& law = r.need(*i, path, "law", R"("hard" or "linear")");
+    r.object(*i, path, {"law", "K", "u0", "p_ref"});
+    const json& law = r.need(*i, path, "law", R"("hard", "linear" or "exponential")");
     if (law == "hard")
       out.interface.law = InterfaceLaw::hard;
     else if (law == "linear")
       out.interface.law = InterfaceLaw::linear;
+    else if (law == "exponential")
+      out.interface.law = InterfaceLaw::exponential;
     else
-      r.fail(sub(path, "law"), law, R"(must be one of "hard", "linear")");
-    if (out.interface.law == InterfaceLaw::linear)
+      r.fail(sub(path, "law"), law, R"(must be one of "hard", "linear", "exponential")");
+    const auto only = [&](const char* key, InterfaceLaw owner, const char* what) {
+      if (out.interface.law == owner) return true;
+      if (const json* v = Reader::find(*i, key))
+        r.fail(sub(path, key), *v,
+               std::string("is ") + what + " of \"law\": \"" +
+                   (owner == InterfaceLaw::linear ? "linear" : "exponential") +
+                   "\"; this interface has none");
+      return false;
+    };
+    if (only("K", InterfaceLaw::linear, "the stiffness"))
       out.interface.K = r.number(*i, path, "K", {"an interface stiffness in (0, 1e12] MPa/mm", [](double x) {
                                                    return x > 0 && x <= 1e12;
                                                  }});
-    else if (const json* K = Reader::find(*i, "K"))
-      r.fail(sub(path, "K"), *K, R"(is the stiffness of "law": "linear"; a hard interface has none)");
+    if (only("u0", InterfaceLaw::exponential, "the decay length"))
+      out.interface.u0 =
+          r.number(*i, path, "u0", {"a decay length in (0, 1] mm", [](double x) { return x > 0 && x <= 1; }});
+    if (only("p_ref", InterfaceLaw::exponential, "the reference pressure"))
+      out.interface.p_ref = r.number(
+          *i, path, "p_ref", {"a pressure in (0, 1e6] MPa", [](double x) { return x > 0 && x <= 1e6; }});
+    if (out.interface.law == InterfaceLaw::exponential && out.law != FrictionLaw::coulomb)
+      r.fail(
+          sub(path, "law"), law,
+          R"(touches everywhere, and a shear strength acts where the skin touches: use "friction": {"law": "coulomb"} with it, or a hard or linear interface)");
   }
   if (const json* sw = Reader::find(c, "sweep")) out.sweep = read_sweep(r, *sw, sub(P, "sweep"), geo);
   return out;

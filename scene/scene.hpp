@@ -187,11 +187,15 @@ struct HoleSweep {
 
 // The skin–indenter interface (contact/contact_solver.hpp): hard (exact complementarity: no interpenetration)
 // or linear (a rough interface that closes by p/K before the surfaces meet: p = K·max(0, −gap); K in MPa/mm;
-// the Winkler layer of asperities in series with the skin).
-enum class InterfaceLaw { hard, linear };
+// the Winkler layer of asperities in series with the skin) or exponential (the rough-surface law
+// p = p_ref·exp(−gap/u0), gap the separation of the mean planes, any sign; u0 in mm of the order of the rms
+// roughness, p_ref in MPa the pressure at zero separation: under force control it only shifts the depth).
+enum class InterfaceLaw { hard, linear, exponential };
 struct Interface {
   InterfaceLaw law = InterfaceLaw::hard;
-  double K = 0;  // MPa/mm, linear only
+  double K = 0;      // MPa/mm, linear only
+  double u0 = 0;     // mm, exponential only
+  double p_ref = 0;  // MPa, exponential only
 };
 
 struct ContactLoad {

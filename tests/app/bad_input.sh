@@ -187,8 +187,11 @@ bad friction_law_unknown "$sphere, \"friction\": {\"law\": \"tresca\"}}" 'contac
 bad tau0_negative "$sphere, \"friction\": {\"law\": \"shear_strength\", \"tau0\": -0.1}}" 'contact.friction.tau0 = -0.1: must be a shear strength in \[0, 1e6\] MPa' defect
 bad tau0_with_coulomb "$sphere, \"friction\": {\"mu\": 1, \"tau0\": 0.1}}" 'contact.friction.tau0 = 0.1: is the shear strength of "law": "shear_strength" or "mixed"' report
 bad interface_K_zero "$sphere, \"interface\": {\"law\": \"linear\", \"K\": 0}}" 'contact.interface.K = 0: must be an interface stiffness in \(0, 1e12\] MPa/mm' contact
-bad interface_law_unknown "$sphere, \"interface\": {\"law\": \"soft\"}}" 'contact.interface.law = "soft": must be one of "hard", "linear"' defect
+bad interface_law_unknown "$sphere, \"interface\": {\"law\": \"soft\"}}" 'contact.interface.law = "soft": must be one of "hard", "linear", "exponential"' defect
 bad interface_K_when_hard "$sphere, \"interface\": {\"law\": \"hard\", \"K\": 5}}" 'contact.interface.K = 5: is the stiffness of "law": "linear"' contact
+bad interface_u0_zero "$sphere, \"interface\": {\"law\": \"exponential\", \"u0\": 0, \"p_ref\": 0.01}}" 'contact.interface.u0 = 0: must be a decay length in \(0, 1\] mm' contact
+bad interface_p_ref_negative "$sphere, \"interface\": {\"law\": \"exponential\", \"u0\": 0.001, \"p_ref\": -1}}" 'contact.interface.p_ref = -1: must be a pressure in \(0, 1e6\] MPa' report
+bad interface_exponential_shear "$sphere, \"friction\": {\"law\": \"shear_strength\", \"mu\": 1}, \"interface\": {\"law\": \"exponential\", \"u0\": 0.001, \"p_ref\": 0.01}}" 'contact.interface.law = "exponential": touches everywhere, and a shear strength acts where the skin touches' defect
 bad hole_below_mesh "$sphere, \"h\": 0.8, \"holes\": [{\"center\": [0.5, 0], \"diameter\": 0.5}]}" 'contact.holes\[0\].diameter = 0.5: must be >= the mesh size over the hole \(contact.h = 0.8 mm\)' contact
 bad sweep_hole_below_mesh "$sphere, \"h\": 0.8, \"sweep\": {\"from\": [-1, 0], \"to\": [1, 0]}}" 'contact.sweep.hole_diameter = 0.5: must be >= the mesh size over the hole' defect
 bad ridges_mesh_coarse 'd["geometry"]["ridges"] = {"period": 0.5, "height": 0.05, "center": [0, 0], "radius": 1, "h": 5}' 'geometry.ridges.h = 5: must be a number in \(0, period/3 = 0.166667 mm\]' mesh

@@ -949,18 +949,42 @@ TEST(SceneLoad, ContactErrors) {
   EXPECT_SCENE_ERROR(
       contact(kPlane + R"(, "friction": {"mu": 1, "tau0": 0.1})"),
       R"(contact.friction.tau0 = 0.1: is the shear strength of "law": "shear_strength" or "mixed")");
-  // Interfaces: hard, or linear with a stiffness > 0 that only the linear law has.
+  // Interfaces: hard, linear with a stiffness > 0, exponential with u0 and p_ref > 0; each parameter only
+  // where its law has it; exponential touches everywhere, so only under Coulomb friction.
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "interface": {"law": "linear"})"),
                      "contact.interface.K: required key is missing");
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "interface": {"law": "linear", "K": -1})"),
                      "contact.interface.K = -1: must be an interface stiffness in (0, 1e12] MPa/mm");
   EXPECT_SCENE_ERROR(
       contact(kPlane + R"(, "interface": {"law": "hard", "K": 5})"),
-      R"(contact.interface.K = 5: is the stiffness of "law": "linear"; a hard interface has none)");
-  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "interface": {"law": "exponential"})"),
-                     R"(contact.interface.law = "exponential": must be one of "hard", "linear")");
+      R"(contact.interface.K = 5: is the stiffness of "law": "linear"; this interface has none)");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "interface": {"law": "softened"})"),
+                     R"(contact.interface.law = "softened": must be one of "hard", "linear", "exponential")");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "interface": {"law": "exponential", "p_ref": 0.01})"),
+                     "contact.interface.u0: required key is missing");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "interface": {"law": "exponential", "u0": 0, "p_ref": 0.01})"),
+                     "contact.interface.u0 = 0: must be a decay length in (0, 1] mm");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "interface": {"law": "exponential", "u0": 0.001, "p_ref": -1})"),
+                     "contact.interface.p_ref = -1: must be a pressure in (0, 1e6] MPa");
+  EXPECT_SCENE_ERROR(
+      contact(kPlane + R"(, "interface": {"law": "linear", "K": 5, "u0": 0.001})"),
+      R"(contact.interface.u0 = 0.001: is the decay length of "law": "exponential"; this interface has none)");
+  EXPECT_SCENE_ERROR(
+      contact(
+          kPlane +
+          R"(, "friction": {"law": "shear_strength", "mu": 1}, "interface": {"law": "exponential", "u0": 0.001, "p_ref": 0.01})"),
+      R"(contact.interface.law = "exponential": touches everywhere, and a shear strength acts where the skin touches)");
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "interface": {"K": 5})"),
                      "contact.interface.law: required key is missing");
+  {
+    const Interface i =
+        parse_scene(contact(kPlane + R"(, "interface": {"law": "exponential", "u0": 0.002, "p_ref": 0.03})"),
+                    kSource)
+            .contact->interface;
+    EXPECT_EQ(i.law, InterfaceLaw::exponential);
+    EXPECT_EQ(i.u0, 0.002);
+    EXPECT_EQ(i.p_ref, 0.03);
+  }
   EXPECT_EQ(parse_scene(contact(kPlane + R"(, "interface": {"law": "linear", "K": 40})"), kSource)
                 .contact->interface.K,
             40.0);
