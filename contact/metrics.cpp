@@ -71,7 +71,10 @@ ContactMetrics contact_metrics(const ContactSolver& solver, const TetMesh& m, co
         if (z.vertices[i] == m.faces(f, a)) out.p0_MPa += psi[a] * std::max(0.0, r.lambda[i]);
   }
 
-  // Edge fit: p² = α + βr² + γr⁴ over the outer part of the contact, root nearest the last active ring.
+  // Edge fit: p^q = α + βr² + γr⁴ over the outer part of the contact, root nearest the last active ring. A
+  // hard contact's pressure vanishes like √(a − r) (q = 2); through a linear interface the closure p/K
+  // takes up the gap at the edge, so p vanishes like a − r (q = 1; contact/layer_hertz_interface.hpp).
+  const bool linear_edge = solver.load().interface.law == InterfaceLaw::linear;
   const Eigen::Vector2d fc = holes.empty() ? pc : outer_edge_center(z, m, touching, holes, pc);
   // An exponential interface has no edge, only a tail: fit the loaded part (λ ≥ 5 % of the peak, the
   // asperities closed to within u0 ln 20 of the mean plane) and extrapolate it to its hard-contact edge.
@@ -92,7 +95,7 @@ ContactMetrics contact_metrics(const ContactSolver& solver, const TetMesh& m, co
     if (fitted(i) && rr >= 0.6 * r_max) {
       const double X = rr * rr / (r_max * r_max);  // scaled for conditioning
       rows.emplace_back(1.0, X, X * X);
-      rhs.push_back(r.lambda[i] * r.lambda[i]);
+      rhs.push_back(linear_edge ? r.lambda[i] : r.lambda[i] * r.lambda[i]);
     }
   }
   // Too few rows for the fit: the area-equivalent radius, or with holes (whose area it misses) the farthest

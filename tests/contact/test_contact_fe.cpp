@@ -11,6 +11,7 @@
 #include "contact/contact_solver.hpp"
 #include "contact/hole_sweep.hpp"
 #include "contact/layer_hertz.hpp"
+#include "contact/layer_hertz_interface.hpp"
 #include "contact/metrics.hpp"
 #include "fem/base_traction.hpp"
 #include "mesh/build.hpp"
@@ -85,6 +86,30 @@ TEST(ContactFe, SphereOnBondedLayerMatchesTheExactSolution) {
   EXPECT_NEAR(m.contact_radius_mm / exact.a_mm, 1.0, 0.025);
   EXPECT_NEAR(m.p0_MPa / exact.p0_MPa, 1.0, 0.01);
   EXPECT_NEAR(r.depth_mm / exact.delta_mm, 1.0, 0.002);
+}
+
+// With a linear interface in series (K = 30 and 3 MPa/mm: closure at p0 of 2 and 16 µm against δ of 30 and
+// 38 µm) against the exact layer solution with the same interface (contact/layer_hertz_interface.hpp). The
+// edge fit is the linear-edge one (p vanishes like a − r). Measured: h 0.6 (here) a −0.54 / +0.09 %, p0
+// +0.36 / +0.40 %, δ +0.08 / +0.32 %; h 0.5 (scenes/hertz_layer.json) a +0.76 / +0.22 %, p0 +0.12 / +0.17 %,
+// δ +0.003 / +0.16 %. Tolerances: the hard contact's at this mesh for a and p0 (above), δ 0.5 % (the
+// closure is lumped on the hats: an O(h²) error of its own, 0.32 → 0.16 % from h 0.6 to 0.5).
+TEST(ContactFe, SphereThroughALinearInterfaceMatchesTheExactSolution) {
+  Fixture& f = layer();
+  for (double K : {30.0, 3.0}) {
+    ContactLoad c = *f.scene.contact;
+    c.interface = {InterfaceLaw::linear, K};
+    const ContactSolver s(*f.condensed, c);
+    const ContactResult r = s.solve(FrictionMode::none);
+    const ContactMetrics m = contact_metrics(s, f.mesh, *f.top, r, {0, 0});
+    const LayerHertzInterfaceResult exact = layer_hertz_interface_force(0.8, 129.7, 3.04, 3.0, 0.5, K);
+    std::printf("K = %g MPa/mm: a %.4f mm (exact %.4f), p0 %.3f kPa (%.3f), delta %.4f um (%.4f)\n", K,
+                m.contact_radius_mm, exact.a_mm, 1e3 * m.p0_MPa, 1e3 * exact.p0_MPa, 1e3 * r.depth_mm,
+                1e3 * exact.delta_mm);
+    EXPECT_NEAR(m.contact_radius_mm / exact.a_mm, 1.0, 0.025) << "K = " << K;
+    EXPECT_NEAR(m.p0_MPa / exact.p0_MPa, 1.0, 0.01) << "K = " << K;
+    EXPECT_NEAR(r.depth_mm / exact.delta_mm, 1.0, 0.005) << "K = " << K;
+  }
 }
 
 // Exact complementarity at the multipliers: λ ≥ 0, g ≥ 0, λ·g = 0 to round-off of the LCP solve.
