@@ -246,7 +246,7 @@ int run_contact(const Scene& scene, const std::string& out_dir, const std::strin
   if (friction == "uncoupled") chosen = FrictionMode::uncoupled;
   if (friction == "coupled") chosen = FrictionMode::coupled;
   check_output_dir(out_dir);
-  contact_stage(scene, *contact_setup(scene), out_dir, chosen);
+  contact_stage(scene, *contact_setup(scene, nullptr, false), out_dir, chosen);
   return 0;
 }
 

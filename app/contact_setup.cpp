@@ -10,7 +10,7 @@
 
 namespace skinfem::app {
 
-std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<Skin> skin) {
+std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<Skin> skin, bool hole_path) {
   if (!scene.contact)
     throw SceneError(scene.source_path + ": contact: missing; this command needs a \"contact\" section");
   auto s =
@@ -29,15 +29,21 @@ std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<
     s->mirror = std::make_unique<contact::MirrorView>(
         contact::mirror_view(*s->whole, s->source, zone, contact_center(scene), s->zone_radius));
   }
+  std::vector<int> watch_faces, watch_nodes;
+  if (hole_path && scene.contact->sweep) {
+    const HoleSweep& sw = *scene.contact->sweep;
+    contact::watch_path(solved, zone, sw.from, sw.to, 0.5 * sw.hole_diameter, watch_faces, watch_nodes);
+  }
   Stopwatch condense_clock;
-  s->condensed = std::make_unique<contact::CondensedContact>(
-      contact::condense(*s->model, zone, *s->indenter, scene.sensors, scene.contact->direction,
-                        [&](double fraction, const std::string& what) {
-                          char buf[160];
-                          std::snprintf(buf, sizeof buf, "%s: %.0f %% (%.1f s)", what.c_str(), 100 * fraction,
-                                        condense_clock.seconds());
-                          progress(buf);
-                        }));
+  s->condensed = std::make_unique<contact::CondensedContact>(contact::condense(
+      *s->model, zone, *s->indenter, scene.sensors, scene.contact->direction,
+      [&](double fraction, const std::string& what) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "%s: %.0f %% (%.1f s)", what.c_str(), 100 * fraction,
+                      condense_clock.seconds());
+        progress(buf);
+      },
+      watch_faces));
   s->solver = std::make_unique<contact::ContactSolver>(*s->condensed, *scene.contact, s->mirror.get());
   s->top = std::make_unique<PlanarFaceIndex>(s->mesh(), kTop);
   s->wall["condense"] = clock.seconds();

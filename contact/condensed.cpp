@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 
 #include "fem/base_traction.hpp"
 
@@ -14,7 +15,8 @@ constexpr int kBlock =
 
 CondensedContact condense(const ElasticModel& model, const MortarZone& zone, const Indenter& indenter,
                           const Sensors& sensors, const Vec2& direction,
-                          const std::function<void(double, const std::string&)>& progress) {
+                          const std::function<void(double, const std::string&)>& progress,
+                          const std::vector<int>& watch_faces) {
   const auto start = std::chrono::steady_clock::now();
   const TetMesh& m = model.mesh();
   const int nc = zone.size(), N = m.num_nodes();
@@ -52,6 +54,55 @@ CondensedContact condense(const ElasticModel& model, const MortarZone& zone, con
   c.S_t = (D_t * Y).transpose();
   c.block_solves += 2 * ns;
 
+  // Watched nodes (hole_cut.hpp): where the multipliers' displacements and the adjoints are kept.
+  std::vector<int> watch;  // mesh node → watched index, −1
+  const auto t_of = [&](const Eigen::MatrixXd& X, int node, int col) {
+    return c.direction.x() * X(3 * node, col) + c.direction.y() * X(3 * node + 1, col);
+  };
+  if (!watch_faces.empty()) {
+    PathCompliance& p = c.path.emplace();
+    p.indenter = std::make_shared<const Indenter>(indenter);
+    watch.assign(N, -1);
+    std::vector<int> mult(N, -1);
+    for (int i = 0; i < nc; ++i) mult[zone.vertices[i]] = i;
+    for (int f : watch_faces)
+      for (int k = 0; k < 6; ++k)
+        if (watch[m.faces(f, k)] < 0) {
+          watch[m.faces(f, k)] = static_cast<int>(p.nodes.size());
+          p.nodes.push_back(m.faces(f, k));
+        }
+    for (int f : watch_faces) {
+      PathCompliance::Face face;
+      for (int k = 0; k < 6; ++k) {
+        face.x[k] = m.nodes.row(m.faces(f, k)).transpose();
+        face.watched[k] = watch[m.faces(f, k)];
+      }
+      for (int k = 0; k < 3; ++k) face.multiplier[k] = mult[m.faces(f, k)];
+      p.faces.push_back(face);
+    }
+    const int nw = static_cast<int>(p.nodes.size());
+    std::vector<Eigen::Triplet<double>> dw;
+    p.watched_hat.assign(nc, 1);
+    for (int i = 0; i < nc; ++i)
+      for (RowSparse::InnerIterator it(zone.D, i); it; ++it) {
+        if (watch[it.col()] < 0)
+          p.watched_hat[i] = 0;
+        else
+          dw.emplace_back(i, watch[it.col()], it.value());
+      }
+    p.Dw.resize(nc, nw);
+    p.Dw.setFromTriplets(dw.begin(), dw.end());
+    p.Wz.resize(nw, nc);
+    p.Ut.resize(nw, nc);
+    p.Rz.resize(nw, 2 * ns);
+    p.Rt.resize(nw, 2 * ns);
+    for (int k = 0; k < nw; ++k)
+      for (int r = 0; r < 2 * ns; ++r) {
+        p.Rz(k, r) = -Y(3 * p.nodes[k] + 2, r);  // reading = y·f, f = −e_z
+        p.Rt(k, r) = t_of(Y, p.nodes[k], r);
+      }
+  }
+
   c.C_zz.resize(nc, nc);
   c.C_zt.resize(nc, nc);
   for (int j0 = 0; j0 < nc; j0 += kBlock) {
@@ -64,12 +115,86 @@ CondensedContact condense(const ElasticModel& model, const MortarZone& zone, con
     c.C_zz.middleCols(j0, k) = -(D_z * U);
     c.C_zt.middleRows(j0, k) = (D_t * U).transpose();
     c.block_solves += k;
+    if (c.path)
+      for (int w = 0; w < static_cast<int>(c.path->nodes.size()); ++w)
+        for (int j = 0; j < k; ++j) {
+          c.path->Wz(w, j0 + j) = -U(3 * c.path->nodes[w] + 2, j);
+          c.path->Ut(w, j0 + j) = t_of(U, c.path->nodes[w], j);
+        }
+  }
+  // A unit downward force at each watched node.
+  if (c.path) {
+    PathCompliance& p = *c.path;
+    const int nw = static_cast<int>(p.nodes.size());
+    p.Gzz.resize(nw, nw);
+    p.Gtz.resize(nw, nw);
+    p.DtG.resize(nc, nw);
+    for (int j0 = 0; j0 < nw; j0 += kBlock) {
+      const int k = std::min(kBlock, nw - j0);
+      if (progress)
+        progress(double(j0) / nw,
+                 "compliance of the " + std::to_string(nw) + " nodes a swept hole can reach");
+      Eigen::MatrixXd F = Eigen::MatrixXd::Zero(3 * N, k);
+      for (int j = 0; j < k; ++j) F(3 * p.nodes[j0 + j] + 2, j) = -1.0;
+      const Eigen::MatrixXd U = model.solver().solve_block(F);
+      for (int j = 0; j < k; ++j)
+        for (int w = 0; w < nw; ++w) {
+          p.Gzz(w, j0 + j) = -U(3 * p.nodes[w] + 2, j);
+          p.Gtz(w, j0 + j) = t_of(U, p.nodes[w], j);
+        }
+      p.DtG.middleCols(j0, k) = D_t * U;
+      p.block_solves += k;
+    }
+    p.Gzz = 0.5 * (p.Gzz + p.Gzz.transpose()).eval();
+    c.block_solves += p.block_solves;
   }
   // Symmetric by reciprocity up to the solver's round-off; make it exactly so for the LCP.
   c.C_zz = 0.5 * (c.C_zz + c.C_zz.transpose()).eval();
   if (progress) progress(1.0, "condensed");
   c.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return c;
+}
+
+CutProblem cut_problem(const CondensedContact& c, const HoleCut& cut, bool tangential) {
+  if (!c.path) throw std::logic_error("cut_problem: the condensed skin has no hole path");
+  const PathCompliance& P = *c.path;
+  CutProblem out;
+  const Eigen::MatrixXd BWz = cut.B * P.Wz;
+  out.C_zz = c.C_zz - BWz - BWz.transpose();
+  out.C_zz += cut.B * (P.Gzz * cut.B.transpose());
+  out.S_p = c.S_p - (cut.B * P.Rz).transpose();
+  if (tangential) {
+    out.C_zt_rows = c.C_zt - cut.B * P.DtG.transpose();
+    out.C_zt = out.C_zt_rows - (cut.B * P.Ut).transpose();
+    out.C_zt += cut.B * (P.Gtz.transpose() * cut.B.transpose());
+    out.S_t = c.S_t - (cut.B * P.Rt).transpose();
+  }
+  out.gap0 = c.gap0 - cut.gap0;
+  out.area = c.zone.area - cut.area;
+  // Rows the hole leaves less than half of: from the cut load r = D_i − B_i itself, node by node, where the
+  // hat lies on watched faces. The corrections above subtract O(1) terms to leave O(share^1.5) ones; these
+  // have only r's own round-off, relative 1e-16 / share.
+  for (int i = 0; i < c.zone.size(); ++i) {
+    if (!(out.area[i] < 0.5 * c.zone.area[i]) || !P.watched_hat[i]) continue;
+    const Eigen::RowVectorXd r = Eigen::RowVectorXd(P.Dw.row(i)) - Eigen::RowVectorXd(cut.B.row(i));
+    // Downward u_z at the watched nodes under r's downward load, and under each cut hat's.
+    const Eigen::VectorXd wr = P.Gzz * r.transpose();
+    const Eigen::RowVectorXd row = r * P.Wz - (cut.B * wr).transpose();
+    out.C_zz.row(i) = row;
+    out.C_zz.col(i) = row.transpose();
+    out.C_zz(i, i) = r.dot(wr);
+    out.S_p.col(i) = (r * P.Rz).transpose();
+    if (tangential) {
+      // Gaps of row i under every hat's traction, and of every row under r's traction (Maxwell–Betti).
+      const Eigen::RowVectorXd zt_row = r * P.DtG.transpose() - (cut.B * (P.Gtz * r.transpose())).transpose();
+      out.C_zt_rows.row(i) = r * P.DtG.transpose();
+      out.C_zt.row(i) = zt_row;
+      out.C_zt.col(i) = (r * P.Ut).transpose() - cut.B * (P.Gtz.transpose() * r.transpose());
+      out.C_zt(i, i) = r * P.Gtz.transpose() * r.transpose();
+      out.S_t.col(i) = (r * P.Rt).transpose();
+    }
+  }
+  return out;
 }
 
 }  // namespace skinfem::contact

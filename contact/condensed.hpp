@@ -12,8 +12,10 @@
 
 #include <Eigen/Dense>
 #include <functional>
+#include <optional>
 #include <string>
 
+#include "contact/hole_cut.hpp"
 #include "contact/indenter.hpp"
 #include "contact/mortar.hpp"
 #include "fem/elastic_model.hpp"
@@ -26,13 +28,28 @@ struct CondensedContact {
   Eigen::MatrixXd C_zz, C_zt;       // n_c × n_c, mm³/MPa (weighted gap per unit multiplier)
   Eigen::VectorXd gap0;             // n_c: ∫ψ_i (z_touch + φ − s) dx dy, mm³
   Eigen::MatrixXd S_p, S_t;         // 2·sensors × n_c
-  double solve_seconds = 0;         // block solves (multipliers and adjoints)
-  int block_solves = 0;             // right-hand sides solved
+  // The skin's answer at the P2 nodes a swept hole can reach, for holes that cut the hats
+  // (contact/hole_cut.hpp); absent unless condense was given the faces to watch.
+  std::optional<PathCompliance> path;
+  double solve_seconds = 0;  // block solves (multipliers and adjoints)
+  int block_solves = 0;      // right-hand sides solved
 };
 
-// progress(fraction done, message) is called between blocks.
+// progress(fraction done, message) is called between blocks. watch_faces: top faces of the zone a swept
+// hole can cut (contact/hole_cut.hpp, watch_path); their P2 nodes get one more solve each.
 CondensedContact condense(const ElasticModel& model, const MortarZone& zone, const Indenter& indenter,
                           const Sensors& sensors, const Vec2& direction,
-                          const std::function<void(double, const std::string&)>& progress = {});
+                          const std::function<void(double, const std::string&)>& progress = {},
+                          const std::vector<int>& watch_faces = {});
+
+// The condensed problem with a hole that cuts the hats (hole_cut.hpp): the hole-free one corrected on the
+// rows the hole touches. C_zt, S_t only when `tangential` (else empty). Needs c.path.
+struct CutProblem {
+  Eigen::MatrixXd C_zz, C_zt, S_p, S_t;
+  Eigen::MatrixXd
+      C_zt_rows;  // n_c × n_c: the gaps of the cut rows under whole hats' traction (a lumped shear)
+  Eigen::VectorXd gap0, area;  // n_c: outside the hole
+};
+CutProblem cut_problem(const CondensedContact& c, const HoleCut& cut, bool tangential);
 
 }  // namespace skinfem::contact

@@ -313,9 +313,85 @@ ContactResult ContactSolver::solve(FrictionMode mode, const std::vector<char>& e
   Eigen::VectorXd gap = s.gap;
   if (mode == FrictionMode::uncoupled) gap += out.ratio * (c_.C_zt * s.lambda);
   if (mode == FrictionMode::uncoupled && out.tau != 0) gap += c_.C_zt * shear_solved;
-  out.depth_mm = s.delta;
   out.readings = solved_readings(s.lambda, out.ratio);
   if (out.tau != 0) out.readings += c_.S_t * shear_solved;
+  finish(out, s, gap, excluded);
+  return out;
+}
+
+ContactResult ContactSolver::solve(FrictionMode mode, const HoleCut& cut,
+                                   const std::vector<int>& warm) const {
+  const int n = c_.zone.size();
+  ContactResult out;
+  out.mode = mode;
+  out.ratio = ratio(mode);
+  out.tau = shear(mode);
+  const double solved_ratio = mode == FrictionMode::uncoupled ? 0.0 : out.ratio;
+  const CutProblem cp = cut_problem(c_, cut, out.ratio != 0 || out.tau != 0);
+  const Eigen::VectorXd& area = cp.area;
+  const Eigen::VectorXd& q = cp.gap0;
+  // Each row and column scaled by 1 / (share of the hat outside the hole): the same complementarity problem
+  // in the multipliers' force per unit remaining hat, so a nearly covered hat keeps a well-scaled row.
+  constexpr double kGone = 1e-9;
+  const bool exponential = load_.interface.law == InterfaceLaw::exponential;
+  std::vector<char> ex(n, 0);
+  Eigen::VectorXd scale = Eigen::VectorXd::Ones(n);
+  for (int i = 0; i < n; ++i) {
+    const double share = area[i] / c_.zone.area[i];
+    if (share < kGone)
+      ex[i] = 1;
+    else if (!exponential)
+      scale[i] = 1 / share;
+  }
+  Eigen::MatrixXd M = cp.C_zz;
+  if (solved_ratio != 0) M += solved_ratio * cp.C_zt;
+  if (load_.interface.law == InterfaceLaw::linear) M.diagonal() += area / load_.interface.K;
+  Eigen::VectorXd m = area;
+  for (int i = 0; i < n; ++i)
+    if (ex[i]) m[i] = c_.zone.area[i];  // any positive value: λ_i = 0
+  Eigen::VectorXd shear_solved;
+  Eigen::VectorXd shift;
+  if (out.tau != 0) {
+    // The shear on the hole-free contact of this mode minus the hole, lumped on the hats.
+    const Eigen::VectorXd w = solved_lambda(touched(mode));
+    shear_solved = out.tau * w.cwiseProduct((area.array() / c_.zone.area.array()).max(0.0).matrix());
+    out.shear = Eigen::VectorXd::Zero(zone().size());
+    for (int i = 0; i < zone().size(); ++i) out.shear[i] = shear_solved[solved_index(i)];
+    if (mode != FrictionMode::uncoupled) shift = cp.C_zt_rows * shear_solved;
+  }
+  const auto S = scale.asDiagonal();
+  ContactLcp problem(S * M * S, S * q, S * m);
+  const double share = mirror_ ? 0.5 : 1.0;
+  const Eigen::VectorXd scaled_shift = shift.size() ? Eigen::VectorXd(S * shift) : Eigen::VectorXd();
+  LcpSolution s = load_.force ? problem.solve_force(share * *load_.force, ex, solved_set(warm), scaled_shift)
+                              : problem.solve_depth(*load_.depth, ex, solved_set(warm), scaled_shift);
+  if (exponential)
+    s = solve_exponential(problem.matrix(), shift.size() ? Eigen::VectorXd(q + shift) : q, m,
+                          {load_.interface.u0, load_.interface.p_ref}, load_.force.has_value(),
+                          load_.force ? share * *load_.force : *load_.depth, ex, s);
+  // Back to multipliers (nodal pressures of the cut hats) and unscaled gaps.
+  s.lambda = S * s.lambda;
+  s.gap = s.gap.cwiseQuotient(scale);
+  Eigen::VectorXd gap = s.gap;
+  if (mode == FrictionMode::uncoupled) {
+    if (out.ratio != 0) gap += out.ratio * (cp.C_zt * s.lambda);
+    if (out.tau != 0) gap += cp.C_zt_rows * shear_solved;
+  }
+  out.readings = cp.S_p * s.lambda;
+  if (out.ratio != 0) out.readings += out.ratio * (cp.S_t * s.lambda);
+  if (out.tau != 0) out.readings += c_.S_t * shear_solved;
+  std::vector<char> whole_ex;
+  for (int i = 0; i < zone().size(); ++i) whole_ex.push_back(ex[solved_index(i)]);
+  // Reported per hat as its force over its whole area (λ_i × the share outside the hole): the nodal value
+  // of a hat left with a sliver is the sliver's concentrated pressure, unbounded as the sliver vanishes.
+  s.lambda = s.lambda.cwiseProduct((area.array() / c_.zone.area.array()).max(0.0).matrix());
+  finish(out, s, gap, whole_ex);
+  return out;
+}
+
+void ContactSolver::finish(ContactResult& out, const LcpSolution& s, const Eigen::VectorXd& gap,
+                           const std::vector<char>& excluded) const {
+  out.depth_mm = s.delta;
   if (out.tau == 0) out.shear = Eigen::VectorXd::Zero(zone().size());
   out.complementarity = s.complementarity;
   out.min_lambda = s.min_lambda;
@@ -346,7 +422,6 @@ ContactResult ContactSolver::solve(FrictionMode mode, const std::vector<char>& e
   }
   out.force_N = zone().area.dot(out.lambda);
   out.tangential_force_N = out.ratio * out.force_N + zone().area.dot(out.shear);
-  return out;
 }
 
 std::vector<char> excluded_by_holes(const MortarZone& zone, const TetMesh& mesh,

@@ -41,7 +41,7 @@ struct ContactResult {
   double tau = 0;          // MPa, shear-strength part of p_t where the skin touches
   Eigen::VectorXd shear;   // n_c nodal shear-strength traction along the sliding direction, MPa (0: none)
   int partial_shear = 0;   // edge multipliers holding a fraction of τ (touching only without their shear)
-  Eigen::VectorXd lambda;  // n_c nodal pressures, MPa
+  Eigen::VectorXd lambda;  // n_c nodal pressures, MPa (through hats a hole cuts: force over the whole hat)
   // n_c weighted gaps ∫ψ_i gap, mm³, in the final state (uncoupled: traction added); under a linear
   // interface the closure is included, ∫ψ_i (gap + p/K): the quantity held ≥ 0.
   Eigen::VectorXd gap;
@@ -84,6 +84,11 @@ class ContactSolver {
   // Throws std::runtime_error when the shear's touched set does not settle.
   ContactResult solve(FrictionMode mode, const std::vector<char>& excluded = {},
                       const std::vector<int>& warm = {}, const Eigen::VectorXd& covered = {}) const;
+  // A hole that cuts the hats on its exact disc (contact/hole_cut.hpp; needs condensed().path): `cut` is the
+  // solved problem's (the half's under a mirror view), warm the whole zone's active set. Multipliers with
+  // less than 1e-9 of their hat outside the hole drop out (their rows have vanished with it). The result's
+  // λ_i is hat i's force over its whole area (the nodal pressure times the share outside the hole).
+  ContactResult solve(FrictionMode mode, const HoleCut& cut, const std::vector<int>& warm = {}) const;
   // From now on solves of `mode` reuse the factorized principal system of this active set (sweeps).
   void set_reference(FrictionMode mode, const std::vector<int>& active) const;
   double ratio(FrictionMode mode) const;  // Coulomb part p_t / p of `mode`
@@ -120,6 +125,9 @@ class ContactSolver {
 
  private:
   ContactLcp& lcp(double ratio) const;
+  // The result's common tail: depth, diagnostics, and λ, gaps and active set seen whole.
+  void finish(ContactResult& out, const LcpSolution& s, const Eigen::VectorXd& gap,
+              const std::vector<char>& excluded) const;
   Eigen::VectorXd solved_readings(const Eigen::VectorXd& solved_lambda, double ratio) const;
   const CondensedContact& c_;
   ContactLoad load_;

@@ -42,14 +42,29 @@ double area_centroid(const Poly& poly, Eigen::Vector2d& centroid) {
 
 }  // namespace
 
+std::vector<Eigen::Vector2d> disc_in_triangle(const Hole& h, const Eigen::Vector2d v[3]) {
+  // The regular polygon with the circle's area: circumradius r·sqrt(2π / (k sin(2π/k))).
+  static const double grow = std::sqrt(2 * M_PI / (kHoleSides * std::sin(2 * M_PI / kHoleSides)));
+  const double r = 0.5 * h.diameter * grow;
+  const Eigen::Vector2d lo = v[0].cwiseMin(v[1]).cwiseMin(v[2]), hi = v[0].cwiseMax(v[1]).cwiseMax(v[2]);
+  if (h.center[0] + r < lo.x() || h.center[0] - r > hi.x() || h.center[1] + r < lo.y() ||
+      h.center[1] - r > hi.y())
+    return {};
+  Poly disc(kHoleSides);
+  for (int k = 0; k < kHoleSides; ++k) {
+    const double phi = 2 * M_PI * k / kHoleSides;
+    disc[k] = {h.center[0] + r * std::cos(phi), h.center[1] + r * std::sin(phi)};
+  }
+  for (int e = 0; e < 3 && !disc.empty(); ++e) disc = clip(disc, v[e], v[(e + 1) % 3]);
+  return disc.size() >= 3 ? disc : Poly{};
+}
+
 Eigen::VectorXd hole_cover(const MortarZone& zone, const TetMesh& m, const std::vector<Hole>& holes) {
   const int n = zone.size();
   Eigen::VectorXd covered = Eigen::VectorXd::Zero(n), area = Eigen::VectorXd::Zero(n);
   if (holes.empty() || n == 0) return covered;
   std::vector<int> local(m.num_vertices, -1);
   for (int i = 0; i < n; ++i) local[zone.vertices[i]] = i;
-  // The regular polygon with the circle's area: circumradius r·sqrt(2π / (k sin(2π/k))).
-  const double grow = std::sqrt(2 * M_PI / (kHoleSides * std::sin(2 * M_PI / kHoleSides)));
   for (int f : zone.faces) {
     Eigen::Vector2d v[3];
     for (int a = 0; a < 3; ++a) v[a] = {m.nodes(m.faces(f, a), 0), m.nodes(m.faces(f, a), 1)};
@@ -60,18 +75,8 @@ Eigen::VectorXd hole_cover(const MortarZone& zone, const TetMesh& m, const std::
     t_area = std::abs(t_area);
     for (int a = 0; a < 3; ++a)
       if (const int i = local[order[a]]; i >= 0) area[i] += t_area / 3;
-    const Eigen::Vector2d lo = v[0].cwiseMin(v[1]).cwiseMin(v[2]), hi = v[0].cwiseMax(v[1]).cwiseMax(v[2]);
     for (const Hole& h : holes) {
-      const double r = 0.5 * h.diameter * grow;
-      if (h.center[0] + r < lo.x() || h.center[0] - r > hi.x() || h.center[1] + r < lo.y() ||
-          h.center[1] - r > hi.y())
-        continue;
-      Poly disc(kHoleSides);
-      for (int k = 0; k < kHoleSides; ++k) {
-        const double phi = 2 * M_PI * k / kHoleSides;
-        disc[k] = {h.center[0] + r * std::cos(phi), h.center[1] + r * std::sin(phi)};
-      }
-      for (int e = 0; e < 3 && !disc.empty(); ++e) disc = clip(disc, v[e], v[(e + 1) % 3]);
+      const Poly disc = disc_in_triangle(h, v);
       if (disc.size() < 3) continue;
       Eigen::Vector2d c;
       const double a_cut = area_centroid(disc, c);

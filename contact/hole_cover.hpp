@@ -21,6 +21,9 @@ namespace skinfem::contact {
 // from the circle, 2π²/(3 kSides²) of the radius (2.5e-5), bounds the error of each covered fraction.
 inline constexpr int kHoleSides = 512;
 
+// The hole's polygon clipped to the triangle v (counter-clockwise, (x, y)): empty if they do not overlap.
+std::vector<Eigen::Vector2d> disc_in_triangle(const Hole& hole, const Eigen::Vector2d v[3]);
+
 // Per multiplier of `zone` (zone.size()): the share of ∫ψ_i that lies inside any of `holes`, in [0, 1].
 // Holes must not overlap (scene rules): overlapping discs count twice (clamped to 1).
 Eigen::VectorXd hole_cover(const MortarZone& zone, const TetMesh& mesh, const std::vector<Hole>& holes);

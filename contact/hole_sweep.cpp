@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "contact/hole_cover.hpp"
+#include "contact/hole_cut.hpp"
 
 namespace skinfem::contact {
 
@@ -23,11 +24,15 @@ SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const H
                  sweep.from[1] + s * (sweep.to[1] - sweep.from[1])};
     out.centers.push_back(c);
     const std::vector<Hole> hole{Hole{c, sweep.hole_diameter}};
-    const ContactResult r =
-        solver.solve(mode, excluded_by_holes(solver.zone(), mesh, hole), warm,
-                     solver.shear(mode) != 0 ? hole_cover(solver.zone(), mesh, hole) : Eigen::VectorXd());
-    require_hole_resolved(solver.zone(), mesh, Hole{c, sweep.hole_diameter}, r.active,
-                          "contact.sweep.hole_diameter (contact.sweep.h)");
+    ContactResult r;
+    if (const auto& path = solver.condensed().path) {
+      r = solver.solve(mode, hole_cut(*path, solver.condensed().zone.size(), hole[0]), warm);
+    } else {
+      r = solver.solve(mode, excluded_by_holes(solver.zone(), mesh, hole), warm,
+                       solver.shear(mode) != 0 ? hole_cover(solver.zone(), mesh, hole) : Eigen::VectorXd());
+      require_hole_resolved(solver.zone(), mesh, hole[0], r.active,
+                            "contact.sweep.hole_diameter (contact.sweep.h)");
+    }
     warm = r.active;
     out.varsigma.row(i) = (r.readings - out.baseline.readings).transpose();
     out.pivots.push_back(r.pivots);

@@ -45,12 +45,23 @@ struct Side {
   std::unique_ptr<CondensedContact> condensed;
 };
 
+// The sweep of the test below: its hole cuts the hats (contact/hole_cut.hpp), so its path is condensed too.
+HoleSweep test_sweep() {
+  HoleSweep sweep;
+  sweep.from = {-0.8, 0.0}, sweep.to = {1.8, 0.0}, sweep.positions = 9, sweep.hole_diameter = 0.4;
+  return sweep;
+}
+
 Side condensed_side(const Scene& s, const TetMesh& m) {
   Side x;
   x.model = std::make_unique<ElasticModel>(m, s.material, s.geometry.side, std::vector<Punch>{});
   x.indenter = std::make_unique<Indenter>(s, m);
-  x.condensed = std::make_unique<CondensedContact>(condense(
-      *x.model, mortar_zone(m, contact_center(s), s.contact->zone_radius), *x.indenter, s.sensors, {1, 0}));
+  const auto zone = mortar_zone(m, contact_center(s), s.contact->zone_radius);
+  std::vector<int> faces, nodes;
+  const HoleSweep sw = test_sweep();
+  watch_path(m, zone, sw.from, sw.to, 0.5 * sw.hole_diameter, faces, nodes);
+  x.condensed =
+      std::make_unique<CondensedContact>(condense(*x.model, zone, *x.indenter, s.sensors, {1, 0}, {}, faces));
   return x;
 }
 
@@ -104,9 +115,9 @@ TEST(MirrorContact, HalfEqualsTheMirroredWholeInEveryFrictionModeWithHoles) {
                                  std::abs(ma.pressure_centroid[1])};
         for (double e : errors) worst = std::max(worst, e);
       }
-    // The sweep through the contact and the small-hole signals, both through the whole view.
-    HoleSweep sweep;
-    sweep.from = {-0.8, 0.0}, sweep.to = {1.8, 0.0}, sweep.positions = 9, sweep.hole_diameter = 0.4;
+    // The sweep through the contact (its hole cutting the hats) and the small-hole signals, both through the
+    // whole view.
+    const HoleSweep sweep = test_sweep();
     const SweepResult sa = hole_sweep(reduced, whole, sweep, FrictionMode::coupled),
                       sb = hole_sweep(full, whole, sweep, FrictionMode::coupled);
     worst = std::max(worst,

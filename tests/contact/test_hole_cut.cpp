@@ -1,0 +1,174 @@
+// A hole that cuts the multipliers' hats on its exact disc (contact/hole_cut.hpp) on the paper's layer under
+// a sphere, against a second method and against what a cut must do:
+//   the cut matrices against full FE solves of the cut loads (the low-rank corrections' algebra);
+//   a hole outside the contact changes nothing; a hole far from every hat leaves the problem as it was;
+//   the signal is continuous in the hole's position (no jump when a vertex enters the hole).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "contact/contact_solver.hpp"
+#include "contact/hole_cut.hpp"
+#include "contact/hole_sweep.hpp"
+#include "layer_fixture.hpp"
+
+namespace skinfem::contact {
+namespace {
+
+testing::CondensedLayer& layer() {
+  static testing::CondensedLayer f;
+  static const bool ready = [] {
+    ContactLoad c;
+    c.force = 0.3;
+    c.mu = 0.5;
+    HoleSweep sw;
+    sw.from = {-1.5, 0};
+    sw.to = {1.5, 0};
+    sw.hole_diameter = 0.5;
+    c.sweep = sw;
+    testing::condense_layer(f, testing::layer_scene("test_hole_cut", 0.4, {{0, 0}, {1.0, 0}}, c, 2.6));
+    return true;
+  }();
+  (void)ready;
+  return f;
+}
+
+// The cut hats D_i − B_i as sparse rows over the mesh's nodes.
+Eigen::SparseMatrix<double, Eigen::RowMajor> cut_rows(const CondensedContact& c, const HoleCut& cut) {
+  std::vector<Eigen::Triplet<double>> t;
+  using Row = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+  for (int i = 0; i < c.zone.size(); ++i) {
+    for (Row::InnerIterator it(c.zone.D, i); it; ++it) t.emplace_back(i, it.col(), it.value());
+    for (Row::InnerIterator it(cut.B, i); it; ++it) t.emplace_back(i, c.path->nodes[it.col()], -it.value());
+  }
+  Row D(c.zone.size(), c.zone.D.cols());
+  D.setFromTriplets(t.begin(), t.end());
+  return D;
+}
+
+TEST(HoleCut, CutMatricesEqualFullSolvesOfTheCutLoads) {
+  auto& f = layer();
+  const CondensedContact& c = *f.condensed;
+  // A hole off the mesh's symmetry lines, inside the contact, and one leaving a sliver of a hat.
+  for (const Hole& hole : {Hole{{0.23, 0.07}, 0.5}, Hole{{0.4, 0.0}, 0.5}}) {
+    const HoleCut cut = hole_cut(*c.path, c.zone.size(), hole);
+    const CutProblem cp = cut_problem(c, cut, true);
+    const auto D = cut_rows(c, cut);
+    const int N = f.mesh.num_nodes(), n = c.zone.size();
+    std::vector<int> rows;
+    double min_share = 1;
+    for (int i = 0; i < n; ++i)
+      if (cut.area[i] > 0 && cp.area[i] > 1e-9 * c.zone.area[i]) {
+        rows.push_back(i);
+        min_share = std::min(min_share, cp.area[i] / c.zone.area[i]);
+      }
+    ASSERT_GT(rows.size(), 2u);
+    Eigen::MatrixXd Fz = Eigen::MatrixXd::Zero(3 * N, rows.size()), Ft = Fz;
+    for (size_t a = 0; a < rows.size(); ++a)
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(D, rows[a]); it; ++it) {
+        Fz(3 * it.col() + 2, a) = -it.value();
+        Ft(3 * it.col(), a) = it.value();
+      }
+    const Eigen::MatrixXd Uz = f.model->solver().solve_block(Fz), Ut = f.model->solver().solve_block(Ft);
+    Eigen::MatrixXd uz(N, rows.size()), ut(N, rows.size());
+    for (int k = 0; k < N; ++k) uz.row(k) = Uz.row(3 * k + 2), ut.row(k) = Ut.row(3 * k + 2);
+    // C(i, a) = −(D_i − B_i)·u_z of cut load a: every row, the cut columns.
+    const Eigen::MatrixXd Czz = -(D * uz), Czt = -(D * ut);
+    double err_zz = 0, err_zt = 0;
+    for (size_t a = 0; a < rows.size(); ++a)
+      for (int i = 0; i < n; ++i)
+        if (cp.area[i] > 1e-9 * c.zone.area[i]) {
+          // Relative to the column's own size: a sliver's column is small.
+          const double col = Czz.col(a).cwiseAbs().maxCoeff();
+          err_zz = std::max(err_zz, std::abs(Czz(i, a) - cp.C_zz(i, rows[a])) / col);
+          err_zt = std::max(err_zt, std::abs(Czt(i, a) - cp.C_zt(i, rows[a])) / col);
+        }
+    std::printf(
+        "hole at (%.2f, %.2f): %zu cut rows (least share outside %.2e): max |C cut - full solve| / column "
+        "%.2e (zz), %.2e (zt)\n",
+        hole.center[0], hole.center[1], rows.size(), min_share, err_zz, err_zt);
+    // The FE solves' round-off (residual 1e-10 relative) through one product.
+    EXPECT_LT(err_zz, 1e-8);
+    EXPECT_LT(err_zt, 1e-8);
+  }
+}
+
+TEST(HoleCut, AHoleAwayFromTheHatsChangesNothing) {
+  auto& f = layer();
+  const CondensedContact& c = *f.condensed;
+  const HoleCut cut = hole_cut(*c.path, c.zone.size(), Hole{{8.0, 0.0}, 0.5});
+  EXPECT_EQ(cut.B.nonZeros(), 0);
+  const ContactSolver solver(c, *f.scene.contact);
+  for (FrictionMode mode :
+       {FrictionMode::none, FrictionMode::static_residual, FrictionMode::uncoupled, FrictionMode::coupled}) {
+    const ContactResult a = solver.solve(mode, cut), b = solver.solve(mode);
+    EXPECT_LT((a.readings - b.readings).cwiseAbs().maxCoeff(), 1e-13 * b.readings.cwiseAbs().maxCoeff());
+    EXPECT_LT((a.lambda - b.lambda).cwiseAbs().maxCoeff(), 1e-13 * b.lambda.cwiseAbs().maxCoeff());
+    EXPECT_NEAR(a.force_N, b.force_N, 1e-13);
+    EXPECT_EQ(a.active, b.active);
+  }
+}
+
+TEST(HoleCut, AFullyCoveredHatDropsOutWithItsRow) {
+  auto& f = layer();
+  const CondensedContact& c = *f.condensed;
+  // The vertex nearest (0.4, 0), under a hole 1.6 mm across: its whole hat (elements of 0.4 mm) is inside.
+  int v = 0;
+  const auto xy = [&](int i) {
+    return Eigen::Vector2d(f.mesh.nodes(c.zone.vertices[i], 0), f.mesh.nodes(c.zone.vertices[i], 1));
+  };
+  for (int i = 0; i < c.zone.size(); ++i)
+    if ((xy(i) - Eigen::Vector2d(0.4, 0)).norm() < (xy(v) - Eigen::Vector2d(0.4, 0)).norm()) v = i;
+  const HoleCut cut = hole_cut(*c.path, c.zone.size(), Hole{{xy(v).x(), xy(v).y()}, 1.6});
+  const CutProblem cp = cut_problem(c, cut, true);
+  std::printf("vertex %d at (%.3f, %.3f): area outside the hole %.2e of %.3f mm2, row %.2e of max C\n", v,
+              xy(v).x(), xy(v).y(), cp.area[v], c.zone.area[v],
+              cp.C_zz.row(v).cwiseAbs().maxCoeff() / c.C_zz.cwiseAbs().maxCoeff());
+  // The polygon's area is the disc's, so a hat inside it is removed to round-off of the same rule as D.
+  EXPECT_LT(std::abs(cp.area[v]), 1e-12 * c.zone.area[v]);
+  EXPECT_LT(std::abs(cp.gap0[v]), 1e-12 * std::abs(c.gap0[v]) + 1e-18);
+  EXPECT_LT(cp.C_zz.row(v).cwiseAbs().maxCoeff(), 1e-10 * c.C_zz.cwiseAbs().maxCoeff());
+  EXPECT_LT(cp.S_p.col(v).cwiseAbs().maxCoeff(), 1e-10 * c.S_p.cwiseAbs().maxCoeff());
+}
+
+TEST(HoleCut, NoJumpWhenAVertexEntersTheHole) {
+  // A vertex inside the contact on the hole's rim: the hole moved by 1e-6 of its radius each way. Removing
+  // the multipliers whose vertex is inside jumps by that vertex's hat; cutting the hats does not.
+  auto& f = layer();
+  const CondensedContact& c = *f.condensed;
+  const ContactSolver solver(c, *f.scene.contact);
+  const ContactResult base = solver.solve(FrictionMode::coupled);
+  int v = -1;  // the active vertex nearest (0.5, 0)
+  const auto d = [&](int i) {
+    return std::hypot(f.mesh.nodes(c.zone.vertices[i], 0) - 0.5, f.mesh.nodes(c.zone.vertices[i], 1));
+  };
+  for (int i : base.active)
+    if (v < 0 || d(i) < d(v)) v = i;
+  const double x = f.mesh.nodes(c.zone.vertices[v], 0), y = f.mesh.nodes(c.zone.vertices[v], 1), eps = 0.25;
+  double cut_jump = 0, ex_jump = 0, scale = 0;
+  Eigen::VectorXd prev_cut, prev_ex;
+  for (double s : {1 + 1e-6, 1 - 1e-6}) {
+    const Hole hole{{x - s * eps, y}, 2 * eps};
+    const Eigen::VectorXd cut =
+        solver.solve(FrictionMode::coupled, hole_cut(*c.path, c.zone.size(), hole)).readings - base.readings;
+    const Eigen::VectorXd ex =
+        solver.solve(FrictionMode::coupled, excluded_by_holes(c.zone, f.mesh, {hole})).readings -
+        base.readings;
+    if (prev_cut.size()) {
+      cut_jump = (cut - prev_cut).cwiseAbs().maxCoeff();
+      ex_jump = (ex - prev_ex).cwiseAbs().maxCoeff();
+    }
+    scale = std::max(scale, cut.cwiseAbs().maxCoeff());
+    prev_cut = cut, prev_ex = ex;
+  }
+  std::printf(
+      "vertex at (%.3f, %.3f) on the rim: signal %.3e kPa; change over 5e-7 mm: cut %.2e kPa, "
+      "removing vertices %.2e kPa\n",
+      x, y, 1e3 * scale, 1e3 * cut_jump, 1e3 * ex_jump);
+  EXPECT_LT(cut_jump, 1e-4 * scale);
+  EXPECT_GT(ex_jump, 1e-2 * scale);
+}
+
+}  // namespace
+}  // namespace skinfem::contact
