@@ -158,43 +158,106 @@ CondensedContact condense(const ElasticModel& model, const MortarZone& zone, con
 CutProblem cut_problem(const CondensedContact& c, const HoleCut& cut, bool tangential) {
   if (!c.path) throw std::logic_error("cut_problem: the condensed skin has no hole path");
   const PathCompliance& P = *c.path;
+  const int n = c.zone.size();
   CutProblem out;
-  const Eigen::MatrixXd BWz = cut.B * P.Wz;
-  out.C_zz = c.C_zz - BWz - BWz.transpose();
-  out.C_zz += cut.B * (P.Gzz * cut.B.transpose());
-  out.S_p = c.S_p - (cut.B * P.Rz).transpose();
-  if (tangential) {
-    out.C_zt_rows = c.C_zt - cut.B * P.DtG.transpose();
-    out.C_zt = out.C_zt_rows - (cut.B * P.Ut).transpose();
-    out.C_zt += cut.B * (P.Gtz.transpose() * cut.B.transpose());
-    out.S_t = c.S_t - (cut.B * P.Rt).transpose();
-  }
   out.gap0 = c.gap0 - cut.gap0;
   out.area = c.zone.area - cut.area;
+  for (int i = 0; i < n; ++i)
+    if (cut.B.row(i).nonZeros() > 0 || cut.area[i] != 0) out.rows.push_back(i);
+  const auto& T = out.rows;
+  const int t = static_cast<int>(T.size());
+  // B's rows T (|T| × n_w, sparse: a row holds the nodes of the few faces the hole meets).
+  std::vector<Eigen::Triplet<double>> bt;
+  for (int a = 0; a < t; ++a)
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(cut.B, T[a]); it; ++it)
+      bt.emplace_back(a, it.col(), it.value());
+  Eigen::SparseMatrix<double, Eigen::RowMajor> BT(t, static_cast<int>(P.nodes.size()));
+  BT.setFromTriplets(bt.begin(), bt.end());
+  // C_zz' = C_zz − B Wz − (B Wz)ᵀ + B Gzz Bᵀ on rows T (hole_cut.hpp), with X = B_T Wz, Y = B_T Gzz B_Tᵀ.
+  const Eigen::MatrixXd X = BT * P.Wz, Y = (BT * P.Gzz) * BT.transpose();
+  out.zz.resize(t, n);
+  out.sp.resize(c.S_p.rows(), t);
+  for (int a = 0; a < t; ++a) out.zz.row(a) = c.C_zz.row(T[a]) - X.row(a);
+  for (int a = 0; a < t; ++a)
+    for (int b = 0; b < t; ++b) out.zz(a, T[b]) += -X(b, T[a]) + Y(a, b);
+  const Eigen::MatrixXd BRz = BT * P.Rz, BRt = BT * P.Rt;
+  for (int a = 0; a < t; ++a) out.sp.col(a) = c.S_p.col(T[a]) - BRz.row(a).transpose();
+  // C_zt' = C_zt − (B Ut)ᵀ − B DtGᵀ + B Gtzᵀ Bᵀ, with Xt = B_T Ut, V = B_T DtGᵀ, Yt = B_T Gtzᵀ B_Tᵀ.
+  Eigen::MatrixXd Xt, V, Yt;
+  if (tangential) {
+    Xt = BT * P.Ut;
+    V = BT * P.DtG.transpose();
+    Yt = (BT * P.Gtz.transpose()) * BT.transpose();
+    out.zt_rows.resize(t, n);
+    out.zt_cols.resize(t, n);
+    out.zt_whole.resize(t, n);
+    out.st.resize(c.S_t.rows(), t);
+    for (int a = 0; a < t; ++a) {
+      out.zt_whole.row(a) = c.C_zt.row(T[a]) - V.row(a);
+      out.zt_rows.row(a) = out.zt_whole.row(a);
+      out.zt_cols.row(a) = c.C_zt.col(T[a]).transpose() - Xt.row(a);
+      out.st.col(a) = c.S_t.col(T[a]) - BRt.row(a).transpose();
+    }
+    for (int a = 0; a < t; ++a)
+      for (int b = 0; b < t; ++b) {
+        out.zt_rows(a, T[b]) += -Xt(b, T[a]) + Yt(a, b);
+        out.zt_cols(b, T[a]) += -V(a, T[b]) + Yt(a, b);
+      }
+  }
   // Rows the hole leaves less than half of: from the cut load r = D_i − B_i itself, node by node, where the
   // hat lies on watched faces. The corrections above subtract O(1) terms to leave O(share^1.5) ones; these
   // have only r's own round-off, relative 1e-16 / share.
-  for (int i = 0; i < c.zone.size(); ++i) {
+  std::vector<int> slivers;
+  for (int a = 0; a < t; ++a) {
+    const int i = T[a];
     if (!(out.area[i] < 0.5 * c.zone.area[i]) || !P.watched_hat[i]) continue;
-    const Eigen::RowVectorXd r = Eigen::RowVectorXd(P.Dw.row(i)) - Eigen::RowVectorXd(cut.B.row(i));
-    // Downward u_z at the watched nodes under r's downward load, and under each cut hat's.
+    slivers.push_back(a);
+    const Eigen::RowVectorXd r = Eigen::RowVectorXd(P.Dw.row(i)) - Eigen::RowVectorXd(BT.row(a));
     const Eigen::VectorXd wr = P.Gzz * r.transpose();
-    const Eigen::RowVectorXd row = r * P.Wz - (cut.B * wr).transpose();
-    out.C_zz.row(i) = row;
-    out.C_zz.col(i) = row.transpose();
-    out.C_zz(i, i) = r.dot(wr);
-    out.S_p.col(i) = (r * P.Rz).transpose();
+    out.zz.row(a) = r * P.Wz;
+    const Eigen::VectorXd bw = BT * wr;
+    for (int b = 0; b < t; ++b) out.zz(a, T[b]) -= bw[b];
+    out.zz(a, i) = r.dot(wr);
+    out.sp.col(a) = (r * P.Rz).transpose();
     if (tangential) {
-      // Gaps of row i under every hat's traction, and of every row under r's traction (Maxwell–Betti).
-      const Eigen::RowVectorXd zt_row = r * P.DtG.transpose() - (cut.B * (P.Gtz * r.transpose())).transpose();
-      out.C_zt_rows.row(i) = r * P.DtG.transpose();
-      out.C_zt.row(i) = zt_row;
-      out.C_zt.col(i) = (r * P.Ut).transpose() - cut.B * (P.Gtz.transpose() * r.transpose());
-      out.C_zt(i, i) = r * P.Gtz.transpose() * r.transpose();
-      out.S_t.col(i) = (r * P.Rt).transpose();
+      const Eigen::RowVectorXd whole = r * P.DtG.transpose();
+      const Eigen::VectorXd gr = BT * (P.Gtz * r.transpose()), gc = BT * (P.Gtz.transpose() * r.transpose());
+      out.zt_whole.row(a) = whole;
+      out.zt_rows.row(a) = whole;
+      out.zt_cols.row(a) = r * P.Ut;
+      for (int b = 0; b < t; ++b) out.zt_rows(a, T[b]) -= gr[b], out.zt_cols(a, T[b]) -= gc[b];
+      out.zt_rows(a, i) = out.zt_cols(a, i) = r * P.Gtz.transpose() * r.transpose();
+      out.st.col(a) = (r * P.Rt).transpose();
     }
   }
+  // A sliver's row is also every other cut row's entry in its column.
+  for (int a : slivers)
+    for (int b = 0; b < t; ++b) {
+      out.zz(b, T[a]) = out.zz(a, T[b]);
+      if (tangential) {
+        out.zt_rows(b, T[a]) = out.zt_cols(a, T[b]);
+        out.zt_cols(b, T[a]) = out.zt_rows(a, T[b]);
+      }
+    }
   return out;
+}
+
+Eigen::MatrixXd cut_zz(const CondensedContact& c, const CutProblem& p) {
+  Eigen::MatrixXd C = c.C_zz;
+  for (size_t a = 0; a < p.rows.size(); ++a) {
+    C.row(p.rows[a]) = p.zz.row(a);
+    C.col(p.rows[a]) = p.zz.row(a).transpose();
+  }
+  return C;
+}
+
+Eigen::MatrixXd cut_zt(const CondensedContact& c, const CutProblem& p) {
+  Eigen::MatrixXd C = c.C_zt;
+  for (size_t a = 0; a < p.rows.size(); ++a) {
+    C.row(p.rows[a]) = p.zt_rows.row(a);
+    C.col(p.rows[a]) = p.zt_cols.row(a).transpose();
+  }
+  return C;
 }
 
 }  // namespace skinfem::contact

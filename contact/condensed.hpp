@@ -42,14 +42,22 @@ CondensedContact condense(const ElasticModel& model, const MortarZone& zone, con
                           const std::function<void(double, const std::string&)>& progress = {},
                           const std::vector<int>& watch_faces = {});
 
-// The condensed problem with a hole that cuts the hats (hole_cut.hpp): the hole-free one corrected on the
-// rows the hole touches. C_zt, S_t only when `tangential` (else empty). Needs c.path.
+// The condensed problem with a hole that cuts the hats (hole_cut.hpp): the hole-free one with the rows and
+// columns of the multipliers the hole touches (T) replaced. Shapes: |T| × n for rows, 2·sensors × |T| for
+// reading columns; C_zz' is symmetric, so its columns T are its rows T transposed. zt* only when
+// `tangential`. Needs c.path.
 struct CutProblem {
-  Eigen::MatrixXd C_zz, C_zt, S_p, S_t;
-  Eigen::MatrixXd
-      C_zt_rows;  // n_c × n_c: the gaps of the cut rows under whole hats' traction (a lumped shear)
-  Eigen::VectorXd gap0, area;  // n_c: outside the hole
+  std::vector<int> rows;       // T, ascending
+  Eigen::MatrixXd zz;          // C_zz'(T, :)
+  Eigen::MatrixXd zt_rows;     // C_zt'(T, :): gaps of the cut rows under every cut hat's traction
+  Eigen::MatrixXd zt_cols;     // C_zt'(:, T)ᵀ: every gap under the cut hats' traction
+  Eigen::MatrixXd zt_whole;    // gaps of the cut rows under whole hats' traction (a lumped shear)
+  Eigen::MatrixXd sp, st;      // S_p'(:, T), S_t'(:, T)
+  Eigen::VectorXd gap0, area;  // n: outside the hole
 };
 CutProblem cut_problem(const CondensedContact& c, const HoleCut& cut, bool tangential);
+// The full n × n matrices of a cut problem: C_zz with the rows and columns T replaced; C_zt likewise.
+Eigen::MatrixXd cut_zz(const CondensedContact& c, const CutProblem& p);
+Eigen::MatrixXd cut_zt(const CondensedContact& c, const CutProblem& p);
 
 }  // namespace skinfem::contact

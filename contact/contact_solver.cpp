@@ -343,42 +343,72 @@ ContactResult ContactSolver::solve(FrictionMode mode, const HoleCut& cut,
     else if (!exponential)
       scale[i] = 1 / share;
   }
-  Eigen::MatrixXd M = cp.C_zz;
-  if (solved_ratio != 0) M += solved_ratio * cp.C_zt;
-  if (load_.interface.law == InterfaceLaw::linear) M.diagonal() += area / load_.interface.K;
   Eigen::VectorXd m = area;
   for (int i = 0; i < n; ++i)
     if (ex[i]) m[i] = c_.zone.area[i];  // any positive value: λ_i = 0
+  const std::vector<int>& T = cp.rows;
+  const int t = static_cast<int>(T.size());
+  // The hole-free matrix (C_zz + ratio C_zt + the interface's closure) with the rows and columns T replaced:
+  // everything else is bit for bit the stored problem's, so it is solved on its reference factorization
+  // with T removed and re-added (ContactLcp::solve_changed; hole_sweep sets the reference).
+  const ContactLcp& base = lcp(solved_ratio);
+  Eigen::MatrixXd M2 = base.matrix();
+  for (int a = 0; a < t; ++a) {
+    M2.row(T[a]) = cp.zz.row(a);
+    if (solved_ratio != 0) M2.row(T[a]) += solved_ratio * cp.zt_rows.row(a);
+  }
+  for (int a = 0; a < t; ++a) {
+    M2.col(T[a]) = cp.zz.row(a).transpose();
+    if (solved_ratio != 0) M2.col(T[a]) += solved_ratio * cp.zt_cols.row(a).transpose();
+  }
+  std::vector<char> dirty(n, 0);
+  for (int a = 0; a < t; ++a) {
+    if (load_.interface.law == InterfaceLaw::linear) M2(T[a], T[a]) += area[T[a]] / load_.interface.K;
+    M2.row(T[a]) *= scale[T[a]];
+    M2.col(T[a]) *= scale[T[a]];
+    dirty[T[a]] = 1;
+  }
+  // A product with C_zt, C_zt_rows (whole hats' traction on the cut rows) or S as cut, from the patch.
+  const auto zt_times = [&](const Eigen::VectorXd& x, bool whole_hats) {
+    Eigen::VectorXd y = c_.C_zt * x;
+    if (!whole_hats)
+      for (int b = 0; b < t; ++b) y += (cp.zt_cols.row(b).transpose() - c_.C_zt.col(T[b])) * x[T[b]];
+    for (int a = 0; a < t; ++a) y[T[a]] = (whole_hats ? cp.zt_whole : cp.zt_rows).row(a).dot(x);
+    return y;
+  };
+  const auto read = [&](const Eigen::MatrixXd& S0, const Eigen::MatrixXd& cols, const Eigen::VectorXd& x) {
+    Eigen::VectorXd y = S0 * x;
+    for (int a = 0; a < t; ++a) y += (cols.col(a) - S0.col(T[a])) * x[T[a]];
+    return y;
+  };
   Eigen::VectorXd shear_solved;
-  Eigen::VectorXd shift;
+  Eigen::VectorXd q2 = q;
   if (out.tau != 0) {
     // The shear on the hole-free contact of this mode minus the hole, lumped on the hats.
     const Eigen::VectorXd w = solved_lambda(touched(mode));
     shear_solved = out.tau * w.cwiseProduct((area.array() / c_.zone.area.array()).max(0.0).matrix());
     out.shear = Eigen::VectorXd::Zero(zone().size());
     for (int i = 0; i < zone().size(); ++i) out.shear[i] = shear_solved[solved_index(i)];
-    if (mode != FrictionMode::uncoupled) shift = cp.C_zt_rows * shear_solved;
+    if (mode != FrictionMode::uncoupled) q2 += zt_times(shear_solved, true);
   }
-  const auto S = scale.asDiagonal();
-  ContactLcp problem(S * M * S, S * q, S * m);
+  q2 = q2.cwiseProduct(scale);
+  const Eigen::VectorXd m2 = m.cwiseProduct(scale);
   const double share = mirror_ ? 0.5 : 1.0;
-  const Eigen::VectorXd scaled_shift = shift.size() ? Eigen::VectorXd(S * shift) : Eigen::VectorXd();
-  LcpSolution s = load_.force ? problem.solve_force(share * *load_.force, ex, solved_set(warm), scaled_shift)
-                              : problem.solve_depth(*load_.depth, ex, solved_set(warm), scaled_shift);
+  const double value = load_.force ? share * *load_.force : *load_.depth;
+  LcpSolution s = base.solve_changed(M2, q2, m2, dirty, load_.force.has_value(), value, ex, solved_set(warm));
   if (exponential)
-    s = solve_exponential(problem.matrix(), shift.size() ? Eigen::VectorXd(q + shift) : q, m,
-                          {load_.interface.u0, load_.interface.p_ref}, load_.force.has_value(),
-                          load_.force ? share * *load_.force : *load_.depth, ex, s);
+    s = solve_exponential(M2, q2, m2, {load_.interface.u0, load_.interface.p_ref}, load_.force.has_value(),
+                          value, ex, s);
   // Back to multipliers (nodal pressures of the cut hats) and unscaled gaps.
-  s.lambda = S * s.lambda;
+  s.lambda = s.lambda.cwiseProduct(scale);
   s.gap = s.gap.cwiseQuotient(scale);
   Eigen::VectorXd gap = s.gap;
   if (mode == FrictionMode::uncoupled) {
-    if (out.ratio != 0) gap += out.ratio * (cp.C_zt * s.lambda);
-    if (out.tau != 0) gap += cp.C_zt_rows * shear_solved;
+    if (out.ratio != 0) gap += out.ratio * zt_times(s.lambda, false);
+    if (out.tau != 0) gap += zt_times(shear_solved, true);
   }
-  out.readings = cp.S_p * s.lambda;
-  if (out.ratio != 0) out.readings += out.ratio * (cp.S_t * s.lambda);
+  out.readings = read(c_.S_p, cp.sp, s.lambda);
+  if (out.ratio != 0) out.readings += out.ratio * read(c_.S_t, cp.st, s.lambda);
   if (out.tau != 0) out.readings += c_.S_t * shear_solved;
   std::vector<char> whole_ex;
   for (int i = 0; i < zone().size(); ++i) whole_ex.push_back(ex[solved_index(i)]);

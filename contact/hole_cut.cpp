@@ -77,6 +77,7 @@ HoleCut hole_cut(const PathCompliance& path, int n_c, const Hole& hole) {
     J.col(0) = v[1] - v[0];
     J.col(1) = v[2] - v[0];
     const Eigen::Matrix2d Jinv = J.inverse();
+    Eigen::Matrix<double, 3, 6> local = Eigen::Matrix<double, 3, 6>::Zero();  // ∫_H ψ_a φ_b on this face
     for (size_t k = 1; k + 1 < poly.size(); ++k) {
       const Eigen::Vector2d p0 = poly[0], e1 = poly[k] - p0, e2 = poly[k + 1] - p0;
       const double sub = 0.5 * std::abs(e1.x() * e2.y() - e1.y() * e2.x());
@@ -103,10 +104,13 @@ HoleCut hole_cut(const PathCompliance& path, int n_c, const Hole& hole) {
           if (i < 0) continue;
           out.area[i] += w * psi[a];
           out.gap0[i] += w * psi[a] * gap;
-          for (int b = 0; b < 6; ++b) t.emplace_back(i, f.watched[b], w * psi[a] * N[b]);
+          local.row(a) += w * psi[a] * N.transpose();
         }
       }
     }
+    for (int a = 0; a < 3; ++a)
+      if (f.multiplier[a] >= 0)
+        for (int b = 0; b < 6; ++b) t.emplace_back(f.multiplier[a], f.watched[b], local(a, b));
   }
   out.B.resize(n_c, static_cast<int>(path.nodes.size()));
   out.B.setFromTriplets(t.begin(), t.end());

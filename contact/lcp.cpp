@@ -73,6 +73,8 @@ struct Base {
   std::vector<int> set;
   std::vector<int> pos;  // extended index → position in set, −1 if absent
   const MatrixXd* Z = nullptr;
+  // Indices whose rows and columns differ from the ones Z was made of: never common, always re-added.
+  const std::vector<char>* dirty = nullptr;
   Eigen::PartialPivLU<MatrixXd> lu;
   std::vector<VectorXd> w_cache;  // j ∉ set: base⁻¹ K(set, j)
   std::vector<VectorXd> z_cache;  // j ∈ set (LU only): base⁻¹ e_pos(j)
@@ -90,8 +92,9 @@ struct Base {
   // Removed and added indices of a target set B (ascending).
   int difference(const std::vector<int>& B, std::vector<int>* R, std::vector<int>* P) const {
     int common = 0, added = 0;
+    const auto stale = [&](int i) { return dirty && i < static_cast<int>(dirty->size()) && (*dirty)[i]; };
     for (int i : B) {
-      if (pos[i] >= 0) {
+      if (pos[i] >= 0 && !stale(i)) {
         ++common;
       } else {
         ++added;
@@ -102,7 +105,7 @@ struct Base {
       std::vector<char> in_b(pos.size(), 0);
       for (int i : B) in_b[i] = 1;
       for (int r = 0; r < size(); ++r)
-        if (!in_b[set[r]]) R->push_back(r);
+        if (!in_b[set[r]] || stale(set[r])) R->push_back(r);
     }
     return size() - common + added;
   }
@@ -116,10 +119,13 @@ struct Base {
 // [bP − KP0 y0; y0_R].
 class Principal {
  public:
-  Principal(const System& sys, const std::vector<int>* ref_set, const MatrixXd* Z) : sys_(sys) {
+  Principal(const System& sys, const std::vector<int>* ref_set, const MatrixXd* Z,
+            const std::vector<char>* dirty = nullptr)
+      : sys_(sys) {
     if (Z) {
       ref_.assign(*ref_set, sys.n + 1);
       ref_.Z = Z;
+      ref_.dirty = dirty;
       has_ref_ = true;
     }
   }
@@ -280,6 +286,21 @@ LcpSolution ContactLcp::solve_depth(double delta, const std::vector<char>& exclu
   return solve(false, delta, excluded, warm, shifted(q_, q_shift));
 }
 
+LcpSolution ContactLcp::solve_changed(const MatrixXd& M, const VectorXd& q, const VectorXd& m,
+                                      const std::vector<char>& dirty, bool force, double value,
+                                      const std::vector<char>& excluded, const std::vector<int>& warm) const {
+  const int n = size();
+  if (M.rows() != n || M.cols() != n || q.size() != n || m.size() != n || static_cast<int>(dirty.size()) != n)
+    throw std::invalid_argument("ContactLcp::solve_changed: sizes differ from the problem's " +
+                                std::to_string(n));
+  if (!M.allFinite() || !q.allFinite() || !(m.array() > 0).all())
+    throw std::invalid_argument("ContactLcp::solve_changed: non-finite entries or an area <= 0");
+  if (force && !(value > 0 && std::isfinite(value)))
+    throw std::invalid_argument("ContactLcp::solve_changed: F must be finite and > 0");
+  const Changed changed{&M, &m, &dirty};
+  return solve(force, value, excluded, warm, q, &changed);
+}
+
 void ContactLcp::set_reference(const std::vector<int>& active) {
   const int n = size();
   std::vector<int> a = active;
@@ -306,8 +327,10 @@ void ContactLcp::clear_reference() {
 }
 
 LcpSolution ContactLcp::solve(bool force, double value, const std::vector<char>& excluded,
-                              const std::vector<int>& warm, const VectorXd& q) const {
+                              const std::vector<int>& warm, const VectorXd& q, const Changed* changed) const {
   const int n = size();
+  const MatrixXd& M = changed ? *changed->M : M_;  // the matrix and areas solved with
+  const VectorXd& m = changed ? *changed->m : m_;
   if (!excluded.empty() && static_cast<int>(excluded.size()) != n)
     throw std::invalid_argument("ContactLcp: excluded has " + std::to_string(excluded.size()) +
                                 " flags for " + std::to_string(n) + " multipliers");
@@ -326,7 +349,7 @@ LcpSolution ContactLcp::solve(bool force, double value, const std::vector<char>&
   }
   const bool cold = std::find(in.begin(), in.end(), 1) == in.end();
   if (cold && !force) {  // the rigid overlap
-    for (int i = 0; i < n; ++i) in[i] = !is_excluded(i) && q[i] < value * m_[i];
+    for (int i = 0; i < n; ++i) in[i] = !is_excluded(i) && q[i] < value * m[i];
   } else if (cold) {
     // The overlap of the local model λ_i = (δ m_i − q_i)/M_ii, whose force Σ m_i λ_i over the overlap is
     // piecewise linear in δ: exact in one pass over q_i/m_i ascending. Without M's coupling it is stiffer
@@ -335,25 +358,26 @@ LcpSolution ContactLcp::solve(bool force, double value, const std::vector<char>&
     std::vector<int> order;
     for (int i = 0; i < n; ++i)
       if (!is_excluded(i)) order.push_back(i);
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return q[a] / m_[a] < q[b] / m_[b]; });
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return q[a] / m[a] < q[b] / m[b]; });
     double sa = 0, sb = 0;  // Σ m_i²/M_ii, Σ m_i q_i/M_ii over the overlap
     size_t k = 0;
     for (; k < order.size(); ++k) {
       const int i = order[k];
-      const double d = std::max(std::abs(M_(i, i)), kEps);
-      if (k > 0 && (value + sb) / sa <= q[i] / m_[i]) break;
-      sa += m_[i] * m_[i] / d;
-      sb += m_[i] * q[i] / d;
+      const double d = std::max(std::abs(M(i, i)), kEps);
+      if (k > 0 && (value + sb) / sa <= q[i] / m[i]) break;
+      sa += m[i] * m[i] / d;
+      sb += m[i] * q[i] / d;
     }
     for (size_t c = 0; c < std::max<size_t>(k, 1); ++c) in[order[c]] = 1;
   }
 
-  const System sys{M_, q, m_, sigma_, force, value, n};
-  Principal principal(sys, ref_set_.empty() ? nullptr : &ref_set_, ref_set_.empty() ? nullptr : &Z_);
+  const System sys{M, q, m, sigma_, force, value, n};
+  Principal principal(sys, ref_set_.empty() ? nullptr : &ref_set_, ref_set_.empty() ? nullptr : &Z_,
+                      changed ? changed->dirty : nullptr);
   VectorXd b(n + 1);
   for (int i = 0; i <= n; ++i) b[i] = i < n ? sys.rhs(i) : (force ? sys.rhs(n) : 0.0);
   const double q_scale = q.size() ? q.cwiseAbs().maxCoeff() : 0.0;
-  const double m_max = m_.size() ? m_.maxCoeff() : 0.0;
+  const double m_max = m.size() ? m.maxCoeff() : 0.0;
 
   LcpSolution s;
   const int max_pivots = 10 * n + 20;
@@ -375,17 +399,17 @@ LcpSolution ContactLcp::solve(bool force, double value, const std::vector<char>&
       for (int refine = 0; refine < 2; ++refine) {
         s.lambda = x.head(n);
         delta = force ? sigma_ * x[n] : value;
-        s.gap = M_ * s.lambda + q - delta * m_;
+        s.gap = M * s.lambda + q - delta * m;
         if (refine == 1) break;
         VectorXd r = VectorXd::Zero(n + 1);
-        for (int i : B) r[i] = i < n ? -s.gap[i] : sigma_ * (value - m_.dot(s.lambda));
+        for (int i : B) r[i] = i < n ? -s.gap[i] : sigma_ * (value - m.dot(s.lambda));
         x += principal.solve(r);
       }
       g_scale = q_scale + std::abs(delta) * m_max;
       double gap_residual = 0;
       for (int i : B)
         if (i < n) gap_residual = std::max(gap_residual, std::abs(s.gap[i]));
-      const double force_residual = force ? std::abs(value - m_.dot(s.lambda)) / value : 0.0;
+      const double force_residual = force ? std::abs(value - m.dot(s.lambda)) / value : 0.0;
       if (!lowrank || (gap_residual <= kResidual * g_scale && force_residual <= kResidual)) break;
       lowrank = principal.prepare(B, s.pivots, false);
     }

@@ -66,6 +66,13 @@ class ContactLcp {
   LcpSolution solve_depth(double delta, const std::vector<char>& excluded = {},
                           const std::vector<int>& warm = {}, const Eigen::VectorXd& q_shift = {}) const;
 
+  // The problem with the rows and columns of the `dirty` indices changed (M, q, m agree with this problem's
+  // elsewhere; a hole cutting the hats, contact/hole_cut.hpp): solved with the stored reference for the
+  // rest, the dirty indices joining the low-rank update as removed and re-added. Same throws as above.
+  LcpSolution solve_changed(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, const Eigen::VectorXd& m,
+                            const std::vector<char>& dirty, bool force_control, double value,
+                            const std::vector<char>& excluded = {}, const std::vector<int>& warm = {}) const;
+
   // Inverts the force-control principal system of `active` (typically the solution without a hole) once;
   // later solves whose principal sets differ from it by at most a quarter of its size use low-rank updates
   // of it. Costs 2(|A0| + 1)³ flops and (|A0| + 1)² doubles. Throws std::runtime_error if it is singular.
@@ -79,8 +86,14 @@ class ContactLcp {
   const Eigen::VectorXd& areas() const { return m_; }
 
  private:
+  struct Changed {
+    const Eigen::MatrixXd* M;
+    const Eigen::VectorXd* m;
+    const std::vector<char>* dirty;
+  };
   LcpSolution solve(bool force_control, double value, const std::vector<char>& excluded,
-                    const std::vector<int>& warm, const Eigen::VectorXd& q) const;
+                    const std::vector<int>& warm, const Eigen::VectorXd& q,
+                    const Changed* changed = nullptr) const;
 
   Eigen::MatrixXd M_;
   Eigen::VectorXd q_, m_;

@@ -5,12 +5,14 @@
 //   the signal is continuous in the hole's position (no jump when a vertex enters the hole).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "contact/contact_solver.hpp"
 #include "contact/hole_cut.hpp"
 #include "contact/hole_sweep.hpp"
+#include "fem/base_traction.hpp"
 #include "layer_fixture.hpp"
 
 namespace skinfem::contact {
@@ -54,6 +56,7 @@ TEST(HoleCut, CutMatricesEqualFullSolvesOfTheCutLoads) {
   for (const Hole& hole : {Hole{{0.23, 0.07}, 0.5}, Hole{{0.4, 0.0}, 0.5}}) {
     const HoleCut cut = hole_cut(*c.path, c.zone.size(), hole);
     const CutProblem cp = cut_problem(c, cut, true);
+    const Eigen::MatrixXd cut_C_zz = cut_zz(c, cp), cut_C_zt = cut_zt(c, cp);
     const auto D = cut_rows(c, cut);
     const int N = f.mesh.num_nodes(), n = c.zone.size();
     std::vector<int> rows;
@@ -75,14 +78,17 @@ TEST(HoleCut, CutMatricesEqualFullSolvesOfTheCutLoads) {
     for (int k = 0; k < N; ++k) uz.row(k) = Uz.row(3 * k + 2), ut.row(k) = Ut.row(3 * k + 2);
     // C(i, a) = −(D_i − B_i)·u_z of cut load a: every row, the cut columns.
     const Eigen::MatrixXd Czz = -(D * uz), Czt = -(D * ut);
-    double err_zz = 0, err_zt = 0;
+    double err_zz = 0, err_zt = 0, err_sym = 0;
     for (size_t a = 0; a < rows.size(); ++a)
       for (int i = 0; i < n; ++i)
         if (cp.area[i] > 1e-9 * c.zone.area[i]) {
           // Relative to the column's own size: a sliver's column is small.
           const double col = Czz.col(a).cwiseAbs().maxCoeff();
-          err_zz = std::max(err_zz, std::abs(Czz(i, a) - cp.C_zz(i, rows[a])) / col);
-          err_zt = std::max(err_zt, std::abs(Czt(i, a) - cp.C_zt(i, rows[a])) / col);
+          err_zz = std::max(err_zz, std::abs(Czz(i, a) - cut_C_zz(i, rows[a])) / col);
+          err_zt = std::max(err_zt, std::abs(Czt(i, a) - cut_C_zt(i, rows[a])) / col);
+          // The rows T of C_zt' against the same solves by Maxwell–Betti: gap of row a under hat i's
+          // traction.
+          err_sym = std::max(err_sym, std::abs(cut_C_zz(rows[a], i) - Czz(i, a)) / col);
         }
     std::printf(
         "hole at (%.2f, %.2f): %zu cut rows (least share outside %.2e): max |C cut - full solve| / column "
@@ -91,6 +97,44 @@ TEST(HoleCut, CutMatricesEqualFullSolvesOfTheCutLoads) {
     // The FE solves' round-off (residual 1e-10 relative) through one product.
     EXPECT_LT(err_zz, 1e-8);
     EXPECT_LT(err_zt, 1e-8);
+    EXPECT_LT(err_sym, 1e-8);
+  }
+}
+
+// A coupled contact with a cutting hole, its pressure put on the skin as the cut hats' load with its Coulomb
+// traction, one full solve: the base reactions give the readings (two methods) and carry the force.
+TEST(HoleCut, ReadingsEqualAFullSolveOfTheCutPressure) {
+  auto& f = layer();
+  const CondensedContact& c = *f.condensed;
+  const ContactSolver solver(c, *f.scene.contact);
+  for (const Hole& hole : {Hole{{0.23, 0.07}, 0.5}, Hole{{-0.6, 0.1}, 0.5}}) {
+    const HoleCut cut = hole_cut(*c.path, c.zone.size(), hole);
+    const ContactResult r = solver.solve(FrictionMode::coupled, cut);
+    const auto D = cut_rows(c, cut);
+    Eigen::VectorXd lambda = Eigen::VectorXd::Zero(c.zone.size());  // nodal values of the cut hats
+    for (int i = 0; i < c.zone.size(); ++i) {
+      const double share = 1 - cut.area[i] / c.zone.area[i];
+      if (share > 1e-9) lambda[i] = r.lambda[i] / share;
+    }
+    const Eigen::VectorXd p = D.transpose() * lambda;
+    Eigen::VectorXd load = Eigen::VectorXd::Zero(3 * f.mesh.num_nodes());
+    for (int k = 0; k < f.mesh.num_nodes(); ++k) load[3 * k] = r.ratio * p[k], load[3 * k + 2] = -p[k];
+    const MixedSolution x = f.model->solver().solve(load);
+    const BaseTraction base(f.mesh, f.model->solver().reactions(x, load));
+    double err = 0;
+    for (size_t k = 0; k < f.scene.sensors.positions.size(); ++k) {
+      const auto& q = f.scene.sensors.positions[k];
+      const SensorReading v = base.disc_mean(q[0], q[1], f.scene.sensors.disc_diameter);
+      err = std::max(
+          {err, std::abs(v.sigma_z - r.readings[2 * k]), std::abs(v.sigma_x - r.readings[2 * k + 1])});
+    }
+    std::printf(
+        "hole at (%.2f, %.2f): readings against the full solve %.2e of %.2e MPa, force %.12f vs %.12f N\n",
+        hole.center[0], hole.center[1], err, r.readings.cwiseAbs().maxCoeff(), base.total_force().z(),
+        r.force_N);
+    EXPECT_LT(err, 1e-8 * r.readings.cwiseAbs().maxCoeff());
+    EXPECT_NEAR(base.total_force().z(), r.force_N, 1e-9);
+    EXPECT_NEAR(r.force_N, *f.scene.contact->force, 1e-12);
   }
 }
 
@@ -122,14 +166,17 @@ TEST(HoleCut, AFullyCoveredHatDropsOutWithItsRow) {
     if ((xy(i) - Eigen::Vector2d(0.4, 0)).norm() < (xy(v) - Eigen::Vector2d(0.4, 0)).norm()) v = i;
   const HoleCut cut = hole_cut(*c.path, c.zone.size(), Hole{{xy(v).x(), xy(v).y()}, 1.6});
   const CutProblem cp = cut_problem(c, cut, true);
+  const Eigen::MatrixXd C = cut_zz(c, cp);
+  const int a = static_cast<int>(std::find(cp.rows.begin(), cp.rows.end(), v) - cp.rows.begin());
+  ASSERT_LT(a, static_cast<int>(cp.rows.size()));
   std::printf("vertex %d at (%.3f, %.3f): area outside the hole %.2e of %.3f mm2, row %.2e of max C\n", v,
               xy(v).x(), xy(v).y(), cp.area[v], c.zone.area[v],
-              cp.C_zz.row(v).cwiseAbs().maxCoeff() / c.C_zz.cwiseAbs().maxCoeff());
+              C.row(v).cwiseAbs().maxCoeff() / c.C_zz.cwiseAbs().maxCoeff());
   // The polygon's area is the disc's, so a hat inside it is removed to round-off of the same rule as D.
   EXPECT_LT(std::abs(cp.area[v]), 1e-12 * c.zone.area[v]);
   EXPECT_LT(std::abs(cp.gap0[v]), 1e-12 * std::abs(c.gap0[v]) + 1e-18);
-  EXPECT_LT(cp.C_zz.row(v).cwiseAbs().maxCoeff(), 1e-10 * c.C_zz.cwiseAbs().maxCoeff());
-  EXPECT_LT(cp.S_p.col(v).cwiseAbs().maxCoeff(), 1e-10 * c.S_p.cwiseAbs().maxCoeff());
+  EXPECT_LT(C.row(v).cwiseAbs().maxCoeff(), 1e-10 * c.C_zz.cwiseAbs().maxCoeff());
+  EXPECT_LT(cp.sp.col(a).cwiseAbs().maxCoeff(), 1e-10 * c.S_p.cwiseAbs().maxCoeff());
 }
 
 TEST(HoleCut, NoJumpWhenAVertexEntersTheHole) {
