@@ -29,10 +29,10 @@ std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<
     s->mirror = std::make_unique<contact::MirrorView>(
         contact::mirror_view(*s->whole, s->source, zone, contact_center(scene), s->zone_radius));
   }
-  std::vector<int> watch_faces, watch_nodes;
+  std::vector<int> watch_faces;
   if (hole_path && scene.contact->sweep) {
     const HoleSweep& sw = *scene.contact->sweep;
-    contact::watch_path(solved, zone, sw.from, sw.to, 0.5 * sw.hole_diameter, watch_faces, watch_nodes);
+    watch_faces = contact::watch_path(solved, zone, sw.from, sw.to, 0.5 * sw.hole_diameter);
   }
   Stopwatch condense_clock;
   s->condensed = std::make_unique<contact::CondensedContact>(contact::condense(

@@ -242,21 +242,10 @@ CutProblem cut_problem(const CondensedContact& c, const HoleCut& cut, bool tange
   return out;
 }
 
-Eigen::MatrixXd cut_zz(const CondensedContact& c, const CutProblem& p) {
-  Eigen::MatrixXd C = c.C_zz;
-  for (size_t a = 0; a < p.rows.size(); ++a) {
-    C.row(p.rows[a]) = p.zz.row(a);
-    C.col(p.rows[a]) = p.zz.row(a).transpose();
-  }
-  return C;
-}
-
-Eigen::MatrixXd cut_zt(const CondensedContact& c, const CutProblem& p) {
-  Eigen::MatrixXd C = c.C_zt;
-  for (size_t a = 0; a < p.rows.size(); ++a) {
-    C.row(p.rows[a]) = p.zt_rows.row(a);
-    C.col(p.rows[a]) = p.zt_cols.row(a).transpose();
-  }
+Eigen::MatrixXd patched(Eigen::MatrixXd C, const std::vector<int>& rows, const Eigen::MatrixXd& new_rows,
+                        const Eigen::MatrixXd& new_cols) {
+  for (size_t a = 0; a < rows.size(); ++a) C.row(rows[a]) = new_rows.row(a);
+  for (size_t a = 0; a < rows.size(); ++a) C.col(rows[a]) = new_cols.row(a).transpose();
   return C;
 }
 

@@ -56,8 +56,9 @@ struct CutProblem {
   Eigen::VectorXd gap0, area;  // n: outside the hole
 };
 CutProblem cut_problem(const CondensedContact& c, const HoleCut& cut, bool tangential);
-// The full n × n matrices of a cut problem: C_zz with the rows and columns T replaced; C_zt likewise.
-Eigen::MatrixXd cut_zz(const CondensedContact& c, const CutProblem& p);
-Eigen::MatrixXd cut_zt(const CondensedContact& c, const CutProblem& p);
+// C (n × n) with its rows `rows` replaced by new_rows (|rows| × n), then its columns by new_colsᵀ: how a cut
+// problem's patch becomes a full matrix (patched(C_zz, p.rows, p.zz, p.zz); C_zt with zt_rows, zt_cols).
+Eigen::MatrixXd patched(Eigen::MatrixXd C, const std::vector<int>& rows, const Eigen::MatrixXd& new_rows,
+                        const Eigen::MatrixXd& new_cols);
 
 }  // namespace skinfem::contact

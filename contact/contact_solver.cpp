@@ -334,14 +334,15 @@ ContactResult ContactSolver::solve(FrictionMode mode, const HoleCut& cut,
   // in the multipliers' force per unit remaining hat, so a nearly covered hat keeps a well-scaled row.
   constexpr double kGone = 1e-9;
   const bool exponential = load_.interface.law == InterfaceLaw::exponential;
+  // Share of each hat outside the hole (exactly 1 where the hole does not reach).
+  const Eigen::VectorXd outside = (area.array() / c_.zone.area.array()).max(0.0).matrix();
   std::vector<char> ex(n, 0);
   Eigen::VectorXd scale = Eigen::VectorXd::Ones(n);
   for (int i = 0; i < n; ++i) {
-    const double share = area[i] / c_.zone.area[i];
-    if (share < kGone)
+    if (outside[i] < kGone)
       ex[i] = 1;
     else if (!exponential)
-      scale[i] = 1 / share;
+      scale[i] = 1 / outside[i];
   }
   Eigen::VectorXd m = area;
   for (int i = 0; i < n; ++i)
@@ -352,15 +353,9 @@ ContactResult ContactSolver::solve(FrictionMode mode, const HoleCut& cut,
   // everything else is bit for bit the stored problem's, so it is solved on its reference factorization
   // with T removed and re-added (ContactLcp::solve_changed; hole_sweep sets the reference).
   const ContactLcp& base = lcp(solved_ratio);
-  Eigen::MatrixXd M2 = base.matrix();
-  for (int a = 0; a < t; ++a) {
-    M2.row(T[a]) = cp.zz.row(a);
-    if (solved_ratio != 0) M2.row(T[a]) += solved_ratio * cp.zt_rows.row(a);
-  }
-  for (int a = 0; a < t; ++a) {
-    M2.col(T[a]) = cp.zz.row(a).transpose();
-    if (solved_ratio != 0) M2.col(T[a]) += solved_ratio * cp.zt_cols.row(a).transpose();
-  }
+  Eigen::MatrixXd M2 = solved_ratio != 0 ? patched(base.matrix(), T, cp.zz + solved_ratio * cp.zt_rows,
+                                                   cp.zz + solved_ratio * cp.zt_cols)
+                                         : patched(base.matrix(), T, cp.zz, cp.zz);
   std::vector<char> dirty(n, 0);
   for (int a = 0; a < t; ++a) {
     if (load_.interface.law == InterfaceLaw::linear) M2(T[a], T[a]) += area[T[a]] / load_.interface.K;
@@ -386,7 +381,7 @@ ContactResult ContactSolver::solve(FrictionMode mode, const HoleCut& cut,
   if (out.tau != 0) {
     // The shear on the hole-free contact of this mode minus the hole, lumped on the hats.
     const Eigen::VectorXd w = solved_lambda(touched(mode));
-    shear_solved = out.tau * w.cwiseProduct((area.array() / c_.zone.area.array()).max(0.0).matrix());
+    shear_solved = out.tau * w.cwiseProduct(outside);
     out.shear = Eigen::VectorXd::Zero(zone().size());
     for (int i = 0; i < zone().size(); ++i) out.shear[i] = shear_solved[solved_index(i)];
     if (mode != FrictionMode::uncoupled) q2 += zt_times(shear_solved, true);
@@ -414,7 +409,7 @@ ContactResult ContactSolver::solve(FrictionMode mode, const HoleCut& cut,
   for (int i = 0; i < zone().size(); ++i) whole_ex.push_back(ex[solved_index(i)]);
   // Reported per hat as its force over its whole area (λ_i × the share outside the hole): the nodal value
   // of a hat left with a sliver is the sliver's concentrated pressure, unbounded as the sliver vanishes.
-  s.lambda = s.lambda.cwiseProduct((area.array() / c_.zone.area.array()).max(0.0).matrix());
+  s.lambda = s.lambda.cwiseProduct(outside);
   finish(out, s, gap, whole_ex);
   return out;
 }

@@ -17,13 +17,11 @@ double distance_to_segment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, c
 }
 }  // namespace
 
-void watch_path(const TetMesh& m, const MortarZone& zone, const Vec2& from, const Vec2& to, double reach,
-                std::vector<int>& faces, std::vector<int>& nodes) {
-  faces.clear();
-  nodes.clear();
+std::vector<int> watch_path(const TetMesh& m, const MortarZone& zone, const Vec2& from, const Vec2& to,
+                            double reach) {
+  std::vector<int> faces;
   const Eigen::Vector2d a(from[0], from[1]), b(to[0], to[1]);
   reach *= 1 + 1e-3;  // the hole's polygon reaches 1.3e-5 beyond its circle (hole_cover.hpp)
-  std::vector<char> seen(m.num_nodes(), 0);
   for (int f : zone.faces) {
     Eigen::Vector2d v[3];
     for (int k = 0; k < 3; ++k) v[k] = {m.nodes(m.faces(f, k), 0), m.nodes(m.faces(f, k), 1)};
@@ -45,15 +43,9 @@ void watch_path(const TetMesh& m, const MortarZone& zone, const Vec2& from, cons
       if ((c0 >= 0 && c1 >= 0 && c2 >= 0) || (c0 <= 0 && c1 <= 0 && c2 <= 0)) d = 0;
       for (int k = 0; k < 3; ++k) d = std::min(d, distance_to_segment(p, v[k], v[(k + 1) % 3]));
     }
-    if (d > reach) continue;
-    faces.push_back(f);
-    for (int k = 0; k < 6; ++k)
-      if (!seen[m.faces(f, k)]) {
-        seen[m.faces(f, k)] = 1;
-        nodes.push_back(m.faces(f, k));
-      }
+    if (d <= reach) faces.push_back(f);
   }
-  std::sort(nodes.begin(), nodes.end());
+  return faces;
 }
 
 HoleCut hole_cut(const PathCompliance& path, int n_c, const Hole& hole) {

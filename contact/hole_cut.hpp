@@ -55,10 +55,10 @@ struct PathCompliance {
   int block_solves = 0;
 };
 
-// The top faces of `zone` within `reach` (mm, in the (x, y) plane) of the segment from → to, and their
-// P2 nodes: where a hole of radius ≤ reach swept along it can cut.
-void watch_path(const TetMesh& mesh, const MortarZone& zone, const Vec2& from, const Vec2& to, double reach,
-                std::vector<int>& faces, std::vector<int>& nodes);
+// The top faces of `zone` within `reach` (mm, in the (x, y) plane) of the segment from → to: where a hole
+// of radius ≤ reach swept along it can cut (condense watches their P2 nodes).
+std::vector<int> watch_path(const TetMesh& mesh, const MortarZone& zone, const Vec2& from, const Vec2& to,
+                            double reach);
 
 struct HoleCut {
   Eigen::SparseMatrix<double, Eigen::RowMajor> B;  // n_c × n_w: ∫_H ψ_i φ_k, mm²

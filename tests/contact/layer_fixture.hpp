@@ -57,10 +57,10 @@ inline void condense_layer(CondensedLayer& x, Scene scene) {
   x.indenter = std::make_unique<contact::Indenter>(s, x.mesh);
   const auto zone = contact::mortar_zone(x.mesh, {0, 0}, s.contact->zone_radius);
   // With a sweep, the nodes its hole can reach are condensed too (contact/hole_cut.hpp).
-  std::vector<int> faces, nodes;
+  std::vector<int> faces;
   if (s.contact->sweep)
-    contact::watch_path(x.mesh, zone, s.contact->sweep->from, s.contact->sweep->to,
-                        0.5 * s.contact->sweep->hole_diameter, faces, nodes);
+    faces = contact::watch_path(x.mesh, zone, s.contact->sweep->from, s.contact->sweep->to,
+                                0.5 * s.contact->sweep->hole_diameter);
   x.condensed = std::make_unique<contact::CondensedContact>(
       contact::condense(*x.model, zone, *x.indenter, s.sensors, {1, 0}, {}, faces));
 }

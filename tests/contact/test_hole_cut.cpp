@@ -56,7 +56,8 @@ TEST(HoleCut, CutMatricesEqualFullSolvesOfTheCutLoads) {
   for (const Hole& hole : {Hole{{0.23, 0.07}, 0.5}, Hole{{0.4, 0.0}, 0.5}}) {
     const HoleCut cut = hole_cut(*c.path, c.zone.size(), hole);
     const CutProblem cp = cut_problem(c, cut, true);
-    const Eigen::MatrixXd cut_C_zz = cut_zz(c, cp), cut_C_zt = cut_zt(c, cp);
+    const Eigen::MatrixXd cut_C_zz = patched(c.C_zz, cp.rows, cp.zz, cp.zz),
+                          cut_C_zt = patched(c.C_zt, cp.rows, cp.zt_rows, cp.zt_cols);
     const auto D = cut_rows(c, cut);
     const int N = f.mesh.num_nodes(), n = c.zone.size();
     std::vector<int> rows;
@@ -166,7 +167,7 @@ TEST(HoleCut, AFullyCoveredHatDropsOutWithItsRow) {
     if ((xy(i) - Eigen::Vector2d(0.4, 0)).norm() < (xy(v) - Eigen::Vector2d(0.4, 0)).norm()) v = i;
   const HoleCut cut = hole_cut(*c.path, c.zone.size(), Hole{{xy(v).x(), xy(v).y()}, 1.6});
   const CutProblem cp = cut_problem(c, cut, true);
-  const Eigen::MatrixXd C = cut_zz(c, cp);
+  const Eigen::MatrixXd C = patched(c.C_zz, cp.rows, cp.zz, cp.zz);
   const int a = static_cast<int>(std::find(cp.rows.begin(), cp.rows.end(), v) - cp.rows.begin());
   ASSERT_LT(a, static_cast<int>(cp.rows.size()));
   std::printf("vertex %d at (%.3f, %.3f): area outside the hole %.2e of %.3f mm2, row %.2e of max C\n", v,

@@ -57,9 +57,8 @@ Side condensed_side(const Scene& s, const TetMesh& m) {
   x.model = std::make_unique<ElasticModel>(m, s.material, s.geometry.side, std::vector<Punch>{});
   x.indenter = std::make_unique<Indenter>(s, m);
   const auto zone = mortar_zone(m, contact_center(s), s.contact->zone_radius);
-  std::vector<int> faces, nodes;
   const HoleSweep sw = test_sweep();
-  watch_path(m, zone, sw.from, sw.to, 0.5 * sw.hole_diameter, faces, nodes);
+  const std::vector<int> faces = watch_path(m, zone, sw.from, sw.to, 0.5 * sw.hole_diameter);
   x.condensed =
       std::make_unique<CondensedContact>(condense(*x.model, zone, *x.indenter, s.sensors, {1, 0}, {}, faces));
   return x;
