@@ -8,14 +8,14 @@
 //
 // Errors are against the Richardson limit of the three finest levels (validation/richardson.hpp: Q = Q∞ + C
 // sᵖ through them, p the observed order); when the differences change sign or grow, or p exceeds what P2–P1
-// can give (app/chain_level.hpp's kMaxPlausibleOrder), there is no asymptotic regime yet: the finest level is
-// the reference and its own error is not given. The seconds of a quantity are those of
-// every stage it needs (mesh, assemble, factor, then adjoints, condensation, sweep). Writes
-// DIR/chain_study.csv (stage,level,dofs,seconds,error; read by scripts/figures.py for the Pareto plot) and
-// DIR/chain_study.json (every level's values, stage times, orders and limits).
+// can give (pipeline/chain_level.hpp's kMaxPlausibleOrder), there is no asymptotic regime yet: the finest
+// level is the reference and its own error is not given. The seconds of a quantity are those of every stage
+// it needs (mesh, assemble, factor, then adjoints, condensation, sweep). Writes DIR/chain_study.csv
+// (stage,level,dofs,seconds,error; read by scripts/figures.py for the Pareto plot) and DIR/chain_study.json
+// (every level's values, stage times, orders and limits).
 #include <cstdio>
 
-#include "app/chain_level.hpp"
+#include "app/chain_study.hpp"
 #include "app/commands.hpp"
 #include "app/common.hpp"
 

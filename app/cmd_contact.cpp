@@ -2,7 +2,8 @@
 // with the skin, frictionless or with friction (static residual, uncoupled or coupled sliding), on one
 // factorization condensed onto the contact multipliers. All four friction modes are solved (each a
 // small dense complementarity problem once the skin is condensed); the chosen one is written in full. A
-// mirror-symmetric scene (app/symmetry.hpp) is solved on its half y ≥ 0 at half the force and written whole.
+// mirror-symmetric scene (pipeline/symmetry.hpp) is solved on its half y ≥ 0 at half the force and written
+// whole.
 //
 //   $ skinfem contact scenes/hertz_layer.json --out out/hertz
 //   contact hertz_layer (none): 0.8000 N normal, 0.0000 N tangential; a = 2.4776 mm, p0 = 63.74 kPa, ...
@@ -21,13 +22,13 @@
 
 #include "app/commands.hpp"
 #include "app/common.hpp"
-#include "app/contact_setup.hpp"
 #include "app/stages.hpp"
-#include "app/symmetry.hpp"
 #include "contact/hole_cover.hpp"
 #include "contact/metrics.hpp"
 #include "contact/pressure_map.hpp"
 #include "fem/fields.hpp"
+#include "pipeline/contact_setup.hpp"
+#include "pipeline/symmetry.hpp"
 
 namespace skinfem::app {
 

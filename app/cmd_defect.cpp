@@ -2,7 +2,7 @@
 // full contact solve at every position, static (residual traction, static_ratio/μ of the sliding one) and
 // sliding (coupled, with the scene's friction law: Coulomb μp, a shear strength τ0 or both; docs/contact.md).
 // ς = sensor reading with the hole − without, for every sensor and position. A hole path on y = 0 in a
-// mirror-symmetric scene is solved on the half y ≥ 0 (app/symmetry.hpp), frames written whole.
+// mirror-symmetric scene is solved on the half y ≥ 0 (pipeline/symmetry.hpp), frames written whole.
 //
 //   $ skinfem defect scenes/candelier2011.json --out out/defect
 //   defect candelier2011: 2 × 201 positions, 0.9 ms per position; ...
@@ -19,10 +19,10 @@
 
 #include "app/commands.hpp"
 #include "app/common.hpp"
-#include "app/contact_setup.hpp"
 #include "app/stages.hpp"
 #include "contact/hole_sweep.hpp"
 #include "contact/pressure_map.hpp"
+#include "pipeline/contact_setup.hpp"
 #include "validation/hole_budget.hpp"
 
 namespace skinfem::app {

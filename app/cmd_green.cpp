@@ -4,8 +4,8 @@
 //   green candelier2011: 10 sensors × 4 components, 40 adjoint solves on 101342 DOFs (the half y >= 0:
 //   mirror symmetry); 10.3 s (factor 5.8 s), peak 1113 MB
 //
-// A scene symmetric about y = 0 is solved on its half (app/symmetry.hpp); the maps are written on the whole
-// top. The scene's calibration load (a disc of calibration.punch_diameter with the rigid-punch profile,
+// A scene symmetric about y = 0 is solved on its half (pipeline/symmetry.hpp); the maps are written on the
+// whole top. The scene's calibration load (a disc of calibration.punch_diameter with the rigid-punch profile,
 // pressed normally or sheared along +x) is scanned along x through each sensor (y offset 0) at
 // calibration.spacing over |offset| ≤ calibration.scan_half_width (default 4h), kept on the skin's footprint.
 // Writes DIR/green.csv (sensor,component,offset_x_mm,offset_y_mm,g_point_per_mm2,g_disc_per_mm2, and
@@ -13,15 +13,14 @@
 // (top surface; point data g_<ab>_sensorNN_per_mm2: the sensor-disc reading for a unit point force at that
 // surface point) and DIR/summary.json (DOFs, adjoint solves, reciprocity check, timings, memory; on a cap
 // solved in 3D, meridian_check: its sensor on the cap's axis against the meridian path,
-// app/sensor_greens.hpp). With --grid DX: DIR/kernel.h5 and DIR/kernel.vti, every sensor's four disc-reading
-// components on a regular grid of spacing DX over the top's bounding box (green/kernel_grid.hpp; the README
-// loads it with h5py).
+// pipeline/sensor_greens.hpp). With --grid DX: DIR/kernel.h5 and DIR/kernel.vti, every sensor's four
+// disc-reading components on a regular grid of spacing DX over the top's bounding box (green/kernel_grid.hpp;
+// the README loads it with h5py).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 
-#include "app/adjoint_setup.hpp"
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "app/stages.hpp"
@@ -31,6 +30,7 @@
 #include "mesh/shape.hpp"
 #include "mesh/surface.hpp"
 #include "mesh/vtu.hpp"
+#include "pipeline/adjoint_setup.hpp"
 
 namespace skinfem::app {
 

@@ -10,19 +10,19 @@
 //   k_lsq_line = least-squares fit of g_k(x, 0) = k·g_half(√k x, 0) to g_zz along y = 0 over |x| ≤ 3h,
 //                uniform weight in x, with g_half the Boussinesq value at depth h.
 // The Green tensor comes from adjoint solves (reciprocity): on the meridian where the skin is a body of
-// revolution with every sensor on its axis (app/sensor_greens.hpp; --path auto, the default), else on the 3D
-// mesh; flat scenes are also compared with the exact layer solution (Hankel transforms). Writes
+// revolution with every sensor on its axis (pipeline/sensor_greens.hpp; --path auto, the default), else on
+// the 3D mesh; flat scenes are also compared with the exact layer solution (Hankel transforms). Writes
 // DIR/kfit.json.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "app/adjoint_setup.hpp"
 #include "app/commands.hpp"
 #include "app/common.hpp"
-#include "app/sensor_greens.hpp"
 #include "app/stages.hpp"
 #include "green/calibration.hpp"
+#include "pipeline/adjoint_setup.hpp"
+#include "pipeline/sensor_greens.hpp"
 
 namespace skinfem::app {
 

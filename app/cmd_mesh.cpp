@@ -9,12 +9,12 @@
 
 #include "app/commands.hpp"
 #include "app/common.hpp"
-#include "app/resources.hpp"
 #include "app/stages.hpp"
 #include "mesh/build.hpp"
 #include "mesh/quality.hpp"
 #include "mesh/shape.hpp"
 #include "mesh/vtu.hpp"
+#include "pipeline/resources.hpp"
 
 namespace skinfem::app {
 

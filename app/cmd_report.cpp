@@ -5,8 +5,8 @@
 //   report candelier2011: 101342 DOFs, one factorization for the chain and 2 coarser for the error bars;
 //   50.3 s, peak 1407 MB
 //
-// A scene mirror-symmetric about y = 0, contact included (app/symmetry.hpp), is solved on its half y ≥ 0 and
-// every output is written for the whole skin (mesh.vtu, maps, pressure, fields).
+// A scene mirror-symmetric about y = 0, contact included (pipeline/symmetry.hpp), is solved on its half y ≥ 0
+// and every output is written for the whole skin (mesh.vtu, maps, pressure, fields).
 //
 // Stages, each writing its own folder under DIR (default out/<scene name>): mesh/ (mesh.vtu, boundary.vtu),
 // green/ (green.csv, green_maps.vtp), kfit/ (kfit.json, and k_sweep.csv: the exact layer's k as each reading
@@ -24,13 +24,13 @@
 #include <optional>
 #include <sstream>
 
-#include "app/chain_level.hpp"
+#include "app/chain_study.hpp"
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "app/stages.hpp"
-#include "app/symmetry.hpp"
 #include "green/kfit.hpp"
 #include "mesh/mirror.hpp"
+#include "pipeline/symmetry.hpp"
 #include "validation/crosscheck.hpp"
 #include "validation/k_sweep.hpp"
 
@@ -196,7 +196,7 @@ nlohmann::json k_paper_answer(const Scene& scene, double h,
   return j;
 }
 
-// The chain's quantities with their error bars (app/chain_level.hpp), in display units.
+// The chain's quantities with their error bars (pipeline/chain_level.hpp), in display units.
 nlohmann::json error_bars(const std::vector<ChainError>& errors, const std::vector<double>& coarse_scales) {
   struct Display {
     const char* name;
@@ -527,7 +527,7 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
   wall["k_sweep"] = clock.seconds();
 
   clock = Stopwatch();
-  const std::string script = std::string(SKINFEM_SOURCE_DIR) + "/scripts/figures.py";
+  const std::string script = figures_script();
   progress("figures: " + script);
   const int rc = run_child({"/usr/bin/python3", script, out_dir});
   report["figures_exit_code"] = rc;

@@ -21,15 +21,15 @@
 #include <cstdio>
 #include <sstream>
 
-#include "app/adjoint_setup.hpp"
 #include "app/commands.hpp"
 #include "app/common.hpp"
-#include "app/resources.hpp"
 #include "green/calibration.hpp"
 #include "green/layer_exact.hpp"
 #include "mesh/build.hpp"
 #include "mesh/scale_ridges.hpp"
 #include "mesh/surface.hpp"
+#include "pipeline/adjoint_setup.hpp"
+#include "pipeline/resources.hpp"
 #include "validation/richardson.hpp"
 
 namespace skinfem::app {

@@ -12,13 +12,13 @@
 #include <cstdio>
 #include <sstream>
 
-#include "app/adjoint_setup.hpp"
 #include "app/commands.hpp"
 #include "app/common.hpp"
-#include "app/resources.hpp"
 #include "fem/elastic_model.hpp"
 #include "fem/fields.hpp"
 #include "mesh/build.hpp"
+#include "pipeline/adjoint_setup.hpp"
+#include "pipeline/resources.hpp"
 #include "validation/load_metrics.hpp"
 
 namespace skinfem::app {

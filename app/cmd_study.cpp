@@ -13,7 +13,8 @@
 
 #include "app/commands.hpp"
 #include "app/common.hpp"
-#include "app/resources.hpp"
+#include "mesh/sizing.hpp"
+#include "pipeline/resources.hpp"
 #include "scene/load.hpp"
 #include "validation/refinement_study.hpp"
 
@@ -21,17 +22,10 @@ namespace skinfem::app {
 
 int run_study(const Scene& scene, const std::string& out_dir, const std::vector<double>& scales) {
   check_output_dir(out_dir);
-  Scene finest = scene;  // the study scales h_min and h_max (validation/refinement_study.hpp)
-  const double s_min = *std::min_element(scales.begin(), scales.end());
-  finest.mesh.h_min *= s_min;
-  finest.mesh.h_max *= s_min;
-  check_resources(finest, g_max_dofs);
-  for (double sc : scales) {  // the coarsest levels must still fit their loads on the skin
-    Scene level = scene;
-    level.mesh.h_min *= sc;
-    level.mesh.h_max *= sc;
-    check_load_placement(level, "--scales " + std::to_string(sc).substr(0, 6));
-  }
+  // The study's levels are scaled_scene's (mesh/sizing.hpp).
+  check_resources(scaled_scene(scene, *std::min_element(scales.begin(), scales.end())), g_max_dofs);
+  for (double sc : scales)  // the coarsest levels must still fit their loads on the skin
+    check_load_placement(scaled_scene(scene, sc), "--scales " + std::to_string(sc).substr(0, 6));
   const std::vector<SolverKind> solvers{SolverKind::direct_ldlt, SolverKind::schur_cg};
   const StudyResult study = refinement_study(scene, scales, solvers, progress);
 

@@ -4,16 +4,17 @@
 #include <string>
 #include <vector>
 
-#include "app/sensor_greens.hpp"
 #include "fem/mixed_solver.hpp"
+#include "pipeline/sensor_greens.hpp"
 #include "scene/scene.hpp"
 
 namespace skinfem::app {
 
 int run_mesh(const Scene& scene, const std::string& out_dir);
 int run_solve(const Scene& scene, const std::string& out_dir, SolverKind solver);
-int run_green(const Scene& scene, const std::string& out_dir, double grid_dx, GreenPath path);
-int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& load, GreenPath path);
+int run_green(const Scene& scene, const std::string& out_dir, double grid_dx, pipeline::GreenPath path);
+int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& load,
+             pipeline::GreenPath path);
 int run_contact(const Scene& scene, const std::string& out_dir, const std::string& friction);
 int run_defect(const Scene& scene, const std::string& out_dir);
 // error_scales: coarser mesh levels (every size × s, s > 1) for the headline numbers' error bars; empty:

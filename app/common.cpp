@@ -1,7 +1,6 @@
 #include "app/common.hpp"
 
 #include <spawn.h>
-#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -83,12 +82,6 @@ void check_levels(const std::string& option, const std::vector<double>& levels, 
   }
 }
 
-double peak_rss_mb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.0;  // ru_maxrss is in KiB on Linux
-}
-
 void progress(const std::string& message) { std::cerr << "[skinfem] " << message << std::endl; }
 
 void progress_step(const std::string& stage, int done, int total, double elapsed_s) {
@@ -106,11 +99,15 @@ nlohmann::json scene_json(const Scene& scene) {
           {"sensors", scene.sensors.positions.size()}};
 }
 
-double total_seconds(const nlohmann::json& wall) {
-  double t = 0;
-  for (const auto& [stage, seconds] : wall.items())
-    if (seconds.is_number()) t += seconds.get<double>();
-  return t;
+std::string figures_script() {
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const std::filesystem::path installed = exe.parent_path() / ".." / "share" / "skinfem" / "figures.py";
+    if (std::filesystem::exists(installed, ec))
+      return std::filesystem::weakly_canonical(installed, ec).string();
+  }
+  return std::string(SKINFEM_SOURCE_DIR) + "/scripts/figures.py";
 }
 
 }  // namespace skinfem::app

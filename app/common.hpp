@@ -1,14 +1,17 @@
 // Shared plumbing of the skinfem subcommands: output files, timing, memory, progress.
 #pragma once
 
-#include <chrono>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "pipeline/clock.hpp"
 #include "scene/scene.hpp"
 
 namespace skinfem::app {
+
+// The front end calls the pipeline (pipeline/) by its unqualified names.
+using namespace skinfem::pipeline;
 
 // Fails early (before any computation) when DIR could not be created or written; creates nothing.
 void check_output_dir(const std::string& dir);
@@ -28,26 +31,15 @@ int run_child(const std::vector<std::string>& argv);
 // error, would be the wrong one. Throws SceneError naming the option and the offending value.
 void check_levels(const std::string& option, const std::vector<double>& levels, bool decreasing);
 
-double peak_rss_mb();
-// Sum of the numbers in a {"stage": seconds} object.
-double total_seconds(const nlohmann::json& wall);
-
-class Stopwatch {
- public:
-  Stopwatch() : start_(std::chrono::steady_clock::now()) {}
-  double seconds() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
-
- private:
-  std::chrono::steady_clock::time_point start_;
-};
-
 // "[skinfem] stage…" on stderr, so stdout stays the human summary.
 void progress(const std::string& message);
 // "[skinfem] stage: done/total (P %, S s)".
 void progress_step(const std::string& stage, int done, int total, double elapsed_s);
 
 nlohmann::json scene_json(const Scene& scene);
+
+// scripts/figures.py: installed beside the command (../share/skinfem/figures.py from its directory), else
+// the source tree's (a build tree's command).
+std::string figures_script();
 
 }  // namespace skinfem::app

@@ -7,13 +7,18 @@
 
 #include "app/commands.hpp"
 #include "app/common.hpp"
-#include "app/resources.hpp"
 #include "mesh/surface.hpp"
+#include "pipeline/progress.hpp"
+#include "pipeline/resources.hpp"
 #include "scene/load.hpp"
 
 int main(int argc, char** argv) {
+  skinfem::pipeline::set_progress_sink(skinfem::app::progress);
   CLI::App cli{"skinfem: FE verification toolkit for biomimetic tactile sensors (units: mm, N, MPa)"};
   cli.require_subcommand(1);
+  cli.set_version_flag(
+      "--version", [] { return "skinfem " SKINFEM_VERSION "\nfigures: " + skinfem::app::figures_script(); },
+      "print the version and the figure script the report runs, and exit");
   std::string scene_path, out_dir = "out";
 
   auto* mesh =
@@ -128,7 +133,7 @@ int main(int argc, char** argv) {
                                     ": a level must give at least 3 mesh elements per ridge period");
     }
     if (report->parsed() && !no_error_bars) skinfem::app::check_levels("--error-scales", error_scales, true);
-    skinfem::app::g_max_dofs = max_dofs;
+    skinfem::pipeline::g_max_dofs = max_dofs;
     const skinfem::Scene scene = skinfem::load_scene(scene_path);
     if (mesh->parsed()) return skinfem::app::run_mesh(scene, out_dir);
     const auto solver =

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "app/adjoint_setup.hpp"
-#include "app/contact_setup.hpp"
-#include "app/sensor_greens.hpp"
 #include "contact/hole_sweep.hpp"
+#include "pipeline/adjoint_setup.hpp"
+#include "pipeline/contact_setup.hpp"
+#include "pipeline/sensor_greens.hpp"
 #include "validation/crosscheck.hpp"
 
 namespace skinfem::app {

@@ -61,7 +61,7 @@ struct ContactResult {
 // gap0 and area are halved) and one off the cut stands for itself and its image, so the half's problem at
 // half the force is the whole one restricted to symmetric λ; with a P-matrix its solution is unique, hence
 // symmetric, so the two agree (tests/contact/test_mirror_contact.cpp). Needs the indenter, its holes and
-// the sliding direction symmetric too (app/symmetry.hpp).
+// the sliding direction symmetric too (pipeline/symmetry.hpp).
 struct MirrorView {
   MortarZone zone;        // on the whole mesh
   std::vector<int> half;  // zone.size(): the half's multiplier each whole one is or mirrors

@@ -1,5 +1,6 @@
-// Symmetric-indefinite sparse LDLᵀ with pivoting (MUMPS 5, sequential, AMF ordering): factor once,
-// then each right-hand side costs one forward/back substitution. Not copyable; not thread-safe.
+// Symmetric-indefinite sparse LDLᵀ with pivoting (MUMPS 5, sequential; PORD ordering, approximate minimum
+// fill below 5000 unknowns: mumps_ldlt.cpp): factor once, then each right-hand side costs one forward/back
+// substitution. Not copyable; not thread-safe.
 #pragma once
 
 #include <Eigen/Sparse>

@@ -87,4 +87,27 @@ double SizingField::in_volume(double x, double y, double z) const {
   return at(x, y, shape_ ? std::max(0.0, shape_->top_z(x, y) - z) : 0.0);
 }
 
+Scene scaled_scene(const Scene& base, double s, bool cap_holes) {
+  Scene scene = base;
+  scene.mesh.sensor_h = sensor_mesh_size(base) * s;
+  scene.mesh.h_min *= s;
+  scene.mesh.h_max *= s;
+  scene.mesh.growth = 1 + s * (scene.mesh.growth - 1);
+  for (auto& r : scene.mesh.regions) r.h *= s;
+  if (scene.contact) {
+    scene.contact->h = contact_zone_h(base) * s;
+    for (auto& hole : scene.contact->holes) hole.h *= s;
+    if (scene.contact->sweep) scene.contact->sweep->h *= s;
+  }
+  if (scene.contact && cap_holes) {
+    // The scene rule: the mesh over a hole at most its diameter.
+    const auto cap = [&scene](double& h, double diameter) {
+      if (hole_mesh_h(scene, h) > diameter) h = diameter;
+    };
+    for (auto& hole : scene.contact->holes) cap(hole.h, hole.diameter);
+    if (scene.contact->sweep) cap(scene.contact->sweep->h, scene.contact->sweep->hole_diameter);
+  }
+  return scene;
+}
+
 }  // namespace skinfem

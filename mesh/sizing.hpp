@@ -29,6 +29,13 @@ namespace skinfem {
 // mesh.sensor_h, or its default min(h_min, disc radius) (h_min for point sensors), mm.
 double sensor_mesh_size(const Scene& scene);
 
+// The scene with every mesh size scaled by s: h_min, h_max, the sensor discs, regions, the contact zone,
+// holes and the hole path, and the grading growth − 1 (at distance d the target is h + (g − 1)d, so the
+// grading scales too). Every study's levels are this one family (`study`, `study --chain`, the
+// report's error bars). cap_holes: the mesh over each hole at most its diameter, for a coarse level whose
+// hole the scaled mesh cannot see.
+Scene scaled_scene(const Scene& base, double s, bool cap_holes = false);
+
 class SizingField {
  public:
   // Through regions: mesh.regions, every punch and traction patch. Top regions, with a contact: the candidate

@@ -24,7 +24,7 @@
 //                  "patches"*: [{"center", "diameter", "direction": [x, y, z], "force"}]}
 //   calibration*  {"punch_diameter"*, "scan_half_width"*, "spacing"*}
 //   symmetry*     "auto" (default): mesh only the half y >= 0 where the scene is mirror-symmetric about y = 0
-//                 and the command supports it (app/symmetry.hpp) | "none": always the whole skin
+//                 and the command supports it (pipeline/symmetry.hpp) | "none": always the whole skin
 //   contact*      {"indenter": {"type": "plane"} | {"type": "sphere", "R": <mm, > 0>, "center": [x, y]},
 //                  "force": <N> | "depth": <mm>,     exactly one, > 0: total normal force, or rigid approach
 //                                                    from first touch

@@ -38,7 +38,7 @@ Vec2 contact_center(const Scene& scene) {
 //    inside must come back up inside, ∫(δ − r²/2R) dA = 0 over r < a, a² = 4 R δ. Thicker layers lie between
 //    that and Hertz (a² = R δ); a compressible thin layer (Winkler-like) tends to the intersection, 2 R δ.
 // Why the 25 % margin: the multipliers must cover the whole contact and a ring of free vertices around it
-// (the command checks that the solved contact stays one element inside its edge, app/contact_setup.cpp);
+// (the command checks that the solved contact stays one element inside its edge, pipeline/contact_setup.cpp);
 // sliding friction shifts the pressure forwards and enlarges the contact on the leading side.
 std::optional<double> equivalent_sphere_radius(const Scene& scene) {
   const ContactLoad& c = *scene.contact;

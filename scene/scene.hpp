@@ -150,8 +150,8 @@ struct Loads {
 // diameter, unit total force, scanned along x through the sensors.
 struct Calibration {
   double punch_diameter = 0.5;  // mm
-  double scan_half_width = 0;   // mm, |offset| range; 0 → 4 h; kept on the skin (app/adjoint_setup.hpp)
-  double spacing = 0.05;        // mm
+  double scan_half_width = 0;  // mm, |offset| range; 0 → 4 h; kept on the skin (pipeline/adjoint_setup.hpp)
+  double spacing = 0.05;       // mm
 };
 
 // Unilateral contact of a rigid indenter with the skin's top (contact/). The indenter's lower surface is
@@ -160,7 +160,7 @@ struct Calibration {
 // radius R centred above `center`. Holes are discs where the indenter is absent (deep holes: the skin never
 // reaches their bottom).
 enum class IndenterKind { plane, sphere };
-// How the tangential traction of a sliding or resting plate enters (contact/friction.hpp):
+// How the tangential traction of a sliding or resting plate enters (contact/contact_solver.hpp):
 //   none: frictionless; static: p_t = static_ratio·p_z; uncoupled: frictionless pressure, then p_t = μ p_z
 //   added (the paper's assumption); coupled: p_t = μ p_z acting while pressure and zone are solved.
 enum class FrictionMode { none, static_residual, uncoupled, coupled };
@@ -219,7 +219,8 @@ struct ContactLoad {
   std::optional<HoleSweep> sweep;
 };
 
-// Whether a mirror-symmetric scene may be solved on its half (app/symmetry.hpp decides where it applies).
+// Whether a mirror-symmetric scene may be solved on its half (pipeline/symmetry.hpp decides where it
+// applies).
 enum class SymmetryUse { automatic, none };
 
 struct Scene {

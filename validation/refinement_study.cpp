@@ -35,13 +35,7 @@ StudyResult refinement_study(const Scene& base_scene, const std::vector<double>&
     throw std::invalid_argument("refinement study needs a load in the scene");
   StudyResult out;
   for (double scale : scales) {
-    Scene scene = base_scene;
-    // Every size scales: at distance d the target is h + (g − 1)d, so the grading g − 1 scales too.
-    scene.mesh.sensor_h = sensor_mesh_size(base_scene) * scale;
-    scene.mesh.h_min *= scale;
-    scene.mesh.h_max *= scale;
-    scene.mesh.growth = 1 + scale * (scene.mesh.growth - 1);
-    for (auto& r : scene.mesh.regions) r.h *= scale;
+    const Scene scene = scaled_scene(base_scene, scale);
     StudyLevel level;
     level.scale = scale;
     auto t0 = std::chrono::steady_clock::now();

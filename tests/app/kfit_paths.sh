@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# kfit's and green's two Green tensor paths (app/sensor_greens.hpp):
+# kfit's and green's two Green tensor paths (pipeline/sensor_greens.hpp):
 # - the flat layer goes the meridian way by default and gives k_central and k_lsq_line within 1e-4 of the exact
 #   layer (measured 6e-6 and 5e-5; tests/green/test_meridian's convergence study), with the change from half
 #   resolution, which bounds that error, reported beside them;

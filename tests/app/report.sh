@@ -81,7 +81,7 @@ for q in ["k_central", "k_lsq_line", "contact_radius", "contact_p0", "indentatio
     v, e = eb[q]["value"], eb[q]["error"]
     if not (math.isfinite(v) and math.isfinite(e) and e >= 0): bad.append(f"error_bars {q}: {v} +- {e}")
     if not eb[q].get("method"): bad.append(f"error_bars {q} does not say how its error was estimated")
-    # A Richardson bar only where the observed order is one P2-P1 can give (app/chain_level.hpp: at most 4).
+    # A Richardson bar only where the observed order is one P2-P1 can give (pipeline/chain_level.hpp: at most 4).
     m = re.search(r"observed order ([0-9.]+)", eb[q].get("method", ""))
     if "Richardson" in eb[q].get("method", "") and m and float(m.group(1)) > 4: bad.append(f"error_bars {q}: Richardson at implausible order {m.group(1)}")
     # A last-change bar is the change between the two finest levels (relative, so units drop out).

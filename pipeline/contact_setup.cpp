@@ -1,14 +1,15 @@
-#include "app/contact_setup.hpp"
+#include "pipeline/contact_setup.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
-#include "app/common.hpp"
-#include "app/symmetry.hpp"
 #include "mesh/mirror.hpp"
+#include "pipeline/clock.hpp"
+#include "pipeline/progress.hpp"
+#include "pipeline/symmetry.hpp"
 
-namespace skinfem::app {
+namespace skinfem::pipeline {
 
 std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<Skin> skin, bool hole_path) {
   if (!scene.contact)
@@ -68,4 +69,4 @@ void check_zone(const Scene& scene, const ContactSetup& s, const contact::Contac
                      ")" + " mm of the zone's edge; give a larger contact.zone_radius");
 }
 
-}  // namespace skinfem::app
+}  // namespace skinfem::pipeline

@@ -1,11 +1,12 @@
-#include "app/skin_setup.hpp"
+#include "pipeline/skin_setup.hpp"
 
-#include "app/adjoint_setup.hpp"
-#include "app/common.hpp"
-#include "app/resources.hpp"
 #include "mesh/build.hpp"
+#include "pipeline/adjoint_setup.hpp"
+#include "pipeline/clock.hpp"
+#include "pipeline/progress.hpp"
+#include "pipeline/resources.hpp"
 
-namespace skinfem::app {
+namespace skinfem::pipeline {
 
 std::shared_ptr<Skin> skin_setup(const Scene& scene, MeshPart part) {
   Stopwatch clock;
@@ -44,4 +45,4 @@ std::shared_ptr<Skin> factored_skin(const Scene& scene, TetMesh mesh, double mes
   return s;
 }
 
-}  // namespace skinfem::app
+}  // namespace skinfem::pipeline

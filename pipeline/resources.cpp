@@ -1,13 +1,14 @@
-#include "app/resources.hpp"
+#include "pipeline/resources.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "app/common.hpp"
 #include "fem/memory.hpp"
+#include "pipeline/clock.hpp"
+#include "pipeline/progress.hpp"
 
-namespace skinfem::app {
+namespace skinfem::pipeline {
 
 double g_max_dofs = 0;
 
@@ -78,4 +79,4 @@ void check_meshed_dofs(const Scene& scene, const TetMesh& mesh, double max_dofs)
   }
 }
 
-}  // namespace skinfem::app
+}  // namespace skinfem::pipeline

@@ -9,7 +9,7 @@
 #include "mesh/tet_mesh.hpp"
 #include "scene/scene.hpp"
 
-namespace skinfem::app {
+namespace skinfem::pipeline {
 
 struct Skin {
   TetMesh mesh;
@@ -18,9 +18,9 @@ struct Skin {
 };
 
 // Meshes the scene (with its contact zone and hole path refined when it has a contact), whole or its half
-// y ≥ 0 (app/symmetry.hpp), and factors it.
+// y ≥ 0 (pipeline/symmetry.hpp), and factors it.
 std::shared_ptr<Skin> skin_setup(const Scene& scene, MeshPart part = MeshPart::whole);
 // Factors an already meshed skin of the scene (mesh_seconds: what meshing it took, for `wall`).
 std::shared_ptr<Skin> factored_skin(const Scene& scene, TetMesh mesh, double mesh_seconds);
 
-}  // namespace skinfem::app
+}  // namespace skinfem::pipeline

@@ -1,11 +1,12 @@
-#include "app/sensor_greens.hpp"
+#include "pipeline/sensor_greens.hpp"
 
 #include <cmath>
 #include <cstdio>
 
-#include "app/common.hpp"
+#include "pipeline/clock.hpp"
+#include "pipeline/progress.hpp"
 
-namespace skinfem::app {
+namespace skinfem::pipeline {
 
 SensorGreens sensor_greens(const Scene& scene, const AdjointSetup& setup) {
   SensorGreens g;
@@ -205,4 +206,4 @@ std::string meridian_check_line(const nlohmann::json& c) {
   return buf;
 }
 
-}  // namespace skinfem::app
+}  // namespace skinfem::pipeline

@@ -14,7 +14,7 @@
 #include "mesh/tet_mesh.hpp"
 #include "scene/scene.hpp"
 
-namespace skinfem::app {
+namespace skinfem::pipeline {
 
 // Why the scene is not mirror-symmetric about y = 0 (a sentence naming what breaks it), or empty when it is.
 std::string mirror_unavailable(const Scene& scene);
@@ -25,4 +25,4 @@ std::string contact_mirror_unavailable(const Scene& scene);
 // half_y when green_mesh_part is and the contact is symmetric (contact, defect, report).
 MeshPart contact_mesh_part(const Scene& scene);
 
-}  // namespace skinfem::app
+}  // namespace skinfem::pipeline

@@ -8,15 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "app/adjoint_setup.hpp"
-#include "app/contact_setup.hpp"
+#include "pipeline/adjoint_setup.hpp"
+#include "pipeline/contact_setup.hpp"
 
-namespace skinfem::app {
-
-// Every mesh size of the scene scaled by s (h_min, h_max, growth − 1, regions, contact zone, holes, path).
-// cap_holes: the mesh over each hole at most its diameter, for a coarse level whose hole the scaled mesh
-// cannot see.
-Scene scaled_scene(const Scene& base, double s, bool cap_holes = false);
+namespace skinfem::pipeline {
 
 struct ChainLevel {
   double scale = 1;
@@ -43,7 +38,7 @@ ChainLevel chain_level(const Scene& base, double scale);
 // converges at order 3 in displacement and 2 in traction, and the levels are unrelated TetGen meshes, so a
 // steeper fall is a coincidence of their placement. Measured on candelier2011's whole skin: k_central of
 // sensor #1 at order 7.8 gave ± 7e-5, while the axis sensor's k_central on the same mesh was 3.5e-3 off the
-// meridian (app/sensor_greens.hpp's meridian_check).
+// meridian (pipeline/sensor_greens.hpp's meridian_check).
 constexpr double kMaxPlausibleOrder = 4;
 struct ChainError {
   std::string name;
@@ -54,10 +49,4 @@ struct ChainError {
 };
 std::vector<ChainError> chain_errors(const std::vector<ChainLevel>& levels);
 
-// Prints each quantity's order and errors and each stage's time-vs-DOFs exponent, writes
-// DIR/chain_study.csv (stage,level,dofs,seconds,error; the Pareto plot of scripts/figures.py) and
-// DIR/chain_study.json (levels, extrapolation, time_vs_dofs_exponent), and returns the latter.
-nlohmann::json write_chain_study(const Scene& scene, const std::vector<ChainLevel>& levels,
-                                 const std::string& out_dir);
-
-}  // namespace skinfem::app
+}  // namespace skinfem::pipeline

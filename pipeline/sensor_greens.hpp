@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "app/adjoint_setup.hpp"
 #include "green/calibration.hpp"
 #include "green/kernel_grid.hpp"
 #include "green/meridian.hpp"
+#include "pipeline/adjoint_setup.hpp"
 
-namespace skinfem::app {
+namespace skinfem::pipeline {
 
 enum class GreenPath { automatic, full3d, meridian };
 
@@ -69,4 +69,4 @@ nlohmann::json meridian_check(const Scene& scene, int sensor, const green::ScanP
 // One line for stdout, from meridian_check's numbers.
 std::string meridian_check_line(const nlohmann::json& check);
 
-}  // namespace skinfem::app
+}  // namespace skinfem::pipeline

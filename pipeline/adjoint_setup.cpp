@@ -1,15 +1,16 @@
-#include "app/adjoint_setup.hpp"
+#include "pipeline/adjoint_setup.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "app/common.hpp"
-#include "app/symmetry.hpp"
 #include "fem/face_index.hpp"
 #include "mesh/shape.hpp"
+#include "pipeline/clock.hpp"
+#include "pipeline/progress.hpp"
+#include "pipeline/symmetry.hpp"
 
-namespace skinfem::app {
+namespace skinfem::pipeline {
 
 std::unique_ptr<AdjointSetup> adjoint_setup(const Scene& scene, std::shared_ptr<Skin> skin) {
   auto s = std::make_unique<AdjointSetup>(skin ? std::move(skin) : skin_setup(scene, green_mesh_part(scene)));
@@ -81,4 +82,4 @@ double scan_half_width(const Scene& scene, const TetMesh* mesh, double h, const 
   return w;
 }
 
-}  // namespace skinfem::app
+}  // namespace skinfem::pipeline

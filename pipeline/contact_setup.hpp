@@ -1,18 +1,18 @@
-// The common first half of `contact` and `defect`: a meshed and factored skin (shared, app/skin_setup.hpp;
-// the contact zone and hole path refined), and its condensation onto the contact multipliers (block
-// right-hand sides), each stage timed into `wall` (mesh, assemble, factor, condense). A mirror-symmetric
-// scene (app/symmetry.hpp) is solved on its half and seen whole: mesh(), the solver's results and `top`
-// are the mirrored whole skin's.
+// The common first half of `contact` and `defect`: a meshed and factored skin (shared,
+// pipeline/skin_setup.hpp; the contact zone and hole path refined), and its condensation onto the contact
+// multipliers (block right-hand sides), each stage timed into `wall` (mesh, assemble, factor, condense). A
+// mirror-symmetric scene (pipeline/symmetry.hpp) is solved on its half and seen whole: mesh(), the solver's
+// results and `top` are the mirrored whole skin's.
 #pragma once
 
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "app/skin_setup.hpp"
 #include "contact/contact_solver.hpp"
 #include "fem/face_index.hpp"
+#include "pipeline/skin_setup.hpp"
 
-namespace skinfem::app {
+namespace skinfem::pipeline {
 
 struct ContactSetup {
   explicit ContactSetup(std::shared_ptr<Skin> s) : skin(std::move(s)), model(skin->model.get()) {}
@@ -42,4 +42,4 @@ std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<
 // the contact could be larger than the zone allows, so the answer would be wrong.
 void check_zone(const Scene& scene, const ContactSetup& setup, const contact::ContactResult& r);
 
-}  // namespace skinfem::app
+}  // namespace skinfem::pipeline

@@ -1,42 +1,20 @@
-#include "app/chain_level.hpp"
+#include "pipeline/chain_level.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 
-#include "app/common.hpp"
-#include "app/symmetry.hpp"
 #include "contact/hole_sweep.hpp"
 #include "contact/metrics.hpp"
 #include "green/calibration.hpp"
 #include "green/kfit.hpp"
 #include "mesh/sizing.hpp"
+#include "pipeline/clock.hpp"
+#include "pipeline/progress.hpp"
+#include "pipeline/symmetry.hpp"
 #include "validation/richardson.hpp"
 
-namespace skinfem::app {
-
-Scene scaled_scene(const Scene& base, double s, bool cap_holes) {
-  Scene scene = base;
-  scene.mesh.sensor_h = sensor_mesh_size(base) * s;
-  scene.mesh.h_min *= s;
-  scene.mesh.h_max *= s;
-  scene.mesh.growth = 1 + s * (scene.mesh.growth - 1);
-  for (auto& r : scene.mesh.regions) r.h *= s;
-  if (scene.contact) {
-    scene.contact->h = contact_zone_h(base) * s;
-    for (auto& hole : scene.contact->holes) hole.h *= s;
-    if (scene.contact->sweep) scene.contact->sweep->h *= s;
-  }
-  if (scene.contact && cap_holes) {
-    // The scene rule: the mesh over a hole at most its diameter.
-    const auto cap = [&scene](double& h, double diameter) {
-      if (hole_mesh_h(scene, h) > diameter) h = diameter;
-    };
-    for (auto& hole : scene.contact->holes) cap(hole.h, hole.diameter);
-    if (scene.contact->sweep) cap(scene.contact->sweep->h, scene.contact->sweep->hole_diameter);
-  }
-  return scene;
-}
+namespace skinfem::pipeline {
 
 ChainLevel chain_values(const Scene& s, const AdjointSetup& adj, const ContactSetup* c) {
   ChainLevel l;
@@ -133,68 +111,4 @@ std::vector<ChainError> chain_errors(const std::vector<ChainLevel>& levels) {
   return out;
 }
 
-nlohmann::json write_chain_study(const Scene& scene, const std::vector<ChainLevel>& levels,
-                                 const std::string& out_dir) {
-  const size_t n = levels.size();
-  std::ostringstream csv;
-  csv.precision(10);
-  csv << "stage,level,dofs,seconds,error\n";
-  nlohmann::json extrap, jlevels = nlohmann::json::array();
-  for (const ChainLevel& c : levels) {
-    nlohmann::json jl = {
-        {"scale", c.scale}, {"dofs", c.dofs}, {"wall_s", c.wall}, {"peak_rss_mb", c.peak_rss_mb}};
-    for (size_t i = 0; i < c.names.size(); ++i) jl["values"][c.names[i]] = c.value[i];
-    if (!c.note.empty()) jl["note"] = c.note;
-    jlevels.push_back(jl);
-  }
-  const auto errors = chain_errors(levels);
-  for (size_t i = 0; i < errors.size(); ++i) {
-    const ChainError& e = errors[i];
-    extrap[e.name] = {
-        {"observed_order", e.asymptotic ? nlohmann::json(e.order) : nlohmann::json("none: " + e.why_not)},
-        {"reference", e.reference},
-        {"reference_is", e.asymptotic ? "Richardson limit" : "finest level"}};
-    std::printf("%s: %s, reference %.6g; errors", e.name.c_str(),
-                e.asymptotic
-                    ? ("observed order " + std::to_string(e.order)).c_str()
-                    : ("no asymptotic regime (" + e.why_not + "; finest level as reference)").c_str(),
-                e.reference);
-    for (size_t l = 0; l < n; ++l) {
-      const double err = std::abs(levels[l].value[i] - e.reference) / std::abs(e.reference);
-      std::printf(" %.2e", err);
-      if (e.asymptotic || l + 1 < n)
-        csv << e.name << "," << l + 1 << "," << levels[l].dofs << "," << levels[l].seconds[i] << "," << err
-            << "\n";
-    }
-    std::printf("\n");
-  }
-  // Seconds ∝ DOFs^e per stage, over the levels that timed it.
-  nlohmann::json exponents;
-  std::printf("time-vs-DOFs exponent per stage:");
-  for (const auto& [stage, t] : levels.back().wall.items()) {
-    std::vector<double> x, y;
-    for (const ChainLevel& c : levels)
-      if (c.wall.contains(stage) && c.wall[stage].is_number()) {
-        x.push_back(c.dofs);
-        y.push_back(c.wall[stage].get<double>());
-      }
-    const double e = validation::loglog_slope(x, y);
-    if (std::isfinite(e)) {
-      exponents[stage] = e;
-      std::printf(" %s %.2f", stage.c_str(), e);
-    }
-  }
-  std::printf("\n");
-  prepare_output_dir(out_dir);
-  write_text_atomic(out_dir + "/chain_study.csv", csv.str());
-  const nlohmann::json study = {{"scene", scene_json(scene)},
-                                {"levels", jlevels},
-                                {"extrapolation", extrap},
-                                {"time_vs_dofs_exponent", exponents},
-                                {"peak_rss_mb", peak_rss_mb()}};
-  write_json(out_dir + "/chain_study.json", study);
-  std::printf("  wrote %s/chain_study.csv, chain_study.json\n", out_dir.c_str());
-  return study;
-}
-
-}  // namespace skinfem::app
+}  // namespace skinfem::pipeline

@@ -1,8 +1,8 @@
-#include "app/symmetry.hpp"
+#include "pipeline/symmetry.hpp"
 
 #include <cstdio>
 
-namespace skinfem::app {
+namespace skinfem::pipeline {
 
 std::string mirror_unavailable(const Scene& scene) {
   const Geometry& g = scene.geometry;
@@ -52,4 +52,4 @@ MeshPart contact_mesh_part(const Scene& scene) {
              : MeshPart::whole;
 }
 
-}  // namespace skinfem::app
+}  // namespace skinfem::pipeline

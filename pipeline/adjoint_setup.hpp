@@ -1,14 +1,15 @@
-// The common first half of `green` and `kfit`: a meshed and factored skin (shared, app/skin_setup.hpp) and
-// the adjoint solves of every sensor, each stage timed into `wall` (mesh, assemble, factor, adjoint_solves).
+// The common first half of `green` and `kfit`: a meshed and factored skin (shared, pipeline/skin_setup.hpp)
+// and the adjoint solves of every sensor, each stage timed into `wall` (mesh, assemble, factor,
+// adjoint_solves).
 #pragma once
 
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "app/skin_setup.hpp"
 #include "green/fe_green.hpp"
+#include "pipeline/skin_setup.hpp"
 
-namespace skinfem::app {
+namespace skinfem::pipeline {
 
 struct AdjointSetup {
   explicit AdjointSetup(std::shared_ptr<Skin> s)
@@ -21,7 +22,7 @@ struct AdjointSetup {
 };
 
 // skin: an already factored skin of this scene, or null to mesh and factor one (its half y ≥ 0 where the
-// scene is mirror-symmetric: app/symmetry.hpp).
+// scene is mirror-symmetric: pipeline/symmetry.hpp).
 std::unique_ptr<AdjointSetup> adjoint_setup(const Scene& scene, std::shared_ptr<Skin> skin = nullptr);
 
 // Skin thickness above a base point (fem/face_index.hpp skin_thickness); a point with no skin above it is a
@@ -35,4 +36,4 @@ void check_sensors_on_skin(const Scene& scene, const TetMesh& mesh);
 // imported skins by walking along the meshed top, which `mesh` must then give).
 double scan_half_width(const Scene& scene, const TetMesh* mesh, double h, const Vec2& sensor);
 
-}  // namespace skinfem::app
+}  // namespace skinfem::pipeline

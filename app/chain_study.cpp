@@ -1,0 +1,76 @@
+#include "app/chain_study.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "app/common.hpp"
+#include "validation/richardson.hpp"
+
+namespace skinfem::app {
+
+nlohmann::json write_chain_study(const Scene& scene, const std::vector<ChainLevel>& levels,
+                                 const std::string& out_dir) {
+  const size_t n = levels.size();
+  std::ostringstream csv;
+  csv.precision(10);
+  csv << "stage,level,dofs,seconds,error\n";
+  nlohmann::json extrap, jlevels = nlohmann::json::array();
+  for (const ChainLevel& c : levels) {
+    nlohmann::json jl = {
+        {"scale", c.scale}, {"dofs", c.dofs}, {"wall_s", c.wall}, {"peak_rss_mb", c.peak_rss_mb}};
+    for (size_t i = 0; i < c.names.size(); ++i) jl["values"][c.names[i]] = c.value[i];
+    if (!c.note.empty()) jl["note"] = c.note;
+    jlevels.push_back(jl);
+  }
+  const auto errors = chain_errors(levels);
+  for (size_t i = 0; i < errors.size(); ++i) {
+    const ChainError& e = errors[i];
+    extrap[e.name] = {
+        {"observed_order", e.asymptotic ? nlohmann::json(e.order) : nlohmann::json("none: " + e.why_not)},
+        {"reference", e.reference},
+        {"reference_is", e.asymptotic ? "Richardson limit" : "finest level"}};
+    std::printf("%s: %s, reference %.6g; errors", e.name.c_str(),
+                e.asymptotic
+                    ? ("observed order " + std::to_string(e.order)).c_str()
+                    : ("no asymptotic regime (" + e.why_not + "; finest level as reference)").c_str(),
+                e.reference);
+    for (size_t l = 0; l < n; ++l) {
+      const double err = std::abs(levels[l].value[i] - e.reference) / std::abs(e.reference);
+      std::printf(" %.2e", err);
+      if (e.asymptotic || l + 1 < n)
+        csv << e.name << "," << l + 1 << "," << levels[l].dofs << "," << levels[l].seconds[i] << "," << err
+            << "\n";
+    }
+    std::printf("\n");
+  }
+  // Seconds ∝ DOFs^e per stage, over the levels that timed it.
+  nlohmann::json exponents;
+  std::printf("time-vs-DOFs exponent per stage:");
+  for (const auto& [stage, t] : levels.back().wall.items()) {
+    std::vector<double> x, y;
+    for (const ChainLevel& c : levels)
+      if (c.wall.contains(stage) && c.wall[stage].is_number()) {
+        x.push_back(c.dofs);
+        y.push_back(c.wall[stage].get<double>());
+      }
+    const double e = validation::loglog_slope(x, y);
+    if (std::isfinite(e)) {
+      exponents[stage] = e;
+      std::printf(" %s %.2f", stage.c_str(), e);
+    }
+  }
+  std::printf("\n");
+  prepare_output_dir(out_dir);
+  write_text_atomic(out_dir + "/chain_study.csv", csv.str());
+  const nlohmann::json study = {{"scene", scene_json(scene)},
+                                {"levels", jlevels},
+                                {"extrapolation", extrap},
+                                {"time_vs_dofs_exponent", exponents},
+                                {"peak_rss_mb", peak_rss_mb()}};
+  write_json(out_dir + "/chain_study.json", study);
+  std::printf("  wrote %s/chain_study.csv, chain_study.json\n", out_dir.c_str());
+  return study;
+}
+
+}  // namespace skinfem::app

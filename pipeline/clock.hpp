@@ -1,0 +1,25 @@
+// What a stage costs: wall time and the process's peak resident memory.
+#pragma once
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+
+namespace skinfem::pipeline {
+
+class Stopwatch {
+ public:
+  Stopwatch() : start_(std::chrono::steady_clock::now()) {}
+  double seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_;
+};
+
+// Peak resident set size of this process so far, MB.
+double peak_rss_mb();
+// Sum of the numbers in a {"stage": seconds} object.
+double total_seconds(const nlohmann::json& wall);
+
+}  // namespace skinfem::pipeline

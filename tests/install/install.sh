@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# The installed package: `cmake --install` into a fresh prefix, a downstream CMake project built against it
+# with find_package(skinfem), and its mesh of a scene against the installed command's (same nodes and
+# elements); the installed command finds its figure script beside itself.
+# usage: install.sh BUILD_DIR SOURCE_DIR
+set -euo pipefail
+build=$1 src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+prefix=$work/prefix
+cmake --install "$build" --prefix "$prefix" >/dev/null
+for f in bin/skinfem share/skinfem/figures.py lib/cmake/skinfem/skinfemConfig.cmake \
+  include/skinfem/pipeline/skin_setup.hpp include/skinfem/scene/scene.hpp; do
+  [ -e "$prefix/$f" ] || { echo "install.sh: $f not installed" >&2; exit 1; }
+done
+cmake -S "$src/tests/install/downstream" -B "$work/downstream" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+cmake --build "$work/downstream" >/dev/null
+scene=$src/scenes/flat_layer.json
+"$work/downstream/downstream" "$scene" 2>/dev/null >"$work/downstream.txt"
+"$prefix/bin/skinfem" mesh "$scene" --out "$work/mesh" >/dev/null 2>&1
+python3 - "$work/downstream.txt" "$work/mesh/summary.json" <<'PY'
+import json, sys
+got = dict(line.split() for line in open(sys.argv[1]))
+ref = json.load(open(sys.argv[2]))
+for key in ("nodes", "elements"):
+    if int(got[key]) != ref[key]:
+        sys.exit(f"install.sh: downstream {key} {got[key]} != installed skinfem mesh's {ref[key]}")
+if int(got["free_dofs"]) <= 0:
+    sys.exit("install.sh: downstream factored no DOFs")
+print(f"downstream: {got['nodes']} nodes, {got['elements']} elements, {got['free_dofs']} free DOFs, as skinfem mesh")
+PY
+# The installed command runs the installed figure script, not the source tree's.
+figures=$("$prefix/bin/skinfem" --version | sed -n 's/^figures: //p')
+[ "$figures" = "$(realpath "$prefix/share/skinfem/figures.py")" ] ||
+  { echo "install.sh: the installed skinfem runs '$figures', not its installed figures.py" >&2; exit 1; }
