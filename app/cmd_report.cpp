@@ -453,14 +453,14 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
   report["kfit"] = kfit_stage(scene, sensor_greens(scene, *adjoints), out_dir + "/kfit", "punch");
   wall["green_kfit_profiles"] = clock.seconds();
 
-  std::unique_ptr<ContactSetup> contact;
+  std::shared_ptr<ContactSetup> contact;
   std::optional<DefectStage> defect;
   std::optional<validation::Crosscheck> x;
   if (scene.contact) {
     contact = contact_setup(scene, skin);
     wall["condense"] = contact->wall["condense"];
     clock = Stopwatch();
-    report["contact"] = contact_stage(scene, *contact, out_dir + "/contact", scene.contact->friction);
+    report["contact"] = contact_stage(scene, contact, out_dir + "/contact", scene.contact->friction);
     wall["contact"] = clock.seconds();
     if (scene.contact->sweep) {
       clock = Stopwatch();

@@ -84,21 +84,6 @@ void check_levels(const std::string& option, const std::vector<double>& levels, 
 
 void progress(const std::string& message) { std::cerr << "[skinfem] " << message << std::endl; }
 
-void progress_step(const std::string& stage, int done, int total, double elapsed_s) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, ": %d/%d (%.0f %%, %.1f s)", done, total, 100.0 * done / std::max(total, 1),
-                elapsed_s);
-  progress(stage + buf);
-}
-
-nlohmann::json scene_json(const Scene& scene) {
-  return {{"name", scene.name},
-          {"source", scene.source_path},
-          {"E_MPa", scene.material.E},
-          {"nu", scene.material.nu},
-          {"sensors", scene.sensors.positions.size()}};
-}
-
 std::string figures_script() {
   std::error_code ec;
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "pipeline/clock.hpp"
+#include "pipeline/progress.hpp"
+#include "pipeline/scene_json.hpp"
 #include "scene/scene.hpp"
 
 namespace skinfem::app {
@@ -33,10 +35,6 @@ void check_levels(const std::string& option, const std::vector<double>& levels, 
 
 // "[skinfem] stage…" on stderr, so stdout stays the human summary.
 void progress(const std::string& message);
-// "[skinfem] stage: done/total (P %, S s)".
-void progress_step(const std::string& stage, int done, int total, double elapsed_s);
-
-nlohmann::json scene_json(const Scene& scene);
 
 // scripts/figures.py: installed beside the command (../share/skinfem/figures.py from its directory), else
 // the source tree's (a build tree's command).

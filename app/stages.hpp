@@ -23,8 +23,8 @@ nlohmann::json green_stage(const Scene& scene, const SensorGreens& greens, const
                            const std::string& out_dir, double grid_dx = 0);
 nlohmann::json kfit_stage(const Scene& scene, const SensorGreens& greens, const std::string& out_dir,
                           const std::string& load_name);
-nlohmann::json contact_stage(const Scene& scene, const ContactSetup& setup, const std::string& out_dir,
-                             FrictionMode chosen);
+nlohmann::json contact_stage(const Scene& scene, std::shared_ptr<const ContactSetup> setup,
+                             const std::string& out_dir, FrictionMode chosen);
 
 // Both sweeps of `defect` (static, then coupled sliding) with every position's contact solution.
 struct DefectStage {

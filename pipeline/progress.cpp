@@ -1,5 +1,7 @@
 #include "pipeline/progress.hpp"
 
+#include <algorithm>
+#include <cstdio>
 #include <mutex>
 #include <utility>
 
@@ -25,6 +27,13 @@ void progress(const std::string& message) {
     s = sink();
   }
   if (s) s(message);
+}
+
+void progress_step(const std::string& stage, int done, int total, double elapsed_s) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, ": %d/%d (%.0f %%, %.1f s)", done, total, 100.0 * done / std::max(total, 1),
+                elapsed_s);
+  progress(stage + buf);
 }
 
 }  // namespace skinfem::pipeline

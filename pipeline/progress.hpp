@@ -13,5 +13,7 @@ using ProgressSink = std::function<void(const std::string& message)>;
 // Replaces the process's sink (null: silent) and returns the previous one.
 ProgressSink set_progress_sink(ProgressSink sink);
 void progress(const std::string& message);
+// "stage: done/total (P %, S s)".
+void progress_step(const std::string& stage, int done, int total, double elapsed_s);
 
 }  // namespace skinfem::pipeline

@@ -206,4 +206,13 @@ std::string meridian_check_line(const nlohmann::json& c) {
   return buf;
 }
 
+SensorGreens green_path(const Scene& scene, GreenPath path) {
+  if (path == GreenPath::meridian || (path == GreenPath::automatic && meridian_unavailable(scene).empty()))
+    return meridian_sensor_greens(scene);
+  std::shared_ptr<const AdjointSetup> setup = adjoint_setup(scene);
+  SensorGreens g = with_path_reason(sensor_greens(scene, *setup), scene, path);
+  g.owner = std::move(setup);
+  return g;
+}
+
 }  // namespace skinfem::pipeline

@@ -58,6 +58,10 @@ SensorGreens with_path_reason(SensorGreens greens, const Scene& scene, GreenPath
 // The meridian path; throws SceneError (with meridian_unavailable's reason) where it does not apply.
 SensorGreens meridian_sensor_greens(const Scene& scene);
 
+// The Green tensors by `path`: the meridian's where asked, or where automatic and meridian_unavailable is
+// empty; else the 3D path's (with_path_reason), whose adjoint setup the result's owner keeps alive.
+SensorGreens green_path(const Scene& scene, GreenPath path);
+
 // The first sensor on the axis of a cap solved in 3D (greens.path "3d"), or −1: the one sensor the meridian
 // path, an independent 2D solve about 100× more accurate than the 3D mesh, can check.
 int axis_sensor(const Scene& scene, const SensorGreens& greens);

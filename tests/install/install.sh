@@ -2,9 +2,11 @@
 # The installed package: `cmake --install` into a fresh prefix, a downstream CMake project built against it
 # with find_package(skinfem), and its mesh of a scene against the installed command's (same nodes and
 # elements); the installed command finds its figure script beside itself.
-# usage: install.sh BUILD_DIR SOURCE_DIR
+# With the Python module (PYTHON = ON): `import skinfem` from the prefix reproduces the installed command's
+# kfit.json of the same scene.
+# usage: install.sh BUILD_DIR SOURCE_DIR PYTHON
 set -euo pipefail
-build=$1 src=$2
+build=$1 src=$2 python=$3
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 prefix=$work/prefix
@@ -34,3 +36,17 @@ PY
 figures=$("$prefix/bin/skinfem" --version | sed -n 's/^figures: //p')
 [ "$figures" = "$(realpath "$prefix/share/skinfem/figures.py")" ] ||
   { echo "install.sh: the installed skinfem runs '$figures', not its installed figures.py" >&2; exit 1; }
+if [ "$python" = ON ]; then
+  "$prefix/bin/skinfem" kfit "$scene" --out "$work/kfit" >/dev/null 2>&1
+  PYTHONPATH=$prefix LD_PRELOAD=${SKINFEM_PYTHON_PRELOAD:-} /usr/bin/python3 - "$scene" "$work/kfit/kfit.json" <<'PY'
+import json, math, sys
+import skinfem
+fit = skinfem.kfit(skinfem.scene(sys.argv[1])).to_dict()
+ref = json.load(open(sys.argv[2]))
+for key in ("k_central", "k_lsq_line", "k_central_exact", "dofs", "path"):
+    same = math.isclose(fit[key], ref[key], rel_tol=1e-12) if isinstance(ref[key], float) else fit[key] == ref[key]
+    if not same:
+        sys.exit(f"install.sh: installed module's {key} {fit[key]} != installed command's {ref[key]}")
+print(f"installed module: k_central {fit['k_central']:.6f}, k_lsq_line {fit['k_lsq_line']:.6f}, as the command")
+PY
+fi

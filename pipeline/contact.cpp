@@ -1,0 +1,201 @@
+#include "pipeline/contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "contact/hole_cover.hpp"
+#include "fem/base_traction.hpp"
+#include "pipeline/clock.hpp"
+#include "pipeline/scene_json.hpp"
+#include "pipeline/symmetry.hpp"
+
+namespace skinfem::pipeline {
+
+namespace {
+using contact::ContactResult;
+
+nlohmann::json metrics_json(const contact::ContactMetrics& m, const ContactResult& r) {
+  return {{"friction", contact::to_string(r.mode)},
+          {"ratio", r.ratio},
+          {"shear_kPa", 1e3 * r.tau},
+          {"force_N", r.force_N},
+          {"tangential_force_N", r.tangential_force_N},
+          {"indentation_um", 1e3 * r.depth_mm},
+          {"contact_radius_mm", m.contact_radius_mm},
+          {"equivalent_radius_mm", m.equivalent_radius_mm},
+          {"p0_kPa", 1e3 * m.p0_MPa},
+          {"p_max_kPa", 1e3 * m.p_max_MPa},
+          {"pressure_centroid_mm", {m.pressure_centroid[0], m.pressure_centroid[1]}},
+          {"zone_centroid_mm", {m.zone_centroid[0], m.zone_centroid[1]}},
+          {"front_back_peak_ratio", m.front_back_peak_ratio},
+          {"front_edge_mm", m.front_edge_mm},
+          {"back_edge_mm", m.back_edge_mm},
+          {"min_pressure_kPa", 1e3 * r.min_lambda},
+          {"min_weighted_gap_mm3", r.min_gap},
+          {"complementarity", r.complementarity},
+          {"active_multipliers", r.active.size()},
+          {"pivots", r.pivots}};
+}
+}  // namespace
+
+FrictionMode friction_mode_named(const Scene& scene, const std::string& name) {
+  if (!scene.contact)
+    throw SceneError(scene.source_path + ": contact: missing; skinfem contact needs a \"contact\" section");
+  if (name.empty() || name == "scene") return scene.contact->friction;
+  if (name == "none") return FrictionMode::none;
+  if (name == "static") return FrictionMode::static_residual;
+  if (name == "uncoupled") return FrictionMode::uncoupled;
+  if (name == "coupled") return FrictionMode::coupled;
+  throw SceneError("friction: '" + name + "' is not one of none, static, uncoupled, coupled");
+}
+
+ContactRun contact_run(const Scene& scene, std::shared_ptr<const ContactSetup> shared, FrictionMode chosen) {
+  if (!scene.contact)
+    throw SceneError(scene.source_path + ": contact: missing; skinfem contact needs a \"contact\" section");
+  ContactRun run;
+  run.setup = std::move(shared);
+  run.chosen = chosen;
+  const ContactSetup& setup = *run.setup;
+  const TetMesh& mesh = setup.mesh();
+  nlohmann::json& wall = run.wall;
+  wall = setup.wall;
+  Stopwatch clock;
+  const contact::ContactSolver& solver = *setup.solver;
+  const auto excluded = contact::excluded_by_holes(solver.zone(), mesh, scene.contact->holes);
+  const Eigen::VectorXd covered = contact::hole_cover(solver.zone(), mesh, scene.contact->holes);
+  auto& results = run.results;
+  auto& metrics = run.metrics;
+  const Vec2 centre = contact_center(scene);
+  for (FrictionMode mode :
+       {FrictionMode::none, FrictionMode::static_residual, FrictionMode::uncoupled, FrictionMode::coupled}) {
+    results[mode] = solver.solve(mode, excluded, {}, covered);
+    check_zone(scene, setup, results[mode]);
+    for (size_t h = 0; h < scene.contact->holes.size(); ++h)
+      contact::require_hole_resolved(solver.zone(), mesh, scene.contact->holes[h], results[mode].active,
+                                     "contact.holes[" + std::to_string(h) + "]");
+    metrics[mode] =
+        contact::contact_metrics(solver, mesh, *setup.top, results[mode], centre, scene.contact->holes);
+  }
+  wall["contact_solves"] = clock.seconds();
+  const ContactResult& r = results[chosen];
+
+  // The volume solution of the chosen mode: one more solve with the contact load, on the solved skin (the
+  // half under mirror symmetry: its zone, its multipliers).
+  clock = Stopwatch();
+  const auto& c = *setup.condensed;
+  const TetMesh& solved = setup.skin->mesh;
+  const Eigen::VectorXd f =
+      c.zone.load(solver.solved_lambda(r.lambda), c.direction, r.ratio, solver.solved_lambda(r.shear));
+  run.solution = setup.model->solver().solve(f);
+  const MixedSolution& x = run.solution;
+  run.reactions = setup.model->solver().reactions(x, f);
+  const Eigen::VectorXd& reactions = run.reactions;
+  const BaseTraction base(solved, reactions);
+  // Pointwise gap at every node of the zone's faces (the constraint holds it ≥ 0 in the hat-weighted mean).
+  double max_penetration = 0;
+  for (int face : c.zone.faces)
+    for (int k = 0; k < 6; ++k) {
+      const int n = solved.faces(face, k);
+      const double gap = setup.indenter->z_touch() - r.depth_mm +
+                         setup.indenter->phi(solved.nodes(n, 0), solved.nodes(n, 1)) - solved.nodes(n, 2) -
+                         x.u[3 * n + 2];
+      const bool under_hole = [&] {
+        for (const Hole& h : scene.contact->holes)
+          if (std::hypot(solved.nodes(n, 0) - h.center[0], solved.nodes(n, 1) - h.center[1]) <
+              0.5 * h.diameter + 1e-12)
+            return true;
+        return false;
+      }();
+      if (!under_hole) max_penetration = std::max(max_penetration, -gap);
+    }
+  // The condensed readings (adjoints) against the reactions of the full solve: a second method.
+  double reading_gap = 0, reading_scale = 0;
+  for (size_t k = 0; k < scene.sensors.positions.size(); ++k) {
+    const auto& p = scene.sensors.positions[k];
+    const SensorReading v = base.disc_mean(p[0], p[1], scene.sensors.disc_diameter);
+    reading_gap = std::max(
+        {reading_gap, std::abs(v.sigma_z - r.readings[2 * k]), std::abs(v.sigma_x - r.readings[2 * k + 1])});
+    reading_scale = std::max({reading_scale, std::abs(v.sigma_z), std::abs(v.sigma_x)});
+  }
+  wall["full_solve"] = clock.seconds();
+  run.max_penetration_mm = max_penetration;
+  run.readings_condensed_vs_reactions_rel = reading_scale > 0 ? reading_gap / reading_scale : 0.0;
+
+  return run;
+}
+
+nlohmann::json contact_json(const Scene& scene, const ContactRun& run) {
+  const ContactSetup& setup = *run.setup;
+  const contact::ContactSolver& solver = *setup.solver;
+  const auto& c = *setup.condensed;
+  const TetMesh& mesh = setup.mesh();
+  const ContactResult& r = run.result();
+  const contact::ContactMetrics& m = run.metric();
+  const auto& results = run.results;
+  const auto& metrics = run.metrics;
+  nlohmann::json summary = metrics_json(m, r);
+  summary["scene"] = scene_json(scene);
+  summary["friction_law"] = contact::to_string(scene.contact->law);
+  if (scene.contact->law != FrictionLaw::coulomb) summary["tau0_kPa"] = 1e3 * solver.tau0();
+  const Interface& interface = scene.contact->interface;
+  summary["interface"] = contact::to_string(interface.law);
+  if (interface.law == InterfaceLaw::linear) summary["interface_K_MPa_per_mm"] = interface.K;
+  if (interface.law == InterfaceLaw::exponential) {
+    summary["interface_u0_um"] = 1e3 * interface.u0;
+    summary["interface_p_ref_kPa"] = 1e3 * interface.p_ref;
+  }
+  summary["indenter"] = scene.contact->indenter == IndenterKind::plane ? "plane" : "sphere";
+  summary["p0_kPa"] = 1e3 * m.p0_MPa;
+  summary["max_penetration_um"] = 1e3 * run.max_penetration_mm;
+  summary["pressure_centroid_x_mm"] = m.pressure_centroid[0];
+  summary["readings_condensed_vs_reactions_rel"] = run.readings_condensed_vs_reactions_rel;
+  summary["residual"] = run.solution.residual;
+  for (const auto& [mode, res] : results)
+    summary["modes"][contact::to_string(mode)] = metrics_json(metrics.at(mode), res);
+  // What coupling changes: coupled − uncoupled at the same μ (the paper's assumption is "nothing").
+  const auto& cu = metrics.at(FrictionMode::coupled);
+  const auto& un = metrics.at(FrictionMode::uncoupled);
+  // Shifts along the sliding direction t (positive: ahead), and their (x, y) vectors.
+  const Vec2 t = scene.contact->direction;
+  const Vec2 dp{cu.pressure_centroid[0] - un.pressure_centroid[0],
+                cu.pressure_centroid[1] - un.pressure_centroid[1]};
+  const Vec2 dz{cu.zone_centroid[0] - un.zone_centroid[0], cu.zone_centroid[1] - un.zone_centroid[1]};
+  nlohmann::json coupling = {{"mu", scene.contact->mu},
+                             {"direction", {t[0], t[1]}},
+                             {"pressure_centroid_shift_mm", dp[0] * t[0] + dp[1] * t[1]},
+                             {"pressure_centroid_shift_xy_mm", {dp[0], dp[1]}},
+                             {"zone_centroid_shift_mm", dz[0] * t[0] + dz[1] * t[1]},
+                             {"zone_centroid_shift_xy_mm", {dz[0], dz[1]}},
+                             {"front_back_peak_ratio_coupled", cu.front_back_peak_ratio},
+                             {"front_back_peak_ratio_uncoupled", un.front_back_peak_ratio},
+                             {"indentation_change_um", 1e3 * (results.at(FrictionMode::coupled).depth_mm -
+                                                              results.at(FrictionMode::uncoupled).depth_mm)}};
+  for (size_t k = 0; k < scene.sensors.positions.size(); ++k) {
+    const auto& a = results.at(FrictionMode::coupled).readings;
+    const auto& b = results.at(FrictionMode::uncoupled).readings;
+    coupling["sensors"].push_back({{"sensor", k + 1},
+                                   {"x_mm", scene.sensors.positions[k][0]},
+                                   {"dsigma_z_kPa", 1e3 * (a[2 * k] - b[2 * k])},
+                                   {"dsigma_x_kPa", 1e3 * (a[2 * k + 1] - b[2 * k + 1])}});
+  }
+  summary["coupled_minus_uncoupled"] = coupling;
+  summary["zone"] = {{"radius_mm", setup.zone_radius},
+                     {"h_mm", setup.zone_h},
+                     {"multipliers", solver.zone().size()},
+                     {"multipliers_solved", c.zone.size()}};
+  const std::string why_whole = scene.symmetry == SymmetryUse::none  ? "\"symmetry\": \"none\""
+                                : !mirror_unavailable(scene).empty() ? mirror_unavailable(scene)
+                                                                     : contact_mirror_unavailable(scene);
+  summary["symmetry"] =
+      setup.whole ? "mirror y = 0: the half y >= 0 solved" : "whole skin solved: " + why_whole;
+  summary["dofs"] = setup.model->solver().free_dofs();
+  summary["nodes"] = mesh.num_nodes();
+  summary["elements"] = mesh.num_tets();
+  summary["block_solves"] = c.block_solves;
+  summary["wall_s"] = run.wall;
+  summary["wall_total_s"] = total_seconds(run.wall);
+  summary["peak_rss_mb"] = peak_rss_mb();
+  return summary;
+}
+
+}  // namespace skinfem::pipeline

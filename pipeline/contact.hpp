@@ -1,0 +1,40 @@
+// The scene's indenter in contact with the skin, in all four friction modes on one condensed skin
+// (pipeline/contact_setup.hpp), with the chosen mode's volume solution and two checks of it: the pointwise
+// penetration at every node of the zone's faces, and the condensed sensor readings against the reactions
+// of the full solve (a second method). `skinfem contact` writes contact_json's object as summary.json.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "contact/metrics.hpp"
+#include "fem/mixed_solver.hpp"
+#include "pipeline/contact_setup.hpp"
+
+namespace skinfem::pipeline {
+
+struct ContactRun {
+  std::shared_ptr<const ContactSetup> setup;  // what the results refer to (zone, mesh, solver)
+  FrictionMode chosen = FrictionMode::none;
+  std::map<FrictionMode, contact::ContactResult> results;   // every mode
+  std::map<FrictionMode, contact::ContactMetrics> metrics;  // every mode
+  MixedSolution solution;         // the chosen mode on the solved skin (the half under mirror symmetry)
+  Eigen::VectorXd reactions;      // its base reactions, N
+  double max_penetration_mm = 0;  // pointwise, outside the holes
+  double readings_condensed_vs_reactions_rel = 0;
+  nlohmann::json wall;  // seconds per stage (the set-up's, contact_solves, full_solve)
+
+  const contact::ContactResult& result() const { return results.at(chosen); }
+  const contact::ContactMetrics& metric() const { return metrics.at(chosen); }
+};
+
+// Throws SceneError when the scene has no contact.
+ContactRun contact_run(const Scene& scene, std::shared_ptr<const ContactSetup> setup, FrictionMode chosen);
+// summary.json of `skinfem contact`.
+nlohmann::json contact_json(const Scene& scene, const ContactRun& run);
+// The friction mode named as the command line names it (none, static, uncoupled, coupled), or the
+// scene's when "scene" or empty; anything else is a SceneError naming the argument.
+FrictionMode friction_mode_named(const Scene& scene, const std::string& name);
+
+}  // namespace skinfem::pipeline

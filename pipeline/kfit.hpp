@@ -1,0 +1,64 @@
+// The k correction of the paper (§III (iii)) for every sensor of a scene, from its Green tensors
+// (pipeline/sensor_greens.hpp: the 3D or the meridian path):
+//   k_central  = g_zz at zero offset (point value at the base, no sensor averaging) / (3/(2πh²));
+//   k_lsq_line = least-squares fit of g_k(x, 0) = k·g_half(√k x, 0) to g_zz along y = 0 over |x| ≤ 3h,
+//                uniform weight in x, with g_half the Boussinesq value at depth h.
+// On flat scenes each sensor is also compared with the exact layer (Hankel transforms; on a ridged layer,
+// the smooth layer of equal mean thickness). `skinfem kfit` writes kfit_json's object as kfit.json.
+#pragma once
+
+#include <array>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "green/calibration.hpp"
+#include "pipeline/sensor_greens.hpp"
+
+namespace skinfem::pipeline {
+
+// Arrays over components are in green::kComponents order (zz, zx, xz, xx).
+struct KfitSensor {
+  int sensor = 0;             // 1-based
+  double x_mm = 0, y_mm = 0;  // its centre on the base
+  double h_mm = 0;            // skin thickness above it
+  double scan_half_width_mm = 0;
+  green::KReport fe;  // from the computed Green tensor
+  std::array<double, 4> peak_point_per_mm2{};
+  // Meridian path only: relative change of k from the same fit at half the resolution (bounds its error).
+  std::optional<double> k_central_change_from_half_resolution, k_lsq_line_change_from_half_resolution;
+  nlohmann::json meridian_check;  // the axis sensor of a cap solved in 3D (pipeline/sensor_greens.hpp)
+  std::optional<double> effective_thickness_mm;  // caps: the flat layer whose scan fits best
+  // Flat scenes: the exact (smooth) layer's k and the largest difference of the readings over the peak.
+  std::optional<green::KReport> exact;
+  std::array<double, 4> peak_point_exact_per_mm2{}, point_max_diff_over_peak{}, disc_max_diff_over_peak{};
+};
+
+struct KfitResult {
+  green::LayerLoad load = green::LayerLoad::punch;
+  double punch_diameter_mm = 0;  // 0 for a point load
+  double nu = 0;
+  bool flat = false, ridged = false;
+  std::vector<KfitSensor> sensors;
+  nlohmann::json meridian_check;  // as in its sensor, or null
+  std::string path, path_model;   // of the Green tensors
+  int dofs = 0, adjoint_solves = 0;
+  double max_adjoint_residual = 0;  // 3D path
+  nlohmann::json wall;              // seconds per stage
+  double peak_rss_mb = 0;
+  double paper_k = 0;
+  bool paper_k_reproduced = false;  // by sensor #1's k_central or k_lsq_line within 1 %
+  std::string verdict;              // sensor #1 against the paper's k, from the numbers
+  // Smooth flat layers: k_central of the exact layer under each load model (point, uniform, punch), and
+  // whether any criterion, load model or the FE error reaches the paper's k.
+  std::optional<std::array<double, 3>> k_central_exact_by_load_model;
+  std::string explanation;
+};
+
+// load: point or punch (the calibration punch of the scene).
+KfitResult kfit(const Scene& scene, const SensorGreens& greens, green::LayerLoad load);
+// The result as kfit.json holds it.
+nlohmann::json kfit_json(const KfitResult& r);
+
+}  // namespace skinfem::pipeline

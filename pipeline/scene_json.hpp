@@ -1,0 +1,12 @@
+// What a result file says of its scene: name, source file, material, number of sensors.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "scene/scene.hpp"
+
+namespace skinfem::pipeline {
+
+nlohmann::json scene_json(const Scene& scene);
+
+}  // namespace skinfem::pipeline

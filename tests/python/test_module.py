@@ -1,0 +1,151 @@
+"""The Python module against the command: the same scene gives the same numbers and the same errors.
+
+The independent side of each check is the other front end (the `skinfem` executable, run as a user would)
+and, for the README, the examples run exactly as written. Environment (set by ctest): PYTHONPATH with the
+package, SKINFEM_EXE the command, SKINFEM_SOURCE_DIR the source tree.
+"""
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import skinfem
+
+SRC = os.environ["SKINFEM_SOURCE_DIR"]
+EXE = os.environ["SKINFEM_EXE"]
+FLAT = os.path.join(SRC, "scenes", "flat_layer.json")
+HERTZ = os.path.join(SRC, "scenes", "hertz_layer.json")
+# Timing and memory differ from run to run; everything else must agree.
+VOLATILE = re.compile(r"(wall|peak_rss)")
+
+
+def run_cli(*args):
+    return subprocess.run([EXE, *args], capture_output=True, text=True)
+
+
+def assert_same(a, b, where="", rel=1e-12):
+    """Equal structure, strings and booleans; numbers to `rel` relative."""
+    if isinstance(a, dict):
+        assert isinstance(b, dict) and set(a) == set(b), f"{where}: keys {sorted(set(a) ^ set(b))}"
+        for k in a:
+            if not VOLATILE.search(k):
+                assert_same(a[k], b[k], f"{where}/{k}", rel)
+    elif isinstance(a, list):
+        assert isinstance(b, list) and len(a) == len(b), where
+        for i, (x, y) in enumerate(zip(a, b)):
+            assert_same(x, y, f"{where}[{i}]", rel)
+    elif isinstance(a, float) or isinstance(b, float):
+        assert math.isclose(a, b, rel_tol=rel, abs_tol=1e-300), f"{where}: {a} != {b}"
+    else:
+        assert a == b, f"{where}: {a!r} != {b!r}"
+
+
+@pytest.fixture(scope="module")
+def flat_kfit(tmp_path_factory):
+    out = tmp_path_factory.mktemp("kfit")
+    r = run_cli("kfit", FLAT, "--out", str(out))
+    assert r.returncode == 0, r.stderr
+    with open(out / "kfit.json") as f:
+        return json.load(f)
+
+
+def test_kfit_reproduces_the_command(flat_kfit):
+    fit = skinfem.kfit(skinfem.scene(FLAT))
+    assert_same(flat_kfit, fit.to_dict())
+    # The typed attributes are the same numbers as the file's.
+    s = fit.sensors[0]
+    assert s.k_central == flat_kfit["k_central"] and s.k_lsq_line == flat_kfit["k_lsq_line"]
+    assert s.k_central_exact == flat_kfit["k_central_exact"]
+    names = ["zz", "zx", "xz", "xx"]
+    assert np.array_equal(s.component_k, [flat_kfit["components"][c]["k"] for c in names])
+    assert np.array_equal(s.disc_max_diff_over_peak, [flat_kfit["fe_vs_exact_max_err_over_peak"][c] for c in names])
+    assert fit.path == flat_kfit["path"] and fit.dofs == flat_kfit["dofs"] and fit.verdict == flat_kfit["verdict"]
+
+
+def test_contact_reproduces_the_command(tmp_path):
+    r = run_cli("contact", HERTZ, "--out", str(tmp_path))
+    assert r.returncode == 0, r.stderr
+    with open(tmp_path / "summary.json") as f:
+        summary = json.load(f)
+    c = skinfem.contact(skinfem.scene(HERTZ))
+    assert_same(summary, c.to_dict())
+    assert c.friction == summary["friction"]
+    assert (c.contact_radius_mm, c.p0_kPa, c.indentation_um) == (
+        summary["contact_radius_mm"], summary["p0_kPa"], summary["indentation_um"])
+    # The sensor readings of the command's sensors.csv (written with 10 digits).
+    rows = [line.split(",") for line in (tmp_path / "sensors.csv").read_text().splitlines()[1:]]
+    assert np.allclose(c.readings_kPa, [[float(r[3]), float(r[4])] for r in rows], rtol=1e-9, atol=1e-12)
+    # One non-negative nodal pressure per multiplier, each at its zone vertex.
+    assert c.pressure_kPa.shape == (c.multiplier_xy_mm.shape[0],) and c.pressure_kPa.min() >= 0
+    with pytest.raises(skinfem.SceneError, match="^friction: 'sticky' is not one of none, static, uncoupled, coupled$"):
+        skinfem.contact(skinfem.scene(HERTZ), friction="sticky")
+
+
+def test_scene_from_dict_is_the_scene_from_its_file():
+    with open(FLAT) as f:
+        as_dict = json.load(f)
+    a, b = skinfem.scene(FLAT), skinfem.scene(as_dict)
+    assert (a.name, a.E_MPa, a.nu, a.nominal_thickness_mm) == (b.name, b.E_MPa, b.nu, b.nominal_thickness_mm)
+    assert np.array_equal(a.sensor_positions_mm, b.sensor_positions_mm)
+    assert a.sensor_positions_mm.shape == (1, 2)
+
+
+@pytest.mark.parametrize(
+    "field, value",
+    [(("material", "E"), -3.0), (("material", "nu"), 0.7), (("geometry", "type"), "torus"), (("sensors",), 5)],
+)
+def test_bad_scene_raises_the_commands_message(tmp_path, field, value):
+    with open(FLAT) as f:
+        scene = json.load(f)
+    node = scene
+    for key in field[:-1]:
+        node = node[key]
+    node[field[-1]] = value
+    path = tmp_path / "bad.json"
+    path.write_text(json.dumps(scene))
+    r = run_cli("kfit", str(path), "--out", str(tmp_path / "out"))
+    assert r.returncode == 2
+    cli_message = r.stderr.strip().splitlines()[-1]
+    with pytest.raises(skinfem.SceneError) as e:
+        skinfem.scene(str(path))
+    assert isinstance(e.value, ValueError)
+    assert "\n" not in str(e.value)
+    assert cli_message.endswith(str(e.value)), (cli_message, str(e.value))
+    assert not (tmp_path / "out").exists()
+
+
+def test_bad_arguments_name_the_argument():
+    scene = skinfem.scene(FLAT)
+    with pytest.raises(skinfem.SceneError, match="^load: 'ring' is not one of punch, point$"):
+        skinfem.kfit(scene, load="ring")
+    with pytest.raises(skinfem.SceneError, match="^path: 'radial' is not one of auto, 3d, meridian$"):
+        skinfem.kfit(scene, path="radial")
+    with pytest.raises(skinfem.SceneError, match="neither an existing file"):
+        skinfem.scene("no/such/scene.json")
+
+
+def test_progress_reaches_the_callback():
+    lines = []
+    skinfem.set_progress(lines.append)
+    try:
+        skinfem.kfit(skinfem.scene(FLAT))
+    finally:
+        skinfem.set_progress(None)
+    assert any(line.startswith("kfit: calibration scans") for line in lines), lines
+
+
+def test_readme_python_examples_run_as_written(tmp_path):
+    """Every ```python block after a <!-- python-example --> marker in the README, run from the source tree."""
+    with open(os.path.join(SRC, "README.md")) as f:
+        text = f.read()
+    blocks = re.findall(r"<!-- python-example -->\s*```python\n(.*?)```", text, re.S)
+    assert blocks, "no <!-- python-example --> block in README.md"
+    for code in blocks:
+        r = subprocess.run([sys.executable, "-c", code], cwd=SRC, capture_output=True, text=True,
+                           env=os.environ | {"PYTHONPATH": os.environ["PYTHONPATH"]})
+        assert r.returncode == 0, f"README example failed:\n{code}\n{r.stderr}"
