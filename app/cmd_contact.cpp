@@ -15,7 +15,8 @@
 // interface (interface_K_MPa_per_mm or interface_u0_um, interface_p_ref_kPa), contact_radius_mm, p0_kPa,
 // indentation_um, force_N, tangential_force_N, max_penetration_um, min_pressure_kPa, pressure_centroid_x_mm,
 // complementarity, every mode's metrics, coupled − uncoupled differences (centroid shifts along the sliding
-// direction and as (x, y) vectors), dofs, wall_s per stage, peak_rss_mb).
+// direction and as (x, y) vectors), dofs, wall_s per stage, peak_rss_mb). The computation and summary.json
+// are pipeline/contact.hpp's; this file writes and prints them.
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -23,13 +24,11 @@
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "app/stages.hpp"
-#include "contact/hole_cover.hpp"
 #include "contact/metrics.hpp"
 #include "contact/pressure_map.hpp"
 #include "fem/fields.hpp"
 #include "pipeline/contact.hpp"
 #include "pipeline/contact_setup.hpp"
-#include "pipeline/symmetry.hpp"
 
 namespace skinfem::app {
 
