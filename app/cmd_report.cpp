@@ -454,7 +454,7 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
   wall["green_kfit_profiles"] = clock.seconds();
 
   std::shared_ptr<ContactSetup> contact;
-  std::optional<DefectStage> defect;
+  std::optional<DefectRun> defect;
   std::optional<validation::Crosscheck> x;
   if (scene.contact) {
     contact = contact_setup(scene, skin);
@@ -464,7 +464,7 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
     wall["contact"] = clock.seconds();
     if (scene.contact->sweep) {
       clock = Stopwatch();
-      defect = defect_stage(scene, *contact, out_dir + "/defect");
+      defect = defect_stage(scene, contact, out_dir + "/defect");
       wall["defect"] = clock.seconds();
       clock = Stopwatch();
       progress("crosscheck: the paper's model against FE, one assumption at a time");

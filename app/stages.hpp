@@ -10,6 +10,7 @@
 #include "contact/hole_sweep.hpp"
 #include "pipeline/adjoint_setup.hpp"
 #include "pipeline/contact_setup.hpp"
+#include "pipeline/defect.hpp"
 #include "pipeline/sensor_greens.hpp"
 #include "validation/crosscheck.hpp"
 
@@ -27,12 +28,8 @@ nlohmann::json contact_stage(const Scene& scene, std::shared_ptr<const ContactSe
                              const std::string& out_dir, FrictionMode chosen);
 
 // Both sweeps of `defect` (static, then coupled sliding) with every position's contact solution.
-struct DefectStage {
-  nlohmann::json summary;
-  std::vector<contact::SweepResult> sweeps;
-  std::vector<std::vector<contact::ContactResult>> frames;  // [sweep][position]
-};
-DefectStage defect_stage(const Scene& scene, const ContactSetup& setup, const std::string& out_dir);
+pipeline::DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> setup,
+                                 const std::string& out_dir);
 
 // The hole-signal budget (app/hole_budget_stage.cpp): friction hypotheses against the paper's facts, judged
 // against the crosscheck's paper_model signals; writes its tables into out_dir (the crosscheck's).

@@ -14,6 +14,7 @@
 #include "mesh/sizing.hpp"
 #include "mesh/surface.hpp"
 #include "pipeline/contact.hpp"
+#include "pipeline/defect.hpp"
 #include "pipeline/kfit.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/sensor_greens.hpp"
@@ -212,4 +213,49 @@ PYBIND11_MODULE(_skinfem, m) {
         return pipeline::contact_run(scene, pipeline::contact_setup(scene, nullptr, false), chosen);
       },
       py::arg("scene"), py::arg("friction") = "");
+  py::class_<pipeline::DefectRun>(
+      m, "DefectRun", py::dynamic_attr(),
+      "A hole swept through the contact, static and sliding (pipeline/defect.hpp).")
+      .def_readonly("cases", &pipeline::DefectRun::cases)
+      .def_property_readonly(
+          "u_mm",
+          [](const pipeline::DefectRun& r) {
+            const auto& c = r.sweeps.at(0).centers;
+            py::array_t<double> a(static_cast<py::ssize_t>(c.size()));
+            for (size_t i = 0; i < c.size(); ++i) a.mutable_data()[i] = c[i][0];
+            return a;
+          },
+          "the hole centre's x at each position, mm")
+      .def(
+          "varsigma_kPa",
+          [](const pipeline::DefectRun& r, const std::string& name) {
+            for (size_t ci = 0; ci < r.cases.size(); ++ci)
+              if (r.cases[ci] == name) {
+                const Eigen::MatrixXd& v = r.sweeps[ci].varsigma;
+                const py::ssize_t n = v.rows(), ns = v.cols() / 2;
+                py::array_t<double> a({n, ns, py::ssize_t{2}});
+                auto w = a.mutable_unchecked<3>();
+                for (py::ssize_t i = 0; i < n; ++i)
+                  for (py::ssize_t k = 0; k < ns; ++k)
+                    for (int c = 0; c < 2; ++c) w(i, k, c) = 1e3 * v(i, 2 * k + c);
+                return a;
+              }
+            throw SceneError("case: '" + name + "' is not one of static, sliding");
+          },
+          py::arg("case"), "ς of case 'static' or 'sliding': positions × sensors × (z, x), kPa")
+      .def_property_readonly("wall_s", [](const pipeline::DefectRun& r) { return json_object(r.wall); });
+  m.def("_defect_json", [](const pipeline::DefectRun& r, const Scene& scene) {
+    return pipeline::defect_json(scene, r).dump();
+  });
+  m.def(
+      "_defect",
+      [](const Scene& scene) {
+        if (!scene.contact || !scene.contact->sweep)
+          throw SceneError(scene.source_path +
+                           ": contact.sweep: missing; defect needs a \"contact\" section "
+                           "with a \"sweep\"");
+        py::gil_scoped_release free;
+        return pipeline::defect_run(scene, pipeline::contact_setup(scene));
+      },
+      py::arg("scene"));
 }

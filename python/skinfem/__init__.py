@@ -9,6 +9,8 @@ The same pipeline as the ``skinfem`` command, with results as objects holding nu
     fit.to_dict()                                          # what `skinfem kfit` writes as kfit.json
     c = skinfem.contact(skinfem.scene("scenes/hertz_layer.json"))
     print(c.contact_radius_mm, c.p0_kPa, c.readings_kPa)   # c.to_dict(): `skinfem contact`'s summary.json
+    d = skinfem.defect(skinfem.scene("scenes/candelier2011.json"))
+    d.u_mm, d.varsigma_kPa("sliding")                      # positions; positions × sensors × (z, x)
 
 Bad input raises skinfem.SceneError or MeshError (ValueErrors) with the command's one-line message; a
 failed solve raises skinfem.SolverError (a RuntimeError).
@@ -17,7 +19,7 @@ import json as _json
 import os as _os
 
 from ._skinfem import *  # noqa: F401,F403
-from ._skinfem import SceneError, _contact, _contact_json, _kfit_json, load_scene, parse_scene
+from ._skinfem import SceneError, _contact, _contact_json, _defect, _defect_json, _kfit_json, load_scene, parse_scene
 from ._skinfem import _skinfem_version as __version__
 
 
@@ -55,3 +57,18 @@ def _contact_to_dict(self):
 
 
 ContactRun.to_dict = _contact_to_dict  # noqa: F405
+
+
+def defect(scene):
+    """A hole swept along the scene's contact.sweep, static and sliding (what `skinfem defect` computes)."""
+    run = _defect(scene)
+    run._scene = scene
+    return run
+
+
+def _defect_to_dict(self):
+    """The result as `skinfem defect` writes it (summary.json)."""
+    return _json.loads(_defect_json(self, self._scene))
+
+
+DefectRun.to_dict = _defect_to_dict  # noqa: F405

@@ -21,7 +21,7 @@ EXE = os.environ["SKINFEM_EXE"]
 FLAT = os.path.join(SRC, "scenes", "flat_layer.json")
 HERTZ = os.path.join(SRC, "scenes", "hertz_layer.json")
 # Timing and memory differ from run to run; everything else must agree.
-VOLATILE = re.compile(r"(wall|peak_rss)")
+VOLATILE = re.compile(r"(wall|peak_rss|seconds|ms_per_position)")
 
 
 def run_cli(*args):
@@ -84,6 +84,35 @@ def test_contact_reproduces_the_command(tmp_path):
     assert c.pressure_kPa.shape == (c.multiplier_xy_mm.shape[0],) and c.pressure_kPa.min() >= 0
     with pytest.raises(skinfem.SceneError, match="^friction: 'sticky' is not one of none, static, uncoupled, coupled$"):
         skinfem.contact(skinfem.scene(HERTZ), friction="sticky")
+
+
+def test_defect_reproduces_the_command(tmp_path):
+    # The Hertz layer with a short coupled sweep: small enough for a test, both cases, every sensor.
+    with open(HERTZ) as f:
+        scene = json.load(f)
+    scene["contact"].update({
+        "force": 0.2, "zone_radius": 2.6, "h": 0.8,
+        "friction": {"mode": "coupled", "mu": 1.0, "static_ratio": 0.1, "direction": [1.0, 0.0]},
+        "sweep": {"from": [-1.0, 0.0], "to": [1.0, 0.0], "positions": 21, "hole_diameter": 0.5, "h": 0.5}})
+    path = tmp_path / "sweep.json"
+    path.write_text(json.dumps(scene))
+    r = run_cli("defect", str(path), "--out", str(tmp_path / "out"))
+    assert r.returncode == 0, r.stderr
+    with open(tmp_path / "out" / "summary.json") as f:
+        summary = json.load(f)
+    d = skinfem.defect(skinfem.scene(str(path)))
+    assert_same(summary, d.to_dict())
+    assert d.cases == ["static", "sliding"] and d.u_mm.shape == (21,)
+    # defect.csv (10 digits): case,u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa
+    rows = [line.split(",") for line in (tmp_path / "out" / "defect.csv").read_text().splitlines()[1:]]
+    for case in d.cases:
+        v = d.varsigma_kPa(case)
+        ref = np.array([[float(x[3]), float(x[4])] for x in rows if x[0] == case]).reshape(v.shape)
+        assert np.allclose(v, ref, rtol=1e-9, atol=1e-12 * np.abs(ref).max())
+    with pytest.raises(skinfem.SceneError, match="^case: 'rolling' is not one of static, sliding$"):
+        d.varsigma_kPa("rolling")
+    with pytest.raises(skinfem.SceneError, match="contact.sweep: missing"):
+        skinfem.defect(skinfem.scene(HERTZ))
 
 
 def test_scene_from_dict_is_the_scene_from_its_file():

@@ -1,0 +1,98 @@
+#include "pipeline/defect.hpp"
+
+#include <cstdio>
+
+#include "pipeline/clock.hpp"
+#include "pipeline/progress.hpp"
+#include "pipeline/scene_json.hpp"
+#include "validation/hole_budget.hpp"
+
+namespace skinfem::pipeline {
+
+DefectRun defect_run(const Scene& scene, std::shared_ptr<const ContactSetup> shared) {
+  if (!scene.contact || !scene.contact->sweep)
+    throw SceneError(scene.source_path +
+                     ": contact.sweep: missing; skinfem defect needs a \"contact\" section with a \"sweep\"");
+  DefectRun run;
+  run.setup = std::move(shared);
+  const ContactSetup& setup = *run.setup;
+  const HoleSweep& sweep = *scene.contact->sweep;
+  run.wall = setup.wall;
+  const std::vector<std::pair<std::string, FrictionMode>> cases{{"static", FrictionMode::static_residual},
+                                                                {"sliding", FrictionMode::coupled}};
+  run.frames.resize(cases.size());
+  for (const auto& c : cases) check_zone(scene, setup, setup.solver->solve(c.second));
+  for (size_t ci = 0; ci < cases.size(); ++ci) {
+    const auto& [name, mode] = cases[ci];
+    run.cases.push_back(name);
+    Stopwatch clock;
+    run.sweeps.push_back(contact::hole_sweep(
+        *setup.solver, setup.mesh(), sweep, mode, [&](int i, const contact::ContactResult& r) {
+          run.frames[ci].push_back(r);
+          if ((i + 1) % 50 == 0 || i + 1 == sweep.positions) {
+            char buf[128];
+            std::snprintf(buf, sizeof buf, "sweep %s: %d/%d positions (%.1f s)", name.c_str(), i + 1,
+                          sweep.positions, clock.seconds());
+            progress(buf);
+          }
+        }));
+    run.wall["sweep_" + name] = clock.seconds();
+  }
+  return run;
+}
+
+nlohmann::json defect_json(const Scene& scene, const DefectRun& run) {
+  const ContactSetup& setup = *run.setup;
+  const HoleSweep& sweep = *scene.contact->sweep;
+  const int ns = static_cast<int>(scene.sensors.positions.size());
+  nlohmann::json summary;
+  for (size_t ci = 0; ci < run.cases.size(); ++ci) {
+    const auto& res = run.sweeps[ci];
+    nlohmann::json c;
+    c["friction"] = contact::to_string(res.mode);
+    c["ratio"] = setup.solver->ratio(res.mode);
+    c["shear_kPa"] = 1e3 * setup.solver->shear(res.mode);
+    c["seconds"] = res.seconds;
+    c["ms_per_position"] = 1e3 * res.seconds / sweep.positions;
+    c["max_complementarity"] = res.max_complementarity;
+    double pivots = 0;
+    for (int p : res.pivots) pivots += p;
+    c["mean_pivots"] = pivots / res.pivots.size();
+    // The jaggedness of each curve (validation::roughness), and the worst.
+    double rough = 0;
+    int rough_col = 0;
+    for (int col = 0; col < 2 * ns; ++col)
+      if (const double r = validation::roughness(res.varsigma.col(col)); r > rough)
+        rough = r, rough_col = col;
+    c["max_roughness"] = rough;
+    c["max_roughness_curve"] =
+        "#" + std::to_string(rough_col / 2 + 1) + (rough_col % 2 ? " varsigma_x" : " varsigma_z");
+    for (int k = 0; k < ns; ++k) {
+      Eigen::Index iz, ix;
+      const double z = res.varsigma.col(2 * k).cwiseAbs().maxCoeff(&iz);
+      const double x = res.varsigma.col(2 * k + 1).cwiseAbs().maxCoeff(&ix);
+      c["sensors"].push_back({{"sensor", k + 1},
+                              {"peak_abs_varsigma_z_kPa", 1e3 * z},
+                              {"u_at_peak_z_mm", res.centers[iz][0]},
+                              {"peak_abs_varsigma_x_kPa", 1e3 * x},
+                              {"u_at_peak_x_mm", res.centers[ix][0]}});
+    }
+    summary["cases"][run.cases[ci]] = c;
+  }
+  summary["scene"] = scene_json(scene);
+  summary["friction_law"] = contact::to_string(scene.contact->law);
+  summary["positions"] = sweep.positions;
+  summary["hole_diameter_mm"] = sweep.hole_diameter;
+  summary["from_mm"] = {sweep.from[0], sweep.from[1]};
+  summary["to_mm"] = {sweep.to[0], sweep.to[1]};
+  summary["dofs"] = setup.model->solver().free_dofs();
+  summary["multipliers"] = setup.solver->zone().size();
+  summary["multipliers_solved"] = setup.condensed->zone.size();
+  summary["block_solves"] = setup.condensed->block_solves;
+  summary["wall_s"] = run.wall;
+  summary["wall_total_s"] = total_seconds(run.wall);
+  summary["peak_rss_mb"] = peak_rss_mb();
+  return summary;
+}
+
+}  // namespace skinfem::pipeline

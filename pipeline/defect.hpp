@@ -1,0 +1,32 @@
+// The paper's §IV on a scene: a hole in the indenter swept along contact.sweep through the contact, a full
+// contact solve at every position, in two cases: static (residual traction, static_ratio/μ of the sliding
+// one) and sliding (coupled, with the scene's friction law). ς = sensor reading with the hole − without.
+// `skinfem defect` writes defect_json's object as summary.json, the signals as defect.csv and the frames
+// as a ParaView animation.
+#pragma once
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "contact/hole_sweep.hpp"
+#include "pipeline/contact_setup.hpp"
+
+namespace skinfem::pipeline {
+
+struct DefectRun {
+  std::shared_ptr<const ContactSetup> setup;  // what the results refer to
+  std::vector<std::string> cases;             // "static", "sliding"
+  std::vector<contact::SweepResult> sweeps;   // per case: centres, ς (positions × 2·sensors, MPa), costs
+  std::vector<std::vector<contact::ContactResult>> frames;  // [case][position]: the contact with the hole
+  nlohmann::json wall;                                      // seconds per stage
+};
+
+// Throws SceneError when the scene has no contact.sweep.
+DefectRun defect_run(const Scene& scene, std::shared_ptr<const ContactSetup> setup);
+// summary.json of `skinfem defect`: per case the peaks per sensor, complementarity, pivots, and
+// max_roughness (the largest second difference along u over its curve's peak, validation::roughness).
+nlohmann::json defect_json(const Scene& scene, const DefectRun& run);
+
+}  // namespace skinfem::pipeline
