@@ -276,13 +276,8 @@ nlohmann::json green_stage(const Scene& scene, const SensorGreens& greens, const
 int run_green(const Scene& scene, const std::string& out_dir, double grid_dx, GreenPath path) {
   check_output_dir(out_dir);
   if (grid_dx > 0) check_kernel_grid(scene, grid_dx);
-  if (path == GreenPath::meridian || (path == GreenPath::automatic && meridian_unavailable(scene).empty())) {
-    green_stage(scene, meridian_sensor_greens(scene), nullptr, out_dir, grid_dx);
-  } else {
-    const auto setup = adjoint_setup(scene);
-    green_stage(scene, with_path_reason(sensor_greens(scene, *setup), scene, path), setup.get(), out_dir,
-                grid_dx);
-  }
+  const SensorGreens greens = green_path(scene, path);
+  green_stage(scene, greens, greens.adjoints.get(), out_dir, grid_dx);
   return 0;
 }
 

@@ -449,8 +449,9 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
   auto adjoints = adjoint_setup(scene, skin);
   wall["green_adjoints"] = adjoints->wall["adjoint_solves"];
   clock = Stopwatch();
-  report["green"] = green_stage(scene, sensor_greens(scene, *adjoints), adjoints.get(), out_dir + "/green");
-  report["kfit"] = kfit_stage(scene, sensor_greens(scene, *adjoints), out_dir + "/kfit", "punch");
+  const SensorGreens greens = sensor_greens(scene, *adjoints);
+  report["green"] = green_stage(scene, greens, adjoints.get(), out_dir + "/green");
+  report["kfit"] = kfit_stage(scene, greens, out_dir + "/kfit", "punch");
   wall["green_kfit_profiles"] = clock.seconds();
 
   std::shared_ptr<ContactSetup> contact;

@@ -211,7 +211,7 @@ SensorGreens green_path(const Scene& scene, GreenPath path) {
     return meridian_sensor_greens(scene);
   std::shared_ptr<const AdjointSetup> setup = adjoint_setup(scene);
   SensorGreens g = with_path_reason(sensor_greens(scene, *setup), scene, path);
-  g.owner = std::move(setup);
+  g.adjoints = std::move(setup);
   return g;
 }
 

@@ -36,6 +36,8 @@ struct SensorGreens {
   double max_adjoint_residual = 0;
   nlohmann::json wall;                // seconds: mesh, assemble, factor, adjoint_solves
   std::shared_ptr<const void> owner;  // keeps the meridian solutions alive
+  // The 3D path's adjoint set-up when green_path made it (maps on the mesh, reciprocity); else null.
+  std::shared_ptr<const AdjointSetup> adjoints;
 
   // One sensor's `at`, as the calibration scan takes it.
   green::SensorGreen of(int sensor) const {
@@ -59,7 +61,7 @@ SensorGreens with_path_reason(SensorGreens greens, const Scene& scene, GreenPath
 SensorGreens meridian_sensor_greens(const Scene& scene);
 
 // The Green tensors by `path`: the meridian's where asked, or where automatic and meridian_unavailable is
-// empty; else the 3D path's (with_path_reason), whose adjoint setup the result's owner keeps alive.
+// empty; else the 3D path's (with_path_reason), with the adjoint set-up it made in `adjoints`.
 SensorGreens green_path(const Scene& scene, GreenPath path);
 
 // The first sensor on the axis of a cap solved in 3D (greens.path "3d"), or −1: the one sensor the meridian
