@@ -92,9 +92,7 @@ DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> s
 }
 
 int run_defect(const Scene& scene, const std::string& out_dir) {
-  if (!scene.contact || !scene.contact->sweep)
-    throw SceneError(scene.source_path +
-                     ": contact.sweep: missing; skinfem defect needs a \"contact\" section with a \"sweep\"");
+  require_sweep(scene);
   check_output_dir(out_dir);
   defect_stage(scene, contact_setup(scene), out_dir);
   return 0;

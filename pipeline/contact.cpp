@@ -38,9 +38,13 @@ nlohmann::json metrics_json(const contact::ContactMetrics& m, const ContactResul
 }
 }  // namespace
 
-FrictionMode friction_mode_named(const Scene& scene, const std::string& name) {
+void require_contact(const Scene& scene) {
   if (!scene.contact)
     throw SceneError(scene.source_path + ": contact: missing; skinfem contact needs a \"contact\" section");
+}
+
+FrictionMode friction_mode_named(const Scene& scene, const std::string& name) {
+  require_contact(scene);
   if (name.empty() || name == "scene") return scene.contact->friction;
   if (name == "none") return FrictionMode::none;
   if (name == "static") return FrictionMode::static_residual;
@@ -50,8 +54,7 @@ FrictionMode friction_mode_named(const Scene& scene, const std::string& name) {
 }
 
 ContactRun contact_run(const Scene& scene, std::shared_ptr<const ContactSetup> shared, FrictionMode chosen) {
-  if (!scene.contact)
-    throw SceneError(scene.source_path + ": contact: missing; skinfem contact needs a \"contact\" section");
+  require_contact(scene);
   ContactRun run;
   run.setup = std::move(shared);
   run.chosen = chosen;

@@ -29,6 +29,8 @@ struct ContactRun {
   const contact::ContactMetrics& metric() const { return metrics.at(chosen); }
 };
 
+// Throws SceneError, naming the command's need, when the scene has no contact section.
+void require_contact(const Scene& scene);
 // Throws SceneError when the scene has no contact.
 ContactRun contact_run(const Scene& scene, std::shared_ptr<const ContactSetup> setup, FrictionMode chosen);
 // summary.json of `skinfem contact`.

@@ -9,10 +9,14 @@
 
 namespace skinfem::pipeline {
 
-DefectRun defect_run(const Scene& scene, std::shared_ptr<const ContactSetup> shared) {
+void require_sweep(const Scene& scene) {
   if (!scene.contact || !scene.contact->sweep)
     throw SceneError(scene.source_path +
                      ": contact.sweep: missing; skinfem defect needs a \"contact\" section with a \"sweep\"");
+}
+
+DefectRun defect_run(const Scene& scene, std::shared_ptr<const ContactSetup> shared) {
+  require_sweep(scene);
   DefectRun run;
   run.setup = std::move(shared);
   const ContactSetup& setup = *run.setup;

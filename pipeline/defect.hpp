@@ -23,6 +23,9 @@ struct DefectRun {
   nlohmann::json wall;                                      // seconds per stage
 };
 
+// Throws SceneError, naming the command's need, when the scene has no contact.sweep: before contact_setup,
+// whose condensation is the expensive part.
+void require_sweep(const Scene& scene);
 // Throws SceneError when the scene has no contact.sweep.
 DefectRun defect_run(const Scene& scene, std::shared_ptr<const ContactSetup> setup);
 // summary.json of `skinfem defect`: per case the peaks per sensor, complementarity, pivots, and

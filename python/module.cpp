@@ -9,6 +9,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 #include "fem/mixed_solver.hpp"
 #include "mesh/sizing.hpp"
@@ -28,6 +29,13 @@ namespace {
 py::array_t<double> per_component(const std::array<double, 4>& v) {
   py::array_t<double> a(4);
   std::copy(v.begin(), v.end(), a.mutable_data());
+  return a;
+}
+
+// MPa values (a contiguous vector) as a kPa array of `shape`, row-major.
+py::array_t<double> kpa(const Eigen::VectorXd& v, std::vector<py::ssize_t> shape) {
+  py::array_t<double> a(std::move(shape));
+  for (Eigen::Index i = 0; i < v.size(); ++i) a.mutable_data()[i] = 1e3 * v[i];
   return a;
 }
 
@@ -172,20 +180,13 @@ PYBIND11_MODULE(_skinfem, m) {
       .def_property_readonly(
           "readings_kPa",
           [](const pipeline::ContactRun& r) {
-            const Eigen::VectorXd& v = r.result().readings;
-            py::array_t<double> a({static_cast<py::ssize_t>(v.size() / 2), py::ssize_t{2}});
-            for (Eigen::Index i = 0; i < v.size(); ++i) a.mutable_data()[i] = 1e3 * v[i];
-            return a;
+            const Eigen::VectorXd& v = r.result().readings;  // σ_z of sensor k at 2k, σ_x at 2k + 1
+            return kpa(v, {v.size() / 2, 2});
           },
           "sensors × (sigma_z, sigma_x), kPa")
       .def_property_readonly(
           "pressure_kPa",
-          [](const pipeline::ContactRun& r) {
-            const Eigen::VectorXd& l = r.result().lambda;
-            py::array_t<double> a(l.size());
-            for (Eigen::Index i = 0; i < l.size(); ++i) a.mutable_data()[i] = 1e3 * l[i];
-            return a;
-          },
+          [](const pipeline::ContactRun& r) { return kpa(r.result().lambda, {r.result().lambda.size()}); },
           "nodal pressure of each contact multiplier, kPa")
       .def_property_readonly(
           "multiplier_xy_mm",
@@ -250,10 +251,7 @@ PYBIND11_MODULE(_skinfem, m) {
   m.def(
       "_defect",
       [](const Scene& scene) {
-        if (!scene.contact || !scene.contact->sweep)
-          throw SceneError(scene.source_path +
-                           ": contact.sweep: missing; defect needs a \"contact\" section "
-                           "with a \"sweep\"");
+        pipeline::require_sweep(scene);  // before the set-up
         py::gil_scoped_release free;
         return pipeline::defect_run(scene, pipeline::contact_setup(scene));
       },
