@@ -32,8 +32,8 @@
 
 namespace skinfem::app {
 
-nlohmann::json contact_stage(const Scene& scene, std::shared_ptr<const ContactSetup> shared,
-                             const std::string& out_dir, FrictionMode chosen) {
+StageOutput<ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const ContactSetup> shared,
+                                      const std::string& out_dir, FrictionMode chosen) {
   ContactRun run = contact_run(scene, std::move(shared), chosen);
   const ContactSetup& setup = *run.setup;
   const TetMesh& mesh = setup.mesh();
@@ -63,15 +63,13 @@ nlohmann::json contact_stage(const Scene& scene, std::shared_ptr<const ContactSe
   write_text_atomic(out_dir + "/sensors.csv", csv.str());
   write_text_atomic(out_dir + "/modes.csv", modes.str());
   run.wall["write"] = clock.seconds();
-  const nlohmann::json summary = contact_json(scene, run);
+  nlohmann::json summary = contact_json(scene, run);
   const nlohmann::json& wall = run.wall;
   const Interface& interface = scene.contact->interface;
   const Vec2 t = scene.contact->direction;
   const auto& cu = run.metrics.at(FrictionMode::coupled);
   const auto& un = run.metrics.at(FrictionMode::uncoupled);
-  const nlohmann::json& coupling = summary["coupled_minus_uncoupled"];
-  const double dp[2] = {coupling["pressure_centroid_shift_xy_mm"][0],
-                        coupling["pressure_centroid_shift_xy_mm"][1]};
+  const auto& shift = run.coupling_shift;
   write_json(out_dir + "/summary.json", summary);
 
   std::printf(
@@ -88,12 +86,12 @@ nlohmann::json contact_stage(const Scene& scene, std::shared_ptr<const ContactSe
       "  complementarity %.1e, min pressure %.2e kPa, max pointwise penetration %.3g um, condensed vs "
       "reaction readings %.1e\n",
       r.complementarity, 1e3 * r.min_lambda, 1e3 * run.max_penetration_mm,
-      summary["readings_condensed_vs_reactions_rel"].get<double>());
+      run.readings_condensed_vs_reactions_rel);
   std::printf(
       "  coupled - uncoupled (mu %.3g, sliding along (%.3g, %.3g)): pressure centroid %+.4f mm ahead "
       "(x %+.4f, y %+.4f), contact zone %+.4f mm ahead, front/back peak %.4f vs %.4f\n",
-      scene.contact->mu, t[0], t[1], coupling["pressure_centroid_shift_mm"].get<double>(), dp[0], dp[1],
-      coupling["zone_centroid_shift_mm"].get<double>(), cu.front_back_peak_ratio, un.front_back_peak_ratio);
+      scene.contact->mu, t[0], t[1], shift.pressure_mm, shift.pressure_xy_mm[0], shift.pressure_xy_mm[1],
+      shift.zone_mm, cu.front_back_peak_ratio, un.front_back_peak_ratio);
   std::printf(
       "  %d DOFs, %d multipliers (%s); mesh %.2f s, assemble %.2f s, factor %.2f s, "
       "condense %.2f s (%d rhs), contact %.3f s; peak %.0f MB\n",
@@ -101,7 +99,7 @@ nlohmann::json contact_stage(const Scene& scene, std::shared_ptr<const ContactSe
       wall["mesh"].get<double>(), wall["assemble"].get<double>(), wall["factor"].get<double>(),
       wall["condense"].get<double>(), c.block_solves, wall["contact_solves"].get<double>(), peak_rss_mb());
   std::printf("  wrote %s/pressure.vtp, fields.vtu, sensors.csv, modes.csv, summary.json\n", out_dir.c_str());
-  return summary;
+  return {std::move(run), std::move(summary)};
 }
 
 int run_contact(const Scene& scene, const std::string& out_dir, const std::string& friction) {

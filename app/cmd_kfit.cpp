@@ -24,9 +24,9 @@ namespace skinfem::app {
 
 using green::LayerLoad;
 
-nlohmann::json kfit_stage(const Scene& scene, const SensorGreens& greens, const std::string& out_dir,
-                          const std::string& load_name) {
-  const KfitResult r = kfit(scene, greens, load_name == "point" ? LayerLoad::point : LayerLoad::punch);
+StageOutput<KfitResult> kfit_stage(const Scene& scene, const SensorGreens& greens, const std::string& out_dir,
+                                   const std::string& load_name) {
+  KfitResult r = kfit(scene, greens, load_name == "point" ? LayerLoad::point : LayerLoad::punch);
   nlohmann::json summary = kfit_json(r);
   prepare_output_dir(out_dir);
   write_json(out_dir + "/kfit.json", summary);
@@ -63,7 +63,7 @@ nlohmann::json kfit_stage(const Scene& scene, const SensorGreens& greens, const 
   if (!r.meridian_check.is_null()) std::printf("  %s\n", meridian_check_line(r.meridian_check).c_str());
   if (!r.explanation.empty()) std::printf("  %s\n", r.explanation.c_str());
   std::printf("  wrote %s/kfit.json\n", out_dir.c_str());
-  return summary;
+  return {std::move(r), std::move(summary)};
 }
 
 int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& load_name, GreenPath path) {

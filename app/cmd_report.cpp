@@ -30,21 +30,16 @@
 #include "app/stages.hpp"
 #include "green/kfit.hpp"
 #include "mesh/mirror.hpp"
+#include "pipeline/crosscheck.hpp"
 #include "pipeline/symmetry.hpp"
 #include "validation/crosscheck.hpp"
 #include "validation/k_sweep.hpp"
+#include "validation/text.hpp"
 
 namespace skinfem::app {
 
 namespace {
-// The paper's measured excess of the front sensors' hole signals over its model (§IV: "up to 4 times").
-constexpr double kPaperFrontExcess = 4.0;
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
+using validation::fmt;
 
 void write_crosscheck(const validation::Crosscheck& x, const Sensors& sensors, const std::string& dir) {
   prepare_output_dir(dir);
@@ -90,109 +85,46 @@ void write_crosscheck(const validation::Crosscheck& x, const Sensors& sensors, c
   write_text_atomic(dir + "/attribution.csv", a.str());
 }
 
-int variant_index(const std::vector<validation::Variant>& v, const std::string& name) {
-  for (size_t i = 0; i < v.size(); ++i)
-    if (v[i].name == name) return static_cast<int>(i);
-  return -1;
-}
-
-// Does coupling explain the front sensors' excess? FE coupled against FE uncoupled sliding signals on the
-// sensors at or ahead of the contact centre along x.
-// front: the sensors ahead along the sliding direction (validation::front_sensors).
-nlohmann::json front_sensor_answer(const validation::Crosscheck& x, const std::vector<int>& front_sensors,
-                                   const Vec2& direction) {
-  const int unc = variant_index(x.signal_variants, "uncoupled"),
-            paper = variant_index(x.signal_variants, "paper_model");
+// report.json's front_sensors entry (validation::front_sensor_answer).
+nlohmann::json front_sensor_json(const validation::FrontSensorAnswer& a) {
   nlohmann::json j;
-  double lo[2] = {1e300, 1e300}, hi[2] = {0, 0}, plo[2] = {1e300, 1e300}, phi[2] = {0, 0};
   std::string front;
-  for (const int k : front_sensors) {
-    front += (front.empty() ? "#" : ", #") + std::to_string(k + 1);
-    for (int b = 0; b < 2; ++b) {
-      // FE coupled / FE uncoupled is 1 / (uncoupled / FE).
-      const double coupling = 1 / x.metrics[unc][1][k][b].amplitude_ratio;
-      lo[b] = std::min(lo[b], coupling);
-      hi[b] = std::max(hi[b], coupling);
-      if (paper >= 0) {
-        const double fe_over_model = 1 / x.metrics[paper][1][k][b].amplitude_ratio;
-        plo[b] = std::min(plo[b], fe_over_model);
-        phi[b] = std::max(phi[b], fe_over_model);
-      }
-    }
-  }
-  if (front.empty()) {
-    j["front_sensors"] = "";
-    j["answer"] = "No sensor lies ahead of the contact centre along the sliding direction (" +
-                  fmt("%.3g", direction[0]) + ", " + fmt("%.3g", direction[1]) +
-                  "): the front sensors' excess cannot be examined on this scene";
-    return j;
-  }
+  for (const int k : a.front) front += (front.empty() ? "#" : ", #") + std::to_string(k + 1);
   j["front_sensors"] = front;
-  j["coupling_amplitude_factor_z"] = {lo[0], hi[0]};
-  j["coupling_amplitude_factor_x"] = {lo[1], hi[1]};
-  const double best = std::max(hi[0], hi[1]);
-  std::string text = "Coupled against uncoupled friction, the front sensors' (" + front +
-                     ") sliding hole-signal amplitudes change by x" + fmt("%.2f", lo[0]) + "-" +
-                     fmt("%.2f", hi[0]) + " (varsigma_z) and x" + fmt("%.2f", lo[1]) + "-" +
-                     fmt("%.2f", hi[1]) + " (varsigma_x); the paper measured up to x" +
-                     fmt("%.0f", kPaperFrontExcess) + " over its model, so coupling " +
-                     (best >= kPaperFrontExcess ? std::string("is large enough to explain it")
-                                                : "explains at most x" + fmt("%.2f", best) + " of it");
-  if (paper >= 0) {
-    j["fe_over_paper_model_amplitude_z"] = {plo[0], phi[0]};
-    j["fe_over_paper_model_amplitude_x"] = {plo[1], phi[1]};
-    text += "; full FE over the paper's model on these sensors: x" + fmt("%.3g", plo[0]) + "-" +
-            fmt("%.3g", phi[0]) + " (z), x" + fmt("%.3g", plo[1]) + "-" + fmt("%.3g", phi[1]) + " (x)";
+  if (!a.front.empty()) {
+    j["coupling_amplitude_factor_z"] = {a.coupling_lo[0], a.coupling_hi[0]};
+    j["coupling_amplitude_factor_x"] = {a.coupling_lo[1], a.coupling_hi[1]};
   }
-  j["answer"] = text;
+  if (a.model_lo) {
+    j["fe_over_paper_model_amplitude_z"] = {(*a.model_lo)[0], (*a.model_hi)[0]};
+    j["fe_over_paper_model_amplitude_x"] = {(*a.model_lo)[1], (*a.model_hi)[1]};
+  }
+  j["answer"] = a.answer;
   return j;
 }
 
-// Which single change of the calibration protocol gives the paper's k: the exact layer's k under each
-// reading (validation/k_sweep.hpp), written to DIR/k_sweep.csv, and the readings within ±0.01 of it.
-// mesh_rows: the FE k of sensor #1 per mesh scale (parameter mesh_scale), the sweep's mesh-resolution axis.
+// Which single change of the calibration protocol gives the paper's k (validation/k_sweep.hpp), with the
+// FE k of sensor #1 per mesh scale (mesh_rows) as one more axis; writes DIR/k_sweep.csv.
 nlohmann::json k_paper_answer(const Scene& scene, double h,
                               const std::vector<validation::KSweepPoint>& mesh_rows, const std::string& dir) {
   validation::KProtocol base;
   base.h = h;
   base.nu = scene.material.nu;
   base.punch_diameter = scene.calibration.punch_diameter;
-  auto pts = validation::k_sweep(base);
-  pts.insert(pts.end(), mesh_rows.begin(), mesh_rows.end());
+  const validation::KTargetAnswer a = validation::k_target_answer(base, mesh_rows, green::kPaperK);
   std::ostringstream csv;
   csv.precision(10);
   csv << "parameter,value,k_central,k_lsq_line\n";
-  for (const auto& p : pts)
+  for (const auto& p : a.points)
     csv << p.parameter << "," << p.value << "," << p.k_central << "," << p.k_lsq_line << "\n";
   write_text_atomic(dir + "/k_sweep.csv", csv.str());
-  const char* loads[3] = {"point", "uniform disc", "punch"};
   nlohmann::json j;
-  std::string near, cross;
-  for (const auto& p : pts)
-    for (const char* crit : {"k_central", "k_lsq_line"}) {
-      const double k = std::string(crit) == "k_central" ? p.k_central : p.k_lsq_line;
-      if (std::abs(k - green::kPaperK) <= 0.01) {
-        const std::string what = p.parameter == "load"
-                                     ? std::string("load ") + loads[static_cast<int>(p.value)]
-                                     : p.parameter + " = " + fmt("%.3g", p.value);
-        near += (near.empty() ? "" : "; ") + what + ": " + crit + " " + fmt("%.4f", k);
-        j["within_0.01"].push_back(
-            {{"parameter", p.parameter}, {"value", p.value}, {"criterion", crit}, {"k", k}});
-      }
-    }
-  for (const char* param : {"nu", "punch_diameter_mm", "disc_diameter_mm", "h_mm"})
-    for (const char* crit : {"k_central", "k_lsq_line"})
-      for (double v : validation::crossings(pts, param, crit, green::kPaperK)) {
-        cross += (cross.empty() ? "" : "; ") + std::string(crit) + " = " + fmt("%.2f", green::kPaperK) +
-                 " at " + param + " = " + fmt("%.3g", v);
-        j["crossings"].push_back({{"parameter", param}, {"criterion", crit}, {"value", v}});
-      }
-  j["answer"] = "Exact layer (h " + fmt("%.3g", h) + " mm) with one protocol reading changed at a time" +
-                (mesh_rows.empty() ? std::string() : ", and the FE mesh scale") + ": " +
-                (near.empty() ? std::string("no reading in the sweep gives k within 0.01 of ") +
-                                    fmt("%.2f", green::kPaperK)
-                              : "within 0.01 of " + fmt("%.2f", green::kPaperK) + ": " + near) +
-                (cross.empty() ? std::string("; no parameter's range crosses it") : "; crossings: " + cross);
+  for (const auto& n : a.near)
+    j["within_0.01"].push_back(
+        {{"parameter", n.parameter}, {"value", n.value}, {"criterion", n.criterion}, {"k", n.k}});
+  for (const auto& c : a.crossings)
+    j["crossings"].push_back({{"parameter", c.parameter}, {"criterion", c.criterion}, {"value", c.value}});
+  j["answer"] = a.answer;
   return j;
 }
 
@@ -451,7 +383,9 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
   clock = Stopwatch();
   const SensorGreens greens = sensor_greens(scene, *adjoints);
   report["green"] = green_stage(scene, greens, adjoints.get(), out_dir + "/green");
-  report["kfit"] = kfit_stage(scene, greens, out_dir + "/kfit", "punch");
+  const auto kf = kfit_stage(scene, greens, out_dir + "/kfit", "punch");
+  report["kfit"] = kf.summary;
+  const pipeline::KfitSensor& headline = kf.result.sensors.at(0);
   wall["green_kfit_profiles"] = clock.seconds();
 
   std::shared_ptr<ContactSetup> contact;
@@ -461,37 +395,24 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
     contact = contact_setup(scene, skin);
     wall["condense"] = contact->wall["condense"];
     clock = Stopwatch();
-    report["contact"] = contact_stage(scene, contact, out_dir + "/contact", scene.contact->friction);
+    double force = 0;  // the chosen mode's; the run is dropped here, its set-up released with `contact`
+    {
+      const auto run = contact_stage(scene, contact, out_dir + "/contact", scene.contact->friction);
+      report["contact"] = run.summary;
+      force = run.result.result().force_N;
+    }
     wall["contact"] = clock.seconds();
     if (scene.contact->sweep) {
       clock = Stopwatch();
       defect = defect_stage(scene, contact, out_dir + "/defect");
       wall["defect"] = clock.seconds();
       clock = Stopwatch();
-      progress("crosscheck: the paper's model against FE, one assumption at a time");
-      validation::CrosscheckInput in;
-      in.mesh = &contact->mesh();
-      in.solver = contact->solver.get();
-      in.fe = adjoints->fe.get();
-      in.sensors = scene.sensors;
-      for (const auto& s : scene.sensors.positions)
-        in.thickness.push_back(thickness_at(scene, skin->mesh, s));
-      in.E = scene.material.E;
-      in.nu = scene.material.nu;
-      in.force = scene.contact->force.value_or(report["contact"]["force_N"].get<double>());
-      in.center = contact_center(scene);
-      in.center_thickness = thickness_at(scene, skin->mesh, in.center);
-      in.equivalent_radius = equivalent_sphere_radius(scene);
-      in.k_paper = green::kPaperK;
-      in.k_best = report["kfit"]["k_lsq_line"].get<double>();
-      in.sweeps = &defect->sweeps;
-      in.frames = &defect->frames;
-      in.sweep = *scene.contact->sweep;
-      x = validation::crosscheck(in);
+      x = crosscheck_run(scene, *adjoints, *contact, *defect, scene.contact->force.value_or(force),
+                         headline.fe.k_lsq_line);
       write_crosscheck(*x, scene.sensors, out_dir + "/crosscheck");
-      report["front_sensors"] = front_sensor_answer(
-          *x, validation::front_sensors(scene.sensors, in.center, scene.contact->direction),
-          scene.contact->direction);
+      report["front_sensors"] = front_sensor_json(validation::front_sensor_answer(
+          *x, validation::front_sensors(scene.sensors, contact_center(scene), scene.contact->direction),
+          scene.contact->direction));
       wall["crosscheck"] = clock.seconds();
       clock = Stopwatch();
       report["hole_budget"] = hole_budget_stage(scene, *contact, *x, out_dir + "/crosscheck");
@@ -523,8 +444,7 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
   }
   clock = Stopwatch();
   progress("k sweep: which protocol reading gives the paper's k");
-  report["k_paper"] =
-      k_paper_answer(scene, report["kfit"]["h_mm"].get<double>(), mesh_rows, out_dir + "/kfit");
+  report["k_paper"] = k_paper_answer(scene, headline.h_mm, mesh_rows, out_dir + "/kfit");
   wall["k_sweep"] = clock.seconds();
 
   clock = Stopwatch();

@@ -1,31 +1,19 @@
-// The hole-signal budget of `report` (validation/hole_budget.hpp): every friction hypothesis swept on the
-// report's condensed skin, its FE/model amplitude ratios and the paper's facts F1–F5 judged from them.
-// Writes DIR/hole_budget.csv (hypothesis,case,sensor,component,fe_peak_kPa,model_peak_kPa,ratio) and
-// DIR/hole_budget_signals.csv (hypothesis,case,u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa); returns the
-// report.json entry `hole_budget`.
+// The hole-signal budget of `report` (pipeline/hole_budget.hpp) written out: DIR/hole_budget.csv
+// (hypothesis,case,sensor,component,fe_peak_kPa,model_peak_kPa,ratio) and DIR/hole_budget_signals.csv
+// (hypothesis,case,u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa); returns the report.json entry `hole_budget`.
 #include <sstream>
 
 #include "app/common.hpp"
 #include "app/stages.hpp"
-#include "validation/hole_budget.hpp"
+#include "pipeline/hole_budget.hpp"
 
 namespace skinfem::app {
 
 nlohmann::json hole_budget_stage(const Scene& scene, const ContactSetup& setup,
                                  const validation::Crosscheck& x, const std::string& out_dir) {
-  int model = -1;
-  for (size_t v = 0; v < x.signal_variants.size(); ++v)
-    if (x.signal_variants[v].name == "paper_model") model = static_cast<int>(v);
-  if (model < 0)
-    return {{"skipped",
-             "the paper's model needs a sphere-on-flat equivalent of the contact, and this scene "
-             "has none (equivalent_sphere_radius)"}};
-  validation::FactsInput base;
-  base.u = x.u;
-  base.model = x.signals[model];
-  base.sensors = scene.sensors;
-  base.center = contact_center(scene);
-  base.direction = scene.contact->direction;
+  const HoleBudget b = hole_budget(scene, setup, x);
+  if (!b.unavailable.empty()) return {{"skipped", b.unavailable}};
+  const validation::FactsInput& base = b.base;
   const int ns = static_cast<int>(scene.sensors.positions.size());
   nlohmann::json out;
   out["noise"] = {{"sigma_z_kPa", 1e3 * base.noise.sigma_z_MPa},
@@ -39,35 +27,16 @@ nlohmann::json hole_budget_stage(const Scene& scene, const ContactSetup& setup,
                   {"antisymmetric_lobe", base.rules.antisym},
                   {"comparable_maximum", base.rules.comparable},
                   {"dip", base.rules.dip}};
+  out["mean_pressure_kPa"] = 1e3 * b.mean_pressure_MPa;
   std::ostringstream csv, signals;
   csv.precision(8);
   signals.precision(8);
   csv << "hypothesis,case,sensor,component,fe_peak_kPa,model_peak_kPa,ratio\n";
   signals << "hypothesis,case,u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa\n";
   const char* cases[2] = {"static", "sliding"};
-  std::string best;
-  int best_met = -1;
-  // The mean pressure of the hard frictionless contact sets each rough interface's stiffness.
-  ContactLoad hard = *scene.contact;
-  hard.interface = {};
-  const contact::ContactResult r0 =
-      contact::ContactSolver(*setup.condensed, hard, setup.mirror.get()).solve(FrictionMode::none);
-  double area = 0;
-  for (int i : r0.active) area += setup.solver->zone().area[i];
-  const double p_mean = r0.force_N / area;
-  out["mean_pressure_kPa"] = 1e3 * p_mean;
-  std::vector<validation::Hypothesis> hypotheses = validation::friction_hypotheses(*scene.contact);
-  for (auto& h : validation::interface_hypotheses(*scene.contact, p_mean)) hypotheses.push_back(std::move(h));
-  for (const validation::Hypothesis& h : hypotheses) {
-    progress("hole budget: " + h.name);
-    validation::HypothesisResult r;
-    try {
-      r = validation::run_hypothesis(h, *setup.condensed, setup.mirror.get(), setup.mesh(), *setup.top,
-                                     *scene.contact->sweep, base);
-    } catch (const std::runtime_error& e) {
-      out["skipped"].push_back({{"name", h.name}, {"what", h.what}, {"why", e.what()}});
-      continue;
-    }
+  for (size_t i = 0; i < b.results.size(); ++i) {
+    const validation::HypothesisResult& r = b.results[i];
+    const validation::Hypothesis& h = r.hypothesis;
     nlohmann::json j = {
         {"name", h.name},
         {"what", h.what},
@@ -76,53 +45,33 @@ nlohmann::json hole_budget_stage(const Scene& scene, const ContactSetup& setup,
         {"contact_radius_mm", r.contact_radius_mm},
         {"tangential_force_N", r.tangential_force_N},
         {"seconds", r.seconds}};
-    int met = 0;
-    for (const auto& f : r.facts) {
-      j["facts"][f.fact] = {{"met", f.met}, {"why", f.why}};
-      met += f.met;
-    }
+    for (const auto& f : r.facts) j["facts"][f.fact] = {{"met", f.met}, {"why", f.why}};
     for (int c = 0; c < 2; ++c)
       for (int k = 0; k < ns; ++k)
-        for (int b = 0; b < 2; ++b) {
-          const double fe = r.signals[c].col(2 * k + b).cwiseAbs().maxCoeff(),
-                       m = base.model[c].col(2 * k + b).cwiseAbs().maxCoeff();
-          j["amplitude_ratio"][cases[c]][b ? "x" : "z"].push_back(r.ratio[c][k][b]);
-          j["fe_peak_kPa"][cases[c]][b ? "x" : "z"].push_back(1e3 * fe);
-          csv << h.name << "," << cases[c] << "," << k + 1 << "," << (b ? "x" : "z") << "," << 1e3 * fe << ","
-              << 1e3 * m << "," << r.ratio[c][k][b] << "\n";
+        for (int d = 0; d < 2; ++d) {
+          const double fe = r.signals[c].col(2 * k + d).cwiseAbs().maxCoeff(),
+                       m = base.model[c].col(2 * k + d).cwiseAbs().maxCoeff();
+          j["amplitude_ratio"][cases[c]][d ? "x" : "z"].push_back(r.ratio[c][k][d]);
+          j["fe_peak_kPa"][cases[c]][d ? "x" : "z"].push_back(1e3 * fe);
+          csv << h.name << "," << cases[c] << "," << k + 1 << "," << (d ? "x" : "z") << "," << 1e3 * fe << ","
+              << 1e3 * m << "," << r.ratio[c][k][d] << "\n";
         }
     for (int c = 0; c < 2; ++c)
-      for (int i = 0; i < r.signals[c].rows(); ++i)
+      for (int p = 0; p < r.signals[c].rows(); ++p)
         for (int k = 0; k < ns; ++k)
-          signals << h.name << "," << cases[c] << "," << x.u[i] << "," << k + 1 << ","
-                  << 1e3 * r.signals[c](i, 2 * k) << "," << 1e3 * r.signals[c](i, 2 * k + 1) << "\n";
-    j["facts_met"] = met;
-    double rough = 0;
-    for (int col = 0; col < 2 * ns; ++col)
-      rough = std::max(rough, validation::roughness(r.signals[1].col(col)));
-    j["sliding_roughness"] = rough;
+          signals << h.name << "," << cases[c] << "," << x.u[p] << "," << k + 1 << ","
+                  << 1e3 * r.signals[c](p, 2 * k) << "," << 1e3 * r.signals[c](p, 2 * k + 1) << "\n";
+    j["facts_met"] = b.facts_met[i];
+    j["sliding_roughness"] = b.sliding_roughness[i];
     out["hypotheses"].push_back(j);
-    if (met > best_met) best_met = met, best = h.name;
   }
-  // The answer, from the verdicts.
-  if (!out.contains("hypotheses")) {
-    out["answer"] = "Every hypothesis was skipped: " + out["skipped"][0]["why"].get<std::string>();
-    return out;
+  for (const auto& s : b.skipped)
+    out["skipped"].push_back({{"name", s.hypothesis.name}, {"what", s.hypothesis.what}, {"why", s.why}});
+  out["answer"] = b.answer;
+  if (!b.results.empty()) {
+    write_text_atomic(out_dir + "/hole_budget.csv", csv.str());
+    write_text_atomic(out_dir + "/hole_budget_signals.csv", signals.str());
   }
-  std::string answer = "Of " + std::to_string(out["hypotheses"].size()) + " hypotheses, " + best +
-                       " meets the most of the paper's facts (" + std::to_string(best_met) + " of 5";
-  std::string failed;
-  for (const auto& [fact, v] : out["hypotheses"][0]["facts"].items()) {
-    bool any = false;
-    for (const auto& h : out["hypotheses"]) any = any || h["facts"][fact]["met"].get<bool>();
-    if (!any) failed += (failed.empty() ? "" : ", ") + fact;
-  }
-  answer += failed.empty() ? "); every fact is met by at least one." : "); none meets " + failed + ".";
-  if (out.contains("skipped"))
-    answer += " Skipped: " + std::to_string(out["skipped"].size()) + " (report.json).";
-  out["answer"] = answer;
-  write_text_atomic(out_dir + "/hole_budget.csv", csv.str());
-  write_text_atomic(out_dir + "/hole_budget_signals.csv", signals.str());
   return out;
 }
 

@@ -1,6 +1,7 @@
-// The stages of a run, each on an already set-up skin: compute, write DIR, print its summary lines and
-// return its summary.json. The single-purpose subcommands (green, kfit, contact, defect) set up a skin and
-// run one stage; `report` sets up one skin and runs them all on it.
+// The stages of a run, each on an already set-up skin: compute (pipeline/), write DIR, print its summary
+// lines and return its summary.json, with the typed result where a later stage reads its numbers. The
+// single-purpose subcommands (green, kfit, contact, defect) set up a skin and run one stage; `report` sets up
+// one skin and runs them all on it.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -9,8 +10,10 @@
 
 #include "contact/hole_sweep.hpp"
 #include "pipeline/adjoint_setup.hpp"
+#include "pipeline/contact.hpp"
 #include "pipeline/contact_setup.hpp"
 #include "pipeline/defect.hpp"
+#include "pipeline/kfit.hpp"
 #include "pipeline/sensor_greens.hpp"
 #include "validation/crosscheck.hpp"
 
@@ -22,10 +25,15 @@ nlohmann::json mesh_stage(const Scene& scene, const TetMesh& mesh, double mesh_s
 // setup: the 3D path's adjoints (reciprocity check, maps on the mesh), or null for the meridian path.
 nlohmann::json green_stage(const Scene& scene, const SensorGreens& greens, const AdjointSetup* setup,
                            const std::string& out_dir, double grid_dx = 0);
-nlohmann::json kfit_stage(const Scene& scene, const SensorGreens& greens, const std::string& out_dir,
-                          const std::string& load_name);
-nlohmann::json contact_stage(const Scene& scene, std::shared_ptr<const ContactSetup> setup,
-                             const std::string& out_dir, FrictionMode chosen);
+template <class Result>
+struct StageOutput {
+  Result result;
+  nlohmann::json summary;  // as written
+};
+StageOutput<pipeline::KfitResult> kfit_stage(const Scene& scene, const SensorGreens& greens,
+                                             const std::string& out_dir, const std::string& load_name);
+StageOutput<pipeline::ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const ContactSetup> setup,
+                                                const std::string& out_dir, FrictionMode chosen);
 
 // Both sweeps of `defect` (static, then coupled sliding) with every position's contact solution.
 pipeline::DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> setup,

@@ -117,12 +117,24 @@ void BM_MeridianGreen(benchmark::State& st) {
   for (auto _ : st) {
     const MeridianGreen g(
         meridian_mesh([&](double) { return h; }, 20 * h, MeridianSizes::for_thickness(h, s)), 0.5,
-        SideCondition::free, 0.1);
+        SideCondition::free, ReadingSite{{0, 0}, 0.2});
     n = g.dofs();
   }
   st.counters["dofs"] = n;
   st.SetLabel("meridian_flat x" + std::to_string(s).substr(0, 4));
 }
+// The exact layer's tensor (green/layer_exact.hpp) at scan offsets: what the crosscheck's exact kernels and
+// every kfit comparison pay per evaluation.
+void BM_LayerGreenAt(benchmark::State& st) {
+  const green::LayerGreen g(3.04, 0.5, green::LayerLoad::punch, 0.25);
+  int i = 0;
+  for (auto _ : st) {
+    benchmark::DoNotOptimize(g.at(-9.12 + 18.24 * (i % 2000) / 1999.0, 0.304 * (i % 7)));
+    ++i;
+  }
+}
+BENCHMARK(BM_LayerGreenAt);
+
 BENCHMARK(BM_MeridianGreen)
     ->Arg(200)
     ->Arg(141)

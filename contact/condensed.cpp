@@ -4,8 +4,6 @@
 #include <chrono>
 #include <stdexcept>
 
-#include "fem/base_traction.hpp"
-
 namespace skinfem::contact {
 
 namespace {
@@ -14,7 +12,7 @@ constexpr int kBlock =
 }
 
 CondensedContact condense(const ElasticModel& model, const MortarZone& zone, const Indenter& indenter,
-                          const Sensors& sensors, const Vec2& direction,
+                          const SensorReadings& readings, const Vec2& direction,
                           const std::function<void(double, const std::string&)>& progress,
                           const std::vector<int>& watch_faces) {
   const auto start = std::chrono::steady_clock::now();
@@ -39,14 +37,9 @@ CondensedContact condense(const ElasticModel& model, const MortarZone& zone, con
   D_z.setFromTriplets(tz.begin(), tz.end());
   D_t.setFromTriplets(tt.begin(), tt.end());
 
-  // Adjoints of the sensor readings: base displacement −w, no load (green/fe_green.hpp).
-  const ReadingFunctionals functional(m);
-  const int ns = static_cast<int>(sensors.positions.size());
-  Eigen::MatrixXd W(3 * N, 2 * ns);
-  for (int k = 0; k < ns; ++k)
-    for (int b = 0; b < 2; ++b)
-      W.col(2 * k + b) = -functional(sensors.positions[k][0], sensors.positions[k][1], sensors.disc_diameter,
-                                     b == 0 ? 'z' : 'x');
+  // Adjoints of the sensor readings: base displacement −w, no load (fem/sensor_reading.hpp).
+  const int ns = readings.size();
+  const Eigen::MatrixXd W = -readings.weight_block();
   if (progress) progress(0.0, "adjoint solves for " + std::to_string(ns) + " sensors");
   const Eigen::MatrixXd Y = model.solver().solve_block(Eigen::MatrixXd::Zero(3 * N, 2 * ns), W);
   // reading = y·f: the pressure of multiplier i loads −e_z·(Dᵀe_i), its traction t·(Dᵀe_i).

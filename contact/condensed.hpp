@@ -7,7 +7,7 @@
 // the bonded skin), C_zt(i, j) = −∫ψ_i u_z for its tangential traction. Both come from the n_c solves of
 // the pressure loads alone: by Maxwell–Betti, C_zt = (D·[u_t of the pressure loads])ᵀ. S_p, S_t are the
 // sensor readings for each multiplier's pressure and traction, from one adjoint solve per reading
-// (reading = y·f, green/fe_green.hpp). Rows of S: sensor k's σ_z at 2k, σ_x at 2k + 1 (MPa per MPa).
+// (reading = y·f, fem/sensor_reading.hpp). Rows of S: sensor k's σ_z at 2k, σ_x at 2k + 1 (MPa per MPa).
 #pragma once
 
 #include <Eigen/Dense>
@@ -19,6 +19,7 @@
 #include "contact/indenter.hpp"
 #include "contact/mortar.hpp"
 #include "fem/elastic_model.hpp"
+#include "fem/sensor_reading.hpp"
 
 namespace skinfem::contact {
 
@@ -38,7 +39,7 @@ struct CondensedContact {
 // progress(fraction done, message) is called between blocks. watch_faces: top faces of the zone a swept
 // hole can cut (contact/hole_cut.hpp, watch_path); their P2 nodes get one more solve each.
 CondensedContact condense(const ElasticModel& model, const MortarZone& zone, const Indenter& indenter,
-                          const Sensors& sensors, const Vec2& direction,
+                          const SensorReadings& readings, const Vec2& direction,
                           const std::function<void(double, const std::string&)>& progress = {},
                           const std::vector<int>& watch_faces = {});
 

@@ -43,7 +43,8 @@ class BaseTraction {
 // sensors; the free function is the one-off form.
 class ReadingFunctionals {
  public:
-  explicit ReadingFunctionals(const TetMesh& mesh);
+  explicit ReadingFunctionals(const TetMesh& mesh);  // keeps a reference to mesh
+  explicit ReadingFunctionals(TetMesh&&) = delete;
   ~ReadingFunctionals();
   Eigen::VectorXd operator()(double x, double y, double diameter, char component) const;
 

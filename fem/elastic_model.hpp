@@ -41,8 +41,11 @@ struct LoadCaseResult {
 class ElasticModel {
  public:
   // punches: their nodes become constrained (u_z); pass the scene's punches (may be empty).
+  // The model keeps a reference to mesh, which must outlive it (a temporary mesh does not compile).
   ElasticModel(const TetMesh& mesh, const Material& material, SideCondition side,
                const std::vector<Punch>& punches, ModelOptions options = {});
+  ElasticModel(TetMesh&&, const Material&, SideCondition, const std::vector<Punch>&,
+               ModelOptions = {}) = delete;
 
   const TetMesh& mesh() const { return mesh_; }
   const MixedMatrices& matrices() const { return matrices_; }

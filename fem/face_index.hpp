@@ -11,7 +11,9 @@ namespace skinfem {
 
 class PlanarFaceIndex {
  public:
+  // Keeps a reference to mesh, which must outlive the index (a temporary mesh does not compile).
   PlanarFaceIndex(const TetMesh& mesh, int marker);
+  PlanarFaceIndex(TetMesh&&, int) = delete;
 
   // Mesh face index containing (x, y) and the face parameters (s, t) there; −1 when outside.
   // On curved faces (s, t) are those of the straight corner triangle (exact on flat faces). On a half_y

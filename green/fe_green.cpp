@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "fem/sensor_reading.hpp"
 #include "mesh/gauss_legendre.hpp"
 #include "mesh/surface_quadrature.hpp"
 
@@ -28,15 +29,18 @@ FeGreen::FeGreen(const ElasticModel& model, const Sensors& sensors,
   if (!model.punch_groups().empty())
     throw std::invalid_argument("FeGreen needs a model without punch constraints");
   const TetMesh& m = model.mesh();
-  const ReadingFunctionals functional(m);
   // All 4 readings of every sensor as one block of prescribed base values (the adjoint loads).
   const int ns = static_cast<int>(sensors.positions.size());
+  // Site 2s is sensor s's centre value, 2s + 1 its disc mean.
+  std::vector<ReadingSite> sites;
+  const auto points = reading_sites(sensors, true), discs = reading_sites(sensors);
+  for (int s = 0; s < ns; ++s) sites.insert(sites.end(), {points[s], discs[s]});
+  const SensorReadings readings(m, sites);
   Eigen::MatrixXd W(3 * m.num_nodes(), 4 * ns);
   for (int s = 0; s < ns; ++s)
     for (bool disc : {false, true})
       for (char reading : {'z', 'x'})
-        W.col(4 * s + 2 * disc + (reading == 'x')) = -functional(
-            sensors.positions[s][0], sensors.positions[s][1], disc ? sensors.disc_diameter : 0.0, reading);
+        W.col(4 * s + 2 * disc + (reading == 'x')) = -readings.weights(2 * s + disc, reading);
   // On a half mesh a force at (x, y) stands for itself and its mirror image at (x, −y) (or, on the cut, for
   // twice the half it carries): the reading per unit force is half the half model's.
   if (is_half_y(m)) W *= 0.5;

@@ -32,8 +32,10 @@ class FeGreen {
   // One adjoint solve per sensor, reading component (z, x) and reading kind (point value at the
   // sensor centre, mean over its disc): 4 per sensor on the model's factorization, all in one block solve.
   // The model must carry no punch constraints.
+  // Keeps a reference to model, which must outlive it (a temporary model does not compile).
   FeGreen(const ElasticModel& model, const Sensors& sensors,
           const std::function<void(const std::string&)>& progress = {});
+  FeGreen(ElasticModel&&, const Sensors&, const std::function<void(const std::string&)>& = {}) = delete;
 
   // g_ab (1/mm²) of sensor `sensor` for a unit load centred at offset (ox, oy) from it, spread as
   // `load` over radius `radius`. disc: the sensor's disc mean, else its centre value.

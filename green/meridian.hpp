@@ -20,6 +20,7 @@
 #include <functional>
 #include <vector>
 
+#include "fem/sensor_reading.hpp"
 #include "green/halfspace.hpp"
 #include "green/layer_exact.hpp"
 #include "scene/scene.hpp"
@@ -60,12 +61,14 @@ MeridianMesh meridian_mesh(const std::function<double(double)>& top, double radi
 // The Green tensor of the base reading on the axis (σ_z and σ_x, green/halfspace.hpp's GreenSample
 // conventions) for a unit force on the top at offset (x, y) from the axis, 1/mm²: mode 0 gives the σ_z
 // reading's adjoint (g_zz, g_xz), mode 1 the σ_x reading's (g_zx, g_xx). Two readings: the point value at the
-// axis and the mean over the sensor disc of radius disc_radius about it (0: the point reading only). The side
-// r = radius is traction-free or held (u = 0).
+// axis and the sensor's own reading about it (fem/sensor_reading.hpp: a site whose traits say it is a body of
+// revolution about its centre, which is put on the axis; a disc of diameter 0 gives the point reading only).
+// The side r = radius is traction-free or held (u = 0).
 class MeridianGreen {
  public:
+  // Throws std::invalid_argument for a site that is not axisymmetric.
   MeridianGreen(const MeridianMesh& mesh, double nu, SideCondition side = SideCondition::free,
-                double disc_radius = 0);
+                const ReadingSite& sensor = {});
   // The point force's map; offsets beyond the meridian's radius are clamped to it.
   green::GreenSample at(double x, double y, bool disc = false) const;
   // A unit load centred at offset (x, y), spread as `load` over radius `radius` (green/fe_green.hpp's

@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "contact/hole_cover.hpp"
-#include "fem/base_traction.hpp"
 #include "pipeline/clock.hpp"
 #include "pipeline/scene_json.hpp"
 #include "pipeline/symmetry.hpp"
@@ -93,7 +92,6 @@ ContactRun contact_run(const Scene& scene, std::shared_ptr<const ContactSetup> s
   const MixedSolution& x = run.solution;
   run.reactions = setup.model->solver().reactions(x, f);
   const Eigen::VectorXd& reactions = run.reactions;
-  const BaseTraction base(solved, reactions);
   // Pointwise gap at every node of the zone's faces (the constraint holds it ≥ 0 in the hat-weighted mean).
   double max_penetration = 0;
   for (int face : c.zone.faces)
@@ -113,9 +111,8 @@ ContactRun contact_run(const Scene& scene, std::shared_ptr<const ContactSetup> s
     }
   // The condensed readings (adjoints) against the reactions of the full solve: a second method.
   double reading_gap = 0, reading_scale = 0;
-  for (size_t k = 0; k < scene.sensors.positions.size(); ++k) {
-    const auto& p = scene.sensors.positions[k];
-    const SensorReading v = base.disc_mean(p[0], p[1], scene.sensors.disc_diameter);
+  for (int k = 0; k < setup.readings->size(); ++k) {
+    const SensorReading v = setup.readings->read(k, reactions);
     reading_gap = std::max(
         {reading_gap, std::abs(v.sigma_z - r.readings[2 * k]), std::abs(v.sigma_x - r.readings[2 * k + 1])});
     reading_scale = std::max({reading_scale, std::abs(v.sigma_z), std::abs(v.sigma_x)});
@@ -123,6 +120,15 @@ ContactRun contact_run(const Scene& scene, std::shared_ptr<const ContactSetup> s
   wall["full_solve"] = clock.seconds();
   run.max_penetration_mm = max_penetration;
   run.readings_condensed_vs_reactions_rel = reading_scale > 0 ? reading_gap / reading_scale : 0.0;
+  const auto& cu = run.metrics.at(FrictionMode::coupled);
+  const auto& un = run.metrics.at(FrictionMode::uncoupled);
+  const Vec2 t = scene.contact->direction;
+  auto& shift = run.coupling_shift;
+  shift.pressure_xy_mm = {cu.pressure_centroid[0] - un.pressure_centroid[0],
+                          cu.pressure_centroid[1] - un.pressure_centroid[1]};
+  shift.zone_xy_mm = {cu.zone_centroid[0] - un.zone_centroid[0], cu.zone_centroid[1] - un.zone_centroid[1]};
+  shift.pressure_mm = shift.pressure_xy_mm[0] * t[0] + shift.pressure_xy_mm[1] * t[1];
+  shift.zone_mm = shift.zone_xy_mm[0] * t[0] + shift.zone_xy_mm[1] * t[1];
 
   return run;
 }
@@ -160,19 +166,18 @@ nlohmann::json contact_json(const Scene& scene, const ContactRun& run) {
   const auto& un = metrics.at(FrictionMode::uncoupled);
   // Shifts along the sliding direction t (positive: ahead), and their (x, y) vectors.
   const Vec2 t = scene.contact->direction;
-  const Vec2 dp{cu.pressure_centroid[0] - un.pressure_centroid[0],
-                cu.pressure_centroid[1] - un.pressure_centroid[1]};
-  const Vec2 dz{cu.zone_centroid[0] - un.zone_centroid[0], cu.zone_centroid[1] - un.zone_centroid[1]};
-  nlohmann::json coupling = {{"mu", scene.contact->mu},
-                             {"direction", {t[0], t[1]}},
-                             {"pressure_centroid_shift_mm", dp[0] * t[0] + dp[1] * t[1]},
-                             {"pressure_centroid_shift_xy_mm", {dp[0], dp[1]}},
-                             {"zone_centroid_shift_mm", dz[0] * t[0] + dz[1] * t[1]},
-                             {"zone_centroid_shift_xy_mm", {dz[0], dz[1]}},
-                             {"front_back_peak_ratio_coupled", cu.front_back_peak_ratio},
-                             {"front_back_peak_ratio_uncoupled", un.front_back_peak_ratio},
-                             {"indentation_change_um", 1e3 * (results.at(FrictionMode::coupled).depth_mm -
-                                                              results.at(FrictionMode::uncoupled).depth_mm)}};
+  const auto& shift = run.coupling_shift;
+  nlohmann::json coupling = {
+      {"mu", scene.contact->mu},
+      {"direction", {t[0], t[1]}},
+      {"pressure_centroid_shift_mm", shift.pressure_mm},
+      {"pressure_centroid_shift_xy_mm", {shift.pressure_xy_mm[0], shift.pressure_xy_mm[1]}},
+      {"zone_centroid_shift_mm", shift.zone_mm},
+      {"zone_centroid_shift_xy_mm", {shift.zone_xy_mm[0], shift.zone_xy_mm[1]}},
+      {"front_back_peak_ratio_coupled", cu.front_back_peak_ratio},
+      {"front_back_peak_ratio_uncoupled", un.front_back_peak_ratio},
+      {"indentation_change_um",
+       1e3 * (results.at(FrictionMode::coupled).depth_mm - results.at(FrictionMode::uncoupled).depth_mm)}};
   for (size_t k = 0; k < scene.sensors.positions.size(); ++k) {
     const auto& a = results.at(FrictionMode::coupled).readings;
     const auto& b = results.at(FrictionMode::uncoupled).readings;

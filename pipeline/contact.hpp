@@ -23,6 +23,13 @@ struct ContactRun {
   Eigen::VectorXd reactions;      // its base reactions, N
   double max_penetration_mm = 0;  // pointwise, outside the holes
   double readings_condensed_vs_reactions_rel = 0;
+  // What coupling changes (coupled − uncoupled at the same μ; the paper's assumption is "nothing"): the
+  // pressure and contact-zone centroid shifts, along the sliding direction t (positive: ahead) and as
+  // vectors.
+  struct CouplingShift {
+    double pressure_mm = 0, zone_mm = 0;
+    Vec2 pressure_xy_mm{0, 0}, zone_xy_mm{0, 0};
+  } coupling_shift;
   nlohmann::json wall;  // seconds per stage (the set-up's, contact_solves, full_solve)
 
   const contact::ContactResult& result() const { return results.at(chosen); }

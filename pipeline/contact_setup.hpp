@@ -10,6 +10,7 @@
 
 #include "contact/contact_solver.hpp"
 #include "fem/face_index.hpp"
+#include "fem/sensor_reading.hpp"
 #include "pipeline/skin_setup.hpp"
 
 namespace skinfem::pipeline {
@@ -23,6 +24,7 @@ struct ContactSetup {
   std::vector<int> source;
   const TetMesh& mesh() const { return whole ? *whole : skin->mesh; }  // the results' mesh
   std::unique_ptr<contact::Indenter> indenter;
+  std::unique_ptr<SensorReadings> readings;              // the scene's sensors on the solved skin
   std::unique_ptr<contact::CondensedContact> condensed;  // on the solved skin
   std::unique_ptr<contact::MirrorView> mirror;           // null without mirror symmetry
   std::unique_ptr<contact::ContactSolver> solver;        // refers to condensed and mirror

@@ -101,7 +101,7 @@ SensorGreens meridian_sensor_greens(const Scene& scene) {
   };
   // The unbounded layer's side is far enough not to matter; a cap's is the scene's.
   const SideCondition side = flat ? SideCondition::free : geo.side;
-  const double disc = 0.5 * scene.sensors.disc_diameter;
+  const ReadingSite disc = reading_sites(scene.sensors).at(0);
   SensorGreens g;
   g.path = "meridian";
   char model[300];

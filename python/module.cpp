@@ -8,18 +8,26 @@
 #include <pybind11/stl.h>
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "contact/layer_hertz.hpp"
 #include "fem/mixed_solver.hpp"
+#include "green/kernel_grid.hpp"
 #include "mesh/sizing.hpp"
 #include "mesh/surface.hpp"
+#include "pipeline/adjoint_setup.hpp"
 #include "pipeline/contact.hpp"
+#include "pipeline/crosscheck.hpp"
 #include "pipeline/defect.hpp"
+#include "pipeline/green.hpp"
 #include "pipeline/kfit.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/sensor_greens.hpp"
+#include "pipeline/symmetry.hpp"
 #include "scene/load.hpp"
+#include "validation/paper_model.hpp"
 
 namespace py = pybind11;
 using namespace skinfem;
@@ -39,6 +47,12 @@ py::array_t<double> kpa(const Eigen::VectorXd& v, std::vector<py::ssize_t> shape
   return a;
 }
 
+py::array_t<double> array_of(const std::vector<double>& v) {
+  py::array_t<double> a(static_cast<py::ssize_t>(v.size()));
+  std::copy(v.begin(), v.end(), a.mutable_data());
+  return a;
+}
+
 py::object json_object(const nlohmann::json& j) {
   return py::module_::import("json").attr("loads")(j.dump());
 }
@@ -55,6 +69,49 @@ green::LayerLoad calibration_load_named(const std::string& load) {
   if (load == "point") return green::LayerLoad::point;
   throw SceneError("load: '" + load + "' is not one of punch, point");
 }
+
+// A positions × 2·sensors MPa matrix (σ_z of sensor k at column 2k) as positions × sensors × (z, x) kPa.
+py::array_t<double> kpa_by_sensor(const Eigen::MatrixXd& v) {
+  const py::ssize_t n = v.rows(), ns = v.cols() / 2;
+  py::array_t<double> a({n, ns, py::ssize_t{2}});
+  auto w = a.mutable_unchecked<3>();
+  for (py::ssize_t i = 0; i < n; ++i)
+    for (py::ssize_t k = 0; k < ns; ++k)
+      for (int c = 0; c < 2; ++c) w(i, k, c) = 1e3 * v(i, 2 * k + c);
+  return a;
+}
+
+int case_index(const std::string& name) {
+  if (name == "static") return 0;
+  if (name == "sliding") return 1;
+  throw SceneError("case: '" + name + "' is not one of static, sliding");
+}
+
+// A crosscheck variant by name; `kind` says which list ("reading" or "signal") for the error.
+size_t variant_named(const std::vector<validation::Variant>& variants, const std::string& name,
+                     const char* kind) {
+  for (size_t v = 0; v < variants.size(); ++v)
+    if (variants[v].name == name) return v;
+  throw SceneError("variant: '" + name + "' is not one of this crosscheck's " + kind + " variants");
+}
+
+std::vector<std::string> variant_names(const std::vector<validation::Variant>& variants) {
+  std::vector<std::string> names;
+  for (const auto& v : variants) names.push_back(v.name);
+  return names;
+}
+
+// The paper model's Green-tensor ingredient (validation/paper_model.hpp), a Python object of its own.
+struct PyKernel {
+  validation::GreenKernel g;
+  std::string what;
+};
+
+// Its traction ingredient.
+struct PyTractions {
+  validation::Tractions t;
+  std::string what;
+};
 
 }  // namespace
 
@@ -256,4 +313,208 @@ PYBIND11_MODULE(_skinfem, m) {
         return pipeline::defect_run(scene, pipeline::contact_setup(scene));
       },
       py::arg("scene"));
+
+  py::class_<pipeline::SensorGreens>(
+      m, "Greens", py::dynamic_attr(),
+      "Every sensor's Green maps, 3D or meridian (pipeline/sensor_greens.hpp).")
+      .def_readonly("path", &pipeline::SensorGreens::path)
+      .def_readonly("model", &pipeline::SensorGreens::model)
+      .def_readonly("dofs", &pipeline::SensorGreens::dofs)
+      .def_readonly("adjoint_solves", &pipeline::SensorGreens::adjoint_solves)
+      .def_property_readonly(
+          "thickness_mm", [](const pipeline::SensorGreens& g) { return array_of(g.thickness); },
+          "skin thickness above each sensor, mm")
+      .def(
+          "g_per_mm2",
+          [](const pipeline::SensorGreens& g, int sensor, py::array_t<double, py::array::forcecast> ox,
+             py::array_t<double, py::array::forcecast> oy, bool disc, const std::string& load,
+             double radius) {
+            if (sensor < 0 || sensor >= static_cast<int>(g.thickness.size()))
+              throw SceneError("sensor: " + std::to_string(sensor) + " is not a sensor index (0 to " +
+                               std::to_string(g.thickness.size() - 1) + ")");
+            if (ox.size() != oy.size()) throw SceneError("offsets: x and y differ in length");
+            const green::LayerLoad l =
+                load == "point" ? green::LayerLoad::point : calibration_load_named(load);
+            py::array_t<double> out({ox.size(), py::ssize_t{4}});
+            auto w = out.mutable_unchecked<2>();
+            const double *x = ox.data(), *y = oy.data();
+            for (py::ssize_t i = 0; i < ox.size(); ++i) {
+              const green::GreenSample v = g.at(sensor, disc, x[i], y[i], l, radius);
+              w(i, 0) = v.zz, w(i, 1) = v.zx, w(i, 2) = v.xz, w(i, 3) = v.xx;
+            }
+            return out;
+          },
+          py::arg("sensor"), py::arg("offset_x_mm"), py::arg("offset_y_mm"), py::arg("disc") = true,
+          py::arg("load") = "point", py::arg("radius_mm") = 0.0,
+          "g (1/mm^2) of sensor (0-based) for a unit load centred at each offset from it, columns zz, zx, "
+          "xz, "
+          "xx (reading b of a force along a: g_ab); disc: the sensor's disc mean, else its centre value; "
+          "load "
+          "'point' or 'punch' of radius_mm.")
+      .def("_kernel_grid", [](const pipeline::SensorGreens& g, const Scene& scene, double dx,
+                              std::optional<std::array<double, 4>> box) {
+        if (!(dx > 0)) throw SceneError("dx_mm: " + std::to_string(dx) + " must be > 0");
+        if (!box) {
+          pipeline::check_kernel_grid(scene, dx);
+          box = pipeline::footprint_box(scene);
+        }
+        const auto& b = *box;
+        const green::KernelGrid k = green::kernel_grid(g.disc_map, scene.sensors, b[0], b[1], b[2], b[3], dx);
+        const py::ssize_t nx = k.x.size(), ny = k.y.size(), ns = k.values.size();
+        py::array_t<double> x(nx), y(ny), values({ns, py::ssize_t{4}, ny, nx});
+        py::array_t<bool> on({ny, nx});
+        std::copy(k.x.begin(), k.x.end(), x.mutable_data());
+        std::copy(k.y.begin(), k.y.end(), y.mutable_data());
+        for (py::ssize_t i = 0; i < nx * ny; ++i) on.mutable_data()[i] = k.on_skin[i];
+        for (py::ssize_t s = 0; s < ns; ++s)
+          for (int c = 0; c < 4; ++c)
+            std::copy(k.values[s][c].begin(), k.values[s][c].end(),
+                      values.mutable_data() + (s * 4 + c) * nx * ny);
+        py::dict d;
+        d["x_mm"] = x, d["y_mm"] = y, d["on_skin"] = on, d["g_per_mm2"] = values;
+        return d;
+      });
+  m.def(
+      "greens",
+      [](const Scene& scene, const std::string& path) {
+        const pipeline::GreenPath p = green_path_named(path);
+        py::gil_scoped_release free;
+        return pipeline::green_path(scene, p);
+      },
+      py::arg("scene"), py::arg("path") = "auto",
+      "Every sensor's Green maps (what `skinfem green` computes): path 'auto' (the meridian where the skin "
+      "allows), '3d' or 'meridian'.");
+
+  // The paper's model, ingredient by ingredient (validation/paper_model.hpp).
+  py::class_<PyKernel>(m, "Kernel",
+                       "A Green tensor for the paper's convolution (validation/paper_model.hpp).")
+      .def_readonly("what", &PyKernel::what);
+  m.def(
+      "halfspace_kernel",
+      [](std::vector<double> thickness, double k) {
+        if (!(k > 0)) throw SceneError("k: " + std::to_string(k) + " must be > 0");
+        for (double h : thickness)
+          if (!(h > 0)) throw SceneError("thickness_mm: " + std::to_string(h) + " must be > 0");
+        return PyKernel{validation::rescaled_halfspace_kernel(std::move(thickness), k),
+                        "half-space Green tensor rescaled by k = " + std::to_string(k)};
+      },
+      py::arg("thickness_mm"), py::arg("k") = 1.0,
+      "k g_half(sqrt(k) offset) at each sensor's depth (thickness_mm per sensor); k = 1 is "
+      "Boussinesq-Cerruti.");
+  m.def(
+      "layer_kernel",
+      [](double h, double nu, double reach) {
+        if (!(h > 0)) throw SceneError("h_mm: " + std::to_string(h) + " must be > 0");
+        return PyKernel{validation::layer_exact_kernel(h, nu, reach),
+                        "exact bonded layer h = " + std::to_string(h) + " mm"};
+      },
+      py::arg("h_mm"), py::arg("nu") = 0.5, py::arg("reach_mm") = 20.0,
+      "The exact bonded layer's point readings (Hankel transforms), the same for every sensor.");
+  m.def(
+      "fe_kernel",
+      [](const pipeline::SensorGreens& g) {
+        return PyKernel{
+            [&g](int s, double ox, double oy) { return g.at(s, true, ox, oy, green::LayerLoad::point, 0); },
+            "FE Green maps (" + g.path + " path), sensor-disc readings"};
+      },
+      py::arg("greens"), py::keep_alive<0, 1>(), "The FE maps of `greens` (disc readings) as a kernel.");
+  py::class_<PyTractions>(m, "Tractions", "Interfacial tractions p_z, p_x (validation/paper_model.hpp).")
+      .def_readonly("what", &PyTractions::what)
+      .def_property_readonly("force_N", [](const PyTractions& t) { return t.t.force(); });
+  m.def(
+      "hertz_tractions",
+      [](double force, double R, double E, double nu, std::array<double, 2> center, double ratio,
+         double shear_kpa, double layer_h) {
+        if (!(force > 0)) throw SceneError("force_N: " + std::to_string(force) + " must be > 0");
+        if (!(R > 0)) throw SceneError("radius_mm: " + std::to_string(R) + " must be > 0");
+        if (layer_h > 0) {
+          const contact::LayerHertzResult l = contact::layer_hertz_force(force, R, layer_h, E, nu);
+          return PyTractions{validation::axisymmetric_tractions([l](double r) { return l.pressure_MPa(r); },
+                                                                center, l.a_mm, ratio, 1e-3 * shear_kpa),
+                             "exact bonded-layer Hertz pressure, a = " + std::to_string(l.a_mm) + " mm"};
+        }
+        const contact::HertzHalfspace h = contact::hertz_halfspace(force, R, E, nu);
+        const double a = h.a_mm, p0 = h.p0_MPa;
+        return PyTractions{
+            validation::axisymmetric_tractions(
+                [a, p0](double r) { return p0 * std::sqrt(std::max(0.0, 1 - r * r / (a * a))); }, center, a,
+                ratio, 1e-3 * shear_kpa),
+            "half-space Hertz pressure, a = " + std::to_string(a) + " mm"};
+      },
+      py::arg("force_N"), py::arg("radius_mm"), py::arg("E_MPa"), py::arg("nu") = 0.5,
+      py::arg("center_mm") = std::array<double, 2>{0, 0}, py::arg("ratio") = 0.0, py::arg("shear_kPa") = 0.0,
+      py::arg("layer_h_mm") = 0.0,
+      "A sphere's pressure: half-space Hertz, or the exact bonded layer of thickness layer_h_mm > 0; p_x = "
+      "ratio p_z + shear_kPa where it presses.");
+  m.def(
+      "convolve",
+      [](const PyTractions& t, const PyKernel& g, const Scene& scene) {
+        return kpa_by_sensor(validation::convolve(t.t, g.g, scene.sensors).transpose())
+            .attr("reshape")(py::make_tuple(-1, 2));
+      },
+      py::arg("tractions"), py::arg("kernel"), py::arg("scene"),
+      "The paper's eq. (1): each sensor's (sigma_z, sigma_x), kPa (sensors x 2).");
+  m.def(
+      "first_order_hole",
+      [](const PyTractions& t, const PyKernel& g, const Scene& scene,
+         const std::vector<std::array<double, 2>>& centers, double area) {
+        return kpa_by_sensor(validation::first_order_hole(t.t, g.g, scene.sensors, centers, area));
+      },
+      py::arg("tractions"), py::arg("kernel"), py::arg("scene"), py::arg("centers_mm"),
+      py::arg("hole_area_mm2"),
+      "The paper's eqs. (2)-(3): varsigma at each hole centre, positions x sensors x (z, x), kPa.");
+
+  py::class_<validation::Crosscheck>(
+      m, "Crosscheck",
+      "The paper's model against FE, one assumption swapped in per variant (validation/crosscheck.hpp).")
+      .def_property_readonly(
+          "reading_variants",
+          [](const validation::Crosscheck& x) { return variant_names(x.reading_variants); })
+      .def_property_readonly("signal_variants",
+                             [](const validation::Crosscheck& x) { return variant_names(x.signal_variants); })
+      .def_property_readonly("u_mm", [](const validation::Crosscheck& x) { return array_of(x.u); })
+      .def(
+          "readings_kPa",
+          [](const validation::Crosscheck& x, const std::string& variant, const std::string& name) {
+            const size_t v = variant_named(x.reading_variants, variant, "reading");
+            return kpa_by_sensor(x.readings[v][case_index(name)].transpose())
+                .attr("reshape")(py::make_tuple(-1, 2));
+          },
+          py::arg("variant"), py::arg("case"), "sensors x (sigma_z, sigma_x), kPa")
+      .def(
+          "varsigma_kPa",
+          [](const validation::Crosscheck& x, const std::string& variant, const std::string& name) {
+            return kpa_by_sensor(
+                x.signals[variant_named(x.signal_variants, variant, "signal")][case_index(name)]);
+          },
+          py::arg("variant"), py::arg("case"), "positions x sensors x (z, x), kPa")
+      .def(
+          "amplitude_ratio",
+          [](const validation::Crosscheck& x, const std::string& variant, const std::string& name) {
+            const auto& ms = x.metrics[variant_named(x.signal_variants, variant, "signal")][case_index(name)];
+            py::array_t<double> a({static_cast<py::ssize_t>(ms.size()), py::ssize_t{2}});
+            for (size_t k = 0; k < ms.size(); ++k)
+              for (int b = 0; b < 2; ++b) a.mutable_at(k, b) = ms[k][b].amplitude_ratio;
+            return a;
+          },
+          py::arg("variant"), py::arg("case"), "max|varsigma| of the variant over FE's, sensors x (z, x)");
+  m.def(
+      "crosscheck",
+      [](const Scene& scene) {
+        pipeline::require_sweep(scene);
+        py::gil_scoped_release free;
+        auto skin = pipeline::skin_setup(scene, pipeline::contact_mesh_part(scene));
+        auto adjoints = pipeline::adjoint_setup(scene, skin);
+        const pipeline::KfitResult k =
+            pipeline::kfit(scene, pipeline::sensor_greens(scene, *adjoints), green::LayerLoad::punch);
+        std::shared_ptr<const pipeline::ContactSetup> contact = pipeline::contact_setup(scene, skin);
+        const double force = scene.contact->force.value_or(
+            pipeline::contact_run(scene, contact, scene.contact->friction).result().force_N);
+        const pipeline::DefectRun defect = pipeline::defect_run(scene, contact);
+        return pipeline::crosscheck_run(scene, *adjoints, *contact, defect, force,
+                                        k.sensors.at(0).fe.k_lsq_line);
+      },
+      py::arg("scene"),
+      "The paper's model against FE, one assumption at a time, on one skin (the crosscheck of `skinfem "
+      "report`).");
 }

@@ -1,5 +1,6 @@
 #include "validation/crosscheck.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -7,6 +8,7 @@
 #include "contact/hole_cover.hpp"
 #include "contact/layer_hertz.hpp"
 #include "contact/small_hole.hpp"
+#include "validation/text.hpp"
 
 namespace skinfem::validation {
 
@@ -194,6 +196,60 @@ std::vector<int> front_sensors(const Sensors& sensors, const Vec2& center, const
     any_ahead = any_ahead || ahead > kOnLine;
   }
   return any_ahead ? out : std::vector<int>{};
+}
+
+namespace {
+int variant_index(const std::vector<Variant>& v, const std::string& name) {
+  for (size_t i = 0; i < v.size(); ++i)
+    if (v[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+}  // namespace
+
+FrontSensorAnswer front_sensor_answer(const Crosscheck& x, const std::vector<int>& front,
+                                      const Vec2& direction) {
+  const int unc = variant_index(x.signal_variants, "uncoupled"),
+            paper = variant_index(x.signal_variants, "paper_model");
+  FrontSensorAnswer a;
+  a.front = front;
+  std::array<double, 2> plo{1e300, 1e300}, phi{0, 0};
+  a.coupling_lo = {1e300, 1e300};
+  std::string names;
+  for (const int k : front) {
+    names += (names.empty() ? "#" : ", #") + std::to_string(k + 1);
+    for (int b = 0; b < 2; ++b) {
+      // FE coupled / FE uncoupled is 1 / (uncoupled / FE).
+      const double coupling = 1 / x.metrics[unc][1][k][b].amplitude_ratio;
+      a.coupling_lo[b] = std::min(a.coupling_lo[b], coupling);
+      a.coupling_hi[b] = std::max(a.coupling_hi[b], coupling);
+      if (paper >= 0) {
+        const double fe_over_model = 1 / x.metrics[paper][1][k][b].amplitude_ratio;
+        plo[b] = std::min(plo[b], fe_over_model);
+        phi[b] = std::max(phi[b], fe_over_model);
+      }
+    }
+  }
+  if (front.empty()) {
+    a.answer = "No sensor lies ahead of the contact centre along the sliding direction (" +
+               fmt("%.3g", direction[0]) + ", " + fmt("%.3g", direction[1]) +
+               "): the front sensors' excess cannot be examined on this scene";
+    return a;
+  }
+  const double best = std::max(a.coupling_hi[0], a.coupling_hi[1]);
+  a.answer = "Coupled against uncoupled friction, the front sensors' (" + names +
+             ") sliding hole-signal amplitudes change by x" + fmt("%.2f", a.coupling_lo[0]) + "-" +
+             fmt("%.2f", a.coupling_hi[0]) + " (varsigma_z) and x" + fmt("%.2f", a.coupling_lo[1]) + "-" +
+             fmt("%.2f", a.coupling_hi[1]) + " (varsigma_x); the paper measured up to x" +
+             fmt("%.0f", kPaperFrontExcess) + " over its model, so coupling " +
+             (best >= kPaperFrontExcess ? std::string("is large enough to explain it")
+                                        : "explains at most x" + fmt("%.2f", best) + " of it");
+  if (paper >= 0) {
+    a.model_lo = plo;
+    a.model_hi = phi;
+    a.answer += "; full FE over the paper's model on these sensors: x" + fmt("%.3g", plo[0]) + "-" +
+                fmt("%.3g", phi[0]) + " (z), x" + fmt("%.3g", plo[1]) + "-" + fmt("%.3g", phi[1]) + " (x)";
+  }
+  return a;
 }
 
 }  // namespace skinfem::validation

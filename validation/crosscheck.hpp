@@ -28,6 +28,7 @@
 // 2 opposite). Units: mm, MPa.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -90,5 +91,20 @@ SignalMetrics compare_signals(const std::vector<double>& u, const Eigen::VectorX
 // (unit, in the base plane), those on the centre's line across it included. 0-based, ascending; empty when
 // no sensor lies strictly ahead (the front-sensor question does not arise).
 std::vector<int> front_sensors(const Sensors& sensors, const Vec2& center, const Vec2& direction);
+
+// The paper's measured excess of the front sensors' hole signals over its model (§IV: "up to 4 times").
+constexpr double kPaperFrontExcess = 4.0;
+
+// Does friction-pressure coupling explain the front sensors' excess? The sliding amplitude factor of FE
+// coupled over FE uncoupled on the front sensors (min, max over them; z then x), and of FE over the paper's
+// model when that variant exists; `answer` is the sentence these numbers give.
+struct FrontSensorAnswer {
+  std::vector<int> front;  // 0-based, validation::front_sensors
+  std::array<double, 2> coupling_lo{}, coupling_hi{};
+  std::optional<std::array<double, 2>> model_lo, model_hi;
+  std::string answer;
+};
+FrontSensorAnswer front_sensor_answer(const Crosscheck& x, const std::vector<int>& front,
+                                      const Vec2& direction);
 
 }  // namespace skinfem::validation

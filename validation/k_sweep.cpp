@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "green/calibration.hpp"
+#include "validation/text.hpp"
 
 namespace skinfem::validation {
 
@@ -73,6 +74,42 @@ std::vector<double> crossings(const std::vector<KSweepPoint>& points, const std:
   if (prev && (criterion == "k_central" ? prev->k_central : prev->k_lsq_line) == target)
     out.push_back(prev->value);
   return out;
+}
+
+KTargetAnswer k_target_answer(const KProtocol& base, const std::vector<KSweepPoint>& extra, double target,
+                              double band) {
+  KTargetAnswer a;
+  a.target = target;
+  a.band = band;
+  a.points = k_sweep(base);
+  a.points.insert(a.points.end(), extra.begin(), extra.end());
+  const char* loads[3] = {"point", "uniform disc", "punch"};
+  std::string near, cross;
+  for (const auto& p : a.points)
+    for (const char* crit : {"k_central", "k_lsq_line"}) {
+      const double k = std::string(crit) == "k_central" ? p.k_central : p.k_lsq_line;
+      if (std::abs(k - target) <= band) {
+        const std::string what = p.parameter == "load"
+                                     ? std::string("load ") + loads[static_cast<int>(p.value)]
+                                     : p.parameter + " = " + fmt("%.3g", p.value);
+        near += (near.empty() ? "" : "; ") + what + ": " + crit + " " + fmt("%.4f", k);
+        a.near.push_back({p.parameter, crit, p.value, k});
+      }
+    }
+  for (const char* param : {"nu", "punch_diameter_mm", "disc_diameter_mm", "h_mm"})
+    for (const char* crit : {"k_central", "k_lsq_line"})
+      for (double v : crossings(a.points, param, crit, target)) {
+        cross += (cross.empty() ? "" : "; ") + std::string(crit) + " = " + fmt("%.2f", target) + " at " +
+                 param + " = " + fmt("%.3g", v);
+        a.crossings.push_back({param, crit, v});
+      }
+  a.answer = "Exact layer (h " + fmt("%.3g", base.h) + " mm) with one protocol reading changed at a time" +
+             (extra.empty() ? std::string() : ", and the FE mesh scale") + ": " +
+             (near.empty()
+                  ? "no reading in the sweep gives k within " + fmt("%g", band) + " of " + fmt("%.2f", target)
+                  : "within " + fmt("%g", band) + " of " + fmt("%.2f", target) + ": " + near) +
+             (cross.empty() ? std::string("; no parameter's range crosses it") : "; crossings: " + cross);
+  return a;
 }
 
 }  // namespace skinfem::validation

@@ -37,4 +37,26 @@ std::vector<KSweepPoint> k_sweep(const KProtocol& base, double spacing = 0.05);
 std::vector<double> crossings(const std::vector<KSweepPoint>& points, const std::string& parameter,
                               const std::string& criterion, double target);
 
+// Which single change of the protocol gives a target k (the paper's 1.48): the sweep about `base`, with
+// `extra` points appended (the report adds the FE k per mesh scale, parameter "mesh_scale"), the readings
+// whose k lies within `band` of the target, and where each parameter's k crosses it. `answer` says so in
+// one sentence computed from these numbers.
+struct KTargetAnswer {
+  struct Near {
+    std::string parameter, criterion;  // criterion: k_central or k_lsq_line
+    double value = 0, k = 0;
+  };
+  struct Crossing {
+    std::string parameter, criterion;
+    double value = 0;
+  };
+  double target = 0, band = 0;
+  std::vector<KSweepPoint> points;
+  std::vector<Near> near;
+  std::vector<Crossing> crossings;
+  std::string answer;
+};
+KTargetAnswer k_target_answer(const KProtocol& base, const std::vector<KSweepPoint>& extra, double target,
+                              double band = 0.01);
+
 }  // namespace skinfem::validation

@@ -11,6 +11,14 @@ The same pipeline as the ``skinfem`` command, with results as objects holding nu
     print(c.contact_radius_mm, c.p0_kPa, c.readings_kPa)   # c.to_dict(): `skinfem contact`'s summary.json
     d = skinfem.defect(skinfem.scene("scenes/candelier2011.json"))
     d.u_mm, d.varsigma_kPa("sliding")                      # positions; positions × sensors × (z, x)
+    g = skinfem.greens(scene)                              # every sensor's Green maps (3D or meridian)
+    g.g_per_mm2(0, [0.0, 1.0], [0.0, 0.0])                 # offsets × (zz, zx, xz, xx), 1/mm²
+    g.kernel(0.1)                                          # on a grid over the top, as `skinfem green --grid`
+
+The paper's model, one ingredient at a time: a Green tensor (halfspace_kernel, layer_kernel, fe_kernel), a
+traction field (hertz_tractions: half-space or exact-layer pressure, friction ratio, shear strength), and
+convolve (eq. (1)) or first_order_hole (eqs. (2)–(3)); crosscheck(scene) runs the report's comparison of
+every variant against full FE.
 
 Bad input raises skinfem.SceneError or MeshError (ValueErrors) with the command's one-line message; a
 failed solve raises skinfem.SolverError (a RuntimeError).
@@ -20,6 +28,7 @@ import os as _os
 
 from ._skinfem import *  # noqa: F401,F403
 from ._skinfem import SceneError, _contact, _contact_json, _defect, _defect_json, _kfit_json, load_scene, parse_scene
+from ._skinfem import greens as _greens
 from ._skinfem import _skinfem_version as __version__
 
 
@@ -72,3 +81,21 @@ def _defect_to_dict(self):
 
 
 DefectRun.to_dict = _defect_to_dict  # noqa: F405
+
+
+def greens(scene, path="auto"):
+    """Every sensor's Green maps (what `skinfem green` computes): path "auto" (the meridian where the skin
+    allows), "3d" or "meridian"."""
+    g = _greens(scene, path)
+    g._scene = scene
+    return g
+
+
+def _kernel(self, dx_mm, box_mm=None):
+    """Every sensor's disc-reading maps on a grid of spacing dx_mm over box_mm = (x_lo, x_hi, y_lo, y_hi)
+    (default: the skin's footprint, as `skinfem green --grid`): dict of x_mm, y_mm, on_skin (ny × nx) and
+    g_per_mm2 (sensors × (zz, zx, xz, xx) × ny × nx)."""
+    return self._kernel_grid(self._scene, dx_mm, box_mm)
+
+
+Greens.kernel = _kernel  # noqa: F405

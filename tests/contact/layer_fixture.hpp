@@ -61,8 +61,8 @@ inline void condense_layer(CondensedLayer& x, Scene scene) {
   if (s.contact->sweep)
     faces = contact::watch_path(x.mesh, zone, s.contact->sweep->from, s.contact->sweep->to,
                                 0.5 * s.contact->sweep->hole_diameter);
-  x.condensed = std::make_unique<contact::CondensedContact>(
-      contact::condense(*x.model, zone, *x.indenter, s.sensors, {1, 0}, {}, faces));
+  x.condensed = std::make_unique<contact::CondensedContact>(contact::condense(
+      *x.model, zone, *x.indenter, SensorReadings(x.mesh, reading_sites(s.sensors)), {1, 0}, {}, faces));
 }
 
 }  // namespace skinfem::testing

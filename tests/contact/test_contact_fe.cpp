@@ -66,7 +66,8 @@ Fixture& layer() {
         std::make_unique<ElasticModel>(x.mesh, x.scene.material, x.scene.geometry.side, std::vector<Punch>{});
     x.indenter = std::make_unique<Indenter>(x.scene, x.mesh);
     x.condensed = std::make_unique<CondensedContact>(
-        condense(*x.model, mortar_zone(x.mesh, {0, 0}, 3.2), *x.indenter, x.scene.sensors, {1, 0}));
+        condense(*x.model, mortar_zone(x.mesh, {0, 0}, 3.2), *x.indenter,
+                 SensorReadings(x.mesh, reading_sites(x.scene.sensors)), {1, 0}));
     x.solver = std::make_unique<ContactSolver>(*x.condensed, *x.scene.contact);
     x.top = std::make_unique<PlanarFaceIndex>(x.mesh, kTop);
     return x;

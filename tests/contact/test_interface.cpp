@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "../common/convergence.hpp"
 #include "contact/contact_solver.hpp"
 #include "layer_fixture.hpp"
 
@@ -45,9 +46,7 @@ ContactResult solve_exponential(double u0, double p_ref, ContactLoad c = *layer(
   return ContactSolver(*layer().condensed, c).solve(mode);
 }
 
-double observed_order(const std::array<double, 3>& e, double ratio) {
-  return std::log(std::abs(e[0] - e[1]) / std::abs(e[1] - e[2])) / std::log(ratio);
-}
+using testing::order_from_differences;
 
 TEST(Interface, StiffInterfaceTendsToTheHardContact) {
   const ContactResult hard = solve_with(std::nullopt);
@@ -77,7 +76,7 @@ TEST(Interface, SoftInterfaceTendsToWinkler) {
   }
   // e(K) = −cK + e_h: the skin's compliance in series (first order in K) and the mortar's P1 quadrature of
   // the Winkler pressure e_h (independent of K). Differences remove e_h: their ratio is 2^1.
-  EXPECT_NEAR(observed_order(e, 2.0), 1.0, 0.1);
+  EXPECT_NEAR(order_from_differences(e, 2.0), 1.0, 0.1);
   EXPECT_LT(e[0], e[2]);  // a softer interface is closer to Winkler from below
 }
 
@@ -101,8 +100,8 @@ TEST(Interface, ExponentialWithARigidSkinIsGaussian) {
     EXPECT_LT(r.complementarity, 1e-10);
   }
   const double e_h = 2 * e[2] - e[1];
-  std::printf("observed order %.3f, lumping error e_h = %.3e\n", observed_order(e, 2.0), e_h);
-  EXPECT_NEAR(observed_order(e, 2.0), 1.0, 0.1);
+  std::printf("observed order %.3f, lumping error e_h = %.3e\n", order_from_differences(e, 2.0), e_h);
+  EXPECT_NEAR(order_from_differences(e, 2.0), 1.0, 0.1);
   EXPECT_LT(e_h, 0.0);
   EXPECT_GT(e_h, -0.06);
 }

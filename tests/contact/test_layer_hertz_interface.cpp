@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "../common/convergence.hpp"
 #include "contact/layer_hertz.hpp"
 #include "contact/layer_hertz_interface.hpp"
 
@@ -20,9 +21,7 @@ namespace {
 
 constexpr double kR = 129.7, kH = 3.04, kE = 3.0, kNu = 0.5, kDelta = 0.01;
 
-double order(const std::array<double, 3>& e, double ratio) {
-  return std::log(std::abs(e[0] - e[1]) / std::abs(e[1] - e[2])) / std::log(ratio);
-}
+using testing::order_from_differences;
 
 TEST(LayerHertzInterface, TendsToTheHardLayerAsKGrows) {
   const LayerHertzResult hard = layer_hertz_depth(kDelta, kR, kH, kE, kNu);
@@ -72,7 +71,7 @@ TEST(LayerHertzInterface, ConvergesInTheNumberOfTerms) {
     F[l] = r.force_N;
     std::printf("N = %d: a %.10f mm, F %.12f N, p0 %.10f kPa\n", N[l], r.a_mm, r.force_N, 1e3 * r.p0_MPa);
   }
-  const double p = order({a[1], a[2], a[3]}, 2.0);
+  const double p = order_from_differences({a[1], a[2], a[3]}, 2.0);
   std::printf("observed order in N of a: %.2f\n", p);
   EXPECT_GT(p, 3.0);
   EXPECT_LT(std::abs(a[3] - a[2]) / a[3], 1e-6);

@@ -59,8 +59,8 @@ Side condensed_side(const Scene& s, const TetMesh& m) {
   const auto zone = mortar_zone(m, contact_center(s), s.contact->zone_radius);
   const HoleSweep sw = test_sweep();
   const std::vector<int> faces = watch_path(m, zone, sw.from, sw.to, 0.5 * sw.hole_diameter);
-  x.condensed =
-      std::make_unique<CondensedContact>(condense(*x.model, zone, *x.indenter, s.sensors, {1, 0}, {}, faces));
+  x.condensed = std::make_unique<CondensedContact>(
+      condense(*x.model, zone, *x.indenter, SensorReadings(m, reading_sites(s.sensors)), {1, 0}, {}, faces));
   return x;
 }
 

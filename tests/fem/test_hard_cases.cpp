@@ -6,11 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "fem/base_traction.hpp"
 #include "fem/elastic_model.hpp"
+#include "fem/sensor_reading.hpp"
 #include "mesh/build.hpp"
 
 namespace skinfem {
@@ -42,10 +42,23 @@ void expect_sound(const Scene& s, const std::string& what, double nu = 0.5,
   EXPECT_LT((reactions + applied).norm(), 1e-8 * applied.norm()) << what;
   EXPECT_NEAR(r.punches.at(0).force_N, 1.0, 1e-9) << what;
   EXPECT_GT(r.punches[0].displacement_mm, 0) << what;
-  const SensorReading reading = BaseTraction(m, r.reactions).disc_mean(0, 0, s.sensors.disc_diameter);
-  EXPECT_TRUE(std::isfinite(reading.sigma_z) && std::isfinite(reading.sigma_x)) << what;
-  std::printf("%s: %d tets, depth %.4e mm, sigma_z %.4e MPa, |balance| %.1e\n", what.c_str(), m.num_tets(),
-              r.punches[0].displacement_mm, reading.sigma_z, (reactions + applied).norm());
+  // Every sensor, through the reading seam and through the traction field (two routes, equal in exact
+  // arithmetic): finite and the same, whatever the case. The sensor under the pressing punch reads
+  // compression, σ_z > 0.
+  const SensorReadings readings(m, reading_sites(s.sensors));
+  const BaseTraction field(m, r.reactions);
+  for (int k = 0; k < readings.size(); ++k) {
+    const SensorReading a = readings.read(k, r.reactions);
+    const Vec2& p = s.sensors.positions[k];
+    const SensorReading b = field.disc_mean(p[0], p[1], s.sensors.disc_diameter);
+    EXPECT_TRUE(std::isfinite(a.sigma_z) && std::isfinite(a.sigma_x)) << what << ", sensor " << k;
+    const double scale = std::max({std::abs(b.sigma_z), std::abs(b.sigma_x), 1e-300});
+    EXPECT_NEAR(a.sigma_z, b.sigma_z, 1e-10 * scale) << what << ", sensor " << k;
+    EXPECT_NEAR(a.sigma_x, b.sigma_x, 1e-10 * scale) << what << ", sensor " << k;
+    if (p[0] == 0 && p[1] == 0) {
+      EXPECT_GT(a.sigma_z, 0) << what;
+    }
+  }
 }
 
 TEST(HardCases, ThicknessOverPunchRadiusFrom0_1To100) {

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -144,7 +143,7 @@ TEST(LayerGreen, BaseForceBalance) {
   }
 }
 
-TEST(LayerGreen, SymmetriesAndCentralAmplification) {
+TEST(LayerGreen, Symmetries) {
   const LayerGreen g(kH, 0.5);
   const GreenSample g0 = g.at(0, 0);
   EXPECT_EQ(g0.zx, 0.0);
@@ -162,19 +161,8 @@ TEST(LayerGreen, SymmetriesAndCentralAmplification) {
       EXPECT_NEAR(a.xx, b.xx, 1e-14 * peak(kH));
       EXPECT_NEAR(a.xx, c.xx, 1e-14 * peak(kH));
     }
-  // The published-style number: central amplification g_zz(0)·2πh²/3 of the incompressible bonded layer (the
-  // k_central of the rescaled model). Printed, not asserted.
-  const double amp_point = g0.zz / peak(kH);
-  const double amp_punch = LayerGreen(kH, 0.5, LayerLoad::punch, 0.25).at(0, 0).zz / peak(kH);
-  const double amp_uniform = LayerGreen(kH, 0.5, LayerLoad::uniform, 0.25).at(0, 0).zz / peak(kH);
-  std::printf(
-      "[layer] nu = 0.5, h = %.2f mm: g_zz(0)*2*pi*h^2/3 = %.10f (point), %.10f (punch a = 0.25 mm), "
-      "%.10f (uniform a = 0.25 mm)\n",
-      kH, amp_point, amp_punch, amp_uniform);
-  for (double nu : {0.0, 0.25, 0.45})
-    std::printf("[layer] nu = %.2f: g_zz(0)*2*pi*h^2/3 = %.10f (point)\n", nu,
-                LayerGreen(kH, nu).at(0, 0).zz / peak(kH));
-  EXPECT_TRUE(std::isfinite(amp_point) && amp_point > 0.0);
+  // The central amplification g_zz(0)·2πh²/3 (k_central) is checked against the FE meridian and 3D paths in
+  // test_k_regression.cpp and across load models in test_kfit.cpp.
 }
 
 // Near the loaded surface the layer must look like a half-space. The difference between the layer field and
@@ -329,16 +317,6 @@ TEST(LayerGreen, SensorDiscMeanEqualsTheMeanOverTheDiscByQuadrature) {
       EXPECT_GT(std::abs(g.zz - point.at(0, 0).zz), 1e-4 * peak0);
     }
   }
-}
-
-TEST(LayerGreen, TwoThousandEvaluationsAreFast) {
-  const LayerGreen g(kH, 0.5, LayerLoad::punch, 0.25);
-  const auto t0 = std::chrono::steady_clock::now();
-  double acc = 0;
-  for (int i = 0; i < 2000; ++i) acc += g.at(-3.0 * kH + 6.0 * kH * i / 1999.0, 0.1 * kH * (i % 7)).zz;
-  const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("[layer] 2000 evaluations in %.3f s (checksum %.6f)\n", sec, acc);
-  EXPECT_LT(sec, 0.5);
 }
 
 TEST(LayerGreen, RejectsBadArguments) {

@@ -40,7 +40,7 @@ TEST(MeridianGreen, FlatLayerConvergesToTheExactLayer) {
   for (double scale : {2.0, 1.41, 1.0}) {
     const MeridianMesh m =
         meridian_mesh([](double) { return h; }, 60.0, MeridianSizes::for_thickness(h, scale));
-    const MeridianGreen g(m, 0.5, SideCondition::free, b);
+    const MeridianGreen g(m, 0.5, SideCondition::free, ReadingSite{{0, 0}, 2 * b});
     err_offsets = 0;
     for (double x : {1.0, 2.0, 4.0})
       err_offsets = std::max(err_offsets, std::abs(punch_reading(g, x) / punch.at(x, 0).zz - 1));

@@ -86,16 +86,25 @@ def test_contact_reproduces_the_command(tmp_path):
         skinfem.contact(skinfem.scene(HERTZ), friction="sticky")
 
 
-def test_defect_reproduces_the_command(tmp_path):
-    # The Hertz layer with a short coupled sweep: small enough for a test, both cases, every sensor.
+SWEEP_CONTACT = {
+    "force": 0.2, "zone_radius": 2.6, "h": 0.8,
+    "friction": {"mode": "coupled", "mu": 1.0, "static_ratio": 0.1, "direction": [1.0, 0.0]},
+    "sweep": {"from": [-1.0, 0.0], "to": [1.0, 0.0], "positions": 21, "hole_diameter": 0.5, "h": 0.5}}
+
+
+@pytest.fixture(scope="module")
+def sweep_path(tmp_path_factory):
+    """The Hertz layer with a short coupled sweep: small enough for a test, both cases, every sensor."""
     with open(HERTZ) as f:
         scene = json.load(f)
-    scene["contact"].update({
-        "force": 0.2, "zone_radius": 2.6, "h": 0.8,
-        "friction": {"mode": "coupled", "mu": 1.0, "static_ratio": 0.1, "direction": [1.0, 0.0]},
-        "sweep": {"from": [-1.0, 0.0], "to": [1.0, 0.0], "positions": 21, "hole_diameter": 0.5, "h": 0.5}})
-    path = tmp_path / "sweep.json"
+    scene["contact"].update(SWEEP_CONTACT)
+    path = tmp_path_factory.mktemp("sweep") / "sweep.json"
     path.write_text(json.dumps(scene))
+    return path
+
+
+def test_defect_reproduces_the_command(tmp_path, sweep_path):
+    path = sweep_path
     r = run_cli("defect", str(path), "--out", str(tmp_path / "out"))
     assert r.returncode == 0, r.stderr
     with open(tmp_path / "out" / "summary.json") as f:
@@ -178,3 +187,77 @@ def test_readme_python_examples_run_as_written(tmp_path):
         r = subprocess.run([sys.executable, "-c", code], cwd=SRC, capture_output=True, text=True,
                            env=os.environ | {"PYTHONPATH": os.environ["PYTHONPATH"]})
         assert r.returncode == 0, f"README example failed:\n{code}\n{r.stderr}"
+
+
+def test_paper_model_ingredients_against_closed_forms():
+    # A sphere whose contact radius a is far below the depth h presses like a point force: on the axis of the
+    # half space (k = 1) σ_z = 3F/(2πh²)·(1 − (a/h)² + O((a/h)⁴)), the (a/h)² term from Hertz's ⟨r²⟩ = 2a²/5
+    # in Boussinesq's expansion (3/(2πh²))(1 − (5/2) r²/h²). The rescaled kernel k·g(√k r) moves that term to
+    # k(a/h)² and multiplies the rest by k.
+    s = skinfem.scene(FLAT)
+    g = skinfem.greens(s)
+    h = float(g.thickness_mm[0])
+    F, R, E, nu = 1.0, 0.01, 1000.0, 0.5
+    a = (3 * F * R / (4 * E / (1 - nu * nu))) ** (1 / 3)
+    t = skinfem.hertz_tractions(F, R, E, nu)
+    assert math.isclose(t.force_N, F, rel_tol=1e-9)
+    boussinesq = 1e3 * 3 * F / (2 * math.pi * h * h)  # kPa
+    for k in (1.0, 1.48):
+        sigma = skinfem.convolve(t, skinfem.halfspace_kernel([h], k), s)
+        assert sigma.shape == (1, 2)
+        expected = k * (1 - k * (a / h) ** 2)
+        assert abs(sigma[0, 0] / boussinesq - expected) < 0.1 * k * (a / h) ** 2, (k, sigma)
+        assert abs(sigma[0, 1]) < 1e-9 * sigma[0, 0]  # no tangential load, no σ_x on the axis
+    # The same maps by two routes: the kernel grid at the sensor's own grid point and g_per_mm2 at zero offset.
+    grid = g.kernel(0.5)
+    x0, y0 = s.sensor_positions_mm[0]
+    i, j = int(np.argmin(abs(grid["x_mm"] - x0))), int(np.argmin(abs(grid["y_mm"] - y0)))
+    at = g.g_per_mm2(0, [grid["x_mm"][i] - x0], [grid["y_mm"][j] - y0])[0]
+    assert grid["on_skin"][j, i]
+    assert np.allclose(grid["g_per_mm2"][0, :, j, i], at, rtol=1e-12, atol=1e-15)
+    with pytest.raises(skinfem.SceneError, match="^k: -1.000000 must be > 0$"):
+        skinfem.halfspace_kernel([h], -1.0)
+
+
+def test_crosscheck_variants_are_their_ingredients(sweep_path):
+    # Full FE is the defect sweep itself, and the paper_model variant is eqs. (2)-(3) with the exact-layer
+    # Hertz pressure of the same force, uncoupled Coulomb friction and the paper's k = 1.48: rebuilt here from
+    # the module's ingredients, it must agree to round-off.
+    s = skinfem.scene(str(sweep_path))
+    x = skinfem.crosscheck(s)
+    d = skinfem.defect(s)
+    assert "fe" in x.signal_variants and "paper_model" in x.signal_variants
+    assert np.allclose(x.u_mm, d.u_mm, rtol=0, atol=1e-14)
+    with open(HERTZ) as f:
+        base = json.load(f)
+    h, E, nu = base["geometry"]["h"], base["material"]["E"], base["material"]["nu"]
+    R = base["contact"]["indenter"]["R"]
+    fr = SWEEP_CONTACT["friction"]
+    kernel = skinfem.halfspace_kernel([h] * len(s.sensor_positions_mm), 1.48)
+    area = math.pi * SWEEP_CONTACT["sweep"]["hole_diameter"] ** 2 / 4
+    centers = [[u, 0.0] for u in x.u_mm]
+    for case, ratio in (("static", fr["static_ratio"]), ("sliding", fr["mu"])):
+        assert np.allclose(x.varsigma_kPa("fe", case), d.varsigma_kPa(case), rtol=1e-12, atol=1e-15)
+        assert np.allclose(x.amplitude_ratio("fe", case), 1.0, rtol=1e-14)
+        t = skinfem.hertz_tractions(SWEEP_CONTACT["force"], R, E, nu, ratio=ratio, layer_h_mm=h)
+        rebuilt = skinfem.first_order_hole(t, kernel, s, centers, area)
+        model = x.varsigma_kPa("paper_model", case)
+        assert np.allclose(model, rebuilt, rtol=1e-12, atol=1e-12 * np.abs(model).max())
+    with pytest.raises(skinfem.SceneError, match="^variant: 'magic' is not one"):
+        x.varsigma_kPa("magic", "static")
+
+
+def test_kernel_grid_reproduces_the_command(tmp_path):
+    # `skinfem green --grid` writes kernel.h5; the module's kernel() is the same grid over the same footprint.
+    import h5py  # scripts/setup installs it (the README kernel snippet needs it too)
+    r = run_cli("green", FLAT, "--grid", "0.5", "--out", str(tmp_path))
+    assert r.returncode == 0, r.stderr
+    k = skinfem.greens(skinfem.scene(FLAT)).kernel(0.5)
+    with h5py.File(tmp_path / "kernel.h5", "r") as f:
+        assert np.array_equal(f["x_mm"][:], k["x_mm"]) and np.array_equal(f["y_mm"][:], k["y_mm"])
+        assert np.array_equal(f["on_skin"][:].astype(bool), k["on_skin"])
+        for c, name in enumerate(("zz", "zx", "xz", "xx")):
+            ref = f[f"sensor01/g_{name}_per_mm2"][:]
+            assert np.allclose(k["g_per_mm2"][0, c], ref, rtol=1e-12, atol=1e-15), name
+    with pytest.raises(skinfem.SceneError, match="^--grid = 0.001: the kernel grid"):
+        skinfem.greens(skinfem.scene(FLAT)).kernel(0.001)

@@ -1,0 +1,20 @@
+// The paper's convolution model against full FE, one assumption at a time (validation/crosscheck.hpp), on
+// set-ups a run already has: the skin's 3D adjoints (the FE Green maps), its condensed contact and the hole
+// sweeps of `defect` (pipeline/defect.hpp). Units: mm, N, MPa.
+#pragma once
+
+#include "pipeline/adjoint_setup.hpp"
+#include "pipeline/contact_setup.hpp"
+#include "pipeline/defect.hpp"
+#include "validation/crosscheck.hpp"
+
+namespace skinfem::pipeline {
+
+// force_N: the indenter's force (the scene's when it prescribes one, else the contact's); k_best: the best
+// fit of k (kfit's k_lsq_line of sensor #1). Throws SceneError when a sensor or the contact centre has no
+// skin above it.
+validation::Crosscheck crosscheck_run(const Scene& scene, const AdjointSetup& adjoints,
+                                      const ContactSetup& contact, const DefectRun& defect, double force_N,
+                                      double k_best);
+
+}  // namespace skinfem::pipeline

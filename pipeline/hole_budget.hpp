@@ -1,0 +1,34 @@
+// The hole-signal budget of `report`: every friction and interface hypothesis (validation/hole_budget.hpp)
+// swept on the report's condensed skin, its FE / paper-model amplitude ratios, and the paper's facts F1–F5
+// judged from them; `answer` says which hypothesis meets the most facts and which facts none meets.
+// Units: mm, N, MPa.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "pipeline/contact_setup.hpp"
+#include "validation/crosscheck.hpp"
+#include "validation/hole_budget.hpp"
+
+namespace skinfem::pipeline {
+
+struct HoleBudget {
+  // Non-empty when nothing was run: the crosscheck has no paper_model signals (why).
+  std::string unavailable;
+  validation::FactsInput base;   // positions, the paper's model signals, noise model and judgement rules
+  double mean_pressure_MPa = 0;  // of the hard frictionless contact: sets each rough interface's K
+  std::vector<validation::HypothesisResult> results;  // in the order run
+  std::vector<int> facts_met;                         // per result
+  std::vector<double> sliding_roughness;              // per result: validation::roughness, worst curve
+  struct Skipped {
+    validation::Hypothesis hypothesis;
+    std::string why;
+  };
+  std::vector<Skipped> skipped;  // hypotheses whose contact outgrew the zone
+  std::string answer;
+};
+
+HoleBudget hole_budget(const Scene& scene, const ContactSetup& setup, const validation::Crosscheck& x);
+
+}  // namespace skinfem::pipeline
