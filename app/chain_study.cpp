@@ -44,22 +44,9 @@ nlohmann::json write_chain_study(const Scene& scene, const std::vector<ChainLeve
     }
     std::printf("\n");
   }
-  // Seconds ∝ DOFs^e per stage, over the levels that timed it.
-  nlohmann::json exponents;
+  const std::map<std::string, double> exponents = time_vs_dofs_exponent(levels);
   std::printf("time-vs-DOFs exponent per stage:");
-  for (const auto& [stage, t] : levels.back().wall.items()) {
-    std::vector<double> x, y;
-    for (const ChainLevel& c : levels)
-      if (c.wall.contains(stage) && c.wall[stage].is_number()) {
-        x.push_back(c.dofs);
-        y.push_back(c.wall[stage].get<double>());
-      }
-    const double e = validation::loglog_slope(x, y);
-    if (std::isfinite(e)) {
-      exponents[stage] = e;
-      std::printf(" %s %.2f", stage.c_str(), e);
-    }
-  }
+  for (const auto& [stage, e] : exponents) std::printf(" %s %.2f", stage.c_str(), e);
   std::printf("\n");
   prepare_output_dir(out_dir);
   write_text_atomic(out_dir + "/chain_study.csv", csv.str());

@@ -95,7 +95,7 @@ StageOutput<ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const 
   std::printf(
       "  %d DOFs, %d multipliers (%s); mesh %.2f s, assemble %.2f s, factor %.2f s, "
       "condense %.2f s (%d rhs), contact %.3f s; peak %.0f MB\n",
-      setup.model->solver().free_dofs(), c.zone.size(), summary["symmetry"].get<std::string>().c_str(),
+      setup.model->solver().free_dofs(), c.zone.size(), symmetry_used(scene, setup).c_str(),
       wall["mesh"].get<double>(), wall["assemble"].get<double>(), wall["factor"].get<double>(),
       wall["condense"].get<double>(), c.block_solves, wall["contact_solves"].get<double>(), peak_rss_mb());
   std::printf("  wrote %s/pressure.vtp, fields.vtu, sensors.csv, modes.csv, summary.json\n", out_dir.c_str());

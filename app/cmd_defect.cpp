@@ -78,10 +78,9 @@ DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> s
                 1e3 * results[ci].seconds / sweep.positions);
   std::printf("; total %.1f s, peak %.0f MB\n", total_seconds(wall), peak_rss_mb());
   for (size_t ci = 0; ci < run.cases.size(); ++ci) {
-    const auto& c = summary["cases"][run.cases[ci]];
-    std::printf("  %s: largest second difference along u %.1f %% of its curve's peak (%s)\n",
-                run.cases[ci].c_str(), 100 * c["max_roughness"].get<double>(),
-                c["max_roughness_curve"].get<std::string>().c_str());
+    const int col = run.max_roughness_column[ci];
+    std::printf("  %s: largest second difference along u %.1f %% of its curve's peak (#%d varsigma_%c)\n",
+                run.cases[ci].c_str(), 100 * run.max_roughness[ci], col / 2 + 1, col % 2 ? 'x' : 'z');
     std::printf("  %s: peak |varsigma_z| per sensor (kPa):", run.cases[ci].c_str());
     for (int k = 0; k < ns; ++k)
       std::printf(" %.2f", 1e3 * results[ci].varsigma.col(2 * k).cwiseAbs().maxCoeff());

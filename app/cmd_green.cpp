@@ -73,7 +73,7 @@ nlohmann::json green_stage(const Scene& scene, const SensorGreens& greens, const
   if (run.reciprocity_rel)
     std::printf("  reciprocity check (direct solve vs adjoint, sensor 1, offset 1 mm): %.1e relative\n",
                 *run.reciprocity_rel);
-  if (!run.meridian_check.is_null()) std::printf("  %s\n", meridian_check_line(run.meridian_check).c_str());
+  if (run.meridian_check) std::printf("  %s\n", meridian_check_line(*run.meridian_check).c_str());
   if (run.flat && !run.ridged) {
     double worst = 0;
     for (const GreenScan& scan : run.scans)

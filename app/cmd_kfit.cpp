@@ -60,7 +60,7 @@ StageOutput<KfitResult> kfit_stage(const Scene& scene, const SensorGreens& green
   if (r.sensors.size() > 1)
     std::printf("  over all %zu sensors: k_central %.4f–%.4f, k_lsq_line %.4f–%.4f\n", r.sensors.size(),
                 kc_lo, kc_hi, kl_lo, kl_hi);
-  if (!r.meridian_check.is_null()) std::printf("  %s\n", meridian_check_line(r.meridian_check).c_str());
+  if (r.meridian_check) std::printf("  %s\n", meridian_check_line(*r.meridian_check).c_str());
   if (!r.explanation.empty()) std::printf("  %s\n", r.explanation.c_str());
   std::printf("  wrote %s/kfit.json\n", out_dir.c_str());
   return {std::move(r), std::move(summary)};

@@ -104,9 +104,11 @@ nlohmann::json front_sensor_json(const validation::FrontSensorAnswer& a) {
 }
 
 // Which single change of the calibration protocol gives the paper's k (validation/k_sweep.hpp), with the
-// FE k of sensor #1 per mesh scale (mesh_rows) as one more axis; writes DIR/k_sweep.csv.
-nlohmann::json k_paper_answer(const Scene& scene, double h,
-                              const std::vector<validation::KSweepPoint>& mesh_rows, const std::string& dir) {
+// FE k of sensor #1 per mesh scale (mesh_rows) as one more axis; writes DIR/k_sweep.csv and its report.json
+// entry.
+validation::KTargetAnswer k_paper_answer(const Scene& scene, double h,
+                                         const std::vector<validation::KSweepPoint>& mesh_rows,
+                                         const std::string& dir, nlohmann::json& entry) {
   validation::KProtocol base;
   base.h = h;
   base.nu = scene.material.nu;
@@ -125,11 +127,18 @@ nlohmann::json k_paper_answer(const Scene& scene, double h,
   for (const auto& c : a.crossings)
     j["crossings"].push_back({{"parameter", c.parameter}, {"criterion", c.criterion}, {"value", c.value}});
   j["answer"] = a.answer;
-  return j;
+  entry = j;
+  return a;
 }
 
 // The chain's quantities with their error bars (pipeline/chain_level.hpp), in display units.
-nlohmann::json error_bars(const std::vector<ChainError>& errors, const std::vector<double>& coarse_scales) {
+struct ErrorBar {
+  std::string quantity, what, unit, method;
+  double value = 0, error = 0, relative_error = 0;
+};
+
+std::vector<ErrorBar> error_bars(const std::vector<ChainError>& errors,
+                                 const std::vector<double>& coarse_scales) {
   struct Display {
     const char* name;
     const char* what;
@@ -146,22 +155,30 @@ nlohmann::json error_bars(const std::vector<ChainError>& errors, const std::vect
   std::string levels;
   for (double s : coarse_scales) levels += fmt("%g", s) + ", ";
   levels += "1";
-  nlohmann::json j = nlohmann::json::array();
+  std::vector<ErrorBar> out;
   for (const ChainError& e : errors)
     for (const Display& d : table)
       if (e.name == d.name)
-        j.push_back(
-            {{"quantity", e.name},
-             {"what", d.what},
-             {"unit", d.unit},
-             {"value", d.factor * e.value},
-             {"error", d.factor * e.error},
-             {"relative_error", e.error / std::abs(e.value)},
-             {"method", e.asymptotic ? "|value - Richardson limit| over mesh scales " + levels +
-                                           ", observed order " + fmt("%.2f", e.order)
-                                     : "last change between mesh scales " + fmt("%g", coarse_scales.back()) +
-                                           " and 1; no asymptotic regime over " + levels + " (" + e.why_not +
-                                           "), so an order of magnitude only"}});
+        out.push_back({e.name, d.what, d.unit,
+                       e.asymptotic ? "|value - Richardson limit| over mesh scales " + levels +
+                                          ", observed order " + fmt("%.2f", e.order)
+                                    : "last change between mesh scales " + fmt("%g", coarse_scales.back()) +
+                                          " and 1; no asymptotic regime over " + levels + " (" + e.why_not +
+                                          "), so an order of magnitude only",
+                       d.factor * e.value, d.factor * e.error, e.error / std::abs(e.value)});
+  return out;
+}
+
+nlohmann::json error_bars_json(const std::vector<ErrorBar>& bars) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const ErrorBar& e : bars)
+    j.push_back({{"quantity", e.quantity},
+                 {"what", e.what},
+                 {"unit", e.unit},
+                 {"value", e.value},
+                 {"error", e.error},
+                 {"relative_error", e.relative_error},
+                 {"method", e.method}});
   return j;
 }
 
@@ -180,8 +197,21 @@ std::string html_escape(const std::string& s) {
   return o;
 }
 
-void write_index(const std::string& dir, const Scene& scene, const nlohmann::json& report,
-                 const validation::Crosscheck* x) {
+// What index.html shows, as the stages returned it.
+struct IndexInput {
+  int dofs = 0;
+  double wall_total_s = 0, peak_rss_mb = 0;
+  const nlohmann::json* wall = nullptr;  // the report's own seconds per stage
+  std::string kfit_verdict, k_paper_answer;
+  std::optional<validation::FrontSensorAnswer> front;
+  std::optional<HoleBudget> budget;
+  std::vector<ErrorBar> error_bars;                 // empty without error bars
+  const std::vector<ChainLevel>* levels = nullptr;  // the error bars' levels, coarse to fine
+  std::map<std::string, double> exponents;          // time ∝ DOFs^e per stage
+  const validation::Crosscheck* x = nullptr;
+};
+
+void write_index(const std::string& dir, const Scene& scene, const IndexInput& in) {
   namespace fs = std::filesystem;
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>skinfem report: "
@@ -191,114 +221,110 @@ void write_index(const std::string& dir, const Scene& scene, const nlohmann::jso
        "td,th{border:1px solid #bbb;padding:2px "
        "6px;text-align:right}img{max-width:100%}</style></head><body>\n";
   h << "<h1>skinfem report: " << html_escape(scene.name) << "</h1>\n<p>Units: mm, N, MPa (stresses in kPa). "
-    << report["dofs"].get<int>() << " DOFs, one factorization for the chain"
-    << (report.contains("error_bars") ? " (and one per coarser level for the error bars)" : "") << "; total "
-    << fmt("%.1f", report["wall_total_s"].get<double>()) << " s, peak memory "
-    << fmt("%.0f", report["peak_rss_mb"].get<double>()) << " MB.</p>\n";
-  if (report.contains("error_bars")) {
+    << in.dofs << " DOFs, one factorization for the chain"
+    << (in.error_bars.empty() ? "" : " (and one per coarser level for the error bars)") << "; total "
+    << fmt("%.1f", in.wall_total_s) << " s, peak memory " << fmt("%.0f", in.peak_rss_mb) << " MB.</p>\n";
+  if (!in.error_bars.empty()) {
     h << "<h2>Headline numbers and their discretization error</h2><table><tr><th>quantity</th><th>value</th>"
          "<th>error</th><th>unit</th><th>how the error is estimated</th></tr>\n";
-    for (const auto& e : report["error_bars"])
-      h << "<tr><td style=\"text-align:left\">" << html_escape(e["what"].get<std::string>()) << "</td><td>"
-        << html_escape(with_error(e["value"].get<double>(), e["error"].get<double>())) << "</td><td>"
-        << e["unit"].get<std::string>() << "</td><td style=\"text-align:left\">"
-        << html_escape(e["method"].get<std::string>()) << "</td></tr>\n";
+    for (const ErrorBar& e : in.error_bars)
+      h << "<tr><td style=\"text-align:left\">" << html_escape(e.what) << "</td><td>"
+        << html_escape(with_error(e.value, e.error)) << "</td><td>" << e.unit
+        << "</td><td style=\"text-align:left\">" << html_escape(e.method) << "</td></tr>\n";
     h << "</table>\n";
   }
-  if (report.contains("chain_study")) {
-    const auto& cs = report["chain_study"];
+  if (in.levels) {
+    const std::vector<ChainLevel>& levels = *in.levels;
     std::vector<std::string> stages;
-    for (const auto& [stage, t] : cs["levels"].back()["wall_s"].items()) stages.push_back(stage);
+    for (const auto& [stage, t] : levels.back().wall.items()) stages.push_back(stage);
+    // The quantities in name order, as chain_study.json lists them.
+    std::vector<size_t> order(levels.back().names.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(),
+              [&](size_t a, size_t b) { return levels.back().names[a] < levels.back().names[b]; });
     h << "<h2>Speed against error: the levels behind the error bars</h2><table><tr><th>mesh scale</th>"
          "<th>DOFs</th>";
     for (const auto& st : stages) h << "<th>" << st << " s</th>";
     h << "<th>peak MB</th>";
-    for (const auto& [q, v] : cs["levels"].back()["values"].items()) h << "<th>" << q << "</th>";
+    for (size_t i : order) h << "<th>" << levels.back().names[i] << "</th>";
     h << "</tr>\n";
-    for (const auto& l : cs["levels"]) {
-      h << "<tr><td>" << fmt("%g", l["scale"].get<double>()) << "</td><td>" << l["dofs"].get<int>()
-        << "</td>";
+    for (const ChainLevel& l : levels) {
+      h << "<tr><td>" << fmt("%g", l.scale) << "</td><td>" << l.dofs << "</td>";
       for (const auto& st : stages)
-        h << "<td>" << (l["wall_s"].contains(st) ? fmt("%.2f", l["wall_s"][st].get<double>()) : "")
-          << "</td>";
-      h << "<td>" << fmt("%.0f", l["peak_rss_mb"].get<double>()) << "</td>";
-      for (const auto& [q, v] : l["values"].items()) h << "<td>" << fmt("%.6g", v.get<double>()) << "</td>";
+        h << "<td>" << (l.wall.contains(st) ? fmt("%.2f", l.wall[st].get<double>()) : "") << "</td>";
+      h << "<td>" << fmt("%.0f", l.peak_rss_mb) << "</td>";
+      for (size_t i : order) h << "<td>" << fmt("%.6g", l.value[i]) << "</td>";
       h << "</tr>\n";
     }
     h << "<tr><td style=\"text-align:left\" colspan=\"2\">time &prop; DOFs<sup>e</sup>, e =</td>";
-    for (const auto& st : stages)
-      h << "<td>"
-        << (cs["time_vs_dofs_exponent"].contains(st)
-                ? fmt("%.2f", cs["time_vs_dofs_exponent"][st].get<double>())
-                : "")
-        << "</td>";
+    for (const auto& st : stages) {
+      const auto e = in.exponents.find(st);
+      h << "<td>" << (e != in.exponents.end() ? fmt("%.2f", e->second) : "") << "</td>";
+    }
     h << "</tr></table><p>Values in mm and MPa; the scene's own level is scale 1 (its memory is the whole "
          "report's). Errors per level: <a href=\"study/chain_study.csv\">study/chain_study.csv</a>, Pareto "
          "plot below.</p>\n";
   }
   h << "<h2>Time per stage</h2><table><tr><th>stage</th><th>seconds</th></tr>\n";
-  for (const auto& [stage, s] : report["wall_s"].items())
-    h << "<tr><td style=\"text-align:left\">" << stage << "</td><td>" << fmt("%.2f", s.get<double>())
+  for (const auto& [stage, sec] : in.wall->items())
+    h << "<tr><td style=\"text-align:left\">" << stage << "</td><td>" << fmt("%.2f", sec.get<double>())
       << "</td></tr>\n";
   h << "</table>\n";
-  h << "<h2>k</h2><p>" << html_escape(report["kfit"]["verdict"].get<std::string>()) << "</p>\n<p>"
-    << html_escape(report["k_paper"]["answer"].get<std::string>())
+  h << "<h2>k</h2><p>" << html_escape(in.kfit_verdict) << "</p>\n<p>" << html_escape(in.k_paper_answer)
     << " (<a href=\"kfit/k_sweep.csv\">kfit/k_sweep.csv</a>)</p>\n";
-  if (report.contains("front_sensors") && report["front_sensors"].contains("answer"))
+  if (in.front)
     h << "<h2>Does friction-pressure coupling explain the front sensors?</h2><p>"
-      << html_escape(report["front_sensors"]["answer"].get<std::string>()) << "</p>\n";
-  if (report.contains("hole_budget") && report["hole_budget"].contains("hypotheses")) {
-    const auto& b = report["hole_budget"];
+      << html_escape(in.front->answer) << "</p>\n";
+  if (in.budget && !in.budget->results.empty()) {
+    const HoleBudget& b = *in.budget;
     const std::vector<int> front =
         validation::front_sensors(scene.sensors, contact_center(scene), scene.contact->direction);
-    const auto range = [&](const nlohmann::json& ratios, bool in_front) {
+    const auto range = [&](const std::vector<std::array<double, 2>>& ratios, int component, bool in_front) {
       double lo = 1e300, hi = 0;
       for (size_t k = 0; k < ratios.size(); ++k)
         if ((std::find(front.begin(), front.end(), static_cast<int>(k)) != front.end()) == in_front)
-          lo = std::min(lo, ratios[k].get<double>()), hi = std::max(hi, ratios[k].get<double>());
+          lo = std::min(lo, ratios[k][component]), hi = std::max(hi, ratios[k][component]);
       return hi > 0 ? fmt("%.2f", lo) + "–" + fmt("%.2f", hi) : std::string("–");
     };
-    h << "<h2>Why is a hole so loud? The hole-signal budget</h2><p>"
-      << html_escape(b["answer"].get<std::string>())
+    const auto sorted_facts = [](std::vector<validation::FactVerdict> facts) {
+      std::sort(facts.begin(), facts.end(), [](const auto& a, const auto& c) { return a.fact < c.fact; });
+      return facts;
+    };
+    h << "<h2>Why is a hole so loud? The hole-signal budget</h2><p>" << html_escape(b.answer)
       << " Sliding amplitude of full FE over the paper's model per hypothesis; a fact is judged from the "
          "numbers "
          "(hover or open a row for the sentence). Detection: "
-      << fmt("%.0f", b["noise"]["k_sigma"].get<double>()) << " standard deviations of a "
-      << b["noise"]["passages"].get<int>() << "-passage mean, "
-      << fmt("%.3f", b["noise"]["threshold_z_kPa"].get<double>()) << " kPa (ςz) and "
-      << fmt("%.3f", b["noise"]["threshold_x_kPa"].get<double>())
+      << fmt("%.0f", b.base.noise.k) << " standard deviations of a " << b.base.noise.passages
+      << "-passage mean, " << fmt("%.3f", 1e3 * b.base.noise.threshold(0)) << " kPa (ςz) and "
+      << fmt("%.3f", 1e3 * b.base.noise.threshold(1))
       << " kPa (ςx).</p>\n<table><tr><th>hypothesis</th><th>τ0 kPa</th><th>K MPa/mm</th><th>back "
          "z</th><th>back "
          "x</th><th>front "
          "z</th><th>front x</th><th>F1</th><th>F2</th><th>F3</th><th>F4</th><th>F5</th></tr>\n";
-    for (const auto& y : b["hypotheses"]) {
-      const auto& r = y["amplitude_ratio"]["sliding"];
-      h << "<tr><td style=\"text-align:left\" title=\"" << html_escape(y["what"].get<std::string>()) << "\">"
-        << y["name"].get<std::string>() << "</td><td>" << fmt("%.1f", y["tau0_kPa"].get<double>())
-        << "</td><td>"
-        << (y["interface_K_MPa_per_mm"].get<double>() > 0
-                ? fmt("%.4g", y["interface_K_MPa_per_mm"].get<double>())
-                : std::string("hard"))
-        << "</td><td>" << range(r["z"], false) << "</td><td>" << range(r["x"], false) << "</td><td>"
-        << range(r["z"], true) << "</td><td>" << range(r["x"], true) << "</td>";
-      for (const auto& [fact, v] : y["facts"].items())
-        h << "<td title=\"" << html_escape(v["why"].get<std::string>()) << "\">"
-          << (v["met"].get<bool>() ? "yes" : "no") << "</td>";
+    for (const validation::HypothesisResult& y : b.results) {
+      const auto& r = y.ratio[1];
+      const Interface& face = y.hypothesis.load.interface;
+      h << "<tr><td style=\"text-align:left\" title=\"" << html_escape(y.hypothesis.what) << "\">"
+        << y.hypothesis.name << "</td><td>" << fmt("%.1f", 1e3 * y.tau0_MPa) << "</td><td>"
+        << (face.law == InterfaceLaw::linear && face.K > 0 ? fmt("%.4g", face.K) : std::string("hard"))
+        << "</td><td>" << range(r, 0, false) << "</td><td>" << range(r, 1, false) << "</td><td>"
+        << range(r, 0, true) << "</td><td>" << range(r, 1, true) << "</td>";
+      for (const auto& f : sorted_facts(y.facts))
+        h << "<td title=\"" << html_escape(f.why) << "\">" << (f.met ? "yes" : "no") << "</td>";
       h << "</tr>\n";
     }
     h << "</table>\n";
-    for (const auto& y : b["hypotheses"]) {
-      h << "<details><summary>" << y["name"].get<std::string>() << ": "
-        << html_escape(y["what"].get<std::string>()) << "</summary><ul>\n";
-      for (const auto& [fact, v] : y["facts"].items())
-        h << "<li>" << fact << (v["met"].get<bool>() ? " met: " : " not met: ")
-          << html_escape(v["why"].get<std::string>()) << "</li>\n";
+    for (const validation::HypothesisResult& y : b.results) {
+      h << "<details><summary>" << y.hypothesis.name << ": " << html_escape(y.hypothesis.what)
+        << "</summary><ul>\n";
+      for (const auto& f : sorted_facts(y.facts))
+        h << "<li>" << f.fact << (f.met ? " met: " : " not met: ") << html_escape(f.why) << "</li>\n";
       h << "</ul></details>\n";
     }
     h << "<p>Per sensor: <a href=\"crosscheck/hole_budget.csv\">crosscheck/hole_budget.csv</a>; signals: <a "
          "href=\"crosscheck/hole_budget_signals.csv\">crosscheck/hole_budget_signals.csv</a>.</p>\n";
   }
-  if (x) {
+  if (const validation::Crosscheck* x = in.x) {
     const int ns = static_cast<int>(scene.sensors.positions.size());
     h << "<h2>Mean sensor stresses (kPa), each variant swaps one assumption into full FE</h2>\n";
     for (int c = 0; c < 2; ++c) {
@@ -370,7 +396,8 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
   nlohmann::json report, wall;
   auto skin = skin_setup(scene, contact_mesh_part(scene));
   wall = skin->wall;
-  report["dofs"] = skin->model->solver().free_dofs();
+  const int dofs = skin->model->solver().free_dofs();
+  report["dofs"] = dofs;
   // A half skin is shown, and its quality and volume checked, as the whole it stands for.
   const bool half = is_half_y(skin->mesh);
   const TetMesh mirrored = half ? mirror_half(skin->mesh) : TetMesh{};
@@ -388,6 +415,8 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
   const pipeline::KfitSensor& headline = kf.result.sensors.at(0);
   wall["green_kfit_profiles"] = clock.seconds();
 
+  IndexInput index;
+  index.kfit_verdict = kf.result.verdict;
   std::shared_ptr<ContactSetup> contact;
   std::optional<DefectRun> defect;
   std::optional<validation::Crosscheck> x;
@@ -410,12 +439,15 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
       x = crosscheck_run(scene, *adjoints, *contact, *defect, scene.contact->force.value_or(force),
                          headline.fe.k_lsq_line);
       write_crosscheck(*x, scene.sensors, out_dir + "/crosscheck");
-      report["front_sensors"] = front_sensor_json(validation::front_sensor_answer(
+      index.front = validation::front_sensor_answer(
           *x, validation::front_sensors(scene.sensors, contact_center(scene), scene.contact->direction),
-          scene.contact->direction));
+          scene.contact->direction);
+      report["front_sensors"] = front_sensor_json(*index.front);
       wall["crosscheck"] = clock.seconds();
       clock = Stopwatch();
-      report["hole_budget"] = hole_budget_stage(scene, *contact, *x, out_dir + "/crosscheck");
+      auto budget = hole_budget_stage(scene, *contact, *x, out_dir + "/crosscheck");
+      report["hole_budget"] = std::move(budget.summary);
+      index.budget = std::move(budget.result);
       wall["hole_budget"] = clock.seconds();
     }
   }
@@ -423,9 +455,10 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
   // Error bars: the chain's headline quantities on this mesh and on coarser ones (every mesh size scaled),
   // Richardson through the three finest. The coarse levels come after this level's memory is released.
   std::vector<validation::KSweepPoint> mesh_rows;
+  std::vector<ChainLevel> levels;
   if (!error_scales.empty()) {
     clock = Stopwatch();
-    std::vector<ChainLevel> levels{chain_values(scene, *adjoints, contact.get())};
+    levels.push_back(chain_values(scene, *adjoints, contact.get()));
     contact.reset();
     adjoints.reset();
     skin.reset();
@@ -438,13 +471,17 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
     }
     report["chain_study"] = write_chain_study(scene, levels, out_dir + "/study");
     report["chain_study"].erase("scene");
-    report["error_bars"] = error_bars(chain_errors(levels), scales);
+    index.error_bars = error_bars(chain_errors(levels), scales);
+    index.levels = &levels;
+    index.exponents = time_vs_dofs_exponent(levels);
+    report["error_bars"] = error_bars_json(index.error_bars);
     for (const ChainLevel& l : levels) mesh_rows.push_back({"mesh_scale", l.scale, l.value[0], l.value[1]});
     wall["error_levels"] = clock.seconds();
   }
   clock = Stopwatch();
   progress("k sweep: which protocol reading gives the paper's k");
-  report["k_paper"] = k_paper_answer(scene, headline.h_mm, mesh_rows, out_dir + "/kfit");
+  index.k_paper_answer =
+      k_paper_answer(scene, headline.h_mm, mesh_rows, out_dir + "/kfit", report["k_paper"]).answer;
   wall["k_sweep"] = clock.seconds();
 
   clock = Stopwatch();
@@ -456,26 +493,25 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
 
   report["scene"] = scene_json(scene);
   report["wall_s"] = wall;
-  report["wall_total_s"] = total.seconds();
-  report["peak_rss_mb"] = peak_rss_mb();
+  report["wall_total_s"] = index.wall_total_s = total.seconds();
+  report["peak_rss_mb"] = index.peak_rss_mb = peak_rss_mb();
   report["units"] = {{"length", "mm"}, {"force", "N"}, {"stress", "kPa in tables and CSV, MPa in the model"}};
   write_json(out_dir + "/report.json", report);
-  write_index(out_dir, scene, report, x ? &*x : nullptr);
+  index.dofs = dofs;
+  index.wall = &wall;
+  index.x = x ? &*x : nullptr;
+  write_index(out_dir, scene, index);
   std::printf("report %s: %d DOFs, one factorization for the chain%s; %.1f s, peak %.0f MB\n",
-              scene.name.c_str(), report["dofs"].get<int>(),
-              report.contains("error_bars")
-                  ? (" and " + std::to_string(error_scales.size()) + " coarser for the error bars").c_str()
-                  : "",
+              scene.name.c_str(), dofs,
+              index.error_bars.empty()
+                  ? ""
+                  : (" and " + std::to_string(error_scales.size()) + " coarser for the error bars").c_str(),
               total.seconds(), peak_rss_mb());
-  if (report.contains("error_bars"))
-    for (const auto& e : report["error_bars"])
-      std::printf("  %s: %s%s%s (%s)\n", e["what"].get<std::string>().c_str(),
-                  with_error(e["value"].get<double>(), e["error"].get<double>()).c_str(),
-                  e["unit"].get<std::string>().empty() ? "" : " ", e["unit"].get<std::string>().c_str(),
-                  e["method"].get<std::string>().c_str());
-  std::printf("  %s\n", report["k_paper"]["answer"].get<std::string>().c_str());
-  if (report.contains("front_sensors") && report["front_sensors"].contains("answer"))
-    std::printf("  %s\n", report["front_sensors"]["answer"].get<std::string>().c_str());
+  for (const ErrorBar& e : index.error_bars)
+    std::printf("  %s: %s%s%s (%s)\n", e.what.c_str(), with_error(e.value, e.error).c_str(),
+                e.unit.empty() ? "" : " ", e.unit.c_str(), e.method.c_str());
+  std::printf("  %s\n", index.k_paper_answer.c_str());
+  if (index.front) std::printf("  %s\n", index.front->answer.c_str());
   if (rc != 0)
     std::printf("  figures: scripts/figures.py exited with %d; index.html lists the figures written\n", rc);
   std::printf("  wrote %s/index.html, report.json\n", out_dir.c_str());

@@ -5,14 +5,16 @@
 
 #include "app/common.hpp"
 #include "app/stages.hpp"
-#include "pipeline/hole_budget.hpp"
 
 namespace skinfem::app {
 
-nlohmann::json hole_budget_stage(const Scene& scene, const ContactSetup& setup,
-                                 const validation::Crosscheck& x, const std::string& out_dir) {
-  const HoleBudget b = hole_budget(scene, setup, x);
-  if (!b.unavailable.empty()) return {{"skipped", b.unavailable}};
+StageOutput<HoleBudget> hole_budget_stage(const Scene& scene, const ContactSetup& setup,
+                                          const validation::Crosscheck& x, const std::string& out_dir) {
+  HoleBudget b = hole_budget(scene, setup, x);
+  if (!b.unavailable.empty()) {
+    nlohmann::json skipped = {{"skipped", b.unavailable}};
+    return {std::move(b), std::move(skipped)};
+  }
   const validation::FactsInput& base = b.base;
   const int ns = static_cast<int>(scene.sensors.positions.size());
   nlohmann::json out;
@@ -72,7 +74,7 @@ nlohmann::json hole_budget_stage(const Scene& scene, const ContactSetup& setup,
     write_text_atomic(out_dir + "/hole_budget.csv", csv.str());
     write_text_atomic(out_dir + "/hole_budget_signals.csv", signals.str());
   }
-  return out;
+  return {std::move(b), std::move(out)};
 }
 
 }  // namespace skinfem::app

@@ -13,6 +13,7 @@
 #include "pipeline/contact.hpp"
 #include "pipeline/contact_setup.hpp"
 #include "pipeline/defect.hpp"
+#include "pipeline/hole_budget.hpp"
 #include "pipeline/kfit.hpp"
 #include "pipeline/sensor_greens.hpp"
 #include "validation/crosscheck.hpp"
@@ -41,7 +42,8 @@ pipeline::DefectRun defect_stage(const Scene& scene, std::shared_ptr<const Conta
 
 // The hole-signal budget (app/hole_budget_stage.cpp): friction hypotheses against the paper's facts, judged
 // against the crosscheck's paper_model signals; writes its tables into out_dir (the crosscheck's).
-nlohmann::json hole_budget_stage(const Scene& scene, const ContactSetup& setup,
-                                 const validation::Crosscheck& x, const std::string& out_dir);
+StageOutput<pipeline::HoleBudget> hole_budget_stage(const Scene& scene, const ContactSetup& setup,
+                                                    const validation::Crosscheck& x,
+                                                    const std::string& out_dir);
 
 }  // namespace skinfem::app

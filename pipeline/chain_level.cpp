@@ -111,4 +111,19 @@ std::vector<ChainError> chain_errors(const std::vector<ChainLevel>& levels) {
   return out;
 }
 
+std::map<std::string, double> time_vs_dofs_exponent(const std::vector<ChainLevel>& levels) {
+  std::map<std::string, double> out;
+  for (const auto& [stage, t] : levels.back().wall.items()) {
+    std::vector<double> x, y;
+    for (const ChainLevel& c : levels)
+      if (c.wall.contains(stage) && c.wall[stage].is_number()) {
+        x.push_back(c.dofs);
+        y.push_back(c.wall[stage].get<double>());
+      }
+    const double e = validation::loglog_slope(x, y);
+    if (std::isfinite(e)) out[stage] = e;
+  }
+  return out;
+}
+
 }  // namespace skinfem::pipeline

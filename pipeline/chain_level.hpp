@@ -4,6 +4,7 @@
 // |ς_z| over sensors and positions (MPa).
 #pragma once
 
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -48,5 +49,9 @@ struct ChainError {
   std::string why_not;  // when not asymptotic, why (computed from the levels)
 };
 std::vector<ChainError> chain_errors(const std::vector<ChainLevel>& levels);
+
+// Seconds ∝ DOFs^e per stage, fitted over the levels that timed it (validation::loglog_slope); stages
+// whose fit is undefined are left out.
+std::map<std::string, double> time_vs_dofs_exponent(const std::vector<ChainLevel>& levels);
 
 }  // namespace skinfem::pipeline

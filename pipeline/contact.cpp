@@ -133,6 +133,14 @@ ContactRun contact_run(const Scene& scene, std::shared_ptr<const ContactSetup> s
   return run;
 }
 
+std::string symmetry_used(const Scene& scene, const ContactSetup& setup) {
+  if (setup.whole) return "mirror y = 0: the half y >= 0 solved";
+  const std::string why_whole = scene.symmetry == SymmetryUse::none  ? "\"symmetry\": \"none\""
+                                : !mirror_unavailable(scene).empty() ? mirror_unavailable(scene)
+                                                                     : contact_mirror_unavailable(scene);
+  return "whole skin solved: " + why_whole;
+}
+
 nlohmann::json contact_json(const Scene& scene, const ContactRun& run) {
   const ContactSetup& setup = *run.setup;
   const contact::ContactSolver& solver = *setup.solver;
@@ -191,11 +199,7 @@ nlohmann::json contact_json(const Scene& scene, const ContactRun& run) {
                      {"h_mm", setup.zone_h},
                      {"multipliers", solver.zone().size()},
                      {"multipliers_solved", c.zone.size()}};
-  const std::string why_whole = scene.symmetry == SymmetryUse::none  ? "\"symmetry\": \"none\""
-                                : !mirror_unavailable(scene).empty() ? mirror_unavailable(scene)
-                                                                     : contact_mirror_unavailable(scene);
-  summary["symmetry"] =
-      setup.whole ? "mirror y = 0: the half y >= 0 solved" : "whole skin solved: " + why_whole;
+  summary["symmetry"] = symmetry_used(scene, setup);
   summary["dofs"] = setup.model->solver().free_dofs();
   summary["nodes"] = mesh.num_nodes();
   summary["elements"] = mesh.num_tets();

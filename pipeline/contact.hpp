@@ -40,6 +40,8 @@ struct ContactRun {
 void require_contact(const Scene& scene);
 // Throws SceneError when the scene has no contact.
 ContactRun contact_run(const Scene& scene, std::shared_ptr<const ContactSetup> setup, FrictionMode chosen);
+// How the contact was solved: on the half (mirror symmetry) or whole, and why whole.
+std::string symmetry_used(const Scene& scene, const ContactSetup& setup);
 // summary.json of `skinfem contact`.
 nlohmann::json contact_json(const Scene& scene, const ContactRun& run);
 // The friction mode named as the command line names it (none, static, uncoupled, coupled), or the

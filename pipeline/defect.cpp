@@ -41,6 +41,14 @@ DefectRun defect_run(const Scene& scene, std::shared_ptr<const ContactSetup> sha
           }
         }));
     run.wall["sweep_" + name] = clock.seconds();
+    // The jaggedness of each curve (validation::roughness), and the worst.
+    const Eigen::MatrixXd& v = run.sweeps.back().varsigma;
+    double rough = 0;
+    int rough_col = 0;
+    for (int col = 0; col < v.cols(); ++col)
+      if (const double r = validation::roughness(v.col(col)); r > rough) rough = r, rough_col = col;
+    run.max_roughness.push_back(rough);
+    run.max_roughness_column.push_back(rough_col);
   }
   return run;
 }
@@ -62,12 +70,8 @@ nlohmann::json defect_json(const Scene& scene, const DefectRun& run) {
     double pivots = 0;
     for (int p : res.pivots) pivots += p;
     c["mean_pivots"] = pivots / res.pivots.size();
-    // The jaggedness of each curve (validation::roughness), and the worst.
-    double rough = 0;
-    int rough_col = 0;
-    for (int col = 0; col < 2 * ns; ++col)
-      if (const double r = validation::roughness(res.varsigma.col(col)); r > rough)
-        rough = r, rough_col = col;
+    const double rough = run.max_roughness.at(ci);
+    const int rough_col = run.max_roughness_column.at(ci);
     c["max_roughness"] = rough;
     c["max_roughness_curve"] =
         "#" + std::to_string(rough_col / 2 + 1) + (rough_col % 2 ? " varsigma_x" : " varsigma_z");

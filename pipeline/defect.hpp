@@ -20,7 +20,10 @@ struct DefectRun {
   std::vector<std::string> cases;             // "static", "sliding"
   std::vector<contact::SweepResult> sweeps;   // per case: centres, ς (positions × 2·sensors, MPa), costs
   std::vector<std::vector<contact::ContactResult>> frames;  // [case][position]: the contact with the hole
-  nlohmann::json wall;                                      // seconds per stage
+  // Per case, the jaggedest curve: validation::roughness and its column of ς (σ_z of sensor k at 2k).
+  std::vector<double> max_roughness;
+  std::vector<int> max_roughness_column;
+  nlohmann::json wall;  // seconds per stage
 };
 
 // Throws SceneError, naming the command's need, when the scene has no contact.sweep: before contact_setup,

@@ -182,8 +182,8 @@ nlohmann::json green_json(const Scene& scene, const SensorGreens& greens, const 
       for (size_t c = 0; c < 4; ++c)
         js[run.ridged ? "disc_vs_smooth_max_diff_over_peak" : "fe_vs_exact_max_err_over_peak"]
           [green::component_name(green::kComponents[c])] = (*scan.disc_max_diff_over_peak)[c];
-    if (!run.meridian_check.is_null() && scan.sensor - 1 == axis_sensor(scene, greens))
-      js["meridian_check"] = run.meridian_check;
+    if (run.meridian_check && scan.sensor == run.meridian_check->sensor)
+      js["meridian_check"] = meridian_check_json(*run.meridian_check);
     per_sensor.push_back(js);
   }
   nlohmann::json summary = {
@@ -203,7 +203,7 @@ nlohmann::json green_json(const Scene& scene, const SensorGreens& greens, const 
     summary["max_adjoint_residual"] = greens.max_adjoint_residual;
     summary["reciprocity_check_rel"] = *run.reciprocity_rel;
   }
-  if (!run.meridian_check.is_null()) summary["meridian_check"] = run.meridian_check;
+  if (run.meridian_check) summary["meridian_check"] = meridian_check_json(*run.meridian_check);
   if (run.grid) {
     const green::KernelGrid& grid = *run.grid;
     summary["kernel_grid"] = {{"spacing_mm", grid_dx},

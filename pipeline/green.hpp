@@ -33,7 +33,7 @@ struct GreenRun {
   bool flat = false, ridged = false;
   std::optional<double> reciprocity_rel;  // the 3D path: |direct − adjoint| / |direct|, sensor 1, 1 mm
   std::string mesh_part;                  // the 3D path: "whole" or the half's description
-  nlohmann::json meridian_check;          // the axis sensor of a cap solved in 3D, or null
+  std::optional<MeridianCheck> meridian_check;  // the axis sensor of a cap solved in 3D
   // The maps: the disc reading of each sensor for a unit point force at every node of `top` (the 3D mesh's
   // top written whole; on the meridian path a polar surface over the footprint): maps[sensor][component].
   std::shared_ptr<const TetMesh> top;

@@ -153,7 +153,7 @@ nlohmann::json sensor_json(const KfitResult& r, const KfitSensor& k) {
     js["k_lsq_line_change_from_half_resolution"] = *k.k_lsq_line_change_from_half_resolution;
   }
   js["peak_point_per_mm2"] = per_component(k.peak_point_per_mm2);
-  if (!k.meridian_check.is_null()) js["meridian_check"] = k.meridian_check;
+  if (k.meridian_check) js["meridian_check"] = meridian_check_json(*k.meridian_check);
   if (k.effective_thickness_mm) js["effective_thickness_mm"] = *k.effective_thickness_mm;
   if (k.exact) {
     const std::string vs = r.ridged ? "_vs_smooth" : "_rel_error";
@@ -189,7 +189,7 @@ nlohmann::json kfit_json(const KfitResult& r) {
       {"k_lsq_line",
        "least-squares fit of k*g_half(sqrt(k)x, 0) to g_zz along y = 0, |x| <= 3h, uniform weight"}};
   summary["sensors"] = sensors;
-  if (!r.meridian_check.is_null()) summary["meridian_check"] = r.meridian_check;
+  if (r.meridian_check) summary["meridian_check"] = meridian_check_json(*r.meridian_check);
   summary["path"] = r.path;
   summary["path_model"] = r.path_model;
   summary["dofs"] = r.dofs;

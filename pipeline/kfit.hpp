@@ -28,7 +28,7 @@ struct KfitSensor {
   std::array<double, 4> peak_point_per_mm2{};
   // Meridian path only: relative change of k from the same fit at half the resolution (bounds its error).
   std::optional<double> k_central_change_from_half_resolution, k_lsq_line_change_from_half_resolution;
-  nlohmann::json meridian_check;  // the axis sensor of a cap solved in 3D (pipeline/sensor_greens.hpp)
+  std::optional<MeridianCheck> meridian_check;   // the axis sensor of a cap solved in 3D
   std::optional<double> effective_thickness_mm;  // caps: the flat layer whose scan fits best
   // Flat scenes: the exact (smooth) layer's k and the largest difference of the readings over the peak.
   std::optional<green::KReport> exact;
@@ -41,8 +41,8 @@ struct KfitResult {
   double nu = 0;
   bool flat = false, ridged = false;
   std::vector<KfitSensor> sensors;
-  nlohmann::json meridian_check;  // as in its sensor, or null
-  std::string path, path_model;   // of the Green tensors
+  std::optional<MeridianCheck> meridian_check;  // as in its sensor
+  std::string path, path_model;                 // of the Green tensors
   int dofs = 0, adjoint_solves = 0;
   double max_adjoint_residual = 0;  // 3D path
   nlohmann::json wall;              // seconds per stage

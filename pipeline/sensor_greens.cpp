@@ -165,44 +165,56 @@ int axis_sensor(const Scene& scene, const SensorGreens& greens) {
   return -1;
 }
 
-nlohmann::json meridian_check(const Scene& scene, int sensor, const green::ScanProfile& prof,
-                              green::LayerLoad load, double radius, double h) {
+MeridianCheck meridian_check(const Scene& scene, int sensor, const green::ScanProfile& prof,
+                             green::LayerLoad load, double radius, double h) {
   Stopwatch clock;
   const SensorGreens m = meridian_sensor_greens(with_sensor(scene, sensor));
   const auto mp = green::scan_profile(m.of(0), load, radius, prof.offset_x.back(), scene.calibration.spacing);
   const green::KReport k3 = green::fit_profile(prof.offset_x, prof.point, h);
   const green::KReport mk = green::fit_profile(mp.offset_x, mp.point, h);
-  const auto point = green::max_error_over_peak(prof.point, mp.point);
-  const auto disc = green::max_error_over_peak(prof.disc, mp.disc);
-  nlohmann::json c = {{"sensor", sensor + 1},
-                      {"path_model", m.model},
-                      {"dofs", m.dofs},
-                      {"k_central", mk.k_central},
-                      {"k_lsq_line", mk.k_lsq_line},
-                      {"k_central_3d_vs_meridian", k3.k_central / mk.k_central - 1},
-                      {"k_lsq_line_3d_vs_meridian", k3.k_lsq_line / mk.k_lsq_line - 1}};
-  for (size_t i = 0; i < 4; ++i) {
-    const char* name = green::component_name(green::kComponents[i]);
-    c["component_k_3d_minus_meridian"][name] = k3.components[i].k - mk.components[i].k;
-    c["point_max_diff_over_peak"][name] = point[i];
-    c["disc_max_diff_over_peak"][name] = disc[i];
-  }
-  c["wall_s"] = clock.seconds();
+  MeridianCheck c;
+  c.sensor = sensor + 1;
+  c.path_model = m.model;
+  c.dofs = m.dofs;
+  c.k_central = mk.k_central;
+  c.k_lsq_line = mk.k_lsq_line;
+  c.k_central_3d_vs_meridian = k3.k_central / mk.k_central - 1;
+  c.k_lsq_line_3d_vs_meridian = k3.k_lsq_line / mk.k_lsq_line - 1;
+  for (size_t i = 0; i < 4; ++i) c.component_k_3d_minus_meridian[i] = k3.components[i].k - mk.components[i].k;
+  c.point_max_diff_over_peak = green::max_error_over_peak(prof.point, mp.point);
+  c.disc_max_diff_over_peak = green::max_error_over_peak(prof.disc, mp.disc);
+  c.seconds = clock.seconds();
   return c;
 }
 
-std::string meridian_check_line(const nlohmann::json& c) {
-  const nlohmann::json &k = c["component_k_3d_minus_meridian"], &d = c["disc_max_diff_over_peak"];
+nlohmann::json meridian_check_json(const MeridianCheck& c) {
+  nlohmann::json j = {{"sensor", c.sensor},
+                      {"path_model", c.path_model},
+                      {"dofs", c.dofs},
+                      {"k_central", c.k_central},
+                      {"k_lsq_line", c.k_lsq_line},
+                      {"k_central_3d_vs_meridian", c.k_central_3d_vs_meridian},
+                      {"k_lsq_line_3d_vs_meridian", c.k_lsq_line_3d_vs_meridian},
+                      {"wall_s", c.seconds}};
+  for (size_t i = 0; i < 4; ++i) {
+    const char* name = green::component_name(green::kComponents[i]);
+    j["component_k_3d_minus_meridian"][name] = c.component_k_3d_minus_meridian[i];
+    j["point_max_diff_over_peak"][name] = c.point_max_diff_over_peak[i];
+    j["disc_max_diff_over_peak"][name] = c.disc_max_diff_over_peak[i];
+  }
+  return j;
+}
+
+std::string meridian_check_line(const MeridianCheck& c) {
+  const auto &k = c.component_k_3d_minus_meridian, &d = c.disc_max_diff_over_peak;
   char buf[600];
   std::snprintf(
       buf, sizeof buf,
       "independent check, sensor #%d on the cap's axis against the meridian path (%d DOFs, %.2f s): 3D "
       "k_central %+.1e, k_lsq_line %+.1e relative; component k zz %+.1e zx %+.1e xz %+.1e xx %+.1e; "
       "disc readings max |difference| / peak zz %.1e zx %.1e xz %.1e xx %.1e",
-      c["sensor"].get<int>(), c["dofs"].get<int>(), c["wall_s"].get<double>(),
-      c["k_central_3d_vs_meridian"].get<double>(), c["k_lsq_line_3d_vs_meridian"].get<double>(),
-      k["zz"].get<double>(), k["zx"].get<double>(), k["xz"].get<double>(), k["xx"].get<double>(),
-      d["zz"].get<double>(), d["zx"].get<double>(), d["xz"].get<double>(), d["xx"].get<double>());
+      c.sensor, c.dofs, c.seconds, c.k_central_3d_vs_meridian, c.k_lsq_line_3d_vs_meridian, k[0], k[1], k[2],
+      k[3], d[0], d[1], d[2], d[3]);
   return buf;
 }
 

@@ -3,6 +3,7 @@
 // axis of a body of revolution: two 2D solves instead of one 3D one).
 #pragma once
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -68,11 +69,22 @@ SensorGreens green_path(const Scene& scene, GreenPath path);
 // path, an independent 2D solve about 100× more accurate than the 3D mesh, can check.
 int axis_sensor(const Scene& scene, const SensorGreens& greens);
 // That check: the 3D scan `prof` of `sensor` (thickness h) against the meridian's over the same offsets, for
-// the same load. Returns sensor, path_model, dofs, k_central and k_lsq_line (meridian) and the 3D's relative
-// differences, component_k_3d_minus_meridian, point_ and disc_max_diff_over_peak (per component), wall_s.
-nlohmann::json meridian_check(const Scene& scene, int sensor, const green::ScanProfile& prof,
-                              green::LayerLoad load, double radius, double h);
-// One line for stdout, from meridian_check's numbers.
-std::string meridian_check_line(const nlohmann::json& check);
+// the same load. Arrays over components are in green::kComponents order (zz, zx, xz, xx).
+struct MeridianCheck {
+  int sensor = 0;  // 1-based
+  std::string path_model;
+  int dofs = 0;
+  double k_central = 0, k_lsq_line = 0;                                // the meridian's
+  double k_central_3d_vs_meridian = 0, k_lsq_line_3d_vs_meridian = 0;  // relative differences
+  std::array<double, 4> component_k_3d_minus_meridian{}, point_max_diff_over_peak{},
+      disc_max_diff_over_peak{};
+  double seconds = 0;
+};
+MeridianCheck meridian_check(const Scene& scene, int sensor, const green::ScanProfile& prof,
+                             green::LayerLoad load, double radius, double h);
+// As kfit.json and green's summary.json hold it.
+nlohmann::json meridian_check_json(const MeridianCheck& check);
+// One line for stdout, from the check's numbers.
+std::string meridian_check_line(const MeridianCheck& check);
 
 }  // namespace skinfem::pipeline
