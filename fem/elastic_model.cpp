@@ -41,7 +41,7 @@ ElasticModel::ElasticModel(const TetMesh& mesh, const Material& material, SideCo
   const int n = mesh.num_nodes();
   fixed_.assign(3 * n, false);
   support_.assign(3 * n, false);
-  const int held = kBase | (side == SideCondition::fixed ? kSide : 0);
+  const int held = kBase | kPost | (side == SideCondition::fixed ? kSide : 0);
   for (int i = 0; i < n; ++i)
     if (mesh.node_marker(i) & held)
       for (int c = 0; c < 3; ++c) fixed_[3 * i + c] = support_[3 * i + c] = true;

@@ -6,8 +6,11 @@
 // A reading is a linear functional of the base reactions R (3N vector, N): value = w·R (MPa). By
 // Maxwell–Betti its adjoint is the displacement field with the base displaced by −w and no load, so one
 // weight vector serves both the forward reading and the Green map (docs/theory.md §Reciprocity).
-// Today's kind is the mean base traction over a disc (diameter 0: its centre value); σ_z = t_z, σ_x = −t_x
-// (docs/theory.md §Conventions).
+// Two kinds: the mean base traction over a disc (diameter 0: its centre value), and a post (a rigid cylinder
+// standing on the base, bonded to the skin: mesh/surface.hpp's cavity, marked kPost), which reads the force
+// on it over its cross-section. Both as σ_z = t_z, σ_x = −t_x with t the traction the support exerts on the
+// skin (docs/theory.md §Conventions): the post's w is 1/area on its nodes' reactions, and its adjoint
+// displaces the post rigidly with the rest of the base held.
 #pragma once
 
 #include <Eigen/Dense>
@@ -21,8 +24,11 @@
 namespace skinfem {
 
 struct ReadingSite {
-  Vec2 center{0, 0};    // mm, on the base
-  double diameter = 0;  // mm: the disc the traction is averaged over; 0 reads the value at the centre
+  Vec2 center{0, 0};       // mm, on the base
+  double diameter = 0;     // mm: the disc the traction is averaged over (0 reads the value at the centre), or
+                           // the post's
+  double post_height = 0;  // mm; > 0: a post of this height (the mesh must have it), else a disc
+  bool post() const { return post_height > 0; }
   // Traits. The reading is unchanged by rotations about the vertical axis through its centre, so on a body
   // of revolution about that axis σ_z is a mode-0 and σ_x a mode-1 meridian problem.
   bool axisymmetric() const { return true; }
@@ -31,7 +37,8 @@ struct ReadingSite {
   bool on_mirror_plane() const { return center[1] == 0; }
 };
 
-// The sites of a scene's sensors, in their order; point: each sensor's centre value instead of its disc.
+// The sites of a scene's sensors, in their order; point: each disc sensor's centre value instead of its disc
+// (a post has no centre value: its site is the post either way).
 std::vector<ReadingSite> reading_sites(const Sensors& sensors, bool point = false);
 
 // Sites on one mesh: their weights, factored once for all of them (the base mass matrix).
@@ -53,6 +60,7 @@ class SensorReadings {
   SensorReading read(int k, const Eigen::VectorXd& reactions) const;
 
  private:
+  const TetMesh& mesh_;
   std::vector<ReadingSite> sites_;
   std::unique_ptr<ReadingFunctionals> functional_;
 };

@@ -248,6 +248,7 @@ MeridianGreen::MeridianGreen(const MeridianMesh& m, double nu, SideCondition sid
                              const ReadingSite& sensor) {
   if (!sensor.axisymmetric())
     throw std::invalid_argument("the meridian path reads only sensors that are bodies of revolution");
+  if (sensor.post()) throw std::invalid_argument("the meridian path has no post sensor model yet");
   const double disc_radius = 0.5 * sensor.diameter;
   // The readings' base weights w = M⁻¹ b: M the base trace's mass matrix (weight 2πr), P2 along r; b = e_axis
   // for the point value, b_i = ∫_disc φ_i dA / (π a²) for the disc mean. The same M serves x readings: a

@@ -1,5 +1,6 @@
 #include "mesh/build.hpp"
 
+#include <cmath>
 #include <map>
 
 #include "mesh/p2_tet.hpp"
@@ -10,10 +11,30 @@
 
 namespace skinfem {
 
+namespace {
+// Puts p on the vertical cylinder over c, keeping its height.
+void onto_cylinder(const Circle& c, Eigen::Vector3d& p) {
+  const double dx = p.x() - c.centre[0], dy = p.y() - c.centre[1], d = std::hypot(dx, dy);
+  if (d > 0) p.x() = c.centre[0] + c.radius * dx / d, p.y() = c.centre[1] + c.radius * dy / d;
+}
+
+// The post whose wall (or rim) holds both ends of an edge, or null: an edge across the post's top does not.
+const Circle* cylinder_of(const std::vector<Circle>& posts, const Eigen::Vector3d& a,
+                          const Eigen::Vector3d& b) {
+  for (const Circle& c : posts) {
+    const auto on = [&](const Eigen::Vector3d& p) {
+      return std::abs(std::hypot(p.x() - c.centre[0], p.y() - c.centre[1]) - c.radius) < 1e-6 * c.radius;
+    };
+    if (on(a) && on(b)) return &c;
+  }
+  return nullptr;
+}
+}  // namespace
+
 TetMesh make_quadratic(const RowMatrixX3d& points,
                        const Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor>& tets,
                        const RowMatrixX3i& faces, const Eigen::VectorXi& face_marker,
-                       const Geometry& geometry) {
+                       const Geometry& geometry, const std::vector<Circle>& posts) {
   const SkinShape shape(geometry);
   const int nv = points.rows();
   auto key = [](int a, int b) { return a < b ? std::pair{a, b} : std::pair{b, a}; };
@@ -40,6 +61,8 @@ TetMesh make_quadratic(const RowMatrixX3d& points,
         }
         if (marker & kTop) p.z() = shape.top_z(p.x(), p.y());
       }
+      if (marker & kPost)
+        if (const Circle* c = cylinder_of(posts, points.row(a), points.row(b))) onto_cylinder(*c, p);
       extra.push_back(p);
     }
     return it->second;
@@ -70,7 +93,8 @@ TetMesh make_quadratic(const RowMatrixX3d& points,
 namespace {
 // Boundary points TetGen added lie on the flat input triangles: move them onto the exact cap or
 // cylinder (by at most the sagitta of a boundary triangle, L²/8R).
-void snap_to_surface(LinearTets& lin, const SkinShape& shape) {
+void snap_to_surface(LinearTets& lin, const SkinShape& shape, const std::vector<Circle>& posts,
+                     double post_height) {
   Eigen::VectorXi marker = Eigen::VectorXi::Zero(lin.points.rows());
   for (int f = 0; f < lin.faces.rows(); ++f)
     for (int k = 0; k < 3; ++k) marker(lin.faces(f, k)) |= lin.face_marker(f);
@@ -81,6 +105,18 @@ void snap_to_surface(LinearTets& lin, const SkinShape& shape) {
     }
     if (marker(i) & kSymmetry) lin.points(i, 1) = 0;  // TetGen's points on the cut, to round-off
     if (marker(i) & kTop) lin.points(i, 2) = shape.top_z(lin.points(i, 0), lin.points(i, 1));
+    // TetGen's points on a post's wall or rim lie on the flat chords: onto the cylinder (not those inside its
+    // top, which is flat).
+    if (marker(i) & kPost)
+      for (const Circle& c : posts) {
+        Eigen::Vector3d p = lin.points.row(i).transpose();
+        const double d = std::hypot(p.x() - c.centre[0], p.y() - c.centre[1]);
+        const bool wall = p.z() < post_height * (1 - 1e-9) && d < 1.5 * c.radius;
+        if (wall || std::abs(d - c.radius) < 0.05 * c.radius) {
+          onto_cylinder(c, p);
+          lin.points.row(i) = p.transpose();
+        }
+      }
   }
 }
 }  // namespace
@@ -112,8 +148,9 @@ TetMesh build_mesh(const Scene& scene, MeshPart part) {
                              : scene.geometry.ridges.present() ? FacetPolicy::preserve
                                                                : FacetPolicy::merge;
   LinearTets lin = tetrahedralize(surface, size, scene.mesh, facets);
-  if (generated) snap_to_surface(lin, SkinShape(scene.geometry));
-  TetMesh mesh = make_quadratic(lin.points, lin.tets, lin.faces, lin.face_marker, scene.geometry);
+  const std::vector<Circle> posts = post_circles(scene);
+  if (generated) snap_to_surface(lin, SkinShape(scene.geometry), posts, scene.sensors.post.height);
+  TetMesh mesh = make_quadratic(lin.points, lin.tets, lin.faces, lin.face_marker, scene.geometry, posts);
   mesh.part = part;
   straighten_folded_elements(mesh);
   check_no_inverted_element(mesh);

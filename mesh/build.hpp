@@ -2,6 +2,7 @@
 // nodes on the exact surface → markers.
 #pragma once
 
+#include "mesh/footprint.hpp"
 #include "mesh/sizing.hpp"
 #include "mesh/tet_mesh.hpp"
 #include "scene/scene.hpp"
@@ -19,10 +20,11 @@ TetMesh build_mesh(const Scene& scene, MeshPart part = MeshPart::whole);
 void straighten_folded_elements(TetMesh& mesh);
 
 // The P2 completion alone: adds the six mid-edge nodes per tet, placed on the exact top/side
-// surface of `geometry` when the edge lies on a curved boundary face (straight otherwise).
+// surface of `geometry` when the edge lies on a curved boundary face, and on the exact cylinder of a post
+// (`posts`, their outlines) when it runs along a post's wall or rim (straight otherwise).
 TetMesh make_quadratic(const RowMatrixX3d& points,
                        const Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor>& tets,
                        const RowMatrixX3i& faces, const Eigen::VectorXi& face_marker,
-                       const Geometry& geometry);
+                       const Geometry& geometry, const std::vector<Circle>& posts = {});
 
 }  // namespace skinfem

@@ -17,8 +17,10 @@ double distance_to_segment(double x, double y, const Vec2& a, const Vec2& b) {
 
 double sensor_mesh_size(const Scene& scene) {
   if (scene.mesh.sensor_h > 0) return scene.mesh.sensor_h;
-  const double disc_radius = 0.5 * scene.sensors.disc_diameter;
-  return disc_radius > 0 ? std::min(scene.mesh.h_min, disc_radius) : scene.mesh.h_min;
+  // A post's wall and rim are curved P2 faces: half its radius keeps their elements unfolded.
+  const double disc_radius = scene.sensors.footprint_radius();
+  const double size = scene.sensors.model == SensorModel::post ? 0.5 * disc_radius : disc_radius;
+  return size > 0 ? std::min(scene.mesh.h_min, size) : scene.mesh.h_min;
 }
 
 SizingField::SizingField(const Scene& scene, MeshPart part)
@@ -30,7 +32,7 @@ SizingField::SizingField(const Scene& scene, MeshPart part)
   const bool generated = scene.geometry.kind != GeometryKind::surface;
   if (scene.mesh.refine_sensors)
     for (const auto& s : scene.sensors.positions) {
-      const RegionOfInterest disc{s, s, 0.5 * scene.sensors.disc_diameter, sensor_mesh_size(scene)};
+      const RegionOfInterest disc{s, s, scene.sensors.footprint_radius(), sensor_mesh_size(scene)};
       if (generated)
         base_.push_back(disc);
       else
@@ -48,7 +50,7 @@ SizingField::SizingField(const Scene& scene, MeshPart part)
       top_.push_back({s->from, s->to, 0.5 * s->hole_diameter + s->h, s->h});
     // The readings see the contact through the layer: its resolution is carried down to every sensor.
     for (const auto& p : scene.sensors.positions)
-      through_.push_back({p, p, 0.5 * scene.sensors.disc_diameter, contact_zone_h(scene)});
+      through_.push_back({p, p, scene.sensors.footprint_radius(), contact_zone_h(scene)});
   }
   // Ridges are resolved on the top only: their field decays within about a period below it.
   if (const Ridges& r = scene.geometry.ridges; r.present())

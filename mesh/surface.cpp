@@ -188,6 +188,98 @@ bool align_rim(Footprint& base, const Footprint& top) {
 }
 }  // namespace
 
+std::vector<Circle> post_circles(const Scene& scene) {
+  std::vector<Circle> posts;
+  if (scene.sensors.model == SensorModel::post)
+    for (const Vec2& p : scene.sensors.positions) posts.push_back({p, 0.5 * scene.sensors.post.diameter});
+  return posts;
+}
+
+namespace {
+// Each post turns the base inside its outline into a cavity: the base triangles inside are removed, and the
+// post's wall (layers of the outline's points up to `height`) and its flat top take their place, marked
+// kPost. The skin lies outside the cylinder and above the top, so their outward normals point into the post.
+void add_posts(SurfaceMesh& s, const std::vector<Circle>& posts, double height, const SizingField& size) {
+  std::vector<std::array<int, 3>> tris;
+  std::vector<int> markers;
+  for (int t = 0; t < s.triangles.rows(); ++t) {
+    if (s.marker(t) == kBase) {
+      double cx = 0, cy = 0;
+      for (int k = 0; k < 3; ++k)
+        cx += s.vertices(s.triangles(t, k), 0) / 3, cy += s.vertices(s.triangles(t, k), 1) / 3;
+      bool inside = false;
+      for (const Circle& c : posts)
+        inside = inside || std::hypot(cx - c.centre[0], cy - c.centre[1]) < c.radius;
+      if (inside) continue;
+    }
+    tris.push_back({s.triangles(t, 0), s.triangles(t, 1), s.triangles(t, 2)});
+    markers.push_back(s.marker(t));
+  }
+  std::vector<Eigen::RowVector3d> added;
+  const int nv0 = s.vertices.rows();
+  for (const Circle& c : posts) {
+    // The outline's points on the base, by angle (counter-clockwise seen from above).
+    std::vector<std::pair<double, int>> ring;
+    for (int v = 0; v < nv0; ++v) {
+      if (s.vertices(v, 2) != 0.0) continue;
+      const double dx = s.vertices(v, 0) - c.centre[0], dy = s.vertices(v, 1) - c.centre[1];
+      if (std::abs(std::hypot(dx, dy) - c.radius) < 1e-9 * (1 + c.radius))
+        ring.push_back({std::atan2(dy, dx), v});
+    }
+    if (ring.size() < 3) throw MeshError("a post's outline was not kept on the base");
+    std::sort(ring.begin(), ring.end());
+    const int n = static_cast<int>(ring.size());
+    double wall_size = 1e300;
+    for (const auto& [angle, v] : ring)
+      wall_size = std::min(wall_size, size.in_volume(s.vertices(v, 0), s.vertices(v, 1), 0.5 * height));
+    const int layers = std::max(1, static_cast<int>(std::ceil(height / wall_size - 1e-9)));
+    // vertex of ring position k on wall layer j (0: the base's, layers: the top's)
+    std::vector<std::vector<int>> id(layers + 1, std::vector<int>(n));
+    for (int k = 0; k < n; ++k) id[0][k] = ring[k].second;
+    for (int j = 1; j <= layers; ++j)
+      for (int k = 0; k < n; ++k) {
+        const int v = ring[k].second;
+        id[j][k] = nv0 + static_cast<int>(added.size());
+        added.push_back({s.vertices(v, 0), s.vertices(v, 1), height * j / layers});
+      }
+    for (int j = 0; j < layers; ++j)
+      for (int k = 0; k < n; ++k) {
+        const int p0 = id[j][k], p1 = id[j][(k + 1) % n], p2 = id[j + 1][(k + 1) % n], p3 = id[j + 1][k];
+        tris.push_back({p0, p2, p1});  // counter-clockwise ring × up points out of the post: reversed
+        markers.push_back(kPost);
+        tris.push_back({p0, p3, p2});
+        markers.push_back(kPost);
+      }
+    std::vector<Vec2> loop;
+    for (int k = 0; k < n; ++k)
+      loop.push_back({s.vertices(ring[k].second, 0), s.vertices(ring[k].second, 1)});
+    const RowMatrixX3i top = triangulate_polygon(loop);
+    for (int t = 0; t < top.rows(); ++t) {
+      tris.push_back({id[layers][top(t, 0)], id[layers][top(t, 2)], id[layers][top(t, 1)]});  // normal −z
+      markers.push_back(kPost);
+    }
+  }
+  // Base points inside an outline belong to no face any more: drop them (TetGen would mesh them as points).
+  RowMatrixX3d all(nv0 + added.size(), 3);
+  all.topRows(nv0) = s.vertices;
+  for (size_t i = 0; i < added.size(); ++i) all.row(nv0 + i) = added[i];
+  std::vector<int> to(all.rows(), -1);
+  for (const auto& t : tris)
+    for (int v : t) to[v] = 0;
+  int n = 0;
+  s.vertices.resize(all.rows(), 3);
+  for (int v = 0; v < all.rows(); ++v)
+    if (to[v] == 0) s.vertices.row(n) = all.row(v), to[v] = n++;
+  s.vertices.conservativeResize(n, 3);
+  s.triangles.resize(tris.size(), 3);
+  s.marker.resize(tris.size());
+  for (size_t t = 0; t < tris.size(); ++t) {
+    s.triangles.row(t) << to[tris[t][0]], to[tris[t][1]], to[tris[t][2]];
+    s.marker(t) = markers[t];
+  }
+}
+}  // namespace
+
 SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart part) {
   const Geometry& geometry = scene.geometry;
   const SkinShape shape(geometry);
@@ -207,6 +299,11 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
   std::vector<Circle> circles;
   for (const auto& p : scene.loads.punches)
     if (!half || p.center[1] - 0.5 * p.diameter > 0) circles.push_back({p.center, 0.5 * p.diameter});
+  // Post sensors: the base follows their outlines, and each becomes a cavity in the skin (add_posts).
+  const std::vector<Circle> posts = post_circles(scene);
+  if (half && !posts.empty()) throw MeshError("post sensors are meshed whole, not as a half");
+  std::vector<Circle> outlines = circles;
+  outlines.insert(outlines.end(), posts.begin(), posts.end());
   // The base gets its own, coarser triangulation when contact regions grade with depth. The side band needs
   // both rims to be the same points; refinement splits rim chords differently on each face, so each face
   // is remeshed on the other's rim until they agree (else the base takes the top's triangulation).
@@ -215,15 +312,15 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
     for (int b : fp.boundary) rim.push_back({fp.points(b, 0), fp.points(b, 1)});
     return rim;
   };
-  Footprint top = face_footprint(shape, loop, top_size, circles);
+  Footprint top = face_footprint(shape, loop, top_size, outlines);
   std::optional<Footprint> own_base;
   for (int round = 0; size.graded_in_depth() && round < 4 && !own_base; ++round) {
     Footprint own = face_footprint(
-        shape, rim_of(top), [&](double x, double y) { return size.on_base(x, y); }, circles);
+        shape, rim_of(top), [&](double x, double y) { return size.on_base(x, y); }, outlines);
     if (align_rim(own, top))
       own_base = std::move(own);
     else
-      top = face_footprint(shape, rim_of(own), top_size, circles);
+      top = face_footprint(shape, rim_of(own), top_size, outlines);
   }
   const Footprint base = own_base ? std::move(*own_base) : top;
   const int nvb = base.points.rows(), nvt = top.points.rows(), nb = static_cast<int>(top.boundary.size());
@@ -322,6 +419,7 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
   }
   s.triangles.conservativeResize(f, 3);
   s.marker.conservativeResize(f);
+  if (!posts.empty()) add_posts(s, posts, scene.sensors.post.height, size);
   check_watertight(s, "generated layer surface");
   return s;
 }

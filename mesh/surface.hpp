@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "mesh/footprint.hpp"
 #include "mesh/shape.hpp"
 #include "mesh/sizing.hpp"
 #include "mesh/tet_mesh.hpp"
@@ -20,6 +21,8 @@ struct MeshError : std::runtime_error {
 // base (z = 0), joined by a side band of vertical quads split in two. The triangulation follows the
 // edge of every punch, so that a rigid punch holds exactly its disc.
 SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart part = MeshPart::whole);
+// The outlines of the scene's post sensors on the base (none for disc sensors).
+std::vector<Circle> post_circles(const Scene& scene);
 
 // Reads a closed surface (STL ASCII or binary, OBJ, OFF; mm): points with equal coordinates are merged and
 // faces are oriented like their neighbours, then outward. Faces lying on z = 0 (all three vertices within

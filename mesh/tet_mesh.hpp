@@ -8,7 +8,8 @@ namespace skinfem {
 
 // Boundary parts; a face carries exactly one, a node the OR of those of its faces.
 // kSymmetry: the cut y = 0 of a mirror-symmetric scene meshed as its half y ≥ 0 (MeshPart::half_y).
-enum BoundaryMarker : int { kBase = 1, kTop = 2, kSide = 4, kSymmetry = 16 };
+// kPost: the wall and top of a post sensor standing on the base (held like the base; scene.hpp's PostSensor).
+enum BoundaryMarker : int { kBase = 1, kTop = 2, kSide = 4, kSymmetry = 16, kPost = 32 };
 // Extra bit on SurfaceMesh markers only: a region whose outline TetGen must keep (a punch disc).
 inline constexpr int kKeepOutline = 8;
 

@@ -31,15 +31,18 @@ double thickness_at(const Scene& scene, const TetMesh& mesh, const Vec2& p) {
 
 void check_sensors_on_skin(const Scene& scene, const TetMesh& mesh) {
   const PlanarFaceIndex base(mesh, kBase);
-  const double r = 0.5 * scene.sensors.disc_diameter;
+  // A disc on the base; a post stands in a hole of the base, which surrounds it.
+  const bool post = scene.sensors.model == SensorModel::post;
+  const double r = scene.sensors.footprint_radius() * (post ? 1.05 : 1.0);
   for (size_t i = 0; i < scene.sensors.positions.size(); ++i) {
     const Vec2& p = scene.sensors.positions[i];
     double s, t;
     for (auto [dx, dy] : {std::pair{0.0, 0.0}, {r, 0.0}, {-r, 0.0}, {0.0, r}, {0.0, -r}})
-      if (base.find(p[0] + dx, p[1] + dy, s, t) < 0)
+      if (!(post && dx == 0 && dy == 0) && base.find(p[0] + dx, p[1] + dy, s, t) < 0)
         throw SceneError(scene.source_path + ": sensors: sensor " + std::to_string(i + 1) + " at (" +
-                         std::to_string(p[0]) + ", " + std::to_string(p[1]) + "): its disc (diameter " +
-                         std::to_string(scene.sensors.disc_diameter) +
+                         std::to_string(p[0]) + ", " + std::to_string(p[1]) + "): its " +
+                         (post ? "post" : "disc") + " (diameter " +
+                         std::to_string(2 * scene.sensors.footprint_radius()) +
                          ") is not entirely on the skin's base; sensors must lie under the skin");
   }
 }

@@ -3,11 +3,15 @@
 namespace skinfem::pipeline {
 
 nlohmann::json scene_json(const Scene& scene) {
-  return {{"name", scene.name},
-          {"source", scene.source_path},
-          {"E_MPa", scene.material.E},
-          {"nu", scene.material.nu},
-          {"sensors", scene.sensors.positions.size()}};
+  nlohmann::json j = {{"name", scene.name},
+                      {"source", scene.source_path},
+                      {"E_MPa", scene.material.E},
+                      {"nu", scene.material.nu},
+                      {"sensors", scene.sensors.positions.size()}};
+  if (scene.sensors.model == SensorModel::post)
+    j["post_sensors"] = {{"diameter_mm", scene.sensors.post.diameter},
+                         {"height_mm", scene.sensors.post.height}};
+  return j;
 }
 
 }  // namespace skinfem::pipeline

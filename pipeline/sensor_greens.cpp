@@ -44,6 +44,7 @@ std::string meridian_unavailable(const Scene& scene) {
   const Geometry& g = scene.geometry;
   if (g.kind == GeometryKind::surface) return "an imported surface is not known to be a body of revolution";
   if (g.ridges.present()) return "the ridged top is not a body of revolution";
+  if (scene.sensors.model == SensorModel::post) return "the meridian path has no post sensor model yet";
   if (g.kind == GeometryKind::flat) {
     // The meridian stands for the unbounded layer: it answers the scene only where the layer's side is far
     // from every calibration load. The side's influence decays as exp(−0.739 d/h) (README, Truncation); at

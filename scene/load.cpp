@@ -15,7 +15,8 @@
 //                 side: "free" (default) | "fixed"
 //   material      {"E", "nu"}
 //   sensors       {"positions": [[x, y], ...]} or {"line": {"start": [x, y], "step": [dx, dy], "count"}},
-//                 plus "disc_diameter"
+//                 plus "model"*: "disc" (default, with "disc_diameter") | "post" with "post"*: {"diameter"*
+//                 (0.2), "height"* (0.4, below the skin's top), "support"*: "rigid"} (flat and cap skins)
 //   mesh          {"h_min", "growth", "h_max", "refine_sensors"*, "sensor_h"*, "min_dihedral_deg"*,
 //                  "max_radius_edge"*, "regions"*: [{"from": [x, y], "to": [x, y], "radius", "h"*}]}
 //                 sensor_h: <mm, in (0, h_min]>, size at each sensor disc on the base (default min(h_min,
@@ -452,14 +453,34 @@ struct SensorSource {
 
 Sensors read_sensors(const Reader& r, const json& s, std::vector<SensorSource>& sources) {
   const std::string P = "sensors";
-  r.object(s, P, {"positions", "line", "disc_diameter"});
+  r.object(s, P, {"positions", "line", "disc_diameter", "model", "post"});
   Sensors out;
+  if (const json* model = Reader::find(s, "model")) {
+    if (*model == "post")
+      out.model = SensorModel::post;
+    else if (*model != "disc")
+      r.fail(sub(P, "model"), *model, R"(must be "disc" or "post")");
+  }
+  if (const json* post = Reader::find(s, "post")) {
+    const std::string PP = sub(P, "post");
+    if (out.model != SensorModel::post) r.fail(PP, *post, R"(is only for "model": "post")");
+    if (!post->is_object()) r.fail(PP, *post, R"(must be an object {"diameter", "height", "support"})");
+    r.object(*post, PP, {"diameter", "height", "support"});
+    out.post.diameter = r.number_or(*post, PP, "diameter", out.post.diameter, length());
+    out.post.height = r.number_or(*post, PP, "height", out.post.height, length());
+    if (const json* support = Reader::find(*post, "support"); support && *support != "rigid")
+      r.fail(sub(PP, "support"), *support, R"(must be "rigid" (membrane springs are not modelled yet))");
+  }
   const json* positions = Reader::find(s, "positions");
   const json* line = Reader::find(s, "line");
   if ((positions != nullptr) == (line != nullptr))
     r.fail(P, s,
            R"(must have exactly one of "positions" ([[x, y], ...]) or "line" ({"start", "step", "count"}))");
-  out.disc_diameter = r.number(s, P, "disc_diameter", length());
+  if (out.model == SensorModel::disc)
+    out.disc_diameter = r.number(s, P, "disc_diameter", length());
+  else if (const json* d = Reader::find(s, "disc_diameter"))
+    r.fail(sub(P, "disc_diameter"), *d,
+           R"(is only for "model": "disc" (a post's diameter is post.diameter))");
 
   if (positions) {
     const std::string PP = sub(P, "positions");
@@ -495,7 +516,14 @@ Sensors read_sensors(const Reader& r, const json& s, std::vector<SensorSource>& 
 // Every sensor disc must lie inside the skin's footprint on the base (not checked for imported surfaces).
 void check_sensor_footprint(const Reader& r, const Geometry& geo, const Sensors& sensors,
                             const std::vector<SensorSource>& sources) {
-  const double rad = sensors.disc_diameter / 2;
+  const double rad = sensors.footprint_radius();
+  const bool post = sensors.model == SensorModel::post;
+  const std::string what = post ? "post (diameter " + fmt(sensors.post.diameter) + ")"
+                                : "sensor disc (diameter " + fmt(sensors.disc_diameter) + ")";
+  const std::string diameter = post ? "post.diameter" : "disc_diameter";
+  if (post && geo.kind == GeometryKind::surface)
+    r.fail("sensors.model", "post",
+           "needs a generated skin (geometry type flat or cap), not an imported surface");
   const auto beyond = [](double value, double limit) { return value > limit + 1e-9 * std::max(1.0, limit); };
   for (const SensorSource& s : sources) {
     const json shown = json::array({s.p[0], s.p[1]});
@@ -503,21 +531,48 @@ void check_sensor_footprint(const Reader& r, const Geometry& geo, const Sensors&
       const CapGeometry& c = geo.cap;
       const double dist = std::hypot(s.p[0] - c.apex_x, s.p[1] - c.apex_y);
       if (beyond(dist + rad, c.truncation_radius))
-        r.fail(
-            s.path, shown,
-            "sensor disc (diameter " + fmt(sensors.disc_diameter) +
-                ") must lie inside the cap footprint: centre at most truncation_radius - disc_diameter/2 = " +
-                fmt(c.truncation_radius - rad) + " from the apex " + fmt(Vec2{c.apex_x, c.apex_y}) +
-                ", got " + fmt(dist));
+        r.fail(s.path, shown,
+               what + " must lie inside the cap footprint: centre at most truncation_radius - " + diameter +
+                   "/2 = " + fmt(c.truncation_radius - rad) + " from the apex " +
+                   fmt(Vec2{c.apex_x, c.apex_y}) + ", got " + fmt(dist));
     } else if (geo.kind == GeometryKind::flat) {
       const double hw = geo.flat.half_width;
       if (beyond(std::abs(s.p[0]) + rad, hw) || beyond(std::abs(s.p[1]) + rad, hw))
         r.fail(s.path, shown,
-               "sensor disc (diameter " + fmt(sensors.disc_diameter) +
-                   ") must lie inside the flat layer: |x|, |y| <= half_width - disc_diameter/2 = " +
-                   fmt(hw - rad));
+               what + " must lie inside the flat layer: |x|, |y| <= half_width - " + diameter +
+                   "/2 = " + fmt(hw - rad));
+    }
+    if (post) {
+      // The post stands inside the skin: its top below the skin's lowest top over its cross-section (a cap's
+      // ellipsoid, less any ridges' full height).
+      double lowest = geo.kind == GeometryKind::flat ? geo.flat.h : geo.cap.h;
+      if (geo.kind == GeometryKind::cap) {
+        const CapGeometry& c = geo.cap;
+        const double a = c.semi_axis_x(), b = c.semi_axis_y(), cz = c.semi_axis_z();
+        for (int k = 0; k < 16; ++k) {
+          const double dx = s.p[0] + rad * std::cos(M_PI * k / 8) - c.apex_x,
+                       dy = s.p[1] + rad * std::sin(M_PI * k / 8) - c.apex_y;
+          lowest = std::min(
+              lowest,
+              c.h - cz + cz * std::sqrt(std::max(0.0, 1 - (dx / a) * (dx / a) - (dy / b) * (dy / b))));
+        }
+      }
+      if (geo.ridges.present()) lowest -= geo.ridges.height;
+      if (!(sensors.post.height < 0.9 * lowest))
+        r.fail("sensors.post.height", sensors.post.height,
+               "must be below 0.9 x the skin's thickness over the post at " + s.path + " (" +
+                   fmt(0.9 * lowest) + " mm)");
     }
   }
+  // Posts are solid: two may not overlap.
+  if (post)
+    for (std::size_t i = 0; i < sources.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (std::hypot(sources[i].p[0] - sources[j].p[0], sources[i].p[1] - sources[j].p[1]) <
+            sensors.post.diameter * 1.5)
+          r.fail(sources[i].path, json::array({sources[i].p[0], sources[i].p[1]}),
+                 "post closer than 1.5 post diameters (" + fmt(1.5 * sensors.post.diameter) + " mm) to " +
+                     sources[j].path);
 }
 
 MeshControls read_mesh(const Reader& r, const json& m) {

@@ -98,10 +98,23 @@ struct Material {
   double nu = 0.5;  // 0 ≤ nu ≤ 0.5; 0.5 exactly is incompressible
 };
 
-// Sensors sit on the base z = 0 and read the mean traction over a disc.
+// Sensors sit on the base z = 0. A disc reads the mean base traction over it; a post (the paper's sensor: a
+// rigid cylinder standing on the base, bonded to the skin around it) reads the force the skin exerts on it,
+// as that force over its cross-section (fem/sensor_reading.hpp).
+enum class SensorModel { disc, post };
+struct PostSensor {
+  double diameter = 0.2;  // mm
+  double height = 0.4;    // mm, above the base; less than the skin's thickness there
+};
 struct Sensors {
   std::vector<Vec2> positions;  // mm, numbered 1..n in this order
   double disc_diameter = 0.2;   // mm
+  SensorModel model = SensorModel::disc;
+  PostSensor post;  // model post only
+  // The radius of the base each sensor occupies: the disc's or the post's.
+  double footprint_radius() const {
+    return 0.5 * (model == SensorModel::post ? post.diameter : disc_diameter);
+  }
 };
 
 // A region where the mesh must be fine: every point within `radius` of the

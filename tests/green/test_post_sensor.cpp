@@ -1,0 +1,120 @@
+// Post sensors (scene.hpp's PostSensor): a rigid cylinder standing on the base, bonded to the skin, meshed as
+// a cavity (mesh/surface.hpp) and read as the force on it over its cross-section (fem/sensor_reading.hpp).
+// References: the exact cylinder (every P2 node of the wall and rim on it), the exact volume of the layer
+// less the post, statics (the reactions of base and post balance the load), and Maxwell–Betti (the adjoint
+// reading of a unit load equals the forward reading of the direct solve, a second method).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fem/elastic_model.hpp"
+#include "fem/sensor_reading.hpp"
+#include "green/fe_green.hpp"
+#include "mesh/build.hpp"
+#include "mesh/quality.hpp"
+
+namespace skinfem {
+namespace {
+
+constexpr double kH = 1.5, kHalfWidth = 3.0, kDiameter = 0.2, kHeight = 0.3;  // mm
+
+Scene post_scene() {
+  Scene s;
+  s.geometry.kind = GeometryKind::flat;
+  s.geometry.flat = {kH, kHalfWidth};
+  s.sensors.positions = {{0, 0}, {-1.0, 0.5}};
+  s.sensors.model = SensorModel::post;
+  s.sensors.post = {kDiameter, kHeight};
+  s.mesh.h_min = 0.3;
+  s.mesh.h_max = 0.8;
+  s.mesh.growth = 1.6;
+  return s;
+}
+
+const TetMesh& post_mesh() {
+  static const TetMesh m = build_mesh(post_scene());
+  return m;
+}
+
+TEST(PostSensor, TheCavityIsTheExactCylinder) {
+  const TetMesh& m = post_mesh();
+  const Scene s = post_scene();
+  int wall_nodes = 0;
+  for (int n = 0; n < m.num_nodes(); ++n) {
+    if (!(m.node_marker(n) & kPost)) continue;
+    double d = 1e300;
+    for (const Vec2& c : s.sensors.positions)
+      d = std::min(d, std::hypot(m.nodes(n, 0) - c[0], m.nodes(n, 1) - c[1]));
+    const double z = m.nodes(n, 2);
+    EXPECT_LE(z, kHeight + 1e-12);
+    EXPECT_LE(d, 0.5 * kDiameter + 1e-12);
+    if (z < kHeight - 1e-12) {  // on the wall (or its foot on the base): on the cylinder to round-off
+      EXPECT_NEAR(d, 0.5 * kDiameter, 1e-12) << "node " << n;
+      ++wall_nodes;
+    }
+  }
+  EXPECT_GT(wall_nodes, 2 * 12);  // both posts, every wall node checked
+  // The skin is the layer less both posts: the P2 wall's volume error is O(h⁴/R³) per element, far below
+  // 1e-3 of a post's volume at these sizes.
+  const double post_volume = M_PI * 0.25 * kDiameter * kDiameter * kHeight;
+  EXPECT_NEAR(assess_quality(m).volume_mm3, 4 * kHalfWidth * kHalfWidth * kH - 2 * post_volume,
+              1e-3 * post_volume);
+  EXPECT_EQ(m.straightened, 0);
+}
+
+TEST(PostSensor, BaseAndPostsBalanceTheLoad) {
+  const TetMesh& m = post_mesh();
+  const ElasticModel model(m, post_scene().material, SideCondition::free, std::vector<Punch>{});
+  const TractionPatch patch{{0.6, 0.2}, 0.5, {0.3, 0.1, -1}, 1.0};
+  const LoadCaseResult r = model.solve(model.patch_load(patch), {});
+  Eigen::Vector3d total = Eigen::Vector3d::Zero(), on_posts = Eigen::Vector3d::Zero();
+  for (int n = 0; n < m.num_nodes(); ++n) {
+    total += r.reactions.segment<3>(3 * n);
+    if (m.node_marker(n) & kPost) on_posts += r.reactions.segment<3>(3 * n);
+  }
+  const Eigen::Vector3d applied(r.applied_force_N[0], r.applied_force_N[1], r.applied_force_N[2]);
+  EXPECT_LT((total + applied).norm(), 1e-9 * applied.norm());
+  // The posts carry a share of it, read by the seam as force over cross-section (σ_z = R_z / A, σ_x = −R_x /
+  // A).
+  const SensorReadings readings(m, reading_sites(post_scene().sensors));
+  const double area = M_PI * 0.25 * kDiameter * kDiameter;
+  Eigen::Vector3d read = Eigen::Vector3d::Zero();
+  for (int k = 0; k < readings.size(); ++k) {
+    const SensorReading v = readings.read(k, r.reactions);
+    read += Eigen::Vector3d(-v.sigma_x * area, 0, v.sigma_z * area);
+  }
+  EXPECT_NEAR(read.x(), on_posts.x(), 1e-12 * on_posts.norm());
+  EXPECT_NEAR(read.z(), on_posts.z(), 1e-12 * on_posts.norm());
+  EXPECT_GT(on_posts.norm(), 1e-3 * applied.norm());  // the post is not a zero-force no-op
+}
+
+TEST(PostSensor, AdjointReadingIsTheForwardOne) {
+  // Maxwell–Betti on one mesh: the adjoint (the post displaced rigidly, the rest of the base held) gives the
+  // reading of a unit point force anywhere on the top; the direct solve of that force gives it through the
+  // reactions. Both sides are the same discrete system, so they agree to the solver's residual (1e-6 of the
+  // peak is the requirement, round-off is what the algebra allows).
+  const TetMesh& m = post_mesh();
+  const Scene s = post_scene();
+  const ElasticModel model(m, s.material, SideCondition::free, std::vector<Punch>{});
+  const green::FeGreen fe(model, s.sensors);
+  const SensorReadings readings(m, reading_sites(s.sensors));
+  double peak = 0, worst = 0;
+  for (const auto& [x, y] : std::vector<std::pair<double, double>>{{0.5, 0}, {-0.3, 0.4}, {1.2, -0.8}}) {
+    for (const Eigen::Vector3d& dir : {Eigen::Vector3d(0, 0, -1), Eigen::Vector3d(1, 0, 0)}) {
+      const LoadCaseResult r = model.solve(model.point_load(x, y, dir), {});
+      for (int k = 0; k < readings.size(); ++k) {
+        const SensorReading direct = readings.read(k, r.reactions);
+        const green::GreenSample g = fe.at(k, true, x - s.sensors.positions[k][0],
+                                           y - s.sensors.positions[k][1], green::LayerLoad::point, 0);
+        // g_zb: a force pressing into the skin (−z); g_xb: along +x.
+        const double adj_z = dir.z() != 0 ? g.zz : g.xz, adj_x = dir.z() != 0 ? g.zx : g.xx;
+        peak = std::max({peak, std::abs(direct.sigma_z), std::abs(direct.sigma_x)});
+        worst = std::max({worst, std::abs(direct.sigma_z - adj_z), std::abs(direct.sigma_x - adj_x)});
+      }
+    }
+  }
+  EXPECT_LT(worst, 1e-6 * peak);
+}
+
+}  // namespace
+}  // namespace skinfem
