@@ -43,8 +43,7 @@ Eigen::VectorXd SensorReadings::weights(int k, char component) const {
 }
 
 Eigen::MatrixXd SensorReadings::weight_block() const {
-  if (sites_.empty()) return {};
-  Eigen::MatrixXd W(weights(0, 'z').size(), 2 * size());
+  Eigen::MatrixXd W(3 * mesh_.num_nodes(), 2 * size());
   for (int k = 0; k < size(); ++k)
     for (int b = 0; b < 2; ++b) W.col(2 * k + b) = weights(k, b ? 'x' : 'z');
   return W;

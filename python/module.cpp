@@ -288,16 +288,7 @@ PYBIND11_MODULE(_skinfem, m) {
           "varsigma_kPa",
           [](const pipeline::DefectRun& r, const std::string& name) {
             for (size_t ci = 0; ci < r.cases.size(); ++ci)
-              if (r.cases[ci] == name) {
-                const Eigen::MatrixXd& v = r.sweeps[ci].varsigma;
-                const py::ssize_t n = v.rows(), ns = v.cols() / 2;
-                py::array_t<double> a({n, ns, py::ssize_t{2}});
-                auto w = a.mutable_unchecked<3>();
-                for (py::ssize_t i = 0; i < n; ++i)
-                  for (py::ssize_t k = 0; k < ns; ++k)
-                    for (int c = 0; c < 2; ++c) w(i, k, c) = 1e3 * v(i, 2 * k + c);
-                return a;
-              }
+              if (r.cases[ci] == name) return kpa_by_sensor(r.sweeps[ci].varsigma);
             throw SceneError("case: '" + name + "' is not one of static, sliding");
           },
           py::arg("case"), "ς of case 'static' or 'sliding': positions × sensors × (z, x), kPa")
@@ -429,17 +420,12 @@ PYBIND11_MODULE(_skinfem, m) {
         if (!(R > 0)) throw SceneError("radius_mm: " + std::to_string(R) + " must be > 0");
         if (layer_h > 0) {
           const contact::LayerHertzResult l = contact::layer_hertz_force(force, R, layer_h, E, nu);
-          return PyTractions{validation::axisymmetric_tractions([l](double r) { return l.pressure_MPa(r); },
-                                                                center, l.a_mm, ratio, 1e-3 * shear_kpa),
+          return PyTractions{validation::layer_hertz_tractions(l, center, ratio, 1e-3 * shear_kpa),
                              "exact bonded-layer Hertz pressure, a = " + std::to_string(l.a_mm) + " mm"};
         }
         const contact::HertzHalfspace h = contact::hertz_halfspace(force, R, E, nu);
-        const double a = h.a_mm, p0 = h.p0_MPa;
-        return PyTractions{
-            validation::axisymmetric_tractions(
-                [a, p0](double r) { return p0 * std::sqrt(std::max(0.0, 1 - r * r / (a * a))); }, center, a,
-                ratio, 1e-3 * shear_kpa),
-            "half-space Hertz pressure, a = " + std::to_string(a) + " mm"};
+        return PyTractions{validation::hertz_tractions(h, center, ratio, 1e-3 * shear_kpa),
+                           "half-space Hertz pressure, a = " + std::to_string(h.a_mm) + " mm"};
       },
       py::arg("force_N"), py::arg("radius_mm"), py::arg("E_MPa"), py::arg("nu") = 0.5,
       py::arg("center_mm") = std::array<double, 2>{0, 0}, py::arg("ratio") = 0.0, py::arg("shear_kPa") = 0.0,
@@ -449,8 +435,8 @@ PYBIND11_MODULE(_skinfem, m) {
   m.def(
       "convolve",
       [](const PyTractions& t, const PyKernel& g, const Scene& scene) {
-        return kpa_by_sensor(validation::convolve(t.t, g.g, scene.sensors).transpose())
-            .attr("reshape")(py::make_tuple(-1, 2));
+        const Eigen::VectorXd v = validation::convolve(t.t, g.g, scene.sensors);
+        return kpa(v, {v.size() / 2, 2});
       },
       py::arg("tractions"), py::arg("kernel"), py::arg("scene"),
       "The paper's eq. (1): each sensor's (sigma_z, sigma_x), kPa (sensors x 2).");
@@ -477,8 +463,8 @@ PYBIND11_MODULE(_skinfem, m) {
           "readings_kPa",
           [](const validation::Crosscheck& x, const std::string& variant, const std::string& name) {
             const size_t v = variant_named(x.reading_variants, variant, "reading");
-            return kpa_by_sensor(x.readings[v][case_index(name)].transpose())
-                .attr("reshape")(py::make_tuple(-1, 2));
+            const Eigen::VectorXd& r = x.readings[v][case_index(name)];
+            return kpa(r, {r.size() / 2, 2});
           },
           py::arg("variant"), py::arg("case"), "sensors x (sigma_z, sigma_x), kPa")
       .def(

@@ -57,17 +57,6 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
     hertz = contact::hertz_halfspace(in.force, *in.equivalent_radius, in.E, in.nu);
     layer = contact::layer_hertz_force(in.force, *in.equivalent_radius, in.center_thickness, in.E, in.nu);
   }
-  const auto hertz_tractions = [&](double ratio, double shear) {
-    const double a = hertz->a_mm, p0 = hertz->p0_MPa;
-    return axisymmetric_tractions(
-        [a, p0](double r) { return p0 * std::sqrt(std::max(0.0, 1 - r * r / (a * a))); }, in.center, a, ratio,
-        shear);
-  };
-  const auto layer_tractions = [&](double ratio, double shear) {
-    const contact::LayerHertzResult l = *layer;
-    return axisymmetric_tractions([l](double r) { return l.pressure_MPa(r); }, in.center, l.a_mm, ratio,
-                                  shear);
-  };
   // The FE's traction on a frictionless solution (the paper's uncoupled friction with the FE's law).
   const auto free_shear = [&](int c, const Eigen::VectorXd& covered = {}) {
     Eigen::VectorXd v = out.shear[c] * solver.touched(FrictionMode::none);
@@ -93,12 +82,19 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
   add_reading("uncoupled", "frictionless FE pressure with the FE's traction added, FE Green",
               [&](int c) { return solver.readings(none.lambda, out.ratio[c], free_shear(c)); });
   if (hertz) {
-    add_reading("pressure_hertz", "half-space Hertz pressure (uncoupled friction), FE Green",
-                [&](int c) { return convolve(hertz_tractions(out.ratio[c], out.shear[c]), fe, in.sensors); });
+    add_reading("pressure_hertz", "half-space Hertz pressure (uncoupled friction), FE Green", [&](int c) {
+      return convolve(hertz_tractions(*hertz, in.center, out.ratio[c], out.shear[c]), fe, in.sensors);
+    });
     add_reading("pressure_layer", "exact bonded-layer Hertz pressure (uncoupled friction), FE Green",
-                [&](int c) { return convolve(layer_tractions(out.ratio[c], out.shear[c]), fe, in.sensors); });
+                [&](int c) {
+                  return convolve(layer_hertz_tractions(*layer, in.center, out.ratio[c], out.shear[c]), fe,
+                                  in.sensors);
+                });
     add_reading("paper_model", "exact-layer pressure, uncoupled friction, Green rescaled by the paper's k",
-                [&](int c) { return convolve(layer_tractions(out.paper_ratio[c], 0), k_paper, in.sensors); });
+                [&](int c) {
+                  return convolve(layer_hertz_tractions(*layer, in.center, out.paper_ratio[c]), k_paper,
+                                  in.sensors);
+                });
   }
 
   // Hole signals.
@@ -154,8 +150,8 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
   if (layer)
     add_signal("paper_model",
                "eqs. (2)-(3), exact-layer pressure, uncoupled, Green rescaled by the paper's k", [&](int c) {
-                 return first_order_hole(layer_tractions(out.paper_ratio[c], 0), k_paper, in.sensors, centers,
-                                         S);
+                 return first_order_hole(layer_hertz_tractions(*layer, in.center, out.paper_ratio[c]),
+                                         k_paper, in.sensors, centers, S);
                });
 
   for (size_t v = 0; v < out.signals.size(); ++v) {

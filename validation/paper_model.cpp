@@ -1,5 +1,6 @@
 #include "validation/paper_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
@@ -84,6 +85,20 @@ Tractions axisymmetric_tractions(std::function<double(double)> p_of_r, const Vec
     }
   }
   return t;
+}
+
+Tractions hertz_tractions(const contact::HertzHalfspace& hertz, const Vec2& center, double ratio,
+                          double shear) {
+  const double a = hertz.a_mm, p0 = hertz.p0_MPa;
+  return axisymmetric_tractions(
+      [a, p0](double r) { return p0 * std::sqrt(std::max(0.0, 1 - r * r / (a * a))); }, center, a, ratio,
+      shear);
+}
+
+Tractions layer_hertz_tractions(const contact::LayerHertzResult& layer, const Vec2& center, double ratio,
+                                double shear) {
+  return axisymmetric_tractions([layer](double r) { return layer.pressure_MPa(r); }, center, layer.a_mm,
+                                ratio, shear);
 }
 
 Tractions fe_tractions(const contact::MortarZone& zone, const TetMesh& mesh, const Eigen::VectorXd& lambda,

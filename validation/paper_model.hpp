@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "contact/condensed.hpp"
+#include "contact/layer_hertz.hpp"
 #include "green/fe_green.hpp"
 #include "green/layer_exact.hpp"
 
@@ -51,6 +52,12 @@ struct Tractions {
 // shear: MPa, uniform on the disc.
 Tractions axisymmetric_tractions(std::function<double(double)> p_of_r, const Vec2& center, double a,
                                  double ratio, double shear = 0, int n_theta = 48, int n_phi = 96);
+// The two analytic pressures of a sphere on the skin as tractions (friction as above): half-space Hertz,
+// p0 √(1 − r²/a²), and the exact bonded layer's (contact/layer_hertz.hpp).
+Tractions hertz_tractions(const contact::HertzHalfspace& hertz, const Vec2& center, double ratio,
+                          double shear = 0);
+Tractions layer_hertz_tractions(const contact::LayerHertzResult& layer, const Vec2& center, double ratio,
+                                double shear = 0);
 // The FE contact pressure Σ λ_i ψ_i on the mortar zone (contact/mortar.hpp) and its traction
 // ratio·p + Σ shear_i ψ_i (shear: empty or nodal, contact::ContactResult::shear), 7 points per top face.
 Tractions fe_tractions(const contact::MortarZone& zone, const TetMesh& mesh, const Eigen::VectorXd& lambda,
