@@ -277,6 +277,16 @@ void write_index(const std::string& dir, const Scene& scene, const IndexInput& i
       << html_escape(in.front->answer) << "</p>\n";
   if (in.budget && !in.budget->results.empty()) {
     const HoleBudget& b = *in.budget;
+    const auto scale_sentence = [](const Eigen::VectorXd& s) {
+      const auto range = [&](int d) {
+        double lo = 1e300, hi = 0;
+        for (int k = d; k < s.size(); k += 2) lo = std::min(lo, s[k]), hi = std::max(hi, s[k]);
+        return fmt("%.3g", lo) + "–" + fmt("%.3g", hi);
+      };
+      return " Readings are in the paper's units: each sensor's FE reading over its scale from the paper's "
+             "calibration (kfit/kfit.json, paper_calibration), " +
+             range(0) + " for ςz and " + range(1) + " for ςx.";
+    };
     const std::vector<int> front =
         validation::front_sensors(scene.sensors, contact_center(scene), scene.contact->direction);
     const auto range = [&](const std::vector<std::array<double, 2>>& ratios, int component, bool in_front) {
@@ -296,8 +306,9 @@ void write_index(const std::string& dir, const Scene& scene, const IndexInput& i
          "(hover or open a row for the sentence). Detection: "
       << fmt("%.0f", b.base.noise.k) << " standard deviations of a " << b.base.noise.passages
       << "-passage mean, " << fmt("%.3f", 1e3 * b.base.noise.threshold(0)) << " kPa (ςz) and "
-      << fmt("%.3f", 1e3 * b.base.noise.threshold(1))
-      << " kPa (ςx).</p>\n<table><tr><th>hypothesis</th><th>τ0 kPa</th><th>K MPa/mm</th><th>back "
+      << fmt("%.3f", 1e3 * b.base.noise.threshold(1)) << " kPa (ςx)."
+      << (b.reading_scale.size() ? scale_sentence(b.reading_scale) : "")
+      << "</p>\n<table><tr><th>hypothesis</th><th>τ0 kPa</th><th>K MPa/mm</th><th>back "
          "z</th><th>back "
          "x</th><th>front "
          "z</th><th>front x</th><th>F1</th><th>F2</th><th>F3</th><th>F4</th><th>F5</th></tr>\n";
@@ -445,7 +456,8 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
       report["front_sensors"] = front_sensor_json(*index.front);
       wall["crosscheck"] = clock.seconds();
       clock = Stopwatch();
-      auto budget = hole_budget_stage(scene, *contact, *x, out_dir + "/crosscheck");
+      auto budget = hole_budget_stage(scene, *contact, *x, out_dir + "/crosscheck",
+                                      pipeline::paper_reading_scale(kf.result));
       report["hole_budget"] = std::move(budget.summary);
       index.budget = std::move(budget.result);
       wall["hole_budget"] = clock.seconds();

@@ -9,8 +9,9 @@
 namespace skinfem::app {
 
 StageOutput<HoleBudget> hole_budget_stage(const Scene& scene, const ContactSetup& setup,
-                                          const validation::Crosscheck& x, const std::string& out_dir) {
-  HoleBudget b = hole_budget(scene, setup, x);
+                                          const validation::Crosscheck& x, const std::string& out_dir,
+                                          const Eigen::VectorXd& reading_scale) {
+  HoleBudget b = hole_budget(scene, setup, x, reading_scale);
   if (!b.unavailable.empty()) {
     nlohmann::json skipped = {{"skipped", b.unavailable}};
     return {std::move(b), std::move(skipped)};
@@ -30,6 +31,14 @@ StageOutput<HoleBudget> hole_budget_stage(const Scene& scene, const ContactSetup
                   {"comparable_maximum", base.rules.comparable},
                   {"dip", base.rules.dip}};
   out["mean_pressure_kPa"] = 1e3 * b.mean_pressure_MPa;
+  if (b.reading_scale.size()) {
+    out["units"] =
+        "the paper's: each sensor's FE reading over its calibration scale (kfit.json, paper_calibration)";
+    for (int k = 0; k < ns; ++k)
+      out["reading_scale"].push_back({b.reading_scale[2 * k], b.reading_scale[2 * k + 1]});
+  } else {
+    out["units"] = "the sensors' own readings";
+  }
   std::ostringstream csv, signals;
   csv.precision(8);
   signals.precision(8);

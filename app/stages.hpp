@@ -42,8 +42,10 @@ pipeline::DefectRun defect_stage(const Scene& scene, std::shared_ptr<const Conta
 
 // The hole-signal budget (app/hole_budget_stage.cpp): friction hypotheses against the paper's facts, judged
 // against the crosscheck's paper_model signals; writes its tables into out_dir (the crosscheck's).
+// reading_scale: pipeline::hole_budget's.
 StageOutput<pipeline::HoleBudget> hole_budget_stage(const Scene& scene, const ContactSetup& setup,
                                                     const validation::Crosscheck& x,
-                                                    const std::string& out_dir);
+                                                    const std::string& out_dir,
+                                                    const Eigen::VectorXd& reading_scale = {});
 
 }  // namespace skinfem::app

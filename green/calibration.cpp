@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 namespace skinfem::green {
 
@@ -33,23 +34,24 @@ ScanProfile scan_profile(const SensorGreen& g, LayerLoad load, double radius, do
   return p;
 }
 
-KReport fit_profile(const std::vector<double>& x, const std::vector<GreenSample>& g, double h) {
+KReport fit_profile(const std::vector<double>& x, const std::vector<GreenSample>& g, double h, Gain gain) {
   KReport r;
   size_t zero = x.size();
   for (size_t i = 0; i < x.size(); ++i)
     if (std::abs(x[i]) < 1e-12) zero = i;
   if (zero == x.size()) throw std::invalid_argument("fit_profile: offset 0 missing");
-  r.k_central = k_central(g[zero].zz, h);
-  std::vector<double> xs, zz;
+  std::vector<double> xs;
   for (size_t i = 0; i < x.size(); ++i)
-    if (std::abs(x[i]) <= 3 * h + 1e-12) xs.push_back(x[i]), zz.push_back(g[i].zz);
-  r.k_lsq_line = fit_k_line(xs, zz, h, GreenComponent::zz).k;
+    if (std::abs(x[i]) <= 3 * h + 1e-12) xs.push_back(x[i]);
   for (size_t c = 0; c < 4; ++c) {
     std::vector<double> v;
     for (size_t i = 0; i < x.size(); ++i)
       if (std::abs(x[i]) <= 3 * h + 1e-12) v.push_back(component(g[i], kComponents[c]));
-    r.components[c] = fit_k_line(xs, v, h, kComponents[c]);
+    r.components[c] = fit_k_line(xs, v, h, kComponents[c], gain);
   }
+  r.k_lsq_line = r.components[0].k;
+  r.gain = r.components[0].gain;
+  r.k_central = k_central(g[zero].zz, h) / r.gain;
   return r;
 }
 
@@ -85,15 +87,12 @@ std::array<double, 4> max_error_over_peak(const std::vector<GreenSample>& fe,
   return out;
 }
 
-double effective_thickness(const std::vector<double>& x, const std::vector<double>& g_zz, double h0,
-                           double nu, LayerLoad load, double radius) {
-  auto misfit = [&](double h) {
-    const LayerGreen layer(h, nu, load, radius);
-    double s = 0;
-    for (size_t i = 0; i < x.size(); ++i) s += std::pow(layer.at(x[i], 0.0).zz - g_zz[i], 2);
-    return s;
-  };
-  double a = 0.5 * h0, b = 1.5 * h0;
+namespace {
+// Golden section for the minimum of a thickness misfit on [lo, hi] (to 1e-6 of h0); a minimum at a bound
+// is no fit.
+template <class Misfit>
+double best_thickness(const Misfit& misfit, double lo, double hi, double h0, const char* what) {
+  double a = lo, b = hi;
   const double phi = 0.5 * (std::sqrt(5.0) - 1);
   double c = b - phi * (b - a), d = a + phi * (b - a), fc = misfit(c), fd = misfit(d);
   while (b - a > 1e-6 * h0) {
@@ -105,7 +104,68 @@ double effective_thickness(const std::vector<double>& x, const std::vector<doubl
       d = a + phi * (b - a), fd = misfit(d);
     }
   }
-  return 0.5 * (a + b);
+  const double h = 0.5 * (a + b);
+  if (h - lo < 1e-5 * h0 || hi - h < 1e-5 * h0)
+    throw std::domain_error(std::string(what) + ": the best thickness lies at the bound " +
+                            std::to_string(h).substr(0, 5) + " mm of [" + std::to_string(lo).substr(0, 5) +
+                            ", " + std::to_string(hi).substr(0, 5) + "] mm; no layer fits this scan");
+  return h;
+}
+
+// Σ m g / Σ m²: the scale s minimising Σ (s m − g)².
+double linear_scale(const std::vector<double>& m, const std::vector<double>& g) {
+  double mg = 0, mm = 0;
+  for (size_t i = 0; i < m.size(); ++i) mg += m[i] * g[i], mm += m[i] * m[i];
+  return mm > 0 ? mg / mm : 0.0;
+}
+
+double rms_over_peak(const std::vector<double>& m, double s, const std::vector<double>& g) {
+  double r = 0, peak = 0;
+  for (size_t i = 0; i < m.size(); ++i)
+    r += std::pow(s * m[i] - g[i], 2), peak = std::max(peak, std::abs(g[i]));
+  return peak > 0 ? std::sqrt(r / m.size()) / peak : 0.0;
+}
+}  // namespace
+
+double effective_thickness(const std::vector<double>& x, const std::vector<double>& g_zz, double h0,
+                           double nu, LayerLoad load, double radius) {
+  auto misfit = [&](double h) {
+    const LayerGreen layer(h, nu, load, radius);
+    double s = 0;
+    for (size_t i = 0; i < x.size(); ++i) s += std::pow(layer.at(x[i], 0.0).zz - g_zz[i], 2);
+    return s;
+  };
+  return best_thickness(misfit, 0.5 * h0, 1.5 * h0, h0, "effective thickness");
+}
+
+PaperCalibration paper_calibration(const std::vector<double>& x, const std::vector<GreenSample>& g, double h0,
+                                   double nu, LayerLoad load, double radius) {
+  std::vector<double> zz, zx;
+  for (const GreenSample& s : g) zz.push_back(s.zz), zx.push_back(s.zx);
+  const auto layer_at = [&](double h, std::vector<double>& mz, std::vector<double>& mx) {
+    const LayerGreen layer(h, nu, load, radius);
+    mz.clear(), mx.clear();
+    for (double xi : x) {
+      const GreenSample s = layer.at(xi, 0.0);
+      mz.push_back(s.zz), mx.push_back(s.zx);
+    }
+  };
+  std::vector<double> mz, mx;
+  const auto misfit = [&](double h) {
+    layer_at(h, mz, mx);
+    const double s = linear_scale(mz, zz);
+    double r = 0;
+    for (size_t i = 0; i < x.size(); ++i) r += std::pow(s * mz[i] - zz[i], 2);
+    return r;
+  };
+  PaperCalibration c;
+  c.thickness_mm = best_thickness(misfit, 0.25 * h0, 2.0 * h0, h0, "paper calibration");
+  layer_at(c.thickness_mm, mz, mx);
+  c.scale_z = linear_scale(mz, zz);
+  c.scale_x = linear_scale(mx, zx);
+  c.rms_z_over_peak = rms_over_peak(mz, c.scale_z, zz);
+  c.rms_x_over_peak = rms_over_peak(mx, c.scale_x, zx);
+  return c;
 }
 
 }  // namespace skinfem::green

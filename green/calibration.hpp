@@ -37,13 +37,16 @@ inline ScanProfile scan_profile(const FeGreen& fe, int sensor, LayerLoad load, d
 }
 
 struct KReport {
-  double k_central = 0;              // g_zz(0) / (3/(2πh²)), point value at the base
-  double k_lsq_line = 0;             // least squares of g_k to g_zz on |x| ≤ 3h, uniform weight in x
-  std::array<KFit, 4> components{};  // best k and rms residual / peak per component (zz, zx, xz, xx)
+  double k_central = 0;              // g_zz(0) / (gain · 3/(2πh²)), point value at the base
+  double k_lsq_line = 0;             // least squares of gain·g_k to g_zz on |x| ≤ 3h, uniform weight in x
+  double gain = 1;                   // of g_zz: 1, or fitted with k_lsq_line (Gain::fitted)
+  std::array<KFit, 4> components{};  // best k, gain and rms residual / peak per component (zz, zx, xz, xx)
 };
 
-// k fits of a profile of point values along x (offset 0 must be present) for thickness h.
-KReport fit_profile(const std::vector<double>& x, const std::vector<GreenSample>& g, double h);
+// k fits of a profile of point values along x (offset 0 must be present) for thickness h. With
+// Gain::fitted (post sensors) every fit has its own gain, and k_central divides by g_zz's.
+KReport fit_profile(const std::vector<double>& x, const std::vector<GreenSample>& g, double h,
+                    Gain gain = Gain::fixed);
 
 // The exact flat-layer reference on the same offsets: point values, or (disc_diameter > 0) the mean over
 // the sensor disc (LayerGreen's sensor_radius: exact, no rule over the disc).
@@ -59,7 +62,23 @@ std::array<double, 4> max_error_over_peak(const std::vector<GreenSample>& fe,
 
 // Thickness of the flat bonded layer whose exact g_zz (same load) best fits `g_zz` on the offsets
 // (least squares, golden section on [0.5 h0, 1.5 h0]): the effective skin thickness at a sensor.
+// Throws std::domain_error when the best thickness is a bound of that range.
 double effective_thickness(const std::vector<double>& x, const std::vector<double>& g_zz, double h0,
                            double nu, LayerLoad load, double radius);
+
+// The paper's calibration (§II: "a Volt-to-Pascal calibration of the sensors, as well as an estimated value
+// of the thickness of the layer at each sensor's location"): a sensor's scan is fitted by the exact bonded
+// layer's base stress under the same load, with the layer's thickness and the reading's scale both free.
+// σ_z's scan (g_zz) gives the thickness and scale_z; σ_x's (g_zx, the same normal load) its own scale_x
+// at that thickness. A reading divided by its scale is in the calibration's units, the paper's kPa.
+struct PaperCalibration {
+  double thickness_mm = 0;
+  double scale_z = 0, scale_x = 0;                  // reading / fitted layer stress
+  double rms_z_over_peak = 0, rms_x_over_peak = 0;  // the fits' residuals
+};
+// Least squares over the offsets; the thickness by golden section on [0.25 h0, 2 h0], the scales linear.
+// Throws std::domain_error when the best thickness is a bound of that range.
+PaperCalibration paper_calibration(const std::vector<double>& x, const std::vector<GreenSample>& g, double h0,
+                                   double nu, LayerLoad load, double radius);
 
 }  // namespace skinfem::green

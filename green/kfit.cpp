@@ -14,7 +14,7 @@ constexpr double kMin = 0.5, kMax = 4.0;
 }  // namespace
 
 KFit fit_k_line(const std::vector<double>& x, const std::vector<double>& g, double h,
-                GreenComponent component) {
+                GreenComponent component, Gain gain) {
   if (x.empty() || x.size() != g.size())
     throw std::invalid_argument("fit_k_line: need equally many x and g samples");
   if (!(h > 0.0)) throw std::invalid_argument("fit_k_line: h must be > 0");
@@ -22,10 +22,22 @@ KFit fit_k_line(const std::vector<double>& x, const std::vector<double>& g, doub
   for (double v : g) peak = std::max(peak, std::fabs(v));
   if (!(peak > 0.0)) throw std::invalid_argument("fit_k_line: samples are all zero");
 
+  // The gain at k: 1, or the amplitude c minimising Σ(c m_i − g_i)², c = Σ m g / Σ m².
+  const auto gain_at = [&](double k) {
+    if (gain == Gain::fixed) return 1.0;
+    double mg = 0.0, mm = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const double m = green::component(rescaled_green(x[i], 0.0, h, k), component);
+      mg += m * g[i];
+      mm += m * m;
+    }
+    return mm > 0 ? mg / mm : 0.0;
+  };
   const auto cost = [&](double k) {
+    const double c = gain_at(k);
     double sum = 0.0;
     for (std::size_t i = 0; i < x.size(); ++i) {
-      const double r = green::component(rescaled_green(x[i], 0.0, h, k), component) - g[i];
+      const double r = c * green::component(rescaled_green(x[i], 0.0, h, k), component) - g[i];
       sum += r * r;
     }
     return sum;
@@ -71,6 +83,7 @@ KFit fit_k_line(const std::vector<double>& x, const std::vector<double>& g, doub
   }
   KFit fit;
   fit.k = 0.5 * (lo + hi);
+  fit.gain = gain_at(fit.k);
   fit.rms_residual_over_peak = std::sqrt(cost(fit.k) / static_cast<double>(x.size())) / peak;
   return fit;
 }

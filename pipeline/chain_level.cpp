@@ -10,6 +10,7 @@
 #include "green/kfit.hpp"
 #include "mesh/sizing.hpp"
 #include "pipeline/clock.hpp"
+#include "pipeline/kfit.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/symmetry.hpp"
 #include "validation/richardson.hpp"
@@ -31,7 +32,7 @@ ChainLevel chain_values(const Scene& s, const AdjointSetup& adj, const ContactSe
   const auto prof =
       green::scan_profile(*adj.fe, 0, green::LayerLoad::punch, 0.5 * s.calibration.punch_diameter,
                           scan_half_width(s, &adj.mesh, h, pos), s.calibration.spacing);
-  const green::KReport k = green::fit_profile(prof.offset_x, prof.point, h);
+  const green::KReport k = green::fit_profile(prof.offset_x, prof.point, h, kfit_gain(s));
   const double t_green = total_seconds(adj.wall) + clock.seconds();
   add("k_central", k.k_central, t_green);
   add("k_lsq_line", k.k_lsq_line, t_green);

@@ -6,7 +6,8 @@
 
 namespace skinfem::pipeline {
 
-HoleBudget hole_budget(const Scene& scene, const ContactSetup& setup, const validation::Crosscheck& x) {
+HoleBudget hole_budget(const Scene& scene, const ContactSetup& setup, const validation::Crosscheck& x,
+                       const Eigen::VectorXd& reading_scale) {
   HoleBudget out;
   int model = -1;
   for (size_t v = 0; v < x.signal_variants.size(); ++v)
@@ -23,6 +24,7 @@ HoleBudget hole_budget(const Scene& scene, const ContactSetup& setup, const vali
   base.sensors = scene.sensors;
   base.center = contact_center(scene);
   base.direction = scene.contact->direction;
+  base.reading_scale = out.reading_scale = reading_scale;
   const int ns = static_cast<int>(scene.sensors.positions.size());
   // The mean pressure of the hard frictionless contact sets each rough interface's stiffness.
   ContactLoad hard = *scene.contact;

@@ -19,6 +19,7 @@ struct HoleBudget {
   validation::FactsInput base;   // positions, the paper's model signals, noise model and judgement rules
   double mean_pressure_MPa = 0;  // of the hard frictionless contact: sets each rough interface's K
   std::vector<validation::HypothesisResult> results;  // in the order run
+  Eigen::VectorXd reading_scale;                      // as base.reading_scale
   std::vector<int> facts_met;                         // per result
   std::vector<double> sliding_roughness;              // per result: validation::roughness, worst curve
   struct Skipped {
@@ -29,6 +30,8 @@ struct HoleBudget {
   std::string answer;
 };
 
-HoleBudget hole_budget(const Scene& scene, const ContactSetup& setup, const validation::Crosscheck& x);
+// reading_scale: validation::FactsInput's (post sensors: from pipeline::paper_reading_scale).
+HoleBudget hole_budget(const Scene& scene, const ContactSetup& setup, const validation::Crosscheck& x,
+                       const Eigen::VectorXd& reading_scale = {});
 
 }  // namespace skinfem::pipeline

@@ -26,6 +26,8 @@ KfitResult kfit(const Scene& scene, const SensorGreens& greens, LayerLoad load) 
   const int ns = static_cast<int>(scene.sensors.positions.size());
   // On a cap solved in 3D, the first sensor on its axis is checked against the meridian path.
   const int axis = axis_sensor(scene, greens);
+  const green::Gain gain = kfit_gain(scene);
+  r.gain_fitted = gain == green::Gain::fitted;
   for (int s = 0; s < ns; ++s) {
     progress_step("kfit: calibration scans", s, ns, clock.seconds());
     KfitSensor k;
@@ -36,7 +38,7 @@ KfitResult kfit(const Scene& scene, const SensorGreens& greens, LayerLoad load) 
     const auto prof =
         green::scan_profile(greens.of(s), load, radius, greens.scan_half_width[s], scene.calibration.spacing);
     k.scan_half_width_mm = prof.offset_x.back();
-    k.fe = green::fit_profile(prof.offset_x, prof.point, h);
+    k.fe = green::fit_profile(prof.offset_x, prof.point, h, gain);
     if (greens.coarse_at) {
       // The k fits again at half the resolution (point values on the fit window |x| ≤ 3h): the change bounds
       // the error, the meridian converging at order ≥ 2 (tests/green/test_meridian).
@@ -45,14 +47,18 @@ KfitResult kfit(const Scene& scene, const SensorGreens& greens, LayerLoad load) 
       for (double x : prof.offset_x)
         if (std::abs(x) <= 3 * h + 1e-12)
           xs.push_back(x), coarse.push_back(greens.coarse_at(s, false, x, 0, load, radius));
-      const green::KReport ck = green::fit_profile(xs, coarse, h);
+      const green::KReport ck = green::fit_profile(xs, coarse, h, gain);
       k.k_central_change_from_half_resolution = k.fe.k_central / ck.k_central - 1;
       k.k_lsq_line_change_from_half_resolution = k.fe.k_lsq_line / ck.k_lsq_line - 1;
     }
     for (size_t c = 0; c < 4; ++c)
       k.peak_point_per_mm2[c] = green::peak_abs(prof.point, green::kComponents[c]);
     if (s == axis) r.meridian_check = k.meridian_check = meridian_check(scene, s, prof, load, radius, h);
-    if (scene.geometry.kind == GeometryKind::cap) {
+    if (r.gain_fitted) {
+      // A post's scan is not a layer's at gain 1: calibrate it as the paper did, scale and thickness.
+      k.paper_calibration =
+          green::paper_calibration(prof.offset_x, prof.point, h, scene.material.nu, load, radius);
+    } else if (scene.geometry.kind == GeometryKind::cap) {
       std::vector<double> zz;
       for (const auto& g : prof.point) zz.push_back(g.zz);
       k.effective_thickness_mm =
@@ -124,12 +130,24 @@ KfitResult kfit(const Scene& scene, const SensorGreens& greens, LayerLoad load) 
   return r;
 }
 
+Eigen::VectorXd paper_reading_scale(const KfitResult& r) {
+  if (r.sensors.empty() || !r.sensors[0].paper_calibration) return {};
+  Eigen::VectorXd s(2 * r.sensors.size());
+  for (size_t k = 0; k < r.sensors.size(); ++k) {
+    s[2 * k] = r.sensors[k].paper_calibration->scale_z;
+    s[2 * k + 1] = r.sensors[k].paper_calibration->scale_x;
+  }
+  return s;
+}
+
 namespace {
-nlohmann::json components_json(const green::KReport& r) {
+nlohmann::json components_json(const green::KReport& r, bool gain) {
   nlohmann::json j;
-  for (size_t c = 0; c < 4; ++c)
-    j[green::component_name(green::kComponents[c])] = {
+  for (size_t c = 0; c < 4; ++c) {
+    auto& jc = j[green::component_name(green::kComponents[c])] = {
         {"k", r.components[c].k}, {"rms_residual_over_peak", r.components[c].rms_residual_over_peak}};
+    if (gain) jc["gain"] = r.components[c].gain;
+  }
   return j;
 }
 
@@ -147,7 +165,8 @@ nlohmann::json sensor_json(const KfitResult& r, const KfitSensor& k) {
                        {"scan_half_width_mm", k.scan_half_width_mm},
                        {"k_central", k.fe.k_central},
                        {"k_lsq_line", k.fe.k_lsq_line},
-                       {"components", components_json(k.fe)}};
+                       {"components", components_json(k.fe, r.gain_fitted)}};
+  if (r.gain_fitted) js["gain"] = k.fe.gain;
   if (k.k_central_change_from_half_resolution) {
     js["k_central_change_from_half_resolution"] = *k.k_central_change_from_half_resolution;
     js["k_lsq_line_change_from_half_resolution"] = *k.k_lsq_line_change_from_half_resolution;
@@ -155,6 +174,12 @@ nlohmann::json sensor_json(const KfitResult& r, const KfitSensor& k) {
   js["peak_point_per_mm2"] = per_component(k.peak_point_per_mm2);
   if (k.meridian_check) js["meridian_check"] = meridian_check_json(*k.meridian_check);
   if (k.effective_thickness_mm) js["effective_thickness_mm"] = *k.effective_thickness_mm;
+  if (const auto& c = k.paper_calibration)
+    js["paper_calibration"] = {{"thickness_mm", c->thickness_mm},
+                               {"scale_z", c->scale_z},
+                               {"scale_x", c->scale_x},
+                               {"rms_z_over_peak", c->rms_z_over_peak},
+                               {"rms_x_over_peak", c->rms_x_over_peak}};
   if (k.exact) {
     const std::string vs = r.ridged ? "_vs_smooth" : "_rel_error";
     js["k_central" + vs] = k.fe.k_central / k.exact->k_central - 1;
@@ -164,7 +189,7 @@ nlohmann::json sensor_json(const KfitResult& r, const KfitSensor& k) {
     js["peak_point_exact_per_mm2"] = per_component(k.peak_point_exact_per_mm2);
     js["k_central_exact"] = k.exact->k_central;
     js["k_lsq_line_exact"] = k.exact->k_lsq_line;
-    js["components_exact"] = components_json(*k.exact);
+    js["components_exact"] = components_json(*k.exact, false);
     js[r.ridged ? "disc_vs_smooth_max_diff_over_peak" : "fe_vs_exact_max_err_over_peak"] =
         per_component(k.disc_max_diff_over_peak);
   }
@@ -188,6 +213,19 @@ nlohmann::json kfit_json(const KfitResult& r) {
       {"k_central", "g_zz at zero offset (point value at the base, no sensor averaging) / (3/(2*pi*h^2))"},
       {"k_lsq_line",
        "least-squares fit of k*g_half(sqrt(k)x, 0) to g_zz along y = 0, |x| <= 3h, uniform weight"}};
+  if (r.gain_fitted) {
+    summary["definitions"]["k_central"] = "g_zz at zero offset / (gain * 3/(2*pi*h^2))";
+    summary["definitions"]["k_lsq_line"] =
+        "least-squares fit of gain*k*g_half(sqrt(k)x, 0) to g_zz along y = 0, |x| <= 3h, uniform weight, "
+        "gain fitted too";
+    summary["definitions"]["gain"] =
+        "the fitted model's integral over the surface (a post concentrates the stress; a base-traction "
+        "reading has gain 1 by equilibrium)";
+    summary["definitions"]["paper_calibration"] =
+        "the paper's calibration of the scan: the exact bonded layer's base stress under the same load, "
+        "thickness and scale_z fitted to g_zz, scale_x to g_zx at that thickness; a reading / its scale is "
+        "in the paper's kPa";
+  }
   summary["sensors"] = sensors;
   if (r.meridian_check) summary["meridian_check"] = meridian_check_json(*r.meridian_check);
   summary["path"] = r.path;

@@ -29,7 +29,9 @@ struct KfitSensor {
   // Meridian path only: relative change of k from the same fit at half the resolution (bounds its error).
   std::optional<double> k_central_change_from_half_resolution, k_lsq_line_change_from_half_resolution;
   std::optional<MeridianCheck> meridian_check;   // the axis sensor of a cap solved in 3D
-  std::optional<double> effective_thickness_mm;  // caps: the flat layer whose scan fits best
+  std::optional<double> effective_thickness_mm;  // caps, discs: the flat layer whose scan fits best
+  // Posts: the paper's calibration of the scan, scale and thickness both fitted (green::paper_calibration).
+  std::optional<green::PaperCalibration> paper_calibration;
   // Flat scenes: the exact (smooth) layer's k and the largest difference of the readings over the peak.
   std::optional<green::KReport> exact;
   std::array<double, 4> peak_point_exact_per_mm2{}, point_max_diff_over_peak{}, disc_max_diff_over_peak{};
@@ -40,6 +42,7 @@ struct KfitResult {
   double punch_diameter_mm = 0;  // 0 for a point load
   double nu = 0;
   bool flat = false, ridged = false;
+  bool gain_fitted = false;  // post sensors: the model's gain is fitted with k (green::Gain)
   std::vector<KfitSensor> sensors;
   std::optional<MeridianCheck> meridian_check;  // as in its sensor
   std::string path, path_model;                 // of the Green tensors
@@ -56,8 +59,16 @@ struct KfitResult {
   std::string explanation;
 };
 
+// Post sensors fit a gain with k (green::Gain); disc readings hold it at 1.
+inline green::Gain kfit_gain(const Scene& scene) {
+  return scene.sensors.model == SensorModel::post ? green::Gain::fitted : green::Gain::fixed;
+}
+
 // load: point or punch (the calibration punch of the scene).
 KfitResult kfit(const Scene& scene, const SensorGreens& greens, green::LayerLoad load);
+// 2·sensors: each reading's scale in the paper's calibration (σ_z of sensor k at 2k, σ_x at 2k + 1), for
+// the hole budget's units; empty unless the sensors were calibrated (posts).
+Eigen::VectorXd paper_reading_scale(const KfitResult& r);
 // The result as kfit.json holds it.
 nlohmann::json kfit_json(const KfitResult& r);
 

@@ -11,6 +11,7 @@
 #include "mesh/surface.hpp"
 #include "pipeline/adjoint_setup.hpp"
 #include "pipeline/clock.hpp"
+#include "pipeline/kfit.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/resources.hpp"
 
@@ -32,7 +33,7 @@ Solved solve_scan(const Scene& scene, std::shared_ptr<Skin> skin, double h, cons
   const double radius = 0.5 * scene.calibration.punch_diameter;
   s.profile = green::scan_profile(*setup->fe, 0, green::LayerLoad::punch, radius,
                                   scan_half_width(scene, &setup->mesh, h, sensor), scene.calibration.spacing);
-  s.k = green::fit_profile(s.profile.offset_x, s.profile.point, h);
+  s.k = green::fit_profile(s.profile.offset_x, s.profile.point, h, kfit_gain(scene));
   s.wall = setup->wall;
   return s;
 }

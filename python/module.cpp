@@ -179,6 +179,19 @@ PYBIND11_MODULE(_skinfem, m) {
           "peak_point_per_mm2",
           [](const pipeline::KfitSensor& k) { return per_component(k.peak_point_per_mm2); })
       .def_readonly("effective_thickness_mm", &pipeline::KfitSensor::effective_thickness_mm)
+      .def_property_readonly("gain", [](const pipeline::KfitSensor& k) { return k.fe.gain; })
+      .def_property_readonly("paper_calibration",
+                             [](const pipeline::KfitSensor& k) {
+                               if (!k.paper_calibration) return py::object(py::none());
+                               const auto& c = *k.paper_calibration;
+                               py::dict d;
+                               d["thickness_mm"] = c.thickness_mm;
+                               d["scale_z"] = c.scale_z;
+                               d["scale_x"] = c.scale_x;
+                               d["rms_z_over_peak"] = c.rms_z_over_peak;
+                               d["rms_x_over_peak"] = c.rms_x_over_peak;
+                               return py::object(d);
+                             })
       .def_property_readonly(
           "k_central_exact",
           [](const pipeline::KfitSensor& k) { return k.exact ? py::cast(k.exact->k_central) : py::none(); })

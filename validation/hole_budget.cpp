@@ -275,7 +275,10 @@ HypothesisResult run_hypothesis(const Hypothesis& h, const contact::CondensedCon
   out.tangential_force_N = sliding.tangential_force_N;
   out.contact_radius_mm = contact::contact_metrics(solver, mesh, top, sliding, base.center).contact_radius_mm;
   const FrictionMode modes[2] = {FrictionMode::static_residual, FrictionMode::coupled};
-  for (int c = 0; c < 2; ++c) out.signals[c] = contact::hole_sweep(solver, mesh, sweep, modes[c]).varsigma;
+  for (int c = 0; c < 2; ++c) {
+    out.signals[c] = contact::hole_sweep(solver, mesh, sweep, modes[c]).varsigma;
+    if (base.reading_scale.size()) out.signals[c] *= base.reading_scale.cwiseInverse().asDiagonal();
+  }
   base.fe = out.signals;
   base.contact_radius_mm = out.contact_radius_mm;
   out.ratio = amplitude_ratios(base);

@@ -53,6 +53,9 @@ struct FactsInput {
   double contact_radius_mm = 0;        // of the sliding contact
   NoiseModel noise;
   FactRules rules;
+  // 2·sensors: what each FE reading column is divided by to be in the paper's units (its calibration's
+  // scale, green::PaperCalibration); empty when the readings are in them already (disc sensors).
+  Eigen::VectorXd reading_scale;
 };
 
 // How jagged a signal curve sampled at even steps is: max |ς_{i+1} − 2ς_i + ς_{i−1}| / max |ς| (0 for a zero
@@ -80,7 +83,7 @@ std::vector<Hypothesis> interface_hypotheses(const ContactLoad& scene_load, doub
 struct HypothesisResult {
   Hypothesis hypothesis;
   double tau0_MPa = 0, contact_radius_mm = 0, tangential_force_N = 0, seconds = 0;
-  std::array<Eigen::MatrixXd, 2> signals;  // static, sliding (coupled)
+  std::array<Eigen::MatrixXd, 2> signals;  // static, sliding (coupled), over base.reading_scale
   std::array<std::vector<std::array<double, 2>>, 2> ratio;
   std::vector<FactVerdict> facts;
 };

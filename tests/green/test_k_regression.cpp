@@ -45,6 +45,16 @@ TEST(KRegression, FlatLayerGreenTensorMatchesTheExactLayerAndPinsK) {
   // The paper's k = 1.48 lies outside both, by more than any discretization error seen here.
   EXPECT_GT(ex_k.k_central / 1.48 - 1, 0.03);
   EXPECT_GT(ex_k.k_lsq_line / 1.48 - 1, 0.03);
+  // A base-traction reading is already in the paper's units: calibrated as the paper did (thickness and
+  // scale free), its scan gives the layer's thickness and scales of 1, within the FE profile's error
+  // (every component within 1 % of the peak, above).
+  const PaperCalibration cal =
+      paper_calibration(prof.offset_x, prof.point, h, scene.material.nu, LayerLoad::punch, a);
+  std::printf("paper calibration: thickness %.5f mm (h %.3f), scale_z %.5f, scale_x %.5f\n", cal.thickness_mm,
+              h, cal.scale_z, cal.scale_x);
+  EXPECT_NEAR(cal.thickness_mm / h, 1.0, 0.01);
+  EXPECT_NEAR(cal.scale_z, 1.0, 0.01);
+  EXPECT_NEAR(cal.scale_x, 1.0, 0.01);
 }
 
 TEST(KRegression, AdjointGreenMapEqualsDirectSolves) {

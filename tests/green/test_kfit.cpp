@@ -47,6 +47,28 @@ TEST(KFit, RecoversKnownK) {
     }
 }
 
+// A post's reading has a gain c ≠ 1 (green::Gain): samples c·k·g_half(√k x) give back both c and k. The
+// amplitude ck and the width k^−1/2 are independent features, so the pair is identified; with the gain held
+// at 1 the same samples fit a wrong k (amplitude and width disagree) with a residual far above round-off.
+TEST(KFit, FittedGainRecoversGainAndK) {
+  const std::vector<double> x = line(3.0 * kH, 121);
+  for (double c0 : {1.3, 2.76, 30.0})
+    for (double k0 : {1.0, 2.4})
+      for (GreenComponent c : kAll) {
+        std::vector<double> g;
+        for (double xi : x) g.push_back(c0 * component(rescaled_green(xi, 0.0, kH, k0), c));
+        const KFit f = fit_k_line(x, g, kH, c, skinfem::green::Gain::fitted);
+        EXPECT_NEAR(f.k, k0, 1e-6 * k0) << name(c) << " c0 " << c0;
+        EXPECT_NEAR(f.gain, c0, 1e-6 * c0) << name(c) << " c0 " << c0;
+        EXPECT_LT(f.rms_residual_over_peak, 1e-6) << name(c);
+        if (c0 == 1.3) {  // larger gains put the held fit's minimum beyond the search range
+          const KFit held = fit_k_line(x, g, kH, c);
+          EXPECT_EQ(held.gain, 1.0);
+          EXPECT_GT(held.rms_residual_over_peak, 1e-3) << name(c) << " c0 " << c0;
+        }
+      }
+}
+
 TEST(KFit, AMinimumBeyondTheSearchRangeIsAnErrorNotTheBound) {
   // Samples of the rescaled model itself with k = 0.3 and 6: the least-squares minimum lies outside [0.5, 4].
   const std::vector<double> x = line(3.0 * kH, 121);
