@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
+#include "../common/convergence.hpp"
 #include "fem/elastic_model.hpp"
 #include "fem/sensor_reading.hpp"
 #include "green/fe_green.hpp"
@@ -114,6 +116,50 @@ TEST(PostSensor, AdjointReadingIsTheForwardOne) {
     }
   }
   EXPECT_LT(worst, 1e-6 * peak);
+}
+
+// As its height t → 0 a post becomes the base under its outline, and its reading (force over cross-section)
+// becomes the disc's (mean base traction over the same outline). The wall's share of the force scales with
+// its area 2πr·t, so the gap closes at first order in t (σ_x: the drag of the skin's sideways displacement
+// over the height; σ_z: the same order or faster). Meshes are scaled with t (post elements of size t, so
+// every level resolves its own post alike); the gap is fitted over four heights (MFEM ConvergenceStudy
+// style).
+TEST(PostSensor, ShortPostsTendToTheDiscAtFirstOrderInHeight) {
+  const auto reading = [](SensorModel model, double height) {
+    Scene s = post_scene();
+    s.sensors.positions = {{0, 0}};
+    s.sensors.model = model;
+    if (model == SensorModel::post)
+      s.sensors.post = {kDiameter, height};
+    else
+      s.sensors.disc_diameter = kDiameter;
+    s.mesh.sensor_h = std::min(0.05, height);
+    const TetMesh m = build_mesh(s);
+    const ElasticModel model_(m, s.material, SideCondition::free, std::vector<Punch>{});
+    const TractionPatch patch{{0.6, 0.0}, 0.4, {0.3, 0, -1}, 1.0};
+    const LoadCaseResult r = model_.solve(model_.patch_load(patch), {});
+    return SensorReadings(m, reading_sites(s.sensors)).read(0, r.reactions);
+  };
+  const std::vector<double> heights = {0.2, 0.1, 0.05, 0.025};
+  const SensorReading disc = reading(SensorModel::disc, heights.back());
+  std::vector<double> gap_z, gap_x;
+  for (double t : heights) {
+    const SensorReading p = reading(SensorModel::post, t);
+    gap_z.push_back(std::abs(p.sigma_z - disc.sigma_z));
+    gap_x.push_back(std::abs(p.sigma_x - disc.sigma_x));
+    std::printf("height %.3f mm: post sigma_z %.5f sigma_x %.5f MPa (disc %.5f, %.5f)\n", t, p.sigma_z,
+                p.sigma_x, disc.sigma_z, disc.sigma_x);
+  }
+  const double order_z = testing::observed_order(heights, gap_z),
+               order_x = testing::observed_order(heights, gap_x);
+  std::printf("observed order of the gap to the disc: sigma_z %.2f, sigma_x %.2f\n", order_z, order_x);
+  EXPECT_GT(order_x, 0.9);
+  EXPECT_LT(order_x, 1.5);
+  EXPECT_GT(order_z, 0.9);
+  for (size_t i = 1; i < heights.size(); ++i) {
+    EXPECT_LT(gap_z[i], gap_z[i - 1]);
+    EXPECT_LT(gap_x[i], gap_x[i - 1]);
+  }
 }
 
 }  // namespace
