@@ -25,17 +25,22 @@ Eigen::VectorXd SensorReadings::weights(int k, char component) const {
   const ReadingSite& s = site(k);
   if (!s.post()) return (*functional_)(s.center[0], s.center[1], s.diameter, component);
   // The post's nodes (its wall, top and the outline they share with the base): the reaction on them is the
-  // force the post exerts on the skin.
-  const double r = 0.5 * s.diameter, area = M_PI * r * r;
-  Eigen::VectorXd w = Eigen::VectorXd::Zero(3 * mesh_.num_nodes());
-  int nodes = 0;
+  // force the post exerts on the skin. A half mesh holds half a post on its cut (a node on the cut marks
+  // it), and half its force: read over half the cross-section.
+  const double r = 0.5 * s.diameter;
+  std::vector<int> on_post;
+  bool cut = false;
   for (int n = 0; n < mesh_.num_nodes(); ++n) {
     if (!(mesh_.node_marker(n) & kPost)) continue;
     const double d = std::hypot(mesh_.nodes(n, 0) - s.center[0], mesh_.nodes(n, 1) - s.center[1]);
     if (d > r * (1 + 1e-6) || mesh_.nodes(n, 2) > s.post_height * (1 + 1e-6)) continue;
-    w[3 * n + (component == 'z' ? 2 : 0)] = (component == 'z' ? 1.0 : -1.0) / area;
-    ++nodes;
+    on_post.push_back(n);
+    cut = cut || (mesh_.node_marker(n) & kSymmetry);
   }
+  const int nodes = static_cast<int>(on_post.size());
+  const double area = (cut ? 0.5 : 1.0) * M_PI * r * r;
+  Eigen::VectorXd w = Eigen::VectorXd::Zero(3 * mesh_.num_nodes());
+  for (int n : on_post) w[3 * n + (component == 'z' ? 2 : 0)] = (component == 'z' ? 1.0 : -1.0) / area;
   if (nodes == 0)
     throw std::out_of_range("no post at (" + std::to_string(s.center[0]) + ", " +
                             std::to_string(s.center[1]) + ") in the mesh");

@@ -175,7 +175,7 @@ RowMatrixX3i triangulate_polygon(const std::vector<Vec2>& loop) {
 }
 
 Footprint mesh_footprint(const std::vector<Vec2>& loop, const Size2d& size,
-                         const std::vector<Circle>& circles) {
+                         const std::vector<Circle>& circles, bool cut_at_y0) {
   CDT cdt;
   auto insert_loop = [&](const std::vector<Vec2>& pts) {
     std::vector<CDT::Vertex_handle> vh;
@@ -183,7 +183,18 @@ Footprint mesh_footprint(const std::vector<Vec2>& loop, const Size2d& size,
     for (size_t i = 0; i < vh.size(); ++i) cdt.insert_constraint(vh[i], vh[(i + 1) % vh.size()]);
   };
   insert_loop(loop);
-  for (const auto& c : circles) insert_loop(circle_loop(c.centre, c.radius, size));
+  for (const auto& c : circles) {
+    if (!(cut_at_y0 && c.centre[1] == 0.0)) {
+      insert_loop(circle_loop(c.centre, c.radius, size));
+      continue;
+    }
+    // The upper arc as an open polyline: half_circle_loop's points above the cut, between its exact ends.
+    std::vector<CDT::Vertex_handle> arc{cdt.insert(K::Point_2(c.centre[0] + c.radius, 0.0))};
+    for (const Vec2& p : half_circle_loop(c.centre, c.radius, size))
+      if (p[1] > 0) arc.push_back(cdt.insert(K::Point_2(p[0], p[1])));
+    arc.push_back(cdt.insert(K::Point_2(c.centre[0] - c.radius, 0.0)));
+    for (size_t i = 0; i + 1 < arc.size(); ++i) cdt.insert_constraint(arc[i], arc[i + 1]);
+  }
   CGAL::refine_Delaunay_mesh_2(cdt, GradedCriteria(size));
   // Refinement splits constrained chords at their midpoints: put interior-circle vertices back on
   // their circle (the outer loop is the caller's to project).
@@ -192,6 +203,7 @@ Footprint mesh_footprint(const std::vector<Vec2>& loop, const Size2d& size,
     for (int k : {cdt.cw(e->second), cdt.ccw(e->second)}) {
       auto v = e->first->vertex(k);
       const double x = v->point().x(), y = v->point().y();
+      if (cut_at_y0 && y == 0.0) continue;  // on the cut: a circle's end there is exact already
       const Circle* nearest = nullptr;
       double gap = 1e300;
       for (const auto& c : circles) {

@@ -27,8 +27,10 @@ struct Circle {
 
 // loop: closed polygon, counter-clockwise, first point not repeated; every edge is split as needed.
 // circles: interior curves the triangulation must follow (a punch's edge), their vertices on the circle.
+// cut_at_y0: the loop is a half (y ≥ 0) whose cut lies on y = 0; a circle centred on the cut is followed
+// by its upper half only, from (x + r, 0) to (x − r, 0) exactly, and vertices on the cut stay there.
 Footprint mesh_footprint(const std::vector<Vec2>& loop, const Size2d& size,
-                         const std::vector<Circle>& circles = {});
+                         const std::vector<Circle>& circles = {}, bool cut_at_y0 = false);
 
 // Boundary loops that follow the sizing field: a circle (cap) and a square (flat).
 std::vector<Vec2> circle_loop(const Vec2& centre, double radius, const Size2d& size);

@@ -156,8 +156,8 @@ void check_watertight(const SurfaceMesh& surface, const std::string& what) {
 namespace {
 // The footprint of the top or the base face; the outer rim goes back onto the truncation circle.
 Footprint face_footprint(const SkinShape& shape, const std::vector<Vec2>& loop, const Size2d& size,
-                         const std::vector<Circle>& circles) {
-  Footprint fp = mesh_footprint(loop, size, circles);
+                         const std::vector<Circle>& circles, bool half) {
+  Footprint fp = mesh_footprint(loop, size, circles, half);
   // Refinement splits boundary chords at their midpoints; put those vertices back on the circle (not those
   // on a half mesh's straight cut: all there have y = 0 exactly).
   if (shape.kind() == GeometryKind::cap) {
@@ -199,7 +199,10 @@ namespace {
 // Each post turns the base inside its outline into a cavity: the base triangles inside are removed, and the
 // post's wall (layers of the outline's points up to `height`) and its flat top take their place, marked
 // kPost. The skin lies outside the cylinder and above the top, so their outward normals point into the post.
-void add_posts(SurfaceMesh& s, const std::vector<Circle>& posts, double height, const SizingField& size) {
+// On a half mesh a post centred on the cut is a half: its outline is the upper arc, its wall is open at the
+// cut and its top is closed by the diameter there (close_cut then meshes the cut around it).
+void add_posts(SurfaceMesh& s, const std::vector<Circle>& posts, double height, const SizingField& size,
+               bool half) {
   std::vector<std::array<int, 3>> tris;
   std::vector<int> markers;
   for (int t = 0; t < s.triangles.rows(); ++t) {
@@ -218,13 +221,15 @@ void add_posts(SurfaceMesh& s, const std::vector<Circle>& posts, double height, 
   std::vector<Eigen::RowVector3d> added;
   const int nv0 = s.vertices.rows();
   for (const Circle& c : posts) {
-    // The outline's points on the base, by angle (counter-clockwise seen from above).
+    // The outline's points on the base, by angle (counter-clockwise seen from above; on a half, from 0 to π:
+    // the cut's −0.0 is read as +0.0).
+    const bool open = half && c.centre[1] == 0.0;
     std::vector<std::pair<double, int>> ring;
     for (int v = 0; v < nv0; ++v) {
       if (s.vertices(v, 2) != 0.0) continue;
       const double dx = s.vertices(v, 0) - c.centre[0], dy = s.vertices(v, 1) - c.centre[1];
       if (std::abs(std::hypot(dx, dy) - c.radius) < 1e-9 * (1 + c.radius))
-        ring.push_back({std::atan2(dy, dx), v});
+        ring.push_back({std::atan2(dy == 0.0 ? 0.0 : dy, dx), v});
     }
     if (ring.size() < 3) throw MeshError("a post's outline was not kept on the base");
     std::sort(ring.begin(), ring.end());
@@ -243,7 +248,7 @@ void add_posts(SurfaceMesh& s, const std::vector<Circle>& posts, double height, 
         added.push_back({s.vertices(v, 0), s.vertices(v, 1), height * j / layers});
       }
     for (int j = 0; j < layers; ++j)
-      for (int k = 0; k < n; ++k) {
+      for (int k = 0; k < (open ? n - 1 : n); ++k) {
         const int p0 = id[j][k], p1 = id[j][(k + 1) % n], p2 = id[j + 1][(k + 1) % n], p3 = id[j + 1][k];
         tris.push_back({p0, p2, p1});  // counter-clockwise ring × up points out of the post: reversed
         markers.push_back(kPost);
@@ -278,6 +283,45 @@ void add_posts(SurfaceMesh& s, const std::vector<Circle>& posts, double height, 
     s.marker(t) = markers[t];
   }
 }
+// The cut y = 0 of a half mesh with posts on it: whatever the other faces leave open there (base and top
+// along the cut, the side band's ends, each post's wall ends and the diameter of its top) is one polygon in
+// (x, z), meshed with no point added. triangulate_polygon's triangles are counter-clockwise in (x, z): an
+// outward normal −y.
+void close_cut(SurfaceMesh& s) {
+  std::map<std::pair<int, int>, int> uses;
+  for (int t = 0; t < s.triangles.rows(); ++t)
+    for (int e = 0; e < 3; ++e) {
+      const int a = s.triangles(t, e), b = s.triangles(t, (e + 1) % 3);
+      ++uses[{std::min(a, b), std::max(a, b)}];
+    }
+  std::map<int, int> next;
+  for (int t = 0; t < s.triangles.rows(); ++t)
+    for (int e = 0; e < 3; ++e) {
+      const int a = s.triangles(t, e), b = s.triangles(t, (e + 1) % 3);
+      if (uses[{std::min(a, b), std::max(a, b)}] != 1) continue;
+      if (s.vertices(a, 1) != 0.0 || s.vertices(b, 1) != 0.0)
+        throw MeshError("a half mesh's surface is open off its cut y = 0");
+      next[b] = a;
+    }
+  if (next.empty()) throw MeshError("a half mesh's cut y = 0 has no open edges");
+  std::vector<int> poly{next.begin()->first};
+  while (poly.size() <= next.size()) {
+    const int v = next.at(poly.back());
+    if (v == poly.front()) break;
+    poly.push_back(v);
+  }
+  if (poly.size() != next.size()) throw MeshError("a half mesh's cut y = 0 is not one polygon");
+  std::vector<Vec2> xz;
+  for (int v : poly) xz.push_back({s.vertices(v, 0), s.vertices(v, 2)});
+  const RowMatrixX3i tris = triangulate_polygon(xz);
+  const int f = s.triangles.rows();
+  s.triangles.conservativeResize(f + tris.rows(), 3);
+  s.marker.conservativeResize(f + tris.rows());
+  for (int t = 0; t < tris.rows(); ++t) {
+    s.triangles.row(f + t) << poly[tris(t, 0)], poly[tris(t, 1)], poly[tris(t, 2)];
+    s.marker(f + t) = kSymmetry;
+  }
+}
 }  // namespace
 
 SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart part) {
@@ -301,7 +345,8 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
     if (!half || p.center[1] - 0.5 * p.diameter > 0) circles.push_back({p.center, 0.5 * p.diameter});
   // Post sensors: the base follows their outlines, and each becomes a cavity in the skin (add_posts).
   const std::vector<Circle> posts = post_circles(scene);
-  if (half && !posts.empty()) throw MeshError("post sensors are meshed whole, not as a half");
+  for (const Circle& c : posts)
+    if (half && c.centre[1] != 0.0) throw MeshError("a half mesh cuts only posts centred on y = 0");
   std::vector<Circle> outlines = circles;
   outlines.insert(outlines.end(), posts.begin(), posts.end());
   // The base gets its own, coarser triangulation when contact regions grade with depth. The side band needs
@@ -312,15 +357,15 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
     for (int b : fp.boundary) rim.push_back({fp.points(b, 0), fp.points(b, 1)});
     return rim;
   };
-  Footprint top = face_footprint(shape, loop, top_size, outlines);
+  Footprint top = face_footprint(shape, loop, top_size, outlines, half);
   std::optional<Footprint> own_base;
   for (int round = 0; size.graded_in_depth() && round < 4 && !own_base; ++round) {
     Footprint own = face_footprint(
-        shape, rim_of(top), [&](double x, double y) { return size.on_base(x, y); }, outlines);
+        shape, rim_of(top), [&](double x, double y) { return size.on_base(x, y); }, outlines, half);
     if (align_rim(own, top))
       own_base = std::move(own);
     else
-      top = face_footprint(shape, rim_of(own), top_size, outlines);
+      top = face_footprint(shape, rim_of(own), top_size, outlines, half);
   }
   const Footprint base = own_base ? std::move(*own_base) : top;
   const int nvb = base.points.rows(), nvt = top.points.rows(), nb = static_cast<int>(top.boundary.size());
@@ -382,7 +427,7 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
       s.marker(f++) = kSide;
     }
   }
-  if (half) {
+  if (half && posts.empty()) {
     // The cut y = 0 as one polygon in (x, z): base points by increasing x, up the side at the far end, top
     // points back, down the side at the near end. Counter-clockwise in (x, z) is an outward normal −y.
     std::vector<int> cut;  // boundary positions on the cut, by increasing x
@@ -419,7 +464,10 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
   }
   s.triangles.conservativeResize(f, 3);
   s.marker.conservativeResize(f);
-  if (!posts.empty()) add_posts(s, posts, scene.sensors.post.height, size);
+  if (!posts.empty()) {
+    add_posts(s, posts, scene.sensors.post.height, size, half);
+    if (half) close_cut(s);
+  }
   check_watertight(s, "generated layer surface");
   return s;
 }

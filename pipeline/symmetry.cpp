@@ -8,8 +8,6 @@ std::string mirror_unavailable(const Scene& scene) {
   const Geometry& g = scene.geometry;
   if (g.kind == GeometryKind::surface) return "an imported surface is not known to be symmetric";
   if (g.ridges.present()) return "ridged tops are meshed whole";
-  if (scene.sensors.model == SensorModel::post)
-    return "post sensors are meshed whole (their halves are not cut yet)";
   if (g.kind == GeometryKind::cap && g.cap.apex_y != 0) return "the cap's apex is off y = 0";
   for (size_t i = 0; i < scene.sensors.positions.size(); ++i)
     if (scene.sensors.positions[i][1] != 0) {
