@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "green/kfit.hpp"
 #include "pipeline/clock.hpp"
@@ -54,15 +55,20 @@ KfitResult kfit(const Scene& scene, const SensorGreens& greens, LayerLoad load) 
     for (size_t c = 0; c < 4; ++c)
       k.peak_point_per_mm2[c] = green::peak_abs(prof.point, green::kComponents[c]);
     if (s == axis) r.meridian_check = k.meridian_check = meridian_check(scene, s, prof, load, radius, h);
-    if (r.gain_fitted) {
-      // A post's scan is not a layer's at gain 1: calibrate it as the paper did, scale and thickness.
-      k.paper_calibration =
-          green::paper_calibration(prof.offset_x, prof.point, h, scene.material.nu, load, radius);
-    } else if (scene.geometry.kind == GeometryKind::cap) {
-      std::vector<double> zz;
-      for (const auto& g : prof.point) zz.push_back(g.zz);
-      k.effective_thickness_mm =
-          green::effective_thickness(prof.offset_x, zz, h, scene.material.nu, load, radius);
+    // A fit whose best thickness is its search bound has no answer: the sensor says why, kfit goes on.
+    try {
+      if (r.gain_fitted) {
+        // A post's scan is not a layer's at gain 1: calibrate it as the paper did, scale and thickness.
+        k.paper_calibration =
+            green::paper_calibration(prof.offset_x, prof.point, h, scene.material.nu, load, radius);
+      } else if (scene.geometry.kind == GeometryKind::cap) {
+        std::vector<double> zz;
+        for (const auto& g : prof.point) zz.push_back(g.zz);
+        k.effective_thickness_mm =
+            green::effective_thickness(prof.offset_x, zz, h, scene.material.nu, load, radius);
+      }
+    } catch (const std::domain_error& e) {
+      k.thickness_fit_failed = e.what();
     }
     if (r.flat) {
       const green::LayerGreen layer(h, scene.material.nu, load, radius);
@@ -131,7 +137,9 @@ KfitResult kfit(const Scene& scene, const SensorGreens& greens, LayerLoad load) 
 }
 
 Eigen::VectorXd paper_reading_scale(const KfitResult& r) {
-  if (r.sensors.empty() || !r.sensors[0].paper_calibration) return {};
+  if (r.sensors.empty()) return {};
+  for (const KfitSensor& k : r.sensors)
+    if (!k.paper_calibration) return {};
   Eigen::VectorXd s(2 * r.sensors.size());
   for (size_t k = 0; k < r.sensors.size(); ++k) {
     s[2 * k] = r.sensors[k].paper_calibration->scale_z;
@@ -174,6 +182,7 @@ nlohmann::json sensor_json(const KfitResult& r, const KfitSensor& k) {
   js["peak_point_per_mm2"] = per_component(k.peak_point_per_mm2);
   if (k.meridian_check) js["meridian_check"] = meridian_check_json(*k.meridian_check);
   if (k.effective_thickness_mm) js["effective_thickness_mm"] = *k.effective_thickness_mm;
+  if (!k.thickness_fit_failed.empty()) js["thickness_fit_failed"] = k.thickness_fit_failed;
   if (const auto& c = k.paper_calibration)
     js["paper_calibration"] = {{"thickness_mm", c->thickness_mm},
                                {"scale_z", c->scale_z},

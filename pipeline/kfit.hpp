@@ -32,6 +32,7 @@ struct KfitSensor {
   std::optional<double> effective_thickness_mm;  // caps, discs: the flat layer whose scan fits best
   // Posts: the paper's calibration of the scan, scale and thickness both fitted (green::paper_calibration).
   std::optional<green::PaperCalibration> paper_calibration;
+  std::string thickness_fit_failed;  // why neither of the two above is set where it would be
   // Flat scenes: the exact (smooth) layer's k and the largest difference of the readings over the peak.
   std::optional<green::KReport> exact;
   std::array<double, 4> peak_point_exact_per_mm2{}, point_max_diff_over_peak{}, disc_max_diff_over_peak{};
@@ -67,7 +68,7 @@ inline green::Gain kfit_gain(const Scene& scene) {
 // load: point or punch (the calibration punch of the scene).
 KfitResult kfit(const Scene& scene, const SensorGreens& greens, green::LayerLoad load);
 // 2·sensors: each reading's scale in the paper's calibration (σ_z of sensor k at 2k, σ_x at 2k + 1), for
-// the hole budget's units; empty unless the sensors were calibrated (posts).
+// the hole budget's units; empty unless every sensor was calibrated (posts).
 Eigen::VectorXd paper_reading_scale(const KfitResult& r);
 // The result as kfit.json holds it.
 nlohmann::json kfit_json(const KfitResult& r);
