@@ -357,7 +357,10 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
     for (int b : fp.boundary) rim.push_back({fp.points(b, 0), fp.points(b, 1)});
     return rim;
   };
-  Footprint top = face_footprint(shape, loop, top_size, outlines, half);
+  // Posts are the base's: the top follows their outlines only when it lends the base its triangulation
+  // (else each would stamp a small circle of faces, and of contact multipliers, on the top above it).
+  const std::vector<Circle>& top_outlines = size.graded_in_depth() ? circles : outlines;
+  Footprint top = face_footprint(shape, loop, top_size, top_outlines, half);
   std::optional<Footprint> own_base;
   for (int round = 0; size.graded_in_depth() && round < 4 && !own_base; ++round) {
     Footprint own = face_footprint(
@@ -365,8 +368,10 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
     if (align_rim(own, top))
       own_base = std::move(own);
     else
-      top = face_footprint(shape, rim_of(own), top_size, outlines, half);
+      top = face_footprint(shape, rim_of(own), top_size, top_outlines, half);
   }
+  if (!own_base && top_outlines.size() != outlines.size())
+    top = face_footprint(shape, rim_of(top), top_size, outlines, half);
   const Footprint base = own_base ? std::move(*own_base) : top;
   const int nvb = base.points.rows(), nvt = top.points.rows(), nb = static_cast<int>(top.boundary.size());
 
