@@ -307,7 +307,7 @@ void write_index(const std::string& dir, const Scene& scene, const IndexInput& i
       << fmt("%.0f", b.base.noise.k) << " standard deviations of a " << b.base.noise.passages
       << "-passage mean, " << fmt("%.3f", 1e3 * b.base.noise.threshold(0)) << " kPa (ςz) and "
       << fmt("%.3f", 1e3 * b.base.noise.threshold(1)) << " kPa (ςx)."
-      << (b.reading_scale.size() ? scale_sentence(b.reading_scale) : "")
+      << (b.base.reading_scale.size() ? scale_sentence(b.base.reading_scale) : "")
       << "</p>\n<table><tr><th>hypothesis</th><th>τ0 kPa</th><th>K MPa/mm</th><th>back "
          "z</th><th>back "
          "x</th><th>front "

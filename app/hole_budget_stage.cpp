@@ -31,11 +31,11 @@ StageOutput<HoleBudget> hole_budget_stage(const Scene& scene, const ContactSetup
                   {"comparable_maximum", base.rules.comparable},
                   {"dip", base.rules.dip}};
   out["mean_pressure_kPa"] = 1e3 * b.mean_pressure_MPa;
-  if (b.reading_scale.size()) {
+  if (base.reading_scale.size()) {
     out["units"] =
         "the paper's: each sensor's FE reading over its calibration scale (kfit.json, paper_calibration)";
     for (int k = 0; k < ns; ++k)
-      out["reading_scale"].push_back({b.reading_scale[2 * k], b.reading_scale[2 * k + 1]});
+      out["reading_scale"].push_back({base.reading_scale[2 * k], base.reading_scale[2 * k + 1]});
   } else {
     out["units"] = "the sensors' own readings";
   }

@@ -37,13 +37,12 @@ Eigen::VectorXd SensorReadings::weights(int k, char component) const {
     on_post.push_back(n);
     cut = cut || (mesh_.node_marker(n) & kSymmetry);
   }
-  const int nodes = static_cast<int>(on_post.size());
+  if (on_post.empty())
+    throw std::out_of_range("no post at (" + std::to_string(s.center[0]) + ", " +
+                            std::to_string(s.center[1]) + ") in the mesh");
   const double area = (cut ? 0.5 : 1.0) * M_PI * r * r;
   Eigen::VectorXd w = Eigen::VectorXd::Zero(3 * mesh_.num_nodes());
   for (int n : on_post) w[3 * n + (component == 'z' ? 2 : 0)] = (component == 'z' ? 1.0 : -1.0) / area;
-  if (nodes == 0)
-    throw std::out_of_range("no post at (" + std::to_string(s.center[0]) + ", " +
-                            std::to_string(s.center[1]) + ") in the mesh");
   return w;
 }
 

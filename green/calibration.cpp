@@ -112,6 +112,15 @@ double best_thickness(const Misfit& misfit, double lo, double hi, double h0, con
   return h;
 }
 
+// The exact layer of thickness h along the offsets (y = 0).
+std::vector<GreenSample> layer_line(double h, double nu, LayerLoad load, double radius,
+                                    const std::vector<double>& x) {
+  const LayerGreen layer(h, nu, load, radius);
+  std::vector<GreenSample> out;
+  for (double xi : x) out.push_back(layer.at(xi, 0.0));
+  return out;
+}
+
 // Σ m g / Σ m²: the scale s minimising Σ (s m − g)².
 double linear_scale(const std::vector<double>& m, const std::vector<double>& g) {
   double mg = 0, mm = 0;
@@ -130,9 +139,9 @@ double rms_over_peak(const std::vector<double>& m, double s, const std::vector<d
 double effective_thickness(const std::vector<double>& x, const std::vector<double>& g_zz, double h0,
                            double nu, LayerLoad load, double radius) {
   auto misfit = [&](double h) {
-    const LayerGreen layer(h, nu, load, radius);
+    const std::vector<GreenSample> m = layer_line(h, nu, load, radius, x);
     double s = 0;
-    for (size_t i = 0; i < x.size(); ++i) s += std::pow(layer.at(x[i], 0.0).zz - g_zz[i], 2);
+    for (size_t i = 0; i < x.size(); ++i) s += std::pow(m[i].zz - g_zz[i], 2);
     return s;
   };
   return best_thickness(misfit, 0.5 * h0, 1.5 * h0, h0, "effective thickness");
@@ -143,12 +152,8 @@ PaperCalibration paper_calibration(const std::vector<double>& x, const std::vect
   std::vector<double> zz, zx;
   for (const GreenSample& s : g) zz.push_back(s.zz), zx.push_back(s.zx);
   const auto layer_at = [&](double h, std::vector<double>& mz, std::vector<double>& mx) {
-    const LayerGreen layer(h, nu, load, radius);
     mz.clear(), mx.clear();
-    for (double xi : x) {
-      const GreenSample s = layer.at(xi, 0.0);
-      mz.push_back(s.zz), mx.push_back(s.zx);
-    }
+    for (const GreenSample& s : layer_line(h, nu, load, radius, x)) mz.push_back(s.zz), mx.push_back(s.zx);
   };
   std::vector<double> mz, mx;
   const auto misfit = [&](double h) {

@@ -22,24 +22,22 @@ KFit fit_k_line(const std::vector<double>& x, const std::vector<double>& g, doub
   for (double v : g) peak = std::max(peak, std::fabs(v));
   if (!(peak > 0.0)) throw std::invalid_argument("fit_k_line: samples are all zero");
 
-  // The gain at k: 1, or the amplitude c minimising Σ(c m_i − g_i)², c = Σ m g / Σ m².
+  // The model at k and its gain: 1, or the amplitude c minimising Σ(c m_i − g_i)², c = Σ m g / Σ m².
+  std::vector<double> m(x.size());
   const auto gain_at = [&](double k) {
-    if (gain == Gain::fixed) return 1.0;
     double mg = 0.0, mm = 0.0;
     for (std::size_t i = 0; i < x.size(); ++i) {
-      const double m = green::component(rescaled_green(x[i], 0.0, h, k), component);
-      mg += m * g[i];
-      mm += m * m;
+      m[i] = green::component(rescaled_green(x[i], 0.0, h, k), component);
+      mg += m[i] * g[i];
+      mm += m[i] * m[i];
     }
+    if (gain == Gain::fixed) return 1.0;
     return mm > 0 ? mg / mm : 0.0;
   };
   const auto cost = [&](double k) {
-    const double c = gain_at(k);
+    const double c = gain_at(k);  // fills m
     double sum = 0.0;
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      const double r = c * green::component(rescaled_green(x[i], 0.0, h, k), component) - g[i];
-      sum += r * r;
-    }
+    for (std::size_t i = 0; i < x.size(); ++i) sum += (c * m[i] - g[i]) * (c * m[i] - g[i]);
     return sum;
   };
 

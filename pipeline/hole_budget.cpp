@@ -24,7 +24,7 @@ HoleBudget hole_budget(const Scene& scene, const ContactSetup& setup, const vali
   base.sensors = scene.sensors;
   base.center = contact_center(scene);
   base.direction = scene.contact->direction;
-  base.reading_scale = out.reading_scale = reading_scale;
+  base.reading_scale = reading_scale;
   const int ns = static_cast<int>(scene.sensors.positions.size());
   // The mean pressure of the hard frictionless contact sets each rough interface's stiffness.
   ContactLoad hard = *scene.contact;

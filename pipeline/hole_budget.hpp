@@ -19,7 +19,6 @@ struct HoleBudget {
   validation::FactsInput base;   // positions, the paper's model signals, noise model and judgement rules
   double mean_pressure_MPa = 0;  // of the hard frictionless contact: sets each rough interface's K
   std::vector<validation::HypothesisResult> results;  // in the order run
-  Eigen::VectorXd reading_scale;                      // as base.reading_scale
   std::vector<int> facts_met;                         // per result
   std::vector<double> sliding_roughness;              // per result: validation::roughness, worst curve
   struct Skipped {

@@ -137,7 +137,6 @@ KfitResult kfit(const Scene& scene, const SensorGreens& greens, LayerLoad load) 
 }
 
 Eigen::VectorXd paper_reading_scale(const KfitResult& r) {
-  if (r.sensors.empty()) return {};
   for (const KfitSensor& k : r.sensors)
     if (!k.paper_calibration) return {};
   Eigen::VectorXd s(2 * r.sensors.size());
