@@ -105,7 +105,7 @@ StageOutput<ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const 
 int run_contact(const Scene& scene, const std::string& out_dir, const std::string& friction) {
   const FrictionMode chosen = friction_mode_named(scene, friction);  // or a SceneError without a contact
   check_output_dir(out_dir);
-  contact_stage(scene, contact_setup(scene, nullptr, false), out_dir, chosen);
+  contact_stage(scene, contact_setup(scene, nullptr, HolePath::none), out_dir, chosen);
   return 0;
 }
 

@@ -25,12 +25,15 @@
 #include "contact/pressure_map.hpp"
 #include "pipeline/contact_setup.hpp"
 #include "pipeline/defect.hpp"
+#include "validation/text.hpp"
 
 namespace skinfem::app {
 
+using validation::fmt;
+
 DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> shared,
-                       const std::string& out_dir) {
-  DefectRun run = defect_run(scene, std::move(shared));
+                       const std::string& out_dir, std::vector<pipeline::ChainLevel> coarse) {
+  DefectRun run = defect_run(scene, std::move(shared), std::move(coarse));
   const ContactSetup& setup = *run.setup;
   const HoleSweep& sweep = *scene.contact->sweep;
   const auto& results = run.sweeps;
@@ -86,14 +89,28 @@ DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> s
       std::printf(" %.2f", 1e3 * results[ci].varsigma.col(2 * k).cwiseAbs().maxCoeff());
     std::printf("\n");
   }
+  if (summary.contains("largest_sliding")) {
+    const nlohmann::json& b = summary["largest_sliding"];
+    std::string scales;
+    for (const auto& l : b["levels"])
+      scales += (scales.empty() ? "" : ", ") + fmt("%g", l["mesh_scale"].get<double>());
+    std::printf("  largest sliding |varsigma_z|: %.4f kPa +- %.4f (%.1f %%; %s, mesh scales %s",
+                b["value_kPa"].get<double>(), b["error_kPa"].get<double>(),
+                100 * b["relative_error"].get<double>(), b["how"].get<std::string>().c_str(), scales.c_str());
+    if (b["asymptotic"].get<bool>()) std::printf(", observed order %.2f", b["observed_order"].get<double>());
+    std::printf(")\n");
+  }
   std::printf("  wrote %s/defect.csv, defect.pvd (+ frames/), summary.json\n", out_dir.c_str());
   return run;
 }
 
-int run_defect(const Scene& scene, const std::string& out_dir) {
+int run_defect(const Scene& scene, const std::string& out_dir, const std::vector<double>& error_scales) {
+  pipeline::check_error_scales(error_scales);
   require_sweep(scene);
   check_output_dir(out_dir);
-  defect_stage(scene, contact_setup(scene), out_dir);
+  // The coarser levels first, each freed before the next: the scene's own level sets the peak memory.
+  std::vector<pipeline::ChainLevel> coarse = pipeline::largest_sliding_levels(scene, error_scales);
+  defect_stage(scene, contact_setup(scene), out_dir, std::move(coarse));
   return 0;
 }
 

@@ -16,9 +16,9 @@ int run_green(const Scene& scene, const std::string& out_dir, double grid_dx, pi
 int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& load,
              pipeline::GreenPath path);
 int run_contact(const Scene& scene, const std::string& out_dir, const std::string& friction);
-int run_defect(const Scene& scene, const std::string& out_dir);
-// error_scales: coarser mesh levels (every size × s, s > 1) for the headline numbers' error bars; empty:
-// none.
+// error_scales: coarser mesh levels (every size × s, s > 1) for the error bars (defect: of the largest
+// sliding signal; report: of the headline numbers); empty: none.
+int run_defect(const Scene& scene, const std::string& out_dir, const std::vector<double>& error_scales);
 int run_report(const Scene& scene, const std::string& out_dir, const std::vector<double>& error_scales);
 int run_study(const Scene& scene, const std::string& out_dir, const std::vector<double>& scales);
 // per_period: mesh elements per ridge period on the pattern, one level each (at least 3).

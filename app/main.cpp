@@ -91,6 +91,12 @@ int main(int argc, char** argv) {
       ->delimiter(',')
       ->capture_default_str();
   report->add_flag("--no-error-bars", no_error_bars, "skip the coarser levels (no error bars)");
+  defect
+      ->add_option("--error-scales", error_scales,
+                   "coarser levels (mesh sizes x s, s > 1) for the largest sliding signal's error bar")
+      ->delimiter(',')
+      ->capture_default_str();
+  defect->add_flag("--no-error-bars", no_error_bars, "skip the coarser levels (no error bar)");
   double max_dofs = 0;
   for (auto* sub : {mesh, solve, study, kfit, green_cmd, contact_cmd, defect, report}) {
     sub->add_option(
@@ -132,7 +138,8 @@ int main(int argc, char** argv) {
           throw skinfem::SceneError("--ridges: " + std::to_string(l) +
                                     ": a level must give at least 3 mesh elements per ridge period");
     }
-    if (report->parsed() && !no_error_bars) skinfem::app::check_levels("--error-scales", error_scales, true);
+    if ((report->parsed() || defect->parsed()) && !no_error_bars)
+      skinfem::app::check_levels("--error-scales", error_scales, true);
     skinfem::pipeline::g_max_dofs = max_dofs;
     const skinfem::Scene scene = skinfem::load_scene(scene_path);
     if (mesh->parsed()) return skinfem::app::run_mesh(scene, out_dir);
@@ -145,7 +152,8 @@ int main(int argc, char** argv) {
     if (green_cmd->parsed()) return skinfem::app::run_green(scene, out_dir, grid_dx, path);
     if (kfit->parsed()) return skinfem::app::run_kfit(scene, out_dir, load_name, path);
     if (contact_cmd->parsed()) return skinfem::app::run_contact(scene, out_dir, friction);
-    if (defect->parsed()) return skinfem::app::run_defect(scene, out_dir);
+    if (defect->parsed())
+      return skinfem::app::run_defect(scene, out_dir, no_error_bars ? std::vector<double>{} : error_scales);
     if (study->parsed())
       return !ridge_levels.empty() ? skinfem::app::run_ridge_study(scene, out_dir, ridge_levels)
              : chain               ? skinfem::app::run_chain_study(scene, out_dir, scales)

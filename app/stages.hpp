@@ -36,9 +36,10 @@ StageOutput<pipeline::KfitResult> kfit_stage(const Scene& scene, const SensorGre
 StageOutput<pipeline::ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const ContactSetup> setup,
                                                 const std::string& out_dir, FrictionMode chosen);
 
-// Both sweeps of `defect` (static, then coupled sliding) with every position's contact solution.
+// Both sweeps of `defect` (static, then coupled sliding) with every position's contact solution; coarse:
+// pipeline::largest_sliding_levels' levels for the largest sliding signal's error bar (empty: none).
 pipeline::DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> setup,
-                                 const std::string& out_dir);
+                                 const std::string& out_dir, std::vector<pipeline::ChainLevel> coarse = {});
 
 // The hole-signal budget (app/hole_budget_stage.cpp): friction hypotheses against the paper's facts, judged
 // against the crosscheck's paper_model signals; writes its tables into out_dir (the crosscheck's).

@@ -414,6 +414,46 @@ ContactResult ContactSolver::solve(FrictionMode mode, const HoleCut& cut,
   return out;
 }
 
+ContactResult ContactSolver::solve(FrictionMode mode, const HoleDimple& dimple) const {
+  if (load_.interface.law != InterfaceLaw::hard)
+    throw std::invalid_argument(
+        "ContactSolver::solve: the bulge is a hole's solution under a hard interface");
+  ContactResult out;
+  out.mode = mode;
+  out.ratio = ratio(mode);
+  out.tau = shear(mode);
+  const double solved_ratio = mode == FrictionMode::uncoupled ? 0.0 : out.ratio;
+  const ContactLcp& problem = lcp(solved_ratio);
+  Eigen::VectorXd shift = dimple.opening, shear_solved;
+  if (out.tau != 0) {
+    // The shear on the hole-free contact of this mode minus the hole (as for a cut hole).
+    out.shear = out.tau * touched(mode);
+    if (dimple.covered.size()) out.shear = out.shear.cwiseProduct((1.0 - dimple.covered.array()).matrix());
+    shear_solved = solved_lambda(out.shear);
+    if (mode != FrictionMode::uncoupled) shift += c_.C_zt * shear_solved;
+  }
+  const double value = load_.force ? (mirror_ ? 0.5 : 1.0) * *load_.force : *load_.depth;
+  // The hole-free set, bilateral; one principal solve on its stored factorization (set_reference).
+  std::vector<char> out_of_contact(dimple.in_contact.size());
+  std::vector<int> set;
+  for (size_t i = 0; i < out_of_contact.size(); ++i) {
+    out_of_contact[i] = !dimple.in_contact[i];
+    if (dimple.in_contact[i]) set.push_back(static_cast<int>(i));
+  }
+  const LcpSolution s = load_.force
+                            ? problem.solve_force(value, out_of_contact, set, shift, dimple.in_contact)
+                            : problem.solve_depth(value, out_of_contact, set, shift, dimple.in_contact);
+  Eigen::VectorXd gap = s.gap;
+  if (mode == FrictionMode::uncoupled) {
+    if (out.ratio != 0) gap += out.ratio * (c_.C_zt * s.lambda);
+    if (out.tau != 0) gap += c_.C_zt * shear_solved;
+  }
+  out.readings = solved_readings(s.lambda, out.ratio);
+  if (out.tau != 0) out.readings += c_.S_t * shear_solved;
+  finish(out, s, gap, {});
+  return out;
+}
+
 void ContactSolver::finish(ContactResult& out, const LcpSolution& s, const Eigen::VectorXd& gap,
                            const std::vector<char>& excluded) const {
   out.depth_mm = s.delta;

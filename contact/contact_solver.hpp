@@ -72,6 +72,17 @@ struct MirrorView {
 MirrorView mirror_view(const TetMesh& whole, const std::vector<int>& source, const MortarZone& half_zone,
                        const Vec2& center, double radius);
 
+// A small hole as the bulge it lets the skin make (contact/hole_dimple.hpp): the weighted gaps it opens,
+// and its cut of the shear.
+struct HoleDimple {
+  Eigen::VectorXd opening;  // per solved multiplier (the half's under a mirror view), mm³
+  // Per solved multiplier, 1 where the hole-free contact presses: the contact set of the outer solution, kept
+  // (its answer to a point dilatation is linear in it; the set's motion is of higher order), the hats in it
+  // bilateral and the others out of contact.
+  std::vector<char> in_contact;
+  Eigen::VectorXd covered;  // per whole multiplier, the share of its hat under the hole (hole_cover)
+};
+
 class ContactSolver {
  public:
   // mirror: null when `condensed` is the whole skin's; else its whole view (kept by the caller). Results,
@@ -89,6 +100,10 @@ class ContactSolver {
   // less than 1e-9 of their hat outside the hole drop out (their rows have vanished with it). The result's
   // λ_i is hat i's force over its whole area (the nodal pressure times the share outside the hole).
   ContactResult solve(FrictionMode mode, const HoleCut& cut, const std::vector<int>& warm = {}) const;
+  // A small hole as a bulge (contact/hole_dimple.hpp): the hole-free problem with the dimple's gaps opened
+  // on its contact set (solved on the stored reference, set_reference), the shear-strength part cut by
+  // `covered`. Throws std::invalid_argument under an interface that is not hard.
+  ContactResult solve(FrictionMode mode, const HoleDimple& dimple) const;
   // From now on solves of `mode` reuse the factorized principal system of this active set (sweeps).
   void set_reference(FrictionMode mode, const std::vector<int>& active) const;
   double ratio(FrictionMode mode) const;  // Coulomb part p_t / p of `mode`

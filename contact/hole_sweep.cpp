@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 
 #include "contact/hole_cover.hpp"
 #include "contact/hole_cut.hpp"
@@ -9,7 +10,10 @@
 namespace skinfem::contact {
 
 SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const HoleSweep& sweep,
-                       FrictionMode mode, const std::function<void(int, const ContactResult&)>& frame) {
+                       FrictionMode mode, const HoleDimples* dimples,
+                       const std::function<void(int, const ContactResult&)>& frame) {
+  if (sweep.model == HoleModel::bulge && !dimples)
+    throw std::invalid_argument("hole_sweep: a bulge sweep needs the hole's dimples");
   const auto start = std::chrono::steady_clock::now();
   SweepResult out;
   out.mode = mode;
@@ -25,7 +29,9 @@ SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const H
     out.centers.push_back(c);
     const std::vector<Hole> hole{Hole{c, sweep.hole_diameter}};
     ContactResult r;
-    if (const auto& path = solver.condensed().path) {
+    if (sweep.model == HoleModel::bulge) {
+      r = solver.solve(mode, (*dimples)(hole[0], out.baseline.lambda));
+    } else if (const auto& path = solver.condensed().path) {
       r = solver.solve(mode, hole_cut(*path, solver.condensed().zone.size(), hole[0]), warm);
     } else {
       r = solver.solve(mode, excluded_by_holes(solver.zone(), mesh, hole), warm,

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "contact/contact_solver.hpp"
+#include "contact/hole_dimple.hpp"
 
 namespace skinfem::contact {
 
@@ -22,8 +23,12 @@ struct SweepResult {
   double seconds = 0;
 };
 
-// frame(i, result) is called after each position (to write its pressure map, report progress).
+// The hole per sweep.model: HoleModel::bulge through `dimples` (required then; contact/hole_dimple.hpp),
+// resolved by cutting the hats (needs solver.condensed().path, contact/hole_cut.hpp; without a path, by
+// removing the multipliers whose vertex it holds). frame(i, result) is called after each position (to write
+// its pressure map, report progress). Throws std::invalid_argument for a bulge sweep without dimples.
 SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const HoleSweep& sweep,
-                       FrictionMode mode, const std::function<void(int, const ContactResult&)>& frame = {});
+                       FrictionMode mode, const HoleDimples* dimples,
+                       const std::function<void(int, const ContactResult&)>& frame = {});
 
 }  // namespace skinfem::contact

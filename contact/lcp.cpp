@@ -273,17 +273,18 @@ VectorXd shifted(const VectorXd& q, const VectorXd& shift) {
 }  // namespace
 
 LcpSolution ContactLcp::solve_force(double F, const std::vector<char>& excluded, const std::vector<int>& warm,
-                                    const VectorXd& q_shift) const {
+                                    const VectorXd& q_shift, const std::vector<char>& bilateral) const {
   if (!(F > 0) || !std::isfinite(F))
     throw std::invalid_argument("ContactLcp::solve_force: F must be finite and > 0, got " +
                                 std::to_string(F));
-  return solve(true, F, excluded, warm, shifted(q_, q_shift));
+  return solve(true, F, excluded, warm, shifted(q_, q_shift), nullptr, bilateral);
 }
 
 LcpSolution ContactLcp::solve_depth(double delta, const std::vector<char>& excluded,
-                                    const std::vector<int>& warm, const VectorXd& q_shift) const {
+                                    const std::vector<int>& warm, const VectorXd& q_shift,
+                                    const std::vector<char>& bilateral) const {
   if (!std::isfinite(delta)) throw std::invalid_argument("ContactLcp::solve_depth: delta must be finite");
-  return solve(false, delta, excluded, warm, shifted(q_, q_shift));
+  return solve(false, delta, excluded, warm, shifted(q_, q_shift), nullptr, bilateral);
 }
 
 LcpSolution ContactLcp::solve_changed(const MatrixXd& M, const VectorXd& q, const VectorXd& m,
@@ -327,14 +328,19 @@ void ContactLcp::clear_reference() {
 }
 
 LcpSolution ContactLcp::solve(bool force, double value, const std::vector<char>& excluded,
-                              const std::vector<int>& warm, const VectorXd& q, const Changed* changed) const {
+                              const std::vector<int>& warm, const VectorXd& q, const Changed* changed,
+                              const std::vector<char>& bilateral) const {
   const int n = size();
   const MatrixXd& M = changed ? *changed->M : M_;  // the matrix and areas solved with
   const VectorXd& m = changed ? *changed->m : m_;
   if (!excluded.empty() && static_cast<int>(excluded.size()) != n)
     throw std::invalid_argument("ContactLcp: excluded has " + std::to_string(excluded.size()) +
                                 " flags for " + std::to_string(n) + " multipliers");
+  if (!bilateral.empty() && static_cast<int>(bilateral.size()) != n)
+    throw std::invalid_argument("ContactLcp: bilateral has " + std::to_string(bilateral.size()) +
+                                " flags for " + std::to_string(n) + " multipliers");
   const auto is_excluded = [&](int i) { return !excluded.empty() && excluded[i] != 0; };
+  const auto is_bilateral = [&](int i) { return !bilateral.empty() && bilateral[i] != 0 && !is_excluded(i); };
   std::vector<char> in(n, 0);  // the current principal set S
   int allowed = 0;
   for (int i = 0; i < n; ++i) allowed += !is_excluded(i);
@@ -370,6 +376,8 @@ LcpSolution ContactLcp::solve(bool force, double value, const std::vector<char>&
     }
     for (size_t c = 0; c < std::max<size_t>(k, 1); ++c) in[order[c]] = 1;
   }
+  for (int i = 0; i < n; ++i)
+    if (is_bilateral(i)) in[i] = 1;
 
   const System sys{M, q, m, sigma_, force, value, n};
   Principal principal(sys, ref_set_.empty() ? nullptr : &ref_set_, ref_set_.empty() ? nullptr : &Z_,
@@ -425,7 +433,7 @@ LcpSolution ContactLcp::solve(bool force, double value, const std::vector<char>&
     const double tol_l = kFeasible * lambda_max, tol_g = kFeasible * g_scale;
     bad.clear();
     for (int i = 0; i < n; ++i) {
-      if (is_excluded(i)) continue;
+      if (is_excluded(i) || is_bilateral(i)) continue;
       if (in[i] ? s.lambda[i] < -tol_l : s.gap[i] < -tol_g) bad.push_back(i);
     }
     if (bad.empty()) break;
@@ -465,7 +473,7 @@ LcpSolution ContactLcp::solve(bool force, double value, const std::vector<char>&
   s.min_gap = 0;
   bool first = true;
   for (int i = 0; i < n; ++i) {
-    if (is_excluded(i)) continue;
+    if (is_excluded(i) || is_bilateral(i)) continue;
     lambda_max = std::max(lambda_max, s.lambda[i]);
     product = std::max(product, std::abs(s.lambda[i] * s.gap[i]));
     s.min_lambda = first ? s.lambda[i] : std::min(s.min_lambda, s.lambda[i]);

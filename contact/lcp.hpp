@@ -1,6 +1,7 @@
 // The contact complementarity problem condensed onto n multipliers (contact/condensed.hpp): find λ (n) with
 //   λ_i ≥ 0,  g_i = (M λ + q − δ m)_i ≥ 0,  λ_i g_i = 0   for every index not excluded,
 //   λ_i = 0 (g_i free)                                    for excluded ones (under a hole of the indenter),
+//   λ_i free, g_i = 0                                     for bilateral ones (always in contact),
 // with either the depth δ given (depth control), or δ unknown and mᵀλ = F > 0 (force control).
 // Shapes and meaning: M (n×n) the compliance between multipliers (weighted gap per unit multiplier), q (n)
 // the initial weighted gaps, m (n, all > 0) the multipliers' areas, so mᵀλ is the force and δ m the rigid
@@ -60,11 +61,14 @@ class ContactLcp {
   // Throws std::runtime_error (one line, naming the pivot count) when pivoting does not converge within
   // 10n + 20 pivots or a principal system is singular; std::invalid_argument on bad arguments (F ≤ 0).
   // q_shift: empty, or n weighted gaps added to q for this solve only (a load that does not depend on λ,
-  // such as a shear strength's traction; the stored factorizations do not depend on q).
+  // such as a shear strength's traction; the stored factorizations do not depend on q). bilateral: empty or
+  // n flags, 1 where the multiplier stays in contact with a free sign (the hats a small hole's bulge opens,
+  // contact/hole_dimple.hpp); they count in neither the feasibility tests nor the diagnostics.
   LcpSolution solve_force(double F, const std::vector<char>& excluded = {}, const std::vector<int>& warm = {},
-                          const Eigen::VectorXd& q_shift = {}) const;
+                          const Eigen::VectorXd& q_shift = {}, const std::vector<char>& bilateral = {}) const;
   LcpSolution solve_depth(double delta, const std::vector<char>& excluded = {},
-                          const std::vector<int>& warm = {}, const Eigen::VectorXd& q_shift = {}) const;
+                          const std::vector<int>& warm = {}, const Eigen::VectorXd& q_shift = {},
+                          const std::vector<char>& bilateral = {}) const;
 
   // The problem with the rows and columns of the `dirty` indices changed (M, q, m agree with this problem's
   // elsewhere; a hole cutting the hats, contact/hole_cut.hpp): solved with the stored reference for the
@@ -92,8 +96,8 @@ class ContactLcp {
     const std::vector<char>* dirty;
   };
   LcpSolution solve(bool force_control, double value, const std::vector<char>& excluded,
-                    const std::vector<int>& warm, const Eigen::VectorXd& q,
-                    const Changed* changed = nullptr) const;
+                    const std::vector<int>& warm, const Eigen::VectorXd& q, const Changed* changed = nullptr,
+                    const std::vector<char>& bilateral = {}) const;
 
   Eigen::MatrixXd M_;
   Eigen::VectorXd q_, m_;

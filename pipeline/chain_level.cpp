@@ -48,8 +48,9 @@ ChainLevel chain_values(const Scene& s, const AdjointSetup& adj, const ContactSe
     l.wall["condense"] = c->wall["condense"];
     if (s.contact->sweep) {
       clock = Stopwatch();
+      const contact::HoleDimples dimples(*c->solver, c->mesh(), *c->top, s.material.E, s.material.nu);
       const contact::SweepResult sw =
-          contact::hole_sweep(*c->solver, c->mesh(), *s.contact->sweep, FrictionMode::coupled);
+          contact::hole_sweep(*c->solver, c->mesh(), *s.contact->sweep, FrictionMode::coupled, &dimples);
       double peak = 0;
       for (int j = 0; j < sw.varsigma.cols(); j += 2)
         peak = std::max(peak, sw.varsigma.col(j).cwiseAbs().maxCoeff());
@@ -110,6 +111,18 @@ std::vector<ChainError> chain_errors(const std::vector<ChainLevel>& levels) {
     out.push_back(e);
   }
   return out;
+}
+
+void check_error_scales(const std::vector<double>& error_scales) {
+  char buf[32];
+  if (error_scales.size() == 1)
+    throw SceneError("--error-scales: one coarser level given; Richardson needs two (e.g. 2,1.41)");
+  for (double e : error_scales)
+    if (!(e > 1)) {
+      std::snprintf(buf, sizeof buf, "%g", e);
+      throw SceneError(std::string("--error-scales: ") + buf +
+                       ": the error levels are coarser than the scene, so each scale must be > 1");
+    }
 }
 
 std::map<std::string, double> time_vs_dofs_exponent(const std::vector<ChainLevel>& levels) {

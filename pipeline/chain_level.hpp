@@ -49,6 +49,9 @@ struct ChainError {
   std::string why_not;  // when not asymptotic, why (computed from the levels)
 };
 std::vector<ChainError> chain_errors(const std::vector<ChainLevel>& levels);
+// Error-bar levels (--error-scales): none, or at least two coarser ones (each s > 1) for Richardson. Throws
+// SceneError (one line) otherwise.
+void check_error_scales(const std::vector<double>& error_scales);
 
 // Seconds ∝ DOFs^e per stage, fitted over the levels that timed it (validation::loglog_slope); stages
 // whose fit is undefined are left out.

@@ -11,7 +11,8 @@
 
 namespace skinfem::pipeline {
 
-std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<Skin> skin, bool hole_path) {
+std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<Skin> skin,
+                                            HolePath hole_path) {
   if (!scene.contact)
     throw SceneError(scene.source_path + ": contact: missing; this command needs a \"contact\" section");
   auto s =
@@ -31,7 +32,9 @@ std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<
         contact::mirror_view(*s->whole, s->source, zone, contact_center(scene), s->zone_radius));
   }
   std::vector<int> watch_faces;
-  if (hole_path && scene.contact->sweep) {
+  const auto& sweep = scene.contact->sweep;
+  if (sweep && (hole_path == HolePath::always ||
+                (hole_path == HolePath::as_scene && sweep->model == HoleModel::resolved))) {
     const HoleSweep& sw = *scene.contact->sweep;
     watch_faces = contact::watch_path(solved, zone, sw.from, sw.to, 0.5 * sw.hole_diameter);
   }

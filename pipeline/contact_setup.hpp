@@ -33,12 +33,16 @@ struct ContactSetup {
   nlohmann::json wall;
 };
 
+// Whether to condense, with a contact.sweep, the compliance of the nodes its hole can reach, so that the
+// sweep can cut the hats on the exact disc (contact/hole_cut.hpp; one more solve per such node): never, when
+// the scene's sweep is resolved (HoleModel::resolved), or always (the report: its hole budget sweeps the
+// interface hypotheses resolved).
+enum class HolePath { none, as_scene, always };
+
 // Throws SceneError when the scene has no contact section. skin: an already factored skin of this scene (its
-// half when contact_mesh_part says so), or null to mesh and factor one. hole_path: with a contact.sweep,
-// condense the compliance of the nodes its hole can reach, so that the sweep cuts the hats on the exact
-// disc (contact/hole_cut.hpp); one more solve per such node.
+// half when contact_mesh_part says so), or null to mesh and factor one.
 std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<Skin> skin = nullptr,
-                                            bool hole_path = true);
+                                            HolePath hole_path = HolePath::as_scene);
 
 // Throws (one line, naming contact.zone_radius) when an active multiplier lies in the zone's outer ring:
 // the contact could be larger than the zone allows, so the answer would be wrong.

@@ -2,9 +2,11 @@
 
 #include <cstdio>
 
+#include "mesh/sizing.hpp"
 #include "pipeline/clock.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/scene_json.hpp"
+#include "pipeline/symmetry.hpp"
 #include "validation/hole_budget.hpp"
 
 namespace skinfem::pipeline {
@@ -15,7 +17,56 @@ void require_sweep(const Scene& scene) {
                      ": contact.sweep: missing; skinfem defect needs a \"contact\" section with a \"sweep\"");
 }
 
-DefectRun defect_run(const Scene& scene, std::shared_ptr<const ContactSetup> shared) {
+namespace {
+constexpr const char* kLargest = "largest_sliding_varsigma_z";
+
+double largest_z(const Eigen::MatrixXd& varsigma) {
+  double peak = 0;
+  for (int j = 0; j < varsigma.cols(); j += 2) peak = std::max(peak, varsigma.col(j).cwiseAbs().maxCoeff());
+  return peak;
+}
+
+ChainLevel sliding_level(const Scene& s, double scale) {
+  Stopwatch clock;
+  const auto c = contact_setup(s, skin_setup(s, contact_mesh_part(s)));
+  const contact::HoleDimples dimples(*c->solver, c->mesh(), *c->top, s.material.E, s.material.nu);
+  const contact::SweepResult sw =
+      contact::hole_sweep(*c->solver, c->mesh(), *s.contact->sweep, FrictionMode::coupled, &dimples);
+  ChainLevel l;
+  l.scale = scale;
+  l.dofs = c->model->solver().free_dofs();
+  l.names = {kLargest};
+  l.value = {largest_z(sw.varsigma)};
+  l.seconds = {clock.seconds()};
+  l.peak_rss_mb = peak_rss_mb();
+  return l;
+}
+}  // namespace
+
+std::vector<ChainLevel> largest_sliding_levels(const Scene& scene, const std::vector<double>& scales) {
+  check_error_scales(scales);
+  require_sweep(scene);
+  std::vector<ChainLevel> out;
+  for (double s : scales) {
+    progress("defect error bar: level x" + std::to_string(s).substr(0, 4));
+    try {
+      out.push_back(sliding_level(scaled_scene(scene, s), s));
+    } catch (const contact::HoleUnresolved& e) {
+      out.push_back(sliding_level(scaled_scene(scene, s, true), s));
+      out.back().note = "the mesh over the hole capped at its diameter (the scaled one could not see it)";
+    }
+  }
+  return out;
+}
+
+ChainError largest_sliding_error(const DefectRun& run) {
+  if (run.levels.size() < 3)
+    throw std::invalid_argument("largest_sliding_error: needs two coarser levels and the run's own");
+  return chain_errors(run.levels).at(0);
+}
+
+DefectRun defect_run(const Scene& scene, std::shared_ptr<const ContactSetup> shared,
+                     std::vector<ChainLevel> coarse) {
   require_sweep(scene);
   DefectRun run;
   run.setup = std::move(shared);
@@ -26,12 +77,14 @@ DefectRun defect_run(const Scene& scene, std::shared_ptr<const ContactSetup> sha
                                                                 {"sliding", FrictionMode::coupled}};
   run.frames.resize(cases.size());
   for (const auto& c : cases) check_zone(scene, setup, setup.solver->solve(c.second));
+  const contact::HoleDimples dimples(*setup.solver, setup.mesh(), *setup.top, scene.material.E,
+                                     scene.material.nu);
   for (size_t ci = 0; ci < cases.size(); ++ci) {
     const auto& [name, mode] = cases[ci];
     run.cases.push_back(name);
     Stopwatch clock;
     run.sweeps.push_back(contact::hole_sweep(
-        *setup.solver, setup.mesh(), sweep, mode, [&](int i, const contact::ContactResult& r) {
+        *setup.solver, setup.mesh(), sweep, mode, &dimples, [&](int i, const contact::ContactResult& r) {
           run.frames[ci].push_back(r);
           if ((i + 1) % 50 == 0 || i + 1 == sweep.positions) {
             char buf[128];
@@ -49,6 +102,19 @@ DefectRun defect_run(const Scene& scene, std::shared_ptr<const ContactSetup> sha
       if (const double r = validation::roughness(v.col(col)); r > rough) rough = r, rough_col = col;
     run.max_roughness.push_back(rough);
     run.max_roughness_column.push_back(rough_col);
+  }
+  if (!coarse.empty()) {
+    double seconds = 0;
+    for (const ChainLevel& l : coarse) seconds += l.seconds.at(0);
+    run.wall["error_bar_levels"] = seconds;
+    run.levels = std::move(coarse);
+    ChainLevel own;
+    own.dofs = setup.model->solver().free_dofs();
+    own.names = {kLargest};
+    own.value = {largest_z(run.sweeps.back().varsigma)};
+    own.seconds = {total_seconds(run.wall) - seconds};
+    own.peak_rss_mb = peak_rss_mb();
+    run.levels.push_back(own);
   }
   return run;
 }
@@ -91,12 +157,37 @@ nlohmann::json defect_json(const Scene& scene, const DefectRun& run) {
   summary["friction_law"] = contact::to_string(scene.contact->law);
   summary["positions"] = sweep.positions;
   summary["hole_diameter_mm"] = sweep.hole_diameter;
+  summary["hole_model"] = sweep.model == HoleModel::bulge ? "bulge" : "resolved";
+  if (sweep.model == HoleModel::bulge) {
+    // The bulge model's next term, relative: (ε/d)² with d the skin's thickness under the contact's centre.
+    const Vec2 c = contact_center(scene);
+    const double eps_d = 0.5 * sweep.hole_diameter / skin_thickness(scene.geometry, setup.mesh(), c[0], c[1]);
+    summary["bulge_next_term"] = eps_d * eps_d;
+  }
   summary["from_mm"] = {sweep.from[0], sweep.from[1]};
   summary["to_mm"] = {sweep.to[0], sweep.to[1]};
   summary["dofs"] = setup.model->solver().free_dofs();
   summary["multipliers"] = setup.solver->zone().size();
   summary["multipliers_solved"] = setup.condensed->zone.size();
   summary["block_solves"] = setup.condensed->block_solves;
+  if (run.levels.size() >= 3) {
+    const ChainError e = largest_sliding_error(run);
+    nlohmann::json b{{"value_kPa", 1e3 * e.value},
+                     {"error_kPa", 1e3 * e.error},
+                     {"relative_error", e.value > 0 ? e.error / e.value : 0.0},
+                     {"asymptotic", e.asymptotic},
+                     {"observed_order", e.order},
+                     {"how", e.asymptotic ? "|value - Richardson limit| over the levels"
+                                          : "last change between the two finest levels (" + e.why_not + ")"}};
+    for (const ChainLevel& l : run.levels)
+      b["levels"].push_back({{"mesh_scale", l.scale},
+                             {"dofs", l.dofs},
+                             {"value_kPa", 1e3 * l.value.at(0)},
+                             {"seconds", l.seconds.at(0)},
+                             {"peak_rss_mb", l.peak_rss_mb},
+                             {"note", l.note}});
+    summary["largest_sliding"] = b;
+  }
   summary["wall_s"] = run.wall;
   summary["wall_total_s"] = total_seconds(run.wall);
   summary["peak_rss_mb"] = peak_rss_mb();

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "contact/hole_sweep.hpp"
+#include "pipeline/chain_level.hpp"
 #include "pipeline/contact_setup.hpp"
 
 namespace skinfem::pipeline {
@@ -24,15 +25,31 @@ struct DefectRun {
   std::vector<double> max_roughness;
   std::vector<int> max_roughness_column;
   nlohmann::json wall;  // seconds per stage
+  // The largest sliding |ς_z| over sensors and positions on coarser levels (largest_sliding_levels) and this
+  // one, last; empty without error bars.
+  std::vector<ChainLevel> levels;
 };
+
+// The largest sliding |ς_z| (MPa, over sensors and positions) of the scene scaled by each of `scales`
+// (every mesh size × s > 1, mesh/sizing.hpp's scaled_scene; a level whose mesh cannot see a resolved hole
+// is redone with the mesh over the hole capped, as chain_level does), each level set up, swept and freed
+// in turn: run before the scene's own level, the peak memory stays that level's.
+std::vector<ChainLevel> largest_sliding_levels(const Scene& scene, const std::vector<double>& scales);
+// That quantity's error bar through the coarser levels and this run's (pipeline/chain_level.hpp's
+// chain_errors: Richardson when asymptotic, else the last change). Throws std::invalid_argument with fewer
+// than two coarser levels.
+ChainError largest_sliding_error(const DefectRun& run);
 
 // Throws SceneError, naming the command's need, when the scene has no contact.sweep: before contact_setup,
 // whose condensation is the expensive part.
 void require_sweep(const Scene& scene);
-// Throws SceneError when the scene has no contact.sweep.
-DefectRun defect_run(const Scene& scene, std::shared_ptr<const ContactSetup> setup);
+// Throws SceneError when the scene has no contact.sweep. coarse: largest_sliding_levels' result, kept in
+// the run (with this level's value appended) for largest_sliding_error.
+DefectRun defect_run(const Scene& scene, std::shared_ptr<const ContactSetup> setup,
+                     std::vector<ChainLevel> coarse = {});
 // summary.json of `skinfem defect`: per case the peaks per sensor, complementarity, pivots, and
-// max_roughness (the largest second difference along u over its curve's peak, validation::roughness).
+// max_roughness (the largest second difference along u over its curve's peak, validation::roughness); with
+// levels, largest_sliding: the value, its error bar and how it was obtained, and the levels.
 nlohmann::json defect_json(const Scene& scene, const DefectRun& run);
 
 }  // namespace skinfem::pipeline

@@ -43,7 +43,8 @@ HoleBudget hole_budget(const Scene& scene, const ContactSetup& setup, const vali
     progress("hole budget: " + h.name);
     try {
       out.results.push_back(validation::run_hypothesis(h, *setup.condensed, setup.mirror.get(), setup.mesh(),
-                                                       *setup.top, *scene.contact->sweep, base));
+                                                       *setup.top, *scene.contact->sweep, scene.material,
+                                                       base));
     } catch (const std::runtime_error& e) {
       out.skipped.push_back({h, e.what()});
       continue;

@@ -281,7 +281,8 @@ PYBIND11_MODULE(_skinfem, m) {
       [](const Scene& scene, const std::string& friction) {
         const FrictionMode chosen = pipeline::friction_mode_named(scene, friction);
         py::gil_scoped_release free;
-        return pipeline::contact_run(scene, pipeline::contact_setup(scene, nullptr, false), chosen);
+        return pipeline::contact_run(scene, pipeline::contact_setup(scene, nullptr, pipeline::HolePath::none),
+                                     chosen);
       },
       py::arg("scene"), py::arg("friction") = "");
   py::class_<pipeline::DefectRun>(
@@ -311,12 +312,14 @@ PYBIND11_MODULE(_skinfem, m) {
   });
   m.def(
       "_defect",
-      [](const Scene& scene) {
+      [](const Scene& scene, const std::vector<double>& error_scales) {
+        pipeline::check_error_scales(error_scales);
         pipeline::require_sweep(scene);  // before the set-up
         py::gil_scoped_release free;
-        return pipeline::defect_run(scene, pipeline::contact_setup(scene));
+        std::vector<pipeline::ChainLevel> coarse = pipeline::largest_sliding_levels(scene, error_scales);
+        return pipeline::defect_run(scene, pipeline::contact_setup(scene), std::move(coarse));
       },
-      py::arg("scene"));
+      py::arg("scene"), py::arg("error_scales"));
 
   py::class_<pipeline::SensorGreens>(
       m, "Greens", py::dynamic_attr(),

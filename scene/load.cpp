@@ -51,7 +51,11 @@
 //                  "sweep"*: {"from": [x, y], "to": [x, y],  a hole swept for `skinfem defect`
 //                             "positions"*: integer in [2, 100000] (default 201),
 //                             "hole_diameter"*: > 0 (default 0.5),
-//                             "h"*: > 0, mesh size along the path (absent: no refinement)}}
+//                             "h"*: > 0, mesh size along the path (absent: no refinement),
+//                             "hole_model"*: "bulge" (default under a hard interface: the small
+//                                            hole's bulge, seen by the contact as a dimple of the
+//                                            indenter) | "resolved" (the hole's disc cuts the
+//                                            multipliers' hats; the default under any other)}}
 //                 A plane needs a cap: it first touches at the apex (on a flat layer it touches everywhere at
 //                 once; an imported surface has no known apex). A sphere fits any geometry. On a cap or flat
 //                 layer, the sphere's centre, every hole disc and the swept hole at both ends of its path
@@ -817,8 +821,16 @@ void read_friction(const Reader& r, const json& f, const std::string& path, Cont
 }
 
 HoleSweep read_sweep(const Reader& r, const json& j, const std::string& path, const Geometry& geo) {
-  r.object(j, path, {"from", "to", "positions", "hole_diameter", "h"});
+  r.object(j, path, {"from", "to", "positions", "hole_diameter", "h", "hole_model"});
   HoleSweep s;
+  if (const json* m = Reader::find(j, "hole_model")) {
+    if (*m == "bulge")
+      s.model = HoleModel::bulge;
+    else if (*m == "resolved")
+      s.model = HoleModel::resolved;
+    else
+      r.fail(sub(path, "hole_model"), *m, R"(must be one of "bulge", "resolved")");
+  }
   s.from = r.vec2(j, path, "from");
   s.to = r.vec2(j, path, "to");
   if (const json* n = Reader::find(j, "positions"))
@@ -922,7 +934,19 @@ ContactLoad read_contact(const Reader& r, const json& c, const Geometry& geo) {
           sub(path, "law"), law,
           R"(touches everywhere, and a shear strength acts where the skin touches: use "friction": {"law": "coulomb"} with it, or a hard or linear interface)");
   }
-  if (const json* sw = Reader::find(c, "sweep")) out.sweep = read_sweep(r, *sw, sub(P, "sweep"), geo);
+  if (const json* sw = Reader::find(c, "sweep")) {
+    out.sweep = read_sweep(r, *sw, sub(P, "sweep"), geo);
+    // The bulge is the small hole's solution under a hard interface: through a compliant one the pressure
+    // missing over the hole is reloaded over E*/K, not on the rim. Unsaid, such a sweep is resolved.
+    if (out.interface.law != InterfaceLaw::hard) {
+      if (Reader::find(*sw, "hole_model") && out.sweep->model == HoleModel::bulge)
+        r.fail(sub(P, "sweep.hole_model"), "bulge",
+               std::string(R"(is the hole's solution under a hard interface; with "interface": {"law": ")") +
+                   (out.interface.law == InterfaceLaw::linear ? "linear" : "exponential") +
+                   R"("} use "resolved")");
+      out.sweep->model = HoleModel::resolved;
+    }
+  }
   return out;
 }
 
@@ -957,7 +981,7 @@ void check_contact_zone(const Reader& r, const json& j, const Scene& scene) {
 // A hole removes the multipliers whose vertex lies inside it: a mesh coarser than the hole can leave it
 // holding none, a zero signal that means "not resolved". The mesh over a hole must be at most its diameter
 // (contact/contact_solver.hpp's require_hole_resolved catches the rare position that still falls between
-// vertices).
+// vertices). A swept hole modelled as a bulge (HoleModel::bulge) is not resolved by the mesh: no rule.
 void check_hole_meshes(const Reader& r, const Scene& scene) {
   const ContactLoad& c = *scene.contact;
   const double zone_h = contact_zone_h(scene);
@@ -973,7 +997,8 @@ void check_hole_meshes(const Reader& r, const Scene& scene) {
   for (std::size_t i = 0; i < c.holes.size(); ++i)
     check(at("contact.holes", i) + ".diameter", c.holes[i].diameter, c.holes[i].h,
           at("contact.holes", i) + ".h");
-  if (c.sweep) check("contact.sweep.hole_diameter", c.sweep->hole_diameter, c.sweep->h, "contact.sweep.h");
+  if (c.sweep && c.sweep->model == HoleModel::resolved)
+    check("contact.sweep.hole_diameter", c.sweep->hole_diameter, c.sweep->h, "contact.sweep.h");
 }
 
 }  // namespace

@@ -109,7 +109,11 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
     for (int c = 0; c < 2; ++c) s[c] = per_case(c);
     out.signals.push_back(s);
   };
-  add_signal("fe", "a full FE contact solve per hole position", [&](int c) { return sweeps[c].varsigma; });
+  add_signal("fe",
+             in.sweep.model == HoleModel::bulge
+                 ? "the FE contact at each hole position, the hole as its bulge (contact/hole_dimple.hpp)"
+                 : "a full FE contact solve per hole position, the hole cutting the hats",
+             [&](int c) { return sweeps[c].varsigma; });
   add_signal("green_k_paper", "each position's FE tractions, Green rescaled by the paper's k", [&](int c) {
     const Eigen::VectorXd base = convolve(tractions(c, sweeps[c].baseline), k_paper, in.sensors);
     Eigen::MatrixXd s(n, 2 * ns);
@@ -120,8 +124,10 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
   // One frictionless sweep serves both cases' uncoupled friction.
   std::vector<Eigen::VectorXd> free_lambda, covered;
   const bool any_shear = out.shear[0] != 0 || out.shear[1] != 0;
+  const PlanarFaceIndex top(*in.mesh, kTop);
+  const contact::HoleDimples dimples(solver, *in.mesh, top, in.E, in.nu);
   const contact::SweepResult free_sweep = contact::hole_sweep(
-      solver, *in.mesh, in.sweep, FrictionMode::none, [&](int i, const contact::ContactResult& r) {
+      solver, *in.mesh, in.sweep, FrictionMode::none, &dimples, [&](int i, const contact::ContactResult& r) {
         free_lambda.push_back(r.lambda);
         if (any_shear)
           covered.push_back(
@@ -140,7 +146,6 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
   std::vector<Vec2> centers(sweeps[0].centers.begin(), sweeps[0].centers.end());
   add_signal("first_order_hole", "eqs. (2)-(3) with the FE tractions and FE Green maps",
              [&](int c) { return first_order_hole(tractions(c, full[c]), fe, in.sensors, centers, S); });
-  const PlanarFaceIndex top(*in.mesh, kTop);
   add_signal("small_hole",
              "the hole as its penny-crack bulge in the intact FE contact (contact/small_hole.hpp)",
              [&](int c) {

@@ -239,9 +239,10 @@ std::vector<Hypothesis> interface_hypotheses(const ContactLoad& scene_load, doub
                            : (std::to_string(static_cast<int>(std::lround(um))) + "um").c_str());
       h.name = name;
       h.load.interface = {InterfaceLaw::linear, p_mean / u};
-      h.what =
-          base.what + format("; a rough interface in series, u0 = %.3g um: K = p_mean / u0 = %.4g MPa/mm", um,
-                             p_mean / u);
+      h.what = base.what +
+               format("; a rough interface in series, u0 = %.3g um: K = p_mean / u0 = %.4g MPa/mm", um,
+                      p_mean / u) +
+               " (the hole resolved, its disc cutting the hats: the bulge is a hard interface's)";
       out.push_back(h);
     }
   }
@@ -250,7 +251,8 @@ std::vector<Hypothesis> interface_hypotheses(const ContactLoad& scene_load, doub
 
 HypothesisResult run_hypothesis(const Hypothesis& h, const contact::CondensedContact& condensed,
                                 const contact::MirrorView* mirror, const TetMesh& mesh,
-                                const PlanarFaceIndex& top, const HoleSweep& sweep, FactsInput base) {
+                                const PlanarFaceIndex& top, const HoleSweep& sweep, const Material& material,
+                                FactsInput base) {
   const auto start = std::chrono::steady_clock::now();
   HypothesisResult out;
   out.hypothesis = h;
@@ -275,8 +277,18 @@ HypothesisResult run_hypothesis(const Hypothesis& h, const contact::CondensedCon
   out.tangential_force_N = sliding.tangential_force_N;
   out.contact_radius_mm = contact::contact_metrics(solver, mesh, top, sliding, base.center).contact_radius_mm;
   const FrictionMode modes[2] = {FrictionMode::static_residual, FrictionMode::coupled};
+  const contact::HoleDimples dimples(solver, mesh, top, material.E, material.nu);
+  // The bulge is a hole's solution under a hard interface only (contact/hole_dimple.hpp): through a
+  // compliant one the hole is resolved, which needs the path's compliance in `condensed`.
+  HoleSweep hyp_sweep = sweep;
+  if (h.load.interface.law != InterfaceLaw::hard) {
+    if (!condensed.path)
+      throw std::runtime_error(
+          "a hole through a compliant interface is resolved, and the condensed skin has no hole path");
+    hyp_sweep.model = HoleModel::resolved;
+  }
   for (int c = 0; c < 2; ++c) {
-    out.signals[c] = contact::hole_sweep(solver, mesh, sweep, modes[c]).varsigma;
+    out.signals[c] = contact::hole_sweep(solver, mesh, hyp_sweep, modes[c], &dimples).varsigma;
     if (base.reading_scale.size()) out.signals[c] *= base.reading_scale.cwiseInverse().asDiagonal();
   }
   base.fe = out.signals;

@@ -88,11 +88,14 @@ struct HypothesisResult {
   std::vector<FactVerdict> facts;
 };
 // One static and one coupled sliding sweep on `condensed` (seen whole through `mirror` when not null), judged
-// against base.model. mesh, top: the whole mesh and its top index. Throws std::runtime_error when the contact
-// reaches the candidate zone's edge (a multiplier next to a face outside the zone is active): the zone would
-// cut it, so the hypothesis needs a larger contact.zone_radius.
+// against base.model. The hole is the scene sweep's model under a hard interface, resolved under any other
+// (then `condensed` needs its hole path: std::runtime_error otherwise). mesh, top: the whole mesh and its top
+// index; material: the skin's (a bulge sweep's). Throws std::runtime_error when the contact reaches the
+// candidate zone's edge (a multiplier next to a face outside the zone is active): the zone would cut it, so
+// the hypothesis needs a larger contact.zone_radius.
 HypothesisResult run_hypothesis(const Hypothesis& h, const contact::CondensedContact& condensed,
                                 const contact::MirrorView* mirror, const TetMesh& mesh,
-                                const PlanarFaceIndex& top, const HoleSweep& sweep, FactsInput base);
+                                const PlanarFaceIndex& top, const HoleSweep& sweep, const Material& material,
+                                FactsInput base);
 
 }  // namespace skinfem::validation

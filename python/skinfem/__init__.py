@@ -68,9 +68,10 @@ def _contact_to_dict(self):
 ContactRun.to_dict = _contact_to_dict  # noqa: F405
 
 
-def defect(scene):
-    """A hole swept along the scene's contact.sweep, static and sliding (what `skinfem defect` computes)."""
-    run = _defect(scene)
+def defect(scene, error_scales=(2.0, 1.41)):
+    """A hole swept along the scene's contact.sweep, static and sliding (what `skinfem defect` computes),
+    and the largest sliding signal on coarser levels (every mesh size x s) for its error bar; () for none."""
+    run = _defect(scene, list(error_scales))
     run._scene = scene
     return run
 

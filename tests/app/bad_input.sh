@@ -160,6 +160,7 @@ variant ridged 'd["geometry"]["ridges"] = {"period": 0.2, "height": 0.05, "cente
 check study_ridges_two '--ridges: a ridge study needs at least 3 levels' "$skinfem" study "$tmp/ridged.json" --ridges 4,5 --out "$tmp/out"
 check study_scales_huge '\(--scales 1000.0\): loads.punches\[0\].center = .*must lie on the skin with mesh.h_min = 400' "$skinfem" study "$tmp/base.json" --scales 1000,500,200 --out "$tmp/out"
 check error_scales_one '--error-scales: one coarser level' "$skinfem" report "$tmp/base.json" --error-scales 2 --out "$tmp/out"
+check defect_error_scales_fine '--error-scales: 0.5: the error levels are coarser than the scene' "$skinfem" defect "$tmp/base.json" --error-scales 2,0.5 --out "$tmp/out"
 
 # A scene file is untrusted input: its name becomes the report's folder (out/<name>) and once reached a shell.
 # Run from an empty folder with the default --out; nothing may appear there or anywhere above it.
@@ -203,7 +204,9 @@ bad interface_u0_zero "$sphere, \"interface\": {\"law\": \"exponential\", \"u0\"
 bad interface_p_ref_negative "$sphere, \"interface\": {\"law\": \"exponential\", \"u0\": 0.001, \"p_ref\": -1}}" 'contact.interface.p_ref = -1: must be a pressure in \(0, 1e6\] MPa' report
 bad interface_exponential_shear "$sphere, \"friction\": {\"law\": \"shear_strength\", \"mu\": 1}, \"interface\": {\"law\": \"exponential\", \"u0\": 0.001, \"p_ref\": 0.01}}" 'contact.interface.law = "exponential": touches everywhere, and a shear strength acts where the skin touches' defect
 bad hole_below_mesh "$sphere, \"h\": 0.8, \"holes\": [{\"center\": [0.5, 0], \"diameter\": 0.5}]}" 'contact.holes\[0\].diameter = 0.5: must be >= the mesh size over the hole \(contact.h = 0.8 mm\)' contact
-bad sweep_hole_below_mesh "$sphere, \"h\": 0.8, \"sweep\": {\"from\": [-1, 0], \"to\": [1, 0]}}" 'contact.sweep.hole_diameter = 0.5: must be >= the mesh size over the hole' defect
+bad sweep_hole_below_mesh "$sphere, \"h\": 0.8, \"sweep\": {\"from\": [-1, 0], \"to\": [1, 0], \"hole_model\": \"resolved\"}}" 'contact.sweep.hole_diameter = 0.5: must be >= the mesh size over the hole' defect
+bad sweep_bulge_soft_interface "$sphere, \"interface\": {\"law\": \"linear\", \"K\": 5}, \"sweep\": {\"from\": [-1, 0], \"to\": [1, 0], \"hole_model\": \"bulge\"}}" 'contact.sweep.hole_model = "bulge": is the hole.s solution under a hard interface; with "interface": \{"law": "linear"\} use "resolved"' defect
+bad sweep_hole_model_unknown "$sphere, \"sweep\": {\"from\": [-1, 0], \"to\": [1, 0], \"hole_model\": \"crack\"}}" 'contact.sweep.hole_model = "crack": must be one of "bulge", "resolved"' defect
 bad ridges_mesh_coarse 'd["geometry"]["ridges"] = {"period": 0.5, "height": 0.05, "center": [0, 0], "radius": 1, "h": 5}' 'geometry.ridges.h = 5: must be a number in \(0, period/3 = 0.166667 mm\]' mesh
 bad ridges_period_tiny 'd["geometry"]["ridges"] = {"period": 1e-6, "height": 0.05, "center": [0, 0], "radius": 1, "h": 0.2}' 'geometry.ridges.h = 0.2: must be a number in \(0, period/3' mesh
 

@@ -297,7 +297,8 @@ TEST(ContactFe, SweepMatchesColdSolves) {
   sweep.to = {1.0, 0};
   sweep.positions = 5;
   sweep.hole_diameter = 0.6;
-  const SweepResult sw = hole_sweep(*f.solver, f.mesh, sweep, FrictionMode::coupled);
+  sweep.model = HoleModel::resolved;
+  const SweepResult sw = hole_sweep(*f.solver, f.mesh, sweep, FrictionMode::coupled, nullptr);
   const ContactResult co = f.solver->solve(FrictionMode::coupled);
   for (int i = 0; i < sweep.positions; ++i) {
     const auto ex = excluded_by_holes(f.condensed->zone, f.mesh, {Hole{sw.centers[i], 0.6}});

@@ -351,6 +351,48 @@ TEST(ContactLcp, ExcludedMultipliersCarryNothingAndTheRestIsComplementary) {
   EXPECT_LE(diff / l_max, solve_tolerance(g.M, g.m, s.active, true));
 }
 
+// Bilateral multipliers (a small hole's bulge keeps the hole-free contact set, contact/hole_dimple.hpp):
+// held at zero gap with a free sign, the rest complementary. A dimple that opens the gaps of a few central
+// multipliers by far more than their pressure closes makes them pull (λ < 0) instead of lifting off; the
+// answer is the principal system of the bilateral set solved directly (second method).
+TEST(ContactLcp, BilateralMultipliersHoldZeroGapWithAFreeSign) {
+  const HalfSpace g = sphere_on_half_space(25, 0.08, kR, kEstar);
+  const int n = static_cast<int>(g.q.size());
+  const double F = 0.4;
+  const ContactLcp lcp(g.M, g.q, g.m);
+  const LcpSolution free = lcp.solve_force(F);
+  std::vector<char> bilateral(n, 0), out(n, 1);
+  for (int i : free.active) bilateral[i] = 1, out[i] = 0;
+  const std::vector<char> dimple = disc(g, 0.0, 0.0, 0.15);
+  VectorXd shift = VectorXd::Zero(n);
+  for (int i = 0; i < n; ++i)
+    if (dimple[i]) shift[i] = 20 * g.M(i, i) * free.lambda.maxCoeff();
+  const LcpSolution s = lcp.solve_force(F, out, free.active, shift, bilateral);
+  const double g_scale = g.q.cwiseAbs().maxCoeff() + std::abs(s.delta) * g.m.maxCoeff();
+  double worst_gap = 0;
+  for (int i : free.active) worst_gap = std::max(worst_gap, std::abs(s.gap[i]));
+  EXPECT_LE(worst_gap, 1e-12 * g_scale);
+  EXPECT_LT(s.lambda.minCoeff(), 0.0) << "the dimple's multipliers pull rather than lift off";
+  EXPECT_EQ(s.active, free.active);
+  // The principal system of the bilateral set, with force control.
+  const std::vector<int>& A = free.active;
+  const int k = static_cast<int>(A.size());
+  MatrixXd K = MatrixXd::Zero(k + 1, k + 1);
+  VectorXd b = VectorXd::Zero(k + 1);
+  for (int a = 0; a < k; ++a) {
+    for (int c = 0; c < k; ++c) K(a, c) = g.M(A[a], A[c]);
+    K(a, k) = -g.m[A[a]];
+    K(k, a) = g.m[A[a]];
+    b[a] = -(g.q[A[a]] + shift[A[a]]);
+  }
+  b[k] = F;
+  const VectorXd x = K.partialPivLu().solve(b);
+  double diff = 0;
+  for (int a = 0; a < k; ++a) diff = std::max(diff, std::abs(x[a] - s.lambda[A[a]]));
+  EXPECT_LE(diff / s.lambda.cwiseAbs().maxCoeff(), solve_tolerance(g.M, g.m, A, true));
+  EXPECT_NEAR(x[k], s.delta, 1e-10 * std::abs(s.delta));
+}
+
 // ---------------------------------------------------------------------------------------------------------
 // 4a. The discretised half-space tends to Hertz: a³ = 3FR/(4E*), p0 = 3F/(2πa²), δ = a²/R.
 TEST(ContactLcp, HalfSpaceSphereTendsToHertz) {

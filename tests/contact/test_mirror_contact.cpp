@@ -114,16 +114,22 @@ TEST(MirrorContact, HalfEqualsTheMirroredWholeInEveryFrictionModeWithHoles) {
                                  std::abs(ma.pressure_centroid[1])};
         for (double e : errors) worst = std::max(worst, e);
       }
-    // The sweep through the contact (its hole cutting the hats) and the small-hole signals, both through the
-    // whole view.
-    const HoleSweep sweep = test_sweep();
-    const SweepResult sa = hole_sweep(reduced, whole, sweep, FrictionMode::coupled),
-                      sb = hole_sweep(full, whole, sweep, FrictionMode::coupled);
-    worst = std::max(worst,
-                     (sa.varsigma - sb.varsigma).cwiseAbs().maxCoeff() / sb.varsigma.cwiseAbs().maxCoeff());
-    const Eigen::MatrixXd ha = small_hole_signals(reduced, FrictionMode::coupled, whole, top, sb.centers, 0.1,
+    // The sweep through the contact, its hole cutting the hats and as a bulge, both through the whole view.
+    HoleSweep sweep = test_sweep();
+    const HoleDimples da(reduced, whole, top, s.material.E, s.material.nu),
+        db(full, whole, top, s.material.E, s.material.nu);
+    for (HoleModel model : {HoleModel::resolved, HoleModel::bulge}) {
+      sweep.model = model;
+      const SweepResult sa = hole_sweep(reduced, whole, sweep, FrictionMode::coupled, &da),
+                        sb = hole_sweep(full, whole, sweep, FrictionMode::coupled, &db);
+      ASSERT_GT(sb.varsigma.cwiseAbs().maxCoeff(), 0);
+      worst = std::max(worst,
+                       (sa.varsigma - sb.varsigma).cwiseAbs().maxCoeff() / sb.varsigma.cwiseAbs().maxCoeff());
+    }
+    const std::vector<Vec2> centers = hole_sweep(full, whole, sweep, FrictionMode::coupled, &db).centers;
+    const Eigen::MatrixXd ha = small_hole_signals(reduced, FrictionMode::coupled, whole, top, centers, 0.1,
                                                   s.material.E, s.material.nu),
-                          hb = small_hole_signals(full, FrictionMode::coupled, whole, top, sb.centers, 0.1,
+                          hb = small_hole_signals(full, FrictionMode::coupled, whole, top, centers, 0.1,
                                                   s.material.E, s.material.nu);
     ASSERT_GT(hb.cwiseAbs().maxCoeff(), 0);
     worst = std::max(worst, (ha - hb).cwiseAbs().maxCoeff() / hb.cwiseAbs().maxCoeff());

@@ -734,6 +734,7 @@ TEST(SceneLoad, ContactDefaults) {
   EXPECT_EQ(e.contact->sweep->positions, 201);
   EXPECT_EQ(e.contact->sweep->hole_diameter, 0.5);
   EXPECT_EQ(e.contact->sweep->h, 0.0);  // no refinement along the path
+  EXPECT_EQ(e.contact->sweep->model, HoleModel::bulge);
 }
 
 // The automatic zone: 1.25 × Hertz under a force; 1.25 × 2 √(R δ), the thin incompressible layer's bound,
@@ -922,9 +923,23 @@ TEST(SceneLoad, ContactErrors) {
       "contact.holes[0].diameter = 0.5: must be >= the mesh size over the hole (contact.h = 0.8 mm)",
       "give contact.holes[0].h <= 0.5");
   EXPECT_SCENE_ERROR(
-      contact(kPlane + R"(, "h": 0.8, "sweep": {"from": [-1, 0], "to": [1, 0]})"),
+      contact(kPlane + R"(, "h": 0.8, "sweep": {"from": [-1, 0], "to": [1, 0], "hole_model": "resolved"})"),
       "contact.sweep.hole_diameter = 0.5: must be >= the mesh size over the hole (contact.h = 0.8",
       "give contact.sweep.h <= 0.5");
+  // A swept hole modelled as its bulge is not resolved by the mesh: no such rule.
+  EXPECT_NO_THROW(
+      parse_scene(contact(kPlane + R"(, "h": 0.8, "sweep": {"from": [-1, 0], "to": [1, 0]})"), kSource));
+  // The bulge is a hard interface's; through a compliant one the hole is resolved, unless told otherwise.
+  EXPECT_EQ(parse_scene(contact(kPlane + R"(, "interface": {"law": "linear", "K": 5}, "h": 0.4,
+                                "sweep": {"from": [-1, 0], "to": [1, 0]})"),
+                        kSource)
+                .contact->sweep->model,
+            HoleModel::resolved);
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "interface": {"law": "linear", "K": 5}, "h": 0.4,
+                                "sweep": {"from": [-1, 0], "to": [1, 0], "hole_model": "bulge"})"),
+                     "contact.sweep.hole_model = \"bulge\": is the hole's solution under a hard interface");
+  EXPECT_SCENE_ERROR(contact(kPlane + R"(, "sweep": {"from": [-1, 0], "to": [1, 0], "hole_model": "crack"})"),
+                     "contact.sweep.hole_model = \"crack\": must be one of \"bulge\", \"resolved\"");
   // Refined over the hole, it is accepted: the hole's own h (or the sweep's path h) is the size there.
   EXPECT_NO_THROW(
       parse_scene(contact(kPlane + R"(, "h": 0.8, "holes": [{"center": [0.5, 0], "diameter": 0.5, "h": 0.25}],
