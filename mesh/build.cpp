@@ -96,8 +96,19 @@ namespace {
 void snap_to_surface(LinearTets& lin, const SkinShape& shape, const std::vector<Circle>& posts,
                      double post_height) {
   Eigen::VectorXi marker = Eigen::VectorXi::Zero(lin.points.rows());
-  for (int f = 0; f < lin.faces.rows(); ++f)
+  // Points on a post's wall (its rim included): on a post face that is not the flat top. A point inside the
+  // top near the rim is not one, however close: moved onto the cylinder it could land on a rim point (on
+  // the cut of a half post, TetGen's points along the top's diameter end at the rim's exact ends).
+  std::vector<char> on_wall(lin.points.rows(), 0);
+  for (int f = 0; f < lin.faces.rows(); ++f) {
     for (int k = 0; k < 3; ++k) marker(lin.faces(f, k)) |= lin.face_marker(f);
+    if (!(lin.face_marker(f) & kPost)) continue;
+    double lo = 1e300, hi = -1e300;
+    for (int k = 0; k < 3; ++k)
+      lo = std::min(lo, lin.points(lin.faces(f, k), 2)), hi = std::max(hi, lin.points(lin.faces(f, k), 2));
+    if (hi - lo > 1e-9 * post_height)
+      for (int k = 0; k < 3; ++k) on_wall[lin.faces(f, k)] = 1;
+  }
   for (int i = 0; i < lin.points.rows(); ++i) {
     if (marker(i) & kSide) {
       const Vec3 q = shape.on_side({lin.points(i, 0), lin.points(i, 1), lin.points(i, 2)});
@@ -107,12 +118,10 @@ void snap_to_surface(LinearTets& lin, const SkinShape& shape, const std::vector<
     if (marker(i) & kTop) lin.points(i, 2) = shape.top_z(lin.points(i, 0), lin.points(i, 1));
     // TetGen's points on a post's wall or rim lie on the flat chords: onto the cylinder (not those inside its
     // top, which is flat).
-    if (marker(i) & kPost)
+    if (on_wall[i])
       for (const Circle& c : posts) {
         Eigen::Vector3d p = lin.points.row(i).transpose();
-        const double d = std::hypot(p.x() - c.centre[0], p.y() - c.centre[1]);
-        const bool wall = p.z() < post_height * (1 - 1e-9) && d < 1.5 * c.radius;
-        if (wall || std::abs(d - c.radius) < 0.05 * c.radius) {
+        if (std::hypot(p.x() - c.centre[0], p.y() - c.centre[1]) < 1.5 * c.radius) {
           onto_cylinder(c, p);
           lin.points.row(i) = p.transpose();
         }
