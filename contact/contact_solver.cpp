@@ -124,6 +124,19 @@ Eigen::VectorXd ContactSolver::readings(const Eigen::VectorXd& lambda, double ra
   return r;
 }
 
+ContactResult ContactSolver::started(FrictionMode mode) const {
+  ContactResult out;
+  out.mode = mode;
+  out.ratio = ratio(mode);
+  out.tau = shear(mode);
+  return out;
+}
+
+double ContactSolver::solved_ratio(FrictionMode mode) const {
+  // The pressure is solved with the traction acting, except in the uncoupled mode.
+  return mode == FrictionMode::uncoupled ? 0.0 : ratio(mode);
+}
+
 double ContactSolver::ratio(FrictionMode mode) const {
   switch (mode) {
     case FrictionMode::none:
@@ -181,7 +194,7 @@ ContactLcp& ContactSolver::lcp(double ratio) const {
 }
 
 void ContactSolver::set_reference(FrictionMode mode, const std::vector<int>& active) const {
-  lcp(mode == FrictionMode::uncoupled ? 0.0 : ratio(mode)).set_reference(solved_set(active));
+  lcp(solved_ratio(mode)).set_reference(solved_set(active));
 }
 
 ContactResult ContactSolver::solve(FrictionMode mode, const std::vector<char>& excluded,
@@ -189,13 +202,8 @@ ContactResult ContactSolver::solve(FrictionMode mode, const std::vector<char>& e
   if (covered.size() && covered.size() != zone().size())
     throw std::invalid_argument("ContactSolver::solve: covered has " + std::to_string(covered.size()) +
                                 " values for " + std::to_string(zone().size()) + " multipliers");
-  ContactResult out;
-  out.mode = mode;
-  out.ratio = ratio(mode);
-  out.tau = shear(mode);
-  // The pressure is solved with the traction acting, except in the uncoupled mode.
-  const double solved_ratio = mode == FrictionMode::uncoupled ? 0.0 : out.ratio;
-  const ContactLcp& problem = lcp(solved_ratio);
+  ContactResult out = started(mode);
+  const ContactLcp& problem = lcp(solved_ratio(mode));
   // Under a mirror view the half carries half the force; flags and warm starts move to its multipliers.
   std::vector<char> half_excluded;
   if (mirror_ && !excluded.empty()) {
@@ -322,11 +330,8 @@ ContactResult ContactSolver::solve(FrictionMode mode, const std::vector<char>& e
 ContactResult ContactSolver::solve(FrictionMode mode, const HoleCut& cut,
                                    const std::vector<int>& warm) const {
   const int n = c_.zone.size();
-  ContactResult out;
-  out.mode = mode;
-  out.ratio = ratio(mode);
-  out.tau = shear(mode);
-  const double solved_ratio = mode == FrictionMode::uncoupled ? 0.0 : out.ratio;
+  ContactResult out = started(mode);
+  const double acting = solved_ratio(mode);
   const CutProblem cp = cut_problem(c_, cut, out.ratio != 0 || out.tau != 0);
   const Eigen::VectorXd& area = cp.area;
   const Eigen::VectorXd& q = cp.gap0;
@@ -352,10 +357,10 @@ ContactResult ContactSolver::solve(FrictionMode mode, const HoleCut& cut,
   // The hole-free matrix (C_zz + ratio C_zt + the interface's closure) with the rows and columns T replaced:
   // everything else is bit for bit the stored problem's, so it is solved on its reference factorization
   // with T removed and re-added (ContactLcp::solve_changed; hole_sweep sets the reference).
-  const ContactLcp& base = lcp(solved_ratio);
-  Eigen::MatrixXd M2 = solved_ratio != 0 ? patched(base.matrix(), T, cp.zz + solved_ratio * cp.zt_rows,
-                                                   cp.zz + solved_ratio * cp.zt_cols)
-                                         : patched(base.matrix(), T, cp.zz, cp.zz);
+  const ContactLcp& base = lcp(acting);
+  Eigen::MatrixXd M2 =
+      acting != 0 ? patched(base.matrix(), T, cp.zz + acting * cp.zt_rows, cp.zz + acting * cp.zt_cols)
+                  : patched(base.matrix(), T, cp.zz, cp.zz);
   std::vector<char> dirty(n, 0);
   for (int a = 0; a < t; ++a) {
     if (load_.interface.law == InterfaceLaw::linear) M2(T[a], T[a]) += area[T[a]] / load_.interface.K;
@@ -418,12 +423,8 @@ ContactResult ContactSolver::solve(FrictionMode mode, const HoleDimple& dimple) 
   if (load_.interface.law != InterfaceLaw::hard)
     throw std::invalid_argument(
         "ContactSolver::solve: the bulge is a hole's solution under a hard interface");
-  ContactResult out;
-  out.mode = mode;
-  out.ratio = ratio(mode);
-  out.tau = shear(mode);
-  const double solved_ratio = mode == FrictionMode::uncoupled ? 0.0 : out.ratio;
-  const ContactLcp& problem = lcp(solved_ratio);
+  ContactResult out = started(mode);
+  const ContactLcp& problem = lcp(solved_ratio(mode));
   Eigen::VectorXd shift = dimple.opening, shear_solved;
   if (out.tau != 0) {
     // The shear on the hole-free contact of this mode minus the hole (as for a cut hole).

@@ -140,6 +140,10 @@ class ContactSolver {
 
  private:
   ContactLcp& lcp(double ratio) const;
+  // A result with its mode, Coulomb ratio and shear strength set.
+  ContactResult started(FrictionMode mode) const;
+  // The Coulomb ratio acting while the pressure is solved: none in the uncoupled mode.
+  double solved_ratio(FrictionMode mode) const;
   // The result's common tail: depth, diagnostics, and λ, gaps and active set seen whole.
   void finish(ContactResult& out, const LcpSolution& s, const Eigen::VectorXd& gap,
               const std::vector<char>& excluded) const;

@@ -9,6 +9,12 @@
 
 namespace skinfem::contact {
 
+double largest_varsigma_z(const Eigen::MatrixXd& varsigma) {
+  double peak = 0;
+  for (int j = 0; j < varsigma.cols(); j += 2) peak = std::max(peak, varsigma.col(j).cwiseAbs().maxCoeff());
+  return peak;
+}
+
 SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const HoleSweep& sweep,
                        FrictionMode mode, const HoleDimples* dimples,
                        const std::function<void(int, const ContactResult&)>& frame) {

@@ -23,6 +23,9 @@ struct SweepResult {
   double seconds = 0;
 };
 
+// The largest |ς_z| over sensors and positions of a sweep's varsigma (MPa).
+double largest_varsigma_z(const Eigen::MatrixXd& varsigma);
+
 // The hole per sweep.model: HoleModel::bulge through `dimples` (required then; contact/hole_dimple.hpp),
 // resolved by cutting the hats (needs solver.condensed().path, contact/hole_cut.hpp; without a path, by
 // removing the multipliers whose vertex it holds). frame(i, result) is called after each position (to write

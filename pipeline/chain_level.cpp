@@ -51,9 +51,7 @@ ChainLevel chain_values(const Scene& s, const AdjointSetup& adj, const ContactSe
       const contact::HoleDimples dimples(*c->solver, c->mesh(), *c->top, s.material.E, s.material.nu);
       const contact::SweepResult sw =
           contact::hole_sweep(*c->solver, c->mesh(), *s.contact->sweep, FrictionMode::coupled, &dimples);
-      double peak = 0;
-      for (int j = 0; j < sw.varsigma.cols(); j += 2)
-        peak = std::max(peak, sw.varsigma.col(j).cwiseAbs().maxCoeff());
+      const double peak = contact::largest_varsigma_z(sw.varsigma);
       add("hole_signal", peak, t_contact + clock.seconds());
       l.wall["sweep"] = clock.seconds();
     }

@@ -20,12 +20,6 @@ void require_sweep(const Scene& scene) {
 namespace {
 constexpr const char* kLargest = "largest_sliding_varsigma_z";
 
-double largest_z(const Eigen::MatrixXd& varsigma) {
-  double peak = 0;
-  for (int j = 0; j < varsigma.cols(); j += 2) peak = std::max(peak, varsigma.col(j).cwiseAbs().maxCoeff());
-  return peak;
-}
-
 ChainLevel sliding_level(const Scene& s, double scale) {
   Stopwatch clock;
   const auto c = contact_setup(s, skin_setup(s, contact_mesh_part(s)));
@@ -36,7 +30,7 @@ ChainLevel sliding_level(const Scene& s, double scale) {
   l.scale = scale;
   l.dofs = c->model->solver().free_dofs();
   l.names = {kLargest};
-  l.value = {largest_z(sw.varsigma)};
+  l.value = {contact::largest_varsigma_z(sw.varsigma)};
   l.seconds = {clock.seconds()};
   l.peak_rss_mb = peak_rss_mb();
   return l;
@@ -111,7 +105,7 @@ DefectRun defect_run(const Scene& scene, std::shared_ptr<const ContactSetup> sha
     ChainLevel own;
     own.dofs = setup.model->solver().free_dofs();
     own.names = {kLargest};
-    own.value = {largest_z(run.sweeps.back().varsigma)};
+    own.value = {contact::largest_varsigma_z(run.sweeps.back().varsigma)};
     own.seconds = {total_seconds(run.wall) - seconds};
     own.peak_rss_mb = peak_rss_mb();
     run.levels.push_back(own);
