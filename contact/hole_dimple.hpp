@@ -17,7 +17,7 @@
 // self-consistently, the default scene's peaks came out 35–40 % lower, an artefact of that feedback).
 // The next terms are of relative order (ε/d)² for a sensor at distance d and (ε/ℓ)² with ℓ the length over
 // which p varies (at the contact's edge ℓ → 0: there the local solution is not the crack's; measured against
-// the resolved hole, tests/contact/test_hole_dimple.cpp).
+// the resolved hole, tests/contact/test_hole.cpp).
 #pragma once
 
 #include <Eigen/Dense>
@@ -38,8 +38,6 @@ class HoleDimples {
   // solved problem: under a mirror view each half row sees ½ the openings of the whole multipliers it
   // stands for (ContactSolver::opening_share).
   HoleDimple operator()(const Hole& hole, const Eigen::VectorXd& pressure) const;
-  // Bulge volume per unit uniform pressure, 8(1 − ν²) ε³ / (3E), mm³/MPa.
-  double volume_per_pressure(double diameter) const;
 
  private:
   const ContactSolver& solver_;
