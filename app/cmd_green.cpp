@@ -74,7 +74,7 @@ nlohmann::json green_stage(const Scene& scene, const SensorGreens& greens, const
     std::printf("  reciprocity check (direct solve vs adjoint, sensor 1, offset 1 mm): %.1e relative\n",
                 *run.reciprocity_rel);
   if (run.meridian_check) std::printf("  %s\n", meridian_check_line(*run.meridian_check).c_str());
-  if (run.flat && !run.ridged) {
+  if (run.flat && !run.ridged && !run.post) {
     double worst = 0;
     for (const GreenScan& scan : run.scans)
       for (double e : *scan.disc_max_diff_over_peak) worst = std::max(worst, e);

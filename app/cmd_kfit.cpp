@@ -52,9 +52,14 @@ StageOutput<KfitResult> kfit_stage(const Scene& scene, const SensorGreens& green
   if (first.exact) {
     const auto& d = first.disc_max_diff_over_peak;
     std::printf(" (%s: %.5f, %.5f); %s max |difference| / peak: zz %.1e zx %.1e xz %.1e xx %.1e",
-                r.ridged ? "the smooth exact layer of equal mean thickness" : "exact layer",
+                r.ridged ? "the smooth exact layer of equal mean thickness"
+                : r.post ? "the exact layer's disc reading"
+                         : "exact layer",
                 first.exact->k_central, first.exact->k_lsq_line,
-                r.ridged ? "ridged vs smooth readings," : "FE vs exact,", d[0], d[1], d[2], d[3]);
+                r.ridged ? "ridged vs smooth readings,"
+                : r.post ? "post vs disc readings,"
+                         : "FE vs exact,",
+                d[0], d[1], d[2], d[3]);
   }
   std::printf("\n  %s\n", r.verdict.c_str());
   if (r.sensors.size() > 1)

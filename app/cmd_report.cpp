@@ -209,6 +209,8 @@ struct IndexInput {
   const std::vector<ChainLevel>* levels = nullptr;  // the error bars' levels, coarse to fine
   std::map<std::string, double> exponents;          // time ∝ DOFs^e per stage
   const validation::Crosscheck* x = nullptr;
+  const pipeline::PostDesign* post = nullptr;  // what a post changes, when the skin has an axis
+  std::string post_answer;
 };
 
 void write_index(const std::string& dir, const Scene& scene, const IndexInput& in) {
@@ -272,6 +274,42 @@ void write_index(const std::string& dir, const Scene& scene, const IndexInput& i
   h << "</table>\n";
   h << "<h2>k</h2><p>" << html_escape(in.kfit_verdict) << "</p>\n<p>" << html_escape(in.k_paper_answer)
     << " (<a href=\"kfit/k_sweep.csv\">kfit/k_sweep.csv</a>)</p>\n";
+  if (const pipeline::PostDesign* p = in.post) {
+    h << "<h2>What a post changes: the paper's sensor against a disc</h2><p>" << html_escape(in.post_answer)
+      << " A post reads the force on it over its cross-section; the gain is the reading under a unit uniform "
+         "pressure (g_zz) or shear (g_xx) on the whole top, 1 for a base traction on an unbounded "
+         "layer.</p>\n"
+         "<table><tr><th>sensor</th><th>diameter mm</th><th>height mm</th><th>g_zz peak /mm²</th><th>half "
+         "width mm</th><th>gain</th><th>g_xx peak /mm²</th><th>at mm</th><th>half width mm</th><th>gain</th>"
+         "<th>mesh change %</th></tr>\n";
+    const auto row = [&h](const std::string& name, const pipeline::SensorDesign& d) {
+      h << "<tr><td style=\"text-align:left\">" << name << "</td><td>" << fmt("%g", d.diameter) << "</td><td>"
+        << fmt("%g", d.height) << "</td><td>" << fmt("%.4g", d.zz.peak) << "</td><td>"
+        << fmt("%.3f", d.zz.half_width) << "</td><td>" << fmt("%.3f", d.zz.integral) << "</td><td>"
+        << fmt("%.4g", d.xx.peak) << "</td><td>" << fmt("%.2f", d.xx.peak_at) << "</td><td>"
+        << fmt("%.3f", d.xx.half_width) << "</td><td>" << fmt("%.3f", d.xx.integral) << "</td><td>"
+        << fmt("%.2g", 100 * std::max({d.peak_change, d.half_width_change, d.integral_change}))
+        << "</td></tr>\n";
+    };
+    row("disc", p->disc);
+    row("post", p->post);
+    h << "</table>\n<p>Design sweep (mesh scale " << fmt("%g", p->sweep_scale)
+      << "; height 0 is the disc): gain of g_zz, and its half width in mm.</p><table><tr><th>diameter "
+         "mm</th>";
+    std::vector<double> heights;
+    for (const auto& d : p->sweep)
+      if (std::find(heights.begin(), heights.end(), d.height) == heights.end()) heights.push_back(d.height);
+    for (double t : heights) h << "<th>t = " << fmt("%g", t) << " mm</th>";
+    h << "</tr>\n";
+    for (size_t i = 0; i < p->sweep.size(); i += heights.size()) {
+      h << "<tr><td>" << fmt("%g", p->sweep[i].diameter) << "</td>";
+      for (size_t j = 0; j < heights.size(); ++j)
+        h << "<td>" << fmt("%.3f", p->sweep[i + j].zz.integral) << " / "
+          << fmt("%.3f", p->sweep[i + j].zz.half_width) << "</td>";
+      h << "</tr>\n";
+    }
+    h << "</table><p>Every design: <a href=\"green/post_design.csv\">green/post_design.csv</a>.</p>\n";
+  }
   if (in.front)
     h << "<h2>Does friction-pressure coupling explain the front sensors?</h2><p>"
       << html_escape(in.front->answer) << "</p>\n";
@@ -386,9 +424,9 @@ void write_index(const std::string& dir, const Scene& scene, const IndexInput& i
   for (const char* f :
        {"mesh/mesh.vtu", "mesh/boundary.vtu", "green/green_maps.vtp", "green/green.csv", "kfit/kfit.json",
         "contact/pressure.vtp", "contact/fields.vtu", "contact/modes.csv", "defect/defect.pvd",
-        "defect/defect.csv", "crosscheck/readings.csv", "crosscheck/defect.csv", "crosscheck/pressure.csv",
-        "crosscheck/attribution.csv", "crosscheck/hole_budget.csv", "crosscheck/hole_budget_signals.csv",
-        "study/chain_study.csv", "report.json"})
+        "green/post_design.csv", "defect/defect.csv", "crosscheck/readings.csv", "crosscheck/defect.csv",
+        "crosscheck/pressure.csv", "crosscheck/attribution.csv", "crosscheck/hole_budget.csv",
+        "crosscheck/hole_budget_signals.csv", "study/chain_study.csv", "report.json"})
     if (fs::exists(dir + "/" + f)) h << "<li><a href=\"" << f << "\">" << f << "</a></li>\n";
   h << "</ul></body></html>\n";
   write_text_atomic(dir + "/index.html", h.str());
@@ -491,6 +529,15 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
   index.k_paper_answer =
       k_paper_answer(scene, headline.h_mm, mesh_rows, out_dir + "/kfit", report["k_paper"]).answer;
   wall["k_sweep"] = clock.seconds();
+
+  clock = Stopwatch();
+  auto post = post_design_stage(scene, out_dir + "/green");
+  report["post_design"] = post.summary;
+  if (post.summary.contains("answer")) {
+    index.post = &post.result;
+    index.post_answer = post.summary["answer"];
+  }
+  wall["post_design"] = clock.seconds();
 
   clock = Stopwatch();
   const std::string script = figures_script();

@@ -15,6 +15,7 @@
 #include "pipeline/defect.hpp"
 #include "pipeline/hole_budget.hpp"
 #include "pipeline/kfit.hpp"
+#include "pipeline/post_design.hpp"
 #include "pipeline/sensor_greens.hpp"
 #include "validation/crosscheck.hpp"
 
@@ -48,5 +49,10 @@ StageOutput<pipeline::HoleBudget> hole_budget_stage(const Scene& scene, const Co
                                                     const validation::Crosscheck& x,
                                                     const std::string& out_dir,
                                                     const Eigen::VectorXd& reading_scale = {});
+
+// What a post changes (app/post_design_stage.cpp): a post against a disc at the skin's axis and a sweep of
+// post height and diameter, on the meridian; writes out_dir/post_design.csv. A skin without an axis returns
+// {"skipped": why}.
+StageOutput<pipeline::PostDesign> post_design_stage(const Scene& scene, const std::string& out_dir);
 
 }  // namespace skinfem::app

@@ -73,6 +73,86 @@ MeridianMesh meridian_mesh(const std::function<double(double)>& top, double radi
 }
 
 namespace {
+// Points 0 = x_0 < … < x_n = L whose cells start at c0 at 0 and at c1 at L and grow by `growth` per cell away
+// from either end (a cell at distance d from an end with first cell c is about c + (growth − 1)·d), capped at
+// cap. The last cell takes what is left: between half and one and a half of its size.
+std::vector<double> graded(double L, double c0, double c1, double growth, double cap) {
+  std::vector<double> x{0};
+  const auto cell = [&](double p) {
+    return std::min({cap, c0 + (growth - 1) * p, c1 + (growth - 1) * std::max(0.0, L - p)});
+  };
+  while (x.back() + 1.5 * cell(x.back()) < L) x.push_back(x.back() + cell(x.back()));
+  x.push_back(L);
+  return x;
+}
+}  // namespace
+
+MeridianMesh meridian_mesh(const std::function<double(double)>& top, double radius, const MeridianSizes& z,
+                           const MeridianPost& post) {
+  const double a = post.radius, H = post.height, T0 = top(0) - H;
+  if (!(a > 0) || !(a < radius) || !(H > 0) || !(T0 > 0) || !(top(radius) > H) || !(z.axis_cell > 0) ||
+      !(z.growth >= 1) || !(z.max_cell > 0) || z.layers < 1 || post.rim_cell < 0)
+    throw std::invalid_argument(
+        "meridian_mesh: need 0 < post radius < radius, 0 < post height < top, cells > 0, growth >= 1");
+  const double rim = post.rim_cell > 0 ? post.rim_cell : z.axis_cell / 8;
+  // Radial vertex rows: inside the post's radius (above its top) and beyond it, fine at the rim.
+  std::vector<double> rows = graded(a, z.axis_cell, rim, z.growth, z.axis_cell);
+  const int ia = static_cast<int>(rows.size()) - 1;  // the row at r = a
+  for (double r : graded(radius - a, rim, z.max_cell, z.growth, z.max_cell))
+    if (r > 0) rows.push_back(a + r);
+  // Heights beside the post (fine at its foot and top) and the fractions τ above its top (fine at the post,
+  // at the top as the layer grading's end cells, top(0)/(2·layers)).
+  const std::vector<double> low = graded(H, rim, rim, z.growth, z.axis_cell);
+  std::vector<double> tau = graded(T0, rim, top(0) / (2 * z.layers), z.growth, 1.5 * top(0) / z.layers);
+  for (double& t : tau) t /= T0;
+  const int nr = static_cast<int>(rows.size()) - 1, n1 = static_cast<int>(low.size()) - 1;
+  const int nz = n1 + static_cast<int>(tau.size()) - 1;
+  const int ni = 2 * nr + 1, nj = 2 * nz + 1;  // the P2 node grid
+  const auto exists = [&](int i, int j) { return i >= 2 * ia || j >= 2 * n1; };
+  const auto half = [](const std::vector<double>& v, int k) {
+    return k % 2 == 0 ? v[k / 2] : 0.5 * (v[k / 2] + v[k / 2 + 1]);
+  };
+  MeridianMesh m;
+  m.post_radius = a, m.post_height = H;
+  std::vector<int> id(ni * nj, -1);
+  int count[2] = {0, 0};
+  for (int i = 0; i < ni; ++i)
+    for (int j = 0; j < nj; ++j)
+      if (exists(i, j)) ++count[i % 2 == 0 && j % 2 == 0 ? 0 : 1];
+  m.num_vertices = count[0];
+  m.nodes.resize(count[0] + count[1], 2);
+  int next_vertex = 0, next_mid = m.num_vertices;
+  for (int i = 0; i < ni; ++i)
+    for (int j = 0; j < nj; ++j) {
+      if (!exists(i, j)) continue;
+      const int k = (i % 2 == 0 && j % 2 == 0) ? next_vertex++ : next_mid++;
+      id[i * nj + j] = k;
+      const double r = half(rows, i);
+      m.nodes(k, 0) = r;
+      m.nodes(k, 1) = j <= 2 * n1 ? half(low, j) : H + (top(r) - H) * half(tau, j - 2 * n1);
+    }
+  const auto at = [&](int i, int j) { return id[i * nj + j]; };
+  m.tris.resize(2 * (nr * nz - ia * n1), 6);
+  int t = 0;
+  for (int c = 0; c < nr; ++c)
+    for (int b = 0; b < nz; ++b) {
+      if (c < ia && b < n1) continue;  // inside the post
+      const int i = 2 * c, j = 2 * b;
+      m.tris.row(t++) << at(i, j), at(i + 2, j), at(i + 2, j + 2), at(i + 1, j), at(i + 2, j + 1),
+          at(i + 1, j + 1);
+      m.tris.row(t++) << at(i, j), at(i + 2, j + 2), at(i, j + 2), at(i + 1, j + 1), at(i + 1, j + 2),
+          at(i, j + 1);
+    }
+  for (int i = 2 * ia + 1; i < ni; ++i) m.base.push_back(at(i, 0));
+  for (int j = 0; j <= 2 * n1; ++j) m.post.push_back(at(2 * ia, j));
+  for (int i = 2 * ia - 1; i >= 0; --i) m.post.push_back(at(i, 2 * n1));
+  for (int i = 0; i < ni; ++i) m.top.push_back(at(i, nj - 1));
+  for (int j = 2 * n1; j < nj; ++j) m.axis.push_back(at(0, j));
+  for (int j = 0; j < nj; ++j) m.side.push_back(at(ni - 1, j));
+  return m;
+}
+
+namespace {
 // 1D P2 Lagrange basis on u ∈ [0, 1] with nodes 0, 1/2, 1 (as ordered along an edge: end, middle, end), and
 // its derivative.
 void p2_line(double u, double L[3], double dL[3]) {
@@ -97,9 +177,9 @@ double edge_u(double r0, double r1, double r2, double rho) {
 }
 
 // One Fourier mode's adjoint solves: (U, V, W) at the top nodes for each column of w. mode 0: u_r = U, u_z =
-// W (V = 0); mode 1: u_r = U cos θ, u_θ = V sin θ, u_z = W cos θ, p = P cos θ. w (base nodes × readings): the
-// readings' base weights, imposed as the base displacement (mode 0: W = −w; mode 1: U = w, V = −w, the x
-// displacement w).
+// W (V = 0); mode 1: u_r = U cos θ, u_θ = V sin θ, u_z = W cos θ, p = P cos θ. w (held nodes × readings):
+// the readings' weights on the held nodes (the base and a post's wall and top), imposed as their
+// displacement (mode 0: W = −w; mode 1: U = w, V = −w, the x displacement w).
 struct ModeField {
   std::vector<std::vector<double>> U, V, W;  // per reading
   int dofs = 0;
@@ -109,8 +189,8 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-ModeField solve_mode(const MeridianMesh& m, double nu, SideCondition side, int mode, const Eigen::MatrixXd& w,
-                     MeridianGreen::Cost& cost) {
+ModeField solve_mode(const MeridianMesh& m, const std::vector<int>& held, double nu, SideCondition side,
+                     int mode, const Eigen::MatrixXd& w, MeridianGreen::Cost& cost) {
   auto clock = std::chrono::steady_clock::now();
   const int n = static_cast<int>(m.nodes.rows()), nc = mode == 0 ? 2 : 3;  // displacement components
   const int ndof = nc * n + m.num_vertices, nread = static_cast<int>(w.cols());
@@ -119,21 +199,21 @@ ModeField solve_mode(const MeridianMesh& m, double nu, SideCondition side, int m
   const double mu = 1, theta = mode == 0 ? 2 * M_PI : M_PI;  // ∫ cos² nθ dθ
   const double inv_lambda = nu >= 0.5 ? 0 : (1 - 2 * nu) / (2 * mu * nu);
 
-  // Constraints. Base: every component prescribed; a held side: every component zero. Axis: mode 0 U = 0;
-  // mode 1 W = 0, P = 0 and U + V = 0 (the displacement single-valued there), V tied to −U.
+  // Constraints. Held nodes: every component prescribed; a held side: every component zero. Axis: mode 0 U =
+  // 0; mode 1 W = 0, P = 0 and U + V = 0 (the displacement single-valued there), V tied to −U.
   std::vector<char> fixed(ndof, 0);
   Eigen::MatrixXd value = Eigen::MatrixXd::Zero(ndof, nread);
   std::vector<int> tie(ndof, -1);
   if (side == SideCondition::fixed)
     for (int k : m.side)
       for (int c = 0; c < nc; ++c) fixed[comp(k, c)] = 1;
-  for (size_t s = 0; s < m.base.size(); ++s) {
-    for (int c = 0; c < nc; ++c) fixed[comp(m.base[s], c)] = 1;
+  for (size_t s = 0; s < held.size(); ++s) {
+    for (int c = 0; c < nc; ++c) fixed[comp(held[s], c)] = 1;
     if (mode == 0) {
-      value.row(comp(m.base[s], cW)) = -w.row(s);
+      value.row(comp(held[s], cW)) = -w.row(s);
     } else {
-      value.row(comp(m.base[s], 0)) = w.row(s);
-      value.row(comp(m.base[s], 1)) = -w.row(s);
+      value.row(comp(held[s], 0)) = w.row(s);
+      value.row(comp(held[s], 1)) = -w.row(s);
     }
   }
   for (int k : m.axis) {
@@ -242,28 +322,22 @@ ModeField solve_mode(const MeridianMesh& m, double nu, SideCondition side, int m
   cost.solve_s += seconds_since(clock);
   return f;
 }
-}  // namespace
-
-MeridianGreen::MeridianGreen(const MeridianMesh& m, double nu, SideCondition side,
-                             const ReadingSite& sensor) {
-  if (!sensor.axisymmetric())
-    throw std::invalid_argument("the meridian path reads only sensors that are bodies of revolution");
-  if (sensor.post()) throw std::invalid_argument("the meridian path has no post sensor model yet");
-  const double disc_radius = 0.5 * sensor.diameter;
-  // The readings' base weights w = M⁻¹ b: M the base trace's mass matrix (weight 2πr), P2 along r; b = e_axis
-  // for the point value, b_i = ∫_disc φ_i dA / (π a²) for the disc mean. The same M serves x readings: a
-  // traction τ(r) e_x has |e_x|² = 1 at every angle.
+// The base weights of the point value at the axis and, for disc_radius > 0, of the disc mean: w = M⁻¹ b (base
+// nodes × readings), M the base trace's mass matrix (weight 2πr), P2 along r; b = e_axis for the point value,
+// b_i = ∫_disc φ_i dA / (π a²) for the disc mean. The same M serves x readings: a traction τ(r) e_x has
+// |e_x|² = 1 at every angle.
+Eigen::MatrixXd disc_weights(const MeridianMesh& m, double disc_radius) {
   const int nb = static_cast<int>(m.base.size());
-  has_disc_ = disc_radius > 0;
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(nb, nb), b = Eigen::MatrixXd::Zero(nb, has_disc_ ? 2 : 1);
+  const bool has_disc = disc_radius > 0;
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(nb, nb), b = Eigen::MatrixXd::Zero(nb, has_disc ? 2 : 1);
   b(0, 0) = 1;
   const GaussRule1d g = gauss_legendre01(4);  // P2 × P2 × r: degree 5
   for (int s = 0; s + 2 < nb; s += 2) {
     const double r0 = m.nodes(m.base[s], 0), r1 = m.nodes(m.base[s + 1], 0), r2 = m.nodes(m.base[s + 2], 0);
     // The part of the edge inside the disc: u ∈ [0, u_disc].
-    const double u_disc = !has_disc_ || r0 >= disc_radius ? 0
-                          : r2 <= disc_radius             ? 1
-                                                          : edge_u(r0, r1, r2, disc_radius);
+    const double u_disc = !has_disc || r0 >= disc_radius ? 0
+                          : r2 <= disc_radius            ? 1
+                                                         : edge_u(r0, r1, r2, disc_radius);
     for (size_t k = 0; k < g.x.size(); ++k)
       for (int part = 0; part < 2; ++part) {
         const double u = part == 0 ? g.x[k] : u_disc * g.x[k], wk = part == 0 ? g.w[k] : u_disc * g.w[k];
@@ -277,10 +351,34 @@ MeridianGreen::MeridianGreen(const MeridianMesh& m, double nu, SideCondition sid
         }
       }
   }
-  const Eigen::MatrixXd w = M.ldlt().solve(b);
+  return M.ldlt().solve(b);
+}
+}  // namespace
+
+MeridianGreen::MeridianGreen(const MeridianMesh& m, double nu, SideCondition side,
+                             const ReadingSite& sensor) {
+  if (!sensor.axisymmetric())
+    throw std::invalid_argument("the meridian path reads only sensors that are bodies of revolution");
+  std::vector<int> held = m.base;
+  Eigen::MatrixXd w;
+  if (sensor.post()) {
+    // The force on the post over its cross-section: weight 1/(πa²) on every post node, none on the base.
+    const double a = 0.5 * sensor.diameter;
+    if (m.post.empty() || std::abs(m.post_radius - a) > 1e-12 * a ||
+        std::abs(m.post_height - sensor.post_height) > 1e-12 * sensor.post_height)
+      throw std::invalid_argument("MeridianGreen: the meridian mesh does not have this post cut out");
+    held.insert(held.end(), m.post.begin(), m.post.end());
+    w = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(held.size()), 1);
+    w.bottomRows(static_cast<Eigen::Index>(m.post.size())).setConstant(1 / (M_PI * a * a));
+  } else {
+    if (!m.post.empty())
+      throw std::invalid_argument("MeridianGreen: a disc sensor on a meridian cut for a post");
+    w = disc_weights(m, 0.5 * sensor.diameter);
+  }
   // σ_z = t_z (the base's traction on the skin, whose outward normal is −e_z): impose −w along z. σ_x = −t_x:
   // impose +w along x.
-  const ModeField z = solve_mode(m, nu, side, 0, w, cost_), x = solve_mode(m, nu, side, 1, w, cost_);
+  const ModeField z = solve_mode(m, held, nu, side, 0, w, cost_),
+                  x = solve_mode(m, held, nu, side, 1, w, cost_);
   dofs_ = z.dofs + x.dofs;
   for (size_t i = 0; i < m.top.size(); ++i) r_.push_back(m.nodes(m.top[i], 0));
   // Reciprocity (green/fe_green.hpp): g_ab(X) = f_a·y_b(X), f_z = −e_z (pressing), f_x = +e_x.
@@ -289,6 +387,9 @@ MeridianGreen::MeridianGreen(const MeridianMesh& m, double nu, SideCondition sid
     f.zz = z.W[c], f.u0 = z.U[c], f.w1 = x.W[c], f.u1 = x.U[c], f.v1 = x.V[c];
     for (double& v : f.zz) v = -v;
   }
+  // A post has no centre value: both readings are the post's.
+  if (sensor.post()) maps_[1] = maps_[0];
+  has_disc_ = w.cols() == 2 || sensor.post();
 }
 
 double MeridianGreen::interpolate(const std::vector<double>& f, double rho) const {
@@ -327,6 +428,57 @@ green::GreenSample MeridianGreen::at(bool disc, double x, double y, green::Layer
     v.zz += q[2] * p.zz, v.zx += q[2] * p.zx, v.xz += q[2] * p.xz, v.xx += q[2] * p.xx;
   }
   return v;
+}
+
+MeridianGreen::Shape MeridianGreen::shape(const std::vector<double>& along_x,
+                                          const std::vector<double>& integrand, double angular) const {
+  // Each top edge sampled at its Gauss points (integral) and at 16 even steps of its parameter (peak, half
+  // width; the map is quadratic in the parameter, so the steps resolve its maximum to O(1/16²) of the edge's
+  // variation).
+  Shape s;
+  const GaussRule1d g = gauss_legendre01(4);
+  std::vector<std::pair<double, double>> samples;  // (ρ, g)
+  for (size_t e = 0; e + 2 < r_.size(); e += 2) {
+    double L[3], dL[3];
+    for (size_t k = 0; k < g.x.size(); ++k) {
+      p2_line(g.x[k], L, dL);
+      const double r = L[0] * r_[e] + L[1] * r_[e + 1] + L[2] * r_[e + 2];
+      const double drdu = dL[0] * r_[e] + dL[1] * r_[e + 1] + dL[2] * r_[e + 2];
+      const double f = L[0] * integrand[e] + L[1] * integrand[e + 1] + L[2] * integrand[e + 2];
+      s.integral += angular * g.w[k] * f * r * drdu;
+    }
+    for (int k = 0; k < 16; ++k) {
+      p2_line(k / 16.0, L, dL);
+      samples.push_back({L[0] * r_[e] + L[1] * r_[e + 1] + L[2] * r_[e + 2],
+                         L[0] * along_x[e] + L[1] * along_x[e + 1] + L[2] * along_x[e + 2]});
+    }
+  }
+  samples.push_back({r_.back(), along_x.back()});
+  for (const auto& [r, v] : samples)
+    if (std::abs(v) > std::abs(s.peak)) s.peak = v, s.peak_at = r;
+  // The outermost crossing of |g| = |peak| / 2, linear between samples.
+  const double half = 0.5 * std::abs(s.peak);
+  for (size_t i = samples.size() - 1; i > 0; --i)
+    if (std::abs(samples[i - 1].second) >= half) {
+      const double a = std::abs(samples[i - 1].second), b = std::abs(samples[i].second);
+      const double t = b >= half ? 1.0 : (a - half) / (a - b);
+      s.half_width = samples[i - 1].first + t * (samples[i].first - samples[i - 1].first);
+      break;
+    }
+  return s;
+}
+
+MeridianGreen::Shape MeridianGreen::shape_zz() const {
+  if (!has_disc_) throw std::logic_error("MeridianGreen: built without the sensor's own reading");
+  return shape(maps_[1].zz, maps_[1].zz, 2 * M_PI);
+}
+
+MeridianGreen::Shape MeridianGreen::shape_xx() const {
+  if (!has_disc_) throw std::logic_error("MeridianGreen: built without the sensor's own reading");
+  // g_xx = u cos² − v sin²: along +x it is u; over the angle it integrates to π(u − v).
+  std::vector<double> u_minus_v(maps_[1].u1.size());
+  for (size_t i = 0; i < u_minus_v.size(); ++i) u_minus_v[i] = maps_[1].u1[i] - maps_[1].v1[i];
+  return shape(maps_[1].u1, u_minus_v, M_PI);
 }
 
 }  // namespace skinfem

@@ -34,8 +34,9 @@ struct MeridianMesh {
   Eigen::Matrix<int, Eigen::Dynamic, 6, Eigen::RowMajor> tris;      // T×6
   int num_vertices = 0;
   // Node indices on z = 0 and on the top (both by increasing r), on the axis r = 0 and on the side r =
-  // radius.
-  std::vector<int> base, top, axis, side;
+  // radius; with a post, `base` starts outside it and `post` holds its wall and top (with the foot's corner).
+  std::vector<int> base, top, axis, side, post;
+  double post_radius = 0, post_height = 0;  // mm; 0: no post
 };
 
 // Cell sizes of a meridian mesh. Radially, cells grow geometrically from the axis, where the reading is, up
@@ -58,15 +59,30 @@ struct MeridianSizes {
 MeridianMesh meridian_mesh(const std::function<double(double)>& top, double radius,
                            const MeridianSizes& sizes);
 
+// A post sensor on the axis (scene.hpp's PostSensor): the rigid rectangle r ≤ radius, z ≤ height cut from
+// the meridian. The stress is singular at its top rim and its foot, so cells shrink toward both corners to
+// rim_cell (mm) at the sizes' growth.
+struct MeridianPost {
+  double radius = 0, height = 0;  // mm
+  double rim_cell = 0;            // mm; 0: the sizes' axis_cell / 8
+};
+// The block-structured mesh of the region less the post: radial rows graded toward the post's radius, z rows
+// below the post's top graded toward both ends (beside the post only), z = height + (top(r) − height)·τ
+// above it. Needs 0 < post.radius < radius and 0 < post.height < top(r) for every r.
+MeridianMesh meridian_mesh(const std::function<double(double)>& top, double radius,
+                           const MeridianSizes& sizes, const MeridianPost& post);
+
 // The Green tensor of the base reading on the axis (σ_z and σ_x, green/halfspace.hpp's GreenSample
 // conventions) for a unit force on the top at offset (x, y) from the axis, 1/mm²: mode 0 gives the σ_z
 // reading's adjoint (g_zz, g_xz), mode 1 the σ_x reading's (g_zx, g_xx). Two readings: the point value at the
 // axis and the sensor's own reading about it (fem/sensor_reading.hpp: a site whose traits say it is a body of
-// revolution about its centre, which is put on the axis; a disc of diameter 0 gives the point reading only).
-// The side r = radius is traction-free or held (u = 0).
+// revolution about its centre, which is put on the axis; a disc of diameter 0 gives the point reading only;
+// a post, which the mesh must have cut out (meridian_mesh with MeridianPost), reads the force on it over its
+// cross-section both ways, the post displaced rigidly with the rest of the base held, as
+// fem/sensor_reading.hpp in 3D). The side r = radius is traction-free or held (u = 0).
 class MeridianGreen {
  public:
-  // Throws std::invalid_argument for a site that is not axisymmetric.
+  // Throws std::invalid_argument for a site that is not axisymmetric or a post the mesh does not have.
   MeridianGreen(const MeridianMesh& mesh, double nu, SideCondition side = SideCondition::free,
                 const ReadingSite& sensor = {});
   // The point force's map; offsets beyond the meridian's radius are clamped to it.
@@ -74,6 +90,15 @@ class MeridianGreen {
   // A unit load centred at offset (x, y), spread as `load` over radius `radius` (green/fe_green.hpp's
   // load_rule, as FeGreen::at).
   green::GreenSample at(bool disc, double x, double y, green::LayerLoad load, double radius) const;
+  // One component of the sensor's own reading (disc or post) along +x, summarized: its largest |g| and the
+  // offset where it is, the outer offset where |g| has fallen to half of it, and its integral over the top's
+  // projection on the base plane, ∫ g dA (the reading under a unit uniform pressure or shear: 1 for a base
+  // traction on the unbounded layer, by equilibrium; a post's gain).
+  struct Shape {
+    double peak = 0, peak_at = 0, half_width = 0, integral = 0;  // 1/mm², mm, mm, 1
+  };
+  Shape shape_zz() const;
+  Shape shape_xx() const;
   int dofs() const { return dofs_; }  // both modes' free DOFs
   struct Cost {
     double assemble_s = 0, factor_s = 0, solve_s = 0;  // both modes
@@ -83,6 +108,8 @@ class MeridianGreen {
  private:
   // Quadratic along the top's edges, as the solution.
   double interpolate(const std::vector<double>& f, double rho) const;
+  // f along +x and its integral with angular factor `angular` (2π for mode 0, π for mode 1's u − v).
+  Shape shape(const std::vector<double>& along_x, const std::vector<double>& integrand, double angular) const;
   struct Maps {
     std::vector<double> zz, u0, w1, u1, v1;  // g_zz; mode 0 U; mode 1 W, U, V at the top nodes
   };

@@ -30,6 +30,7 @@ SizingField::SizingField(const Scene& scene, MeshPart part)
     if (r.h <= 0) r.h = h_min;
   // Imported surfaces have no exact height above the base: their discs keep an h_min column.
   const bool generated = scene.geometry.kind != GeometryKind::surface;
+  if (scene.sensors.model == SensorModel::post) post_height_ = scene.sensors.post.height;
   if (scene.mesh.refine_sensors)
     for (const auto& s : scene.sensors.positions) {
       const RegionOfInterest disc{s, s, scene.sensors.footprint_radius(), sensor_mesh_size(scene)};
@@ -77,7 +78,7 @@ double SizingField::at(double x, double y, double depth) const {
   for (const auto& r : through_) grow(r, 0.0);
   for (const auto& r : top_) grow(r, depth);
   if (!base_.empty()) {
-    const double height = std::max(0.0, shape_->top_z(x, y) - depth);
+    const double height = std::max(0.0, shape_->top_z(x, y) - depth - post_height_);
     for (const auto& r : base_) grow(r, height);
   }
   return size;

@@ -9,7 +9,8 @@
 //  - at the top (the contact zone, holes, the hole's path): dist also counts the depth below the top
 //    surface, so the mesh coarsens towards the base. Contact needs its resolution where the pressure
 //    acts; sensors read it through the layer, smoothed over ~h;
-//  - at the base (each sensor disc at mesh.sensor_h): dist also counts the height above the base. A disc
+//  - at the base (each sensor disc at mesh.sensor_h): dist also counts the height above the base (above a
+//    post's top: the whole post, up to its singular top rim, is meshed at sensor_h). A disc
 //    reading is the mean traction over the disc, whose edge the reading's adjoint sees as a dislocation
 //    edge. candelier2011's axis sensor, against the meridian solution: an h_min = 0.25 mm column over the
 //    0.1 mm disc radius had 101k DOFs and disc-map errors 1.4–1.8e-3 of the peak; the disc at 0.1 mm on the
@@ -58,6 +59,7 @@ class SizingField {
   double at(double x, double y, double depth) const;  // depth below the top surface, mm
   std::vector<RegionOfInterest> through_, top_, base_;
   double growth_, h_max_;
+  double post_height_ = 0;          // mm: base regions of post sensors count the height above the posts' tops
   std::optional<SkinShape> shape_;  // generated skins only
 };
 

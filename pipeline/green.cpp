@@ -93,6 +93,7 @@ GreenRun green_run(const Scene& scene, const SensorGreens& greens, const Adjoint
   run.wall = greens.wall;
   run.flat = scene.geometry.kind == GeometryKind::flat;
   run.ridged = scene.geometry.ridges.present();
+  run.post = scene.sensors.model == SensorModel::post;
   Stopwatch clock;
 
   // The 3D path's reciprocity check: a direct solve with a point force at 1 mm from sensor 1 against the
@@ -180,8 +181,10 @@ nlohmann::json green_json(const Scene& scene, const SensorGreens& greens, const 
         {"sensor", scan.sensor}, {"h_mm", scan.h_mm}, {"scan_half_width_mm", scan.profile.offset_x.back()}};
     if (scan.disc_max_diff_over_peak)
       for (size_t c = 0; c < 4; ++c)
-        js[run.ridged ? "disc_vs_smooth_max_diff_over_peak" : "fe_vs_exact_max_err_over_peak"]
-          [green::component_name(green::kComponents[c])] = (*scan.disc_max_diff_over_peak)[c];
+        js[run.ridged ? "disc_vs_smooth_max_diff_over_peak"
+           : run.post ? "post_vs_exact_disc_max_diff_over_peak"
+                      : "fe_vs_exact_max_err_over_peak"][green::component_name(green::kComponents[c])] =
+            (*scan.disc_max_diff_over_peak)[c];
     if (run.meridian_check && scan.sensor == run.meridian_check->sensor)
       js["meridian_check"] = meridian_check_json(*run.meridian_check);
     per_sensor.push_back(js);

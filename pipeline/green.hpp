@@ -31,6 +31,7 @@ struct GreenScan {
 struct GreenRun {
   std::vector<GreenScan> scans;
   bool flat = false, ridged = false;
+  bool post = false;  // post sensors: the exact layer's readings are a disc's, what the post differs from
   std::optional<double> reciprocity_rel;  // the 3D path: |direct − adjoint| / |direct|, sensor 1, 1 mm
   std::string mesh_part;                  // the 3D path: "whole" or the half's description
   std::optional<MeridianCheck> meridian_check;  // the axis sensor of a cap solved in 3D

@@ -43,6 +43,7 @@ struct KfitResult {
   double punch_diameter_mm = 0;  // 0 for a point load
   double nu = 0;
   bool flat = false, ridged = false;
+  bool post = false;  // post sensors: the exact layer's readings are a disc's, what the post differs from
   bool gain_fitted = false;  // post sensors: the model's gain is fitted with k (green::Gain)
   std::vector<KfitSensor> sensors;
   std::optional<MeridianCheck> meridian_check;  // as in its sensor

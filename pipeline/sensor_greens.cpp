@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "pipeline/clock.hpp"
+#include "pipeline/kfit.hpp"
 #include "pipeline/progress.hpp"
 
 namespace skinfem::pipeline {
@@ -44,7 +45,6 @@ std::string meridian_unavailable(const Scene& scene) {
   const Geometry& g = scene.geometry;
   if (g.kind == GeometryKind::surface) return "an imported surface is not known to be a body of revolution";
   if (g.ridges.present()) return "the ridged top is not a body of revolution";
-  if (scene.sensors.model == SensorModel::post) return "the meridian path has no post sensor model yet";
   if (g.kind == GeometryKind::flat) {
     // The meridian stands for the unbounded layer: it answers the scene only where the layer's side is far
     // from every calibration load. The side's influence decays as exp(−0.739 d/h) (README, Truncation); at
@@ -89,38 +89,55 @@ struct MeridianPair {
 };
 }  // namespace
 
+MeridianSkin meridian_skin(const Scene& scene) {
+  const Geometry& geo = scene.geometry;
+  MeridianSkin m;
+  m.flat = geo.kind == GeometryKind::flat;
+  m.h = m.flat ? geo.flat.h : geo.cap.h;
+  const double h = m.h, R = geo.cap.R;
+  m.radius = m.flat ? kUnboundedRadiusOverH * h : geo.cap.truncation_radius;
+  m.top = [flat = m.flat, h, R](double r) { return flat ? h : h - R + std::sqrt(R * R - r * r); };
+  // The unbounded layer's side is far enough not to matter; a cap's is the scene's.
+  m.side = m.flat ? SideCondition::free : geo.side;
+  char model[300];
+  if (m.flat)
+    std::snprintf(model, sizeof model,
+                  "the unbounded layer h = %.4g mm (meridian radius %.4g mm = %.0f h, traction-free there)",
+                  h, m.radius, kUnboundedRadiusOverH);
+  else
+    std::snprintf(model, sizeof model,
+                  "the spherical cap R = %.4g mm, h = %.4g mm on its meridian to r = %.4g mm", R, h,
+                  m.radius);
+  m.model = model;
+  return m;
+}
+
+MeridianMesh MeridianSkin::mesh(const ReadingSite& site, double scale) const {
+  const MeridianSizes sizes = MeridianSizes::for_thickness(h, scale);
+  return site.post() ? meridian_mesh(top, radius, sizes, MeridianPost{0.5 * site.diameter, site.post_height})
+                     : meridian_mesh(top, radius, sizes);
+}
+
 SensorGreens meridian_sensor_greens(const Scene& scene) {
   if (const std::string why = meridian_unavailable(scene); !why.empty())
     throw SceneError(scene.source_path + ": the meridian (axisymmetric) path does not apply: " + why +
                      "; use the 3D path");
+  const MeridianSkin skin = meridian_skin(scene);
   const Geometry& geo = scene.geometry;
-  const bool flat = geo.kind == GeometryKind::flat;
-  const double h = flat ? geo.flat.h : geo.cap.h, R = geo.cap.R;
-  const double radius = flat ? kUnboundedRadiusOverH * h : geo.cap.truncation_radius;
-  const std::function<double(double)> top = [&](double r) {
-    return flat ? h : h - R + std::sqrt(R * R - r * r);
-  };
-  // The unbounded layer's side is far enough not to matter; a cap's is the scene's.
-  const SideCondition side = flat ? SideCondition::free : geo.side;
+  const bool flat = skin.flat;
+  const double h = skin.h, radius = skin.radius;
   const ReadingSite disc = reading_sites(scene.sensors).at(0);
   SensorGreens g;
   g.path = "meridian";
-  char model[300];
-  if (flat)
-    std::snprintf(model, sizeof model,
-                  "the unbounded layer h = %.4g mm (meridian radius %.4g mm = %.0f h, traction-free there)",
-                  h, radius, kUnboundedRadiusOverH);
-  else
-    std::snprintf(model, sizeof model,
-                  "the spherical cap R = %.4g mm, h = %.4g mm on its meridian to r = %.4g mm", R, h, radius);
-  g.model = model;
+  g.model = skin.model;
   Stopwatch clock;
-  const MeridianMesh mesh = meridian_mesh(top, radius, MeridianSizes::for_thickness(h)),
-                     coarse = meridian_mesh(top, radius, MeridianSizes::for_thickness(h, 2));
+  const MeridianMesh mesh = skin.mesh(disc, 1), coarse = skin.mesh(disc, 2);
   g.wall["mesh"] = clock.seconds();
+  // The coarse level's point reading is what is read of it (a post's reading either way).
+  const ReadingSite coarse_site = disc.post() ? disc : ReadingSite{};
   auto pair = std::make_shared<const MeridianPair>(
-      MeridianPair{MeridianGreen(mesh, scene.material.nu, side, disc),
-                   MeridianGreen(coarse, scene.material.nu, side)});  // only its point reading is read
+      MeridianPair{MeridianGreen(mesh, scene.material.nu, skin.side, disc),
+                   MeridianGreen(coarse, scene.material.nu, skin.side, coarse_site)});
   const MeridianGreen::Cost& c = pair->fine.cost();
   const MeridianGreen::Cost& cc = pair->coarse.cost();
   g.wall["assemble"] = c.assemble_s + cc.assemble_s;
@@ -171,8 +188,8 @@ MeridianCheck meridian_check(const Scene& scene, int sensor, const green::ScanPr
   Stopwatch clock;
   const SensorGreens m = meridian_sensor_greens(with_sensor(scene, sensor));
   const auto mp = green::scan_profile(m.of(0), load, radius, prof.offset_x.back(), scene.calibration.spacing);
-  const green::KReport k3 = green::fit_profile(prof.offset_x, prof.point, h);
-  const green::KReport mk = green::fit_profile(mp.offset_x, mp.point, h);
+  const green::KReport k3 = green::fit_profile(prof.offset_x, prof.point, h, kfit_gain(scene));
+  const green::KReport mk = green::fit_profile(mp.offset_x, mp.point, h, kfit_gain(scene));
   MeridianCheck c;
   c.sensor = sensor + 1;
   c.path_model = m.model;

@@ -61,6 +61,20 @@ SensorGreens with_path_reason(SensorGreens greens, const Scene& scene, GreenPath
 // The meridian path; throws SceneError (with meridian_unavailable's reason) where it does not apply.
 SensorGreens meridian_sensor_greens(const Scene& scene);
 
+// The meridian of a skin with an axis (a flat layer, read as the unbounded layer of its thickness, or a
+// spherical cap about its apex; check meridian_unavailable first): its top, extent and side.
+struct MeridianSkin {
+  std::function<double(double)> top;  // z of the top at radius r, mm
+  double radius = 0, h = 0;           // mm: the meridian's extent, the thickness on the axis
+  bool flat = false;
+  SideCondition side = SideCondition::free;
+  std::string model;  // what is solved, one sentence
+  // The meridian mesh for a site on the axis (a post is cut from it) at MeridianSizes::for_thickness(h,
+  // scale).
+  MeridianMesh mesh(const ReadingSite& site, double scale) const;
+};
+MeridianSkin meridian_skin(const Scene& scene);
+
 // The Green tensors by `path`: the meridian's where asked, or where automatic and meridian_unavailable is
 // empty; else the 3D path's (with_path_reason), with the adjoint set-up it made in `adjoints`.
 SensorGreens green_path(const Scene& scene, GreenPath path);

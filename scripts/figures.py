@@ -527,6 +527,33 @@ def budget_figures(d):
     return [(f"budget_{h}.png", inputs, lambda d, h=h: fig_budget(d, h)) for h in names]
 
 
+def post_design(d):
+    t = read_csv(os.path.join(d, "green/post_design.csv"),
+                 {"row": one_of("post", "disc", "sweep"), "diameter_mm": positive, "height_mm": number,
+                  "g_zz_half_width_mm": number, "g_zz_integral": number, "g_xx_half_width_mm": number,
+                  "g_xx_integral": number})
+    s = t["row"] == "sweep"
+    panels = [("g_zz_integral", "gain of g_zz (reading per unit uniform pressure)"),
+              ("g_zz_half_width_mm", "half width of g_zz (mm)"),
+              ("g_xx_integral", "gain of g_xx (reading per unit uniform shear)"),
+              ("g_xx_half_width_mm", "half width of g_xx (mm)")]
+    fig, axes = plt.subplots(2, 2, figsize=(11, 8), sharex=True)
+    for ax, (column, label) in zip(axes.flat, panels):
+        for i, dia in enumerate(in_order(t["diameter_mm"][s])):
+            m = s & (t["diameter_mm"] == dia)
+            o = np.argsort(t["height_mm"][m], kind="stable")
+            ax.plot(t["height_mm"][m][o], t[column][m][o], "o-", color=plt.get_cmap("viridis")(i / 4),
+                    label=f"diameter {dia:g} mm")
+        ax.set_ylabel(label)
+        ax.grid(alpha=0.3)
+    for ax in axes[1]:
+        ax.set_xlabel("post height (mm; 0: the disc of that diameter)")
+    axes[0][0].legend(fontsize=8)
+    fig.suptitle("Post sensor design at the skin's axis (meridian solves): gain and spatial resolution")
+    fig.tight_layout()
+    return fig
+
+
 FIGURES = [
     ("fig1_calibration.png", ("green/green.csv", "kfit/kfit.json"), fig1_calibration),
     ("fig2_static_sliding.png", ("crosscheck/readings.csv",), fig2_static_sliding),
@@ -536,6 +563,7 @@ FIGURES = [
     ("green_vs_halfspace.png", ("green/green.csv", "kfit/kfit.json"), green_vs_halfspace),
     ("k_sweep.png", ("kfit/k_sweep.csv", "kfit/kfit.json"), k_sweep),
     ("pareto.png", ("study/chain_study.csv",), pareto),
+    ("post_design.png", ("green/post_design.csv",), post_design),
 ]
 
 

@@ -118,6 +118,17 @@ for h in hb.get("hypotheses", []):
             want = h["amplitude_ratio"][row["case"]][row["component"]][int(row["sensor"]) - 1]
             if abs(float(row["ratio"]) - want) > 1e-6 * abs(want): bad.append(f"hole_budget.csv {row} against {want}")
 if not hb.get("answer") or "crosscheck/hole_budget.csv" not in links: bad.append("index.html or report.json lacks the hole budget")
+# What a post changes (the cap's apex, meridian solves): the scene's post and disc, then every (diameter, height)
+# of the sweep, height 0 being the disc; report.json's numbers are the CSV's, and the sentence quotes them.
+pd = r.get("post_design", {})
+rows = list(csv.DictReader(open(os.path.join(out, "green", "post_design.csv"))))
+if [row["row"] for row in rows[:2]] != ["post", "disc"]: bad.append(f"post_design.csv rows {[row['row'] for row in rows[:2]]}")
+sweep = [(float(row["diameter_mm"]), float(row["height_mm"])) for row in rows[2:]]
+if sweep != [(d, t) for d in (0.1, 0.2, 0.3, 0.4) for t in (0, 0.2, 0.4, 0.6, 0.8, 1.0)]: bad.append(f"post_design sweep {sweep}")
+if rows and abs(float(rows[0]["g_zz_integral"]) - pd.get("post", {}).get("g_zz", {}).get("integral", 0)) > 1e-6 * float(rows[0]["g_zz_integral"]):
+    bad.append("post_design.csv's post row is not report.json's")
+if rows and f"{float(rows[0]['g_zz_peak_per_mm2']):.4g}" not in pd.get("answer", ""): bad.append(f"post_design answer does not quote the post's peak: {pd.get('answer')}")
+if "green/post_design.csv" not in links or "What a post changes" not in html: bad.append("index.html lacks the post design")
 for b in bad: print("FAIL", b)
 sys.exit(1 if bad else 0)
 PY
