@@ -9,13 +9,14 @@
 // and every output is written for the whole skin (mesh.vtu, maps, pressure, fields).
 //
 // Stages, each writing its own folder under DIR (default out/<scene name>): mesh/ (mesh.vtu, boundary.vtu),
-// green/ (green.csv, green_maps.vtp), kfit/ (kfit.json, and k_sweep.csv: the exact layer's k as each reading
-// of the calibration protocol changes, validation/k_sweep.hpp), and with a contact: contact/ (pressure.vtp,
-// fields.vtu, sensors.csv, modes.csv), defect/ (defect.csv, defect.pvd + frames/) and crosscheck/
-// (readings.csv, defect.csv, pressure.csv, attribution.csv: case,variant,sensor,component,amplitude_ratio,
-// peak_shift_mm,shape_error). Then figures/*.png (scripts/figures.py, matplotlib) and DIR/report.json (the
-// headline numbers with units, wall seconds per stage, peak memory) and DIR/index.html (figures, tables,
-// links to every VTK file).
+// green/ (green.csv, green_maps.vtp, post_design.csv: an isolated post against a disc at the skin's axis and
+// a design sweep, app/post_design_stage.cpp), kfit/ (kfit.json, and k_sweep.csv: the exact layer's k as each
+// reading of the calibration protocol changes, validation/k_sweep.hpp), and with a contact: contact/
+// (pressure.vtp, fields.vtu, sensors.csv, modes.csv), defect/ (defect.csv, defect.pvd + frames/) and
+// crosscheck/ (readings.csv, defect.csv, pressure.csv, attribution.csv with columns
+// case,variant,sensor,component,amplitude_ratio,peak_shift_mm,shape_error). Then figures/*.png
+// (scripts/figures.py, matplotlib) and DIR/report.json (the headline numbers with units, wall seconds per
+// stage, peak memory) and DIR/index.html (figures, tables, links to every VTK file).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

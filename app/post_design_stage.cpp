@@ -69,16 +69,17 @@ StageOutput<pipeline::PostDesign> post_design_stage(const Scene& scene, const st
     change = std::max({change, d.peak_change, d.half_width_change, d.integral_change});
   }
   const std::string answer =
-      "At the skin's axis (" + p.skin + "), a post " + fmt("%.3g", post.diameter) + " mm wide and " +
-      fmt("%.3g", post.height) + " mm high against the disc of its diameter: g_zz peaks at " +
-      fmt("%.4g", post.zz.peak) + " against " + fmt("%.4g", disc.zz.peak) + " /mm² (" +
-      fmt("%.2f", post.zz.peak / disc.zz.peak) + "×), half width " + fmt("%.3g", post.zz.half_width) +
-      " against " + fmt("%.3g", disc.zz.half_width) + " mm, gain (its integral) " +
-      fmt("%.3g", post.zz.integral) + " against " + fmt("%.3g", disc.zz.integral) + "; g_xx peaks at " +
-      fmt("%.4g", post.xx.peak) + " against " + fmt("%.4g", disc.xx.peak) + " /mm² (" +
-      fmt("%.2f", post.xx.peak / disc.xx.peak) + "×), half width " + fmt("%.3g", post.xx.half_width) +
-      " against " + fmt("%.3g", disc.xx.half_width) + " mm, gain " + fmt("%.3g", post.xx.integral) +
-      " against " + fmt("%.3g", disc.xx.integral) + " (largest change from the mesh twice as coarse: " +
+      "At the skin's axis (" + p.skin + "), an isolated post " + fmt("%.3g", post.diameter) +
+      " mm wide and " + fmt("%.3g", post.height) +
+      " mm high against the disc of its diameter: g_zz peaks at " + fmt("%.4g", post.zz.peak) + " against " +
+      fmt("%.4g", disc.zz.peak) + " /mm² (" + fmt("%.2f", post.zz.peak / disc.zz.peak) + "×), half width " +
+      fmt("%.3g", post.zz.half_width) + " against " + fmt("%.3g", disc.zz.half_width) +
+      " mm, gain (its integral) " + fmt("%.3g", post.zz.integral) + " against " +
+      fmt("%.3g", disc.zz.integral) + "; g_xx peaks at " + fmt("%.4g", post.xx.peak) + " against " +
+      fmt("%.4g", disc.xx.peak) + " /mm² (" + fmt("%.2f", post.xx.peak / disc.xx.peak) + "×), half width " +
+      fmt("%.3g", post.xx.half_width) + " against " + fmt("%.3g", disc.xx.half_width) + " mm, gain " +
+      fmt("%.3g", post.xx.integral) + " against " + fmt("%.3g", disc.xx.integral) +
+      " (largest change from the mesh twice as coarse: " +
       fmt("%.2g", 100 * std::max({post.peak_change, post.half_width_change, post.integral_change})) +
       " %). Over the sweep (heights " + fmt("%g", p.sweep.front().height) + "–" +
       fmt("%g", p.sweep.back().height) + " mm, diameters 0.1–0.4 mm) the gain of g_zz runs " +

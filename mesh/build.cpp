@@ -93,8 +93,11 @@ TetMesh make_quadratic(const RowMatrixX3d& points,
 namespace {
 // Boundary points TetGen added lie on the flat input triangles: move them onto the exact cap or
 // cylinder (by at most the sagitta of a boundary triangle, L²/8R).
-void snap_to_surface(LinearTets& lin, const SkinShape& shape, const std::vector<Circle>& posts,
-                     double post_height) {
+// Returns the wall points moved, with where they were.
+std::vector<std::pair<int, Eigen::RowVector3d>> snap_to_surface(LinearTets& lin, const SkinShape& shape,
+                                                                const std::vector<Circle>& posts,
+                                                                double post_height) {
+  std::vector<std::pair<int, Eigen::RowVector3d>> moved;
   Eigen::VectorXi marker = Eigen::VectorXi::Zero(lin.points.rows());
   // Points on a post's wall (its rim included): on a post face that is not the flat top. A point inside the
   // top near the rim is not one, however close: moved onto the cylinder it could land on a rim point (on
@@ -122,10 +125,40 @@ void snap_to_surface(LinearTets& lin, const SkinShape& shape, const std::vector<
       for (const Circle& c : posts) {
         Eigen::Vector3d p = lin.points.row(i).transpose();
         if (std::hypot(p.x() - c.centre[0], p.y() - c.centre[1]) < 1.5 * c.radius) {
+          moved.push_back({i, lin.points.row(i)});
           onto_cylinder(c, p);
           lin.points.row(i) = p.transpose();
         }
       }
+  }
+  return moved;
+}
+
+// A wall point moved onto the cylinder by its chord's sagitta can turn a flat (sliver) tetrahedron beside
+// the wall inside out, which straightening its P2 edges cannot mend: such points go back onto their chords
+// (off the cylinder by at most the sagitta L²/8R, as are the mid-edge nodes of their edges, which
+// make_quadratic leaves straight).
+void unsnap_inverting(LinearTets& lin, const std::vector<std::pair<int, Eigen::RowVector3d>>& moved) {
+  if (moved.empty()) return;
+  std::map<int, Eigen::RowVector3d> from(moved.begin(), moved.end());
+  const auto volume = [&](int t) {
+    const Eigen::RowVector3d a = lin.points.row(lin.tets(t, 0));
+    return (lin.points.row(lin.tets(t, 1)) - a)
+        .cross(lin.points.row(lin.tets(t, 2)) - a)
+        .dot(lin.points.row(lin.tets(t, 3)) - a);
+  };
+  for (int pass = 0; pass < 4; ++pass) {
+    int restored = 0;
+    for (int t = 0; t < lin.tets.rows(); ++t) {
+      if (volume(t) > 0) continue;
+      for (int k = 0; k < 4; ++k)
+        if (auto it = from.find(lin.tets(t, k)); it != from.end()) {
+          lin.points.row(it->first) = it->second;
+          from.erase(it);
+          ++restored;
+        }
+    }
+    if (restored == 0) return;
   }
 }
 }  // namespace
@@ -158,7 +191,8 @@ TetMesh build_mesh(const Scene& scene, MeshPart part) {
                                                                : FacetPolicy::merge;
   LinearTets lin = tetrahedralize(surface, size, scene.mesh, facets);
   const std::vector<Circle> posts = post_circles(scene);
-  if (generated) snap_to_surface(lin, SkinShape(scene.geometry), posts, scene.sensors.post.height);
+  if (generated)
+    unsnap_inverting(lin, snap_to_surface(lin, SkinShape(scene.geometry), posts, scene.sensors.post.height));
   TetMesh mesh = make_quadratic(lin.points, lin.tets, lin.faces, lin.face_marker, scene.geometry, posts);
   mesh.part = part;
   straighten_folded_elements(mesh);

@@ -1,8 +1,9 @@
 // What a post changes, on the meridian of the scene's skin at its axis (the unbounded layer of a flat scene's
-// thickness, or a spherical cap's apex): the Green tensor of a post against a disc of the same diameter at
-// the same place (peak, width at half maximum, integral of g_zz and g_xx), and a design sweep of post height
-// and diameter. Every design is two 2D solves (green/meridian.hpp), not a 3D mesh; each number carries the
-// change from the level at twice every mesh size as its error.
+// thickness, or a spherical cap's apex): the Green tensor of an isolated post (no others around it: each is a
+// rigid inclusion that changes its neighbours' readings) against a disc of the same diameter at the same
+// place (peak, width at half maximum, integral of g_zz and g_xx), and a design sweep of post height and
+// diameter. Every design is two 2D solves (green/meridian.hpp), not a 3D mesh; each number carries the change
+// from the level at twice every mesh size as its error.
 #pragma once
 
 #include <string>

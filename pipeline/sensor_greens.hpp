@@ -79,7 +79,8 @@ MeridianSkin meridian_skin(const Scene& scene);
 // empty; else the 3D path's (with_path_reason), with the adjoint set-up it made in `adjoints`.
 SensorGreens green_path(const Scene& scene, GreenPath path);
 
-// The first sensor on the axis of a cap solved in 3D (greens.path "3d"), or −1: the one sensor the meridian
+// The first sensor on the axis of a cap solved in 3D (greens.path "3d"), or −1 (also for a post among others,
+// which the isolated post of the meridian does not stand for): the one sensor the meridian
 // path, an independent 2D solve about 100× more accurate than the 3D mesh, can check.
 int axis_sensor(const Scene& scene, const SensorGreens& greens);
 // That check: the 3D scan `prof` of `sensor` (thickness h) against the meridian's over the same offsets, for
