@@ -186,6 +186,32 @@ bool align_rim(Footprint& base, const Footprint& top) {
   for (size_t k = 0; k < n; ++k) base.points.row(base.boundary[k]) = top.points.row(top.boundary[k]);
   return true;
 }
+
+// The same on a half whose cut the two faces need not share (it is the symmetry face, meshed from whatever
+// points either has there, close_cut): every top rim point has its base point, and the base has no rim point
+// off the cut that the top lacks. Returns the base vertex of each top boundary position (empty if not).
+std::vector<int> align_rim_off_cut(Footprint& base, const Footprint& top) {
+  std::map<std::pair<double, double>, int> at;
+  for (int b : base.boundary) at[{base.points(b, 0), base.points(b, 1)}] = b;
+  const auto find = [&](double x, double y) {
+    auto it = at.lower_bound({x - 1e-9, -1e300});
+    for (; it != at.end() && it->first.first <= x + 1e-9; ++it)
+      if (std::abs(it->first.second - y) < 1e-9) return it->second;
+    return -1;
+  };
+  std::vector<int> match;
+  std::vector<char> used(base.points.rows(), 0);
+  for (int t : top.boundary) {
+    const int b = find(top.points(t, 0), top.points(t, 1));
+    if (b < 0) return {};
+    match.push_back(b);
+    used[b] = 1;
+  }
+  for (int b : base.boundary)
+    if (!used[b] && base.points(b, 1) != 0.0) return {};
+  for (size_t k = 0; k < match.size(); ++k) base.points.row(match[k]) = top.points.row(top.boundary[k]);
+  return match;
+}
 }  // namespace
 
 std::vector<Circle> post_circles(const Scene& scene) {
@@ -362,16 +388,33 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
   const std::vector<Circle>& top_outlines = size.graded_in_depth() ? circles : outlines;
   Footprint top = face_footprint(shape, loop, top_size, top_outlines, half);
   std::optional<Footprint> own_base;
+  // On a half with posts the base's cut is refined at the posts' ends; the top keeps its own cut points.
+  const bool own_cuts = half && !posts.empty();
+  std::vector<int> base_of_top;  // own_cuts: the base vertex of each top boundary position
+  // The base's rim with the top's own points on the cut instead of the base's.
+  const auto rim_with_top_cut = [&](const Footprint& own, const Footprint& t) {
+    std::vector<std::pair<double, double>> cut;
+    for (int b : t.boundary)
+      if (t.points(b, 1) == 0.0) cut.push_back({t.points(b, 0), 0.0});
+    std::vector<Vec2> rim;
+    for (const Vec2& p : rim_of(own))
+      if (p[1] != 0.0 || std::find(cut.begin(), cut.end(), std::pair{p[0], 0.0}) != cut.end())
+        rim.push_back(p);
+    return rim;
+  };
   for (int round = 0; size.graded_in_depth() && round < 4 && !own_base; ++round) {
     Footprint own = face_footprint(
         shape, rim_of(top), [&](double x, double y) { return size.on_base(x, y); }, outlines, half);
-    if (align_rim(own, top))
+    if (own_cuts ? !(base_of_top = align_rim_off_cut(own, top)).empty() : align_rim(own, top))
       own_base = std::move(own);
+    else if (own_cuts)
+      top = face_footprint(shape, rim_with_top_cut(own, top), top_size, top_outlines, half);
     else
       top = face_footprint(shape, rim_of(own), top_size, top_outlines, half);
   }
   if (!own_base && top_outlines.size() != outlines.size())
     top = face_footprint(shape, rim_of(top), top_size, outlines, half);
+  const bool base_is_own = own_base.has_value();
   const Footprint base = own_base ? std::move(*own_base) : top;
   const int nvb = base.points.rows(), nvt = top.points.rows(), nb = static_cast<int>(top.boundary.size());
 
@@ -392,7 +435,7 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
   }
   // vertex of boundary position k on side layer j (0 = base, layers = top)
   auto side_vertex = [&](int k, int j) {
-    if (j == 0) return base.boundary[k % nb];
+    if (j == 0) return own_cuts && base_is_own ? base_of_top[k % nb] : base.boundary[k % nb];
     if (j == layers) return nvb + top.boundary[k % nb];
     return nvb + nvt + (j - 1) * nb + k % nb;
   };

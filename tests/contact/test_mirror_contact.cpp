@@ -143,5 +143,42 @@ TEST(MirrorContact, HalfEqualsTheMirroredWholeInEveryFrictionModeWithHoles) {
   EXPECT_LT(worst, 1e-8);
 }
 
+// Posts on y = 0 cut in half: the half's top keeps its own points on the cut, the base has the posts' ends
+// there (mesh/surface.cpp), and the cut face is meshed from both. Its mirror is a valid whole whose contact,
+// sweep and readings the half reproduces.
+TEST(MirrorContact, HalfWithPostsEqualsTheMirroredWhole) {
+  Scene s = plate_on_cap();
+  s.sensors.model = SensorModel::post;
+  s.sensors.post = {0.2, 0.4};
+  const TetMesh half = build_mesh(s, MeshPart::half_y);
+  std::vector<int> source;
+  const TetMesh whole = mirror_half(half, &source);
+  const Side h = condensed_side(s, half), w = condensed_side(s, whole);
+  const MirrorView view =
+      mirror_view(whole, source, h.condensed->zone, contact_center(s), s.contact->zone_radius);
+  ASSERT_EQ(view.zone.vertices, w.condensed->zone.vertices);
+  const ContactSolver full(*w.condensed, *s.contact), reduced(*h.condensed, *s.contact, &view);
+  double worst = 0;
+  for (FrictionMode mode : {FrictionMode::none, FrictionMode::coupled}) {
+    const ContactResult a = reduced.solve(mode, {}, {}, {}), b = full.solve(mode, {}, {}, {});
+    ASSERT_GT(b.force_N, 0);
+    ASSERT_EQ(a.active, b.active) << to_string(mode);
+    worst = std::max({worst, rel(a.lambda, b.lambda), rel(a.readings, b.readings)});
+  }
+  const PlanarFaceIndex top(whole, kTop);
+  HoleSweep sweep = test_sweep();
+  sweep.model = HoleModel::bulge;
+  const HoleDimples da(reduced, whole, top, s.material.E, s.material.nu),
+      db(full, whole, top, s.material.E, s.material.nu);
+  const SweepResult sa = hole_sweep(reduced, whole, sweep, FrictionMode::coupled, &da),
+                    sb = hole_sweep(full, whole, sweep, FrictionMode::coupled, &db);
+  ASSERT_GT(sb.varsigma.cwiseAbs().maxCoeff(), 0);
+  worst =
+      std::max(worst, (sa.varsigma - sb.varsigma).cwiseAbs().maxCoeff() / sb.varsigma.cwiseAbs().maxCoeff());
+  std::printf("posts: half %d DOFs, whole %d; max |half − whole| %.2e\n", h.model->solver().free_dofs(),
+              w.model->solver().free_dofs(), worst);
+  EXPECT_LT(worst, 1e-8);  // as above: round-off of two factorizations and LCP solves
+}
+
 }  // namespace
 }  // namespace skinfem::contact
