@@ -7,6 +7,7 @@
 
 #include "mesh/shape.hpp"
 #include "mesh/sizing.hpp"
+#include "mesh/surface.hpp"
 
 namespace skinfem {
 
@@ -21,22 +22,30 @@ struct Integrator {
   const SizingField& size;
   const SkinShape& shape;
   double cx, cy, radius;  // a cap's footprint: the disc of `radius` about (cx, cy); radius 0 for a flat layer
+  std::vector<Circle> posts;  // post sensors: cavities up to post_height, no skin there
+  double post_height = 0;
   double stop, tets = 0;
 
   double thickness(double x, double y) const {
     if (radius > 0 && std::hypot(x - cx, y - cy) > radius) return 0;
     return shape.top_z(x, y);
   }
+  // The skin's bottom above (x, y): a post's top inside its outline, else the base.
+  double bottom(double x, double y) const {
+    for (const Circle& c : posts)
+      if (std::hypot(x - c.centre[0], y - c.centre[1]) < c.radius) return post_height;
+    return 0;
+  }
 
   // Elements per mm² of footprint above (x, y): ∫₀ᵗ dz / (c h_eff³), by the midpoint rule on intervals that
   // grow geometrically down from the top: a region refined on the top (a contact zone, ridges) grades with
   // depth, so its elements crowd into a layer far thinner than the skin, which evenly spaced points miss.
   double column(double x, double y) const {
-    const double t = thickness(x, y);
-    if (!(t > 0)) return 0;
+    const double t = thickness(x, y), skin = t - bottom(x, y);
+    if (!(t > 0) || !(skin > 0)) return 0;
     double sum = 0;
     for (int k = 0; k < kDepthIntervals; ++k) {
-      const double d0 = t * depth_fraction(k), d1 = t * depth_fraction(k + 1), z = t - 0.5 * (d0 + d1);
+      const double d0 = skin * depth_fraction(k), d1 = skin * depth_fraction(k + 1), z = t - 0.5 * (d0 + d1);
       const double h = std::min(size.in_volume(x, y, z), kThinCap * t);
       sum += kTetsPerCube / (h * h * h) * (d1 - d0);
     }
@@ -91,7 +100,7 @@ MeshEstimate estimate_mesh(const Scene& scene, double stop_tets) {
   const bool cap = g.kind == GeometryKind::cap;
   const double r = cap ? g.cap.truncation_radius : g.flat.half_width;
   const double cx = cap ? g.cap.apex_x : 0, cy = cap ? g.cap.apex_y : 0;
-  Integrator in{size, shape, cx, cy, cap ? r : 0, stop_tets};
+  Integrator in{size, shape, cx, cy, cap ? r : 0, post_circles(scene), scene.sensors.post.height, stop_tets};
   // Start from a grid of cells no wider than h_max, so no feature is missed between samples.
   const int n = std::max(1, static_cast<int>(std::ceil(2 * r / size.h_max())));
   const double half = r / n;
