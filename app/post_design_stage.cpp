@@ -63,7 +63,10 @@ StageOutput<pipeline::PostDesign> post_design_stage(const Scene& scene, const st
   // The sentence, from the numbers: the scene's post against its disc, then the sweep's ranges.
   const pipeline::SensorDesign &post = p.post, &disc = p.disc;
   double gain_lo = 1e300, gain_hi = -1e300, width_lo = 1e300, width_hi = -1e300, change = 0;
+  double t_lo = 1e300, t_hi = 0, d_lo = 1e300, d_hi = 0;
   for (const auto& d : p.sweep) {
+    t_lo = std::min(t_lo, d.height), t_hi = std::max(t_hi, d.height);
+    d_lo = std::min(d_lo, d.diameter), d_hi = std::max(d_hi, d.diameter);
     gain_lo = std::min(gain_lo, d.zz.integral), gain_hi = std::max(gain_hi, d.zz.integral);
     width_lo = std::min(width_lo, d.zz.half_width), width_hi = std::max(width_hi, d.zz.half_width);
     change = std::max({change, d.peak_change, d.half_width_change, d.integral_change});
@@ -81,10 +84,10 @@ StageOutput<pipeline::PostDesign> post_design_stage(const Scene& scene, const st
       fmt("%.3g", post.xx.integral) + " against " + fmt("%.3g", disc.xx.integral) +
       " (largest change from the mesh twice as coarse: " +
       fmt("%.2g", 100 * std::max({post.peak_change, post.half_width_change, post.integral_change})) +
-      " %). Over the sweep (heights " + fmt("%g", p.sweep.front().height) + "–" +
-      fmt("%g", p.sweep.back().height) + " mm, diameters 0.1–0.4 mm) the gain of g_zz runs " +
-      fmt("%.3g", gain_lo) + "–" + fmt("%.3g", gain_hi) + " and its half width " + fmt("%.3g", width_lo) +
-      "–" + fmt("%.3g", width_hi) + " mm (mesh change up to " + fmt("%.2g", 100 * change) + " %).";
+      " %). Over the sweep (heights " + fmt("%g", t_lo) + "–" + fmt("%g", t_hi) + " mm, diameters " +
+      fmt("%g", d_lo) + "–" + fmt("%g", d_hi) + " mm) the gain of g_zz runs " + fmt("%.3g", gain_lo) + "–" +
+      fmt("%.3g", gain_hi) + " and its half width " + fmt("%.3g", width_lo) + "–" + fmt("%.3g", width_hi) +
+      " mm (mesh change up to " + fmt("%.2g", 100 * change) + " %).";
   nlohmann::json j = {{"skin", p.skin},
                       {"post", design_json(post)},
                       {"disc", design_json(disc)},
