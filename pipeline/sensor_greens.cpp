@@ -41,14 +41,20 @@ namespace {
 constexpr double kSideMarginOverH = 2.5;
 }  // namespace
 
+namespace {
+// A post is a rigid inclusion: the others stiffen the skin around each (on the paper's skin with posts 1 mm
+// apart, the apex post's 3D k was 7 % off the isolated post's), where other discs are only base. The
+// meridian's isolated post does not stand for one among others.
+bool posts_among_others(const Scene& scene) {
+  return scene.sensors.model == SensorModel::post && scene.sensors.positions.size() > 1;
+}
+}  // namespace
+
 std::string meridian_unavailable(const Scene& scene) {
   const Geometry& g = scene.geometry;
   if (g.kind == GeometryKind::surface) return "an imported surface is not known to be a body of revolution";
   if (g.ridges.present()) return "the ridged top is not a body of revolution";
-  // A post is a rigid inclusion: the others stiffen the skin around each (on the paper's skin with posts 1 mm
-  // apart, the apex post's 3D k was 7 % off the isolated post's), where other discs are only base.
-  if (scene.sensors.model == SensorModel::post && scene.sensors.positions.size() > 1)
-    return "the other posts are rigid inclusions off the axis of each";
+  if (posts_among_others(scene)) return "the other posts are rigid inclusions off the axis of each";
   if (g.kind == GeometryKind::flat) {
     // The meridian stands for the unbounded layer: it answers the scene only where the layer's side is far
     // from every calibration load. The side's influence decays as exp(−0.739 d/h) (README, Truncation); at
@@ -182,8 +188,7 @@ Scene with_sensor(const Scene& scene, size_t s) {
 
 int axis_sensor(const Scene& scene, const SensorGreens& greens) {
   if (greens.path != "3d" || scene.geometry.kind != GeometryKind::cap) return -1;
-  // The isolated post of the meridian does not stand for a post among others (meridian_unavailable).
-  if (scene.sensors.model == SensorModel::post && scene.sensors.positions.size() > 1) return -1;
+  if (posts_among_others(scene)) return -1;  // each sensor alone would pass meridian_unavailable
   for (size_t s = 0; s < scene.sensors.positions.size(); ++s)
     if (meridian_unavailable(with_sensor(scene, s)).empty()) return static_cast<int>(s);
   return -1;
