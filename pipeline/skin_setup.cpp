@@ -24,23 +24,27 @@ std::shared_ptr<Skin> factored_skin(const Scene& scene, TetMesh mesh, double mes
   s->wall["mesh"] = mesh_seconds;
   progress("assembling and factoring (" + std::to_string(s->mesh.num_nodes()) + " nodes)");
   ModelOptions options;
-  options.factor_progress = [](const FactorStatus& f) {
+  FactorStatus last{};
+  options.factor_progress = [&last](const FactorStatus& f) {
+    last = f;
+    if (f.fraction >= 1) return;  // the line below says it
     char buf[160];
-    if (f.fraction < 1)
-      std::snprintf(buf, sizeof buf, "factoring: ~%.0f %% (%.0f s of ~%.0f s estimated from %.3g flops)",
-                    100 * f.fraction, f.elapsed_s, f.estimated_s, f.estimated_flops);
-    else
-      std::snprintf(buf, sizeof buf, "factoring: done in %.1f s (%.3g flops, estimated %.0f s)", f.elapsed_s,
-                    f.estimated_flops, f.estimated_s);
+    std::snprintf(buf, sizeof buf, "factoring: ~%.0f %% (%.0f s of ~%.2g s estimated from %.3g flops)",
+                  100 * f.fraction, f.elapsed_s, f.estimated_s, f.estimated_flops);
     progress(buf);
   };
   s->model = std::make_unique<ElasticModel>(s->mesh, scene.material, scene.geometry.side,
                                             std::vector<Punch>{}, options);
   s->wall["assemble"] = s->model->assemble_seconds();
   s->wall["factor"] = s->model->solver().factor_seconds();
-  char buf[128];
-  std::snprintf(buf, sizeof buf, "factored %d DOFs in %.1f s", s->model->solver().free_dofs(),
-                s->model->solver().factor_seconds());
+  char buf[160];
+  if (last.estimated_flops > 0)
+    std::snprintf(buf, sizeof buf, "factored %d DOFs in %.2g s (%.3g flops, estimated %.2g s)",
+                  s->model->solver().free_dofs(), s->model->solver().factor_seconds(), last.estimated_flops,
+                  last.estimated_s);
+  else
+    std::snprintf(buf, sizeof buf, "factored %d DOFs in %.2g s", s->model->solver().free_dofs(),
+                  s->model->solver().factor_seconds());
   progress(buf);
   return s;
 }
