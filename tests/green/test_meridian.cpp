@@ -264,10 +264,86 @@ TEST(MeridianGreen, ShortPostsTendToTheDiscOnTheMeridian) {
   testing::expect_gap_to_the_disc_closes(heights, gap_z, gap_x);
 }
 
+// The 3D post (one scaled_scene family: every size and the grading) against a meridian post `ref` at the
+// offsets: per level the largest difference over each component's peak, and between the two finest 3D
+// levels (the 3D mesh's own error estimate); the observed order of each component.
+struct PostAgainstMeridian {
+  std::array<std::vector<double>, 4> err;  // per component, per level
+  std::array<double, 4> order{}, last_change{};
+};
+PostAgainstMeridian post_against_meridian(const Scene& s, const MeridianGreen& ref,
+                                          const std::vector<double>& offsets) {
+  PostAgainstMeridian r;
+  std::vector<double> size;
+  std::vector<green::GreenSample> previous;  // the previous level's samples at the offsets
+  for (double scale : {2.0, 1.41, 1.0}) {
+    const TetMesh mesh = build_mesh(scaled_scene(s, scale));
+    const ElasticModel model(mesh, s.material, s.geometry.side, {});
+    const green::FeGreen fe(model, s.sensors);
+    std::array<double, 4> diff{}, peak{}, change{};
+    std::vector<green::GreenSample> samples;
+    for (size_t i = 0; i < offsets.size(); ++i) {
+      const green::GreenSample g3 = fe.at(0, true, offsets[i], 0, green::LayerLoad::punch, kA),
+                               gm = punch_readings(ref, offsets[i]);
+      for (size_t c = 0; c < 4; ++c) {
+        const auto comp = green::kComponents[c];
+        diff[c] = std::max(diff[c], std::abs(green::component(g3, comp) - green::component(gm, comp)));
+        peak[c] = std::max(peak[c], std::abs(green::component(gm, comp)));
+        if (!previous.empty())
+          change[c] =
+              std::max(change[c], std::abs(green::component(g3, comp) - green::component(previous[i], comp)));
+      }
+      samples.push_back(g3);
+    }
+    previous = samples;
+    for (size_t c = 0; c < 4; ++c)
+      r.err[c].push_back(diff[c] / peak[c]), r.last_change[c] = change[c] / peak[c];
+    std::printf("3D scale %.2f: %d DOFs; |3D - meridian| / peak: zz %.2e zx %.2e xz %.2e xx %.2e\n", scale,
+                model.solver().free_dofs(), r.err[0].back(), r.err[1].back(), r.err[2].back(),
+                r.err[3].back());
+    size.push_back(scale);
+  }
+  for (size_t c = 0; c < 4; ++c) r.order[c] = testing::observed_order(size, r.err[c]);
+  std::printf(
+      "observed order of the 3D error: zz %.2f zx %.2f xz %.2f xx %.2f; change between the two finest "
+      "levels / peak: %.2e %.2e %.2e %.2e\n",
+      r.order[0], r.order[1], r.order[2], r.order[3], r.last_change[0], r.last_change[1], r.last_change[2],
+      r.last_change[3]);
+  return r;
+}
+
+TEST(MeridianGreen, FlatLayerAxisPostAgreesWithThe3DPost) {
+  // scenes/flat_layer.json's layer and sizes with the paper's post on its axis (0.2 × 0.4 mm, meshed at the
+  // default sensor_h, half its radius); the reference is the unbounded layer's meridian post at twice
+  // kfit's resolution (its own error ~1e-3 of peak, PostConvergesOnItsMeridian); the layer's free side is
+  // 17 mm beyond the farthest offset, where the side's influence is below 1e-6 (README, Truncation).
+  constexpr double h = 3.04;
+  Scene s;
+  s.geometry.kind = GeometryKind::flat;
+  s.geometry.flat = {h, 20.0};
+  s.sensors.positions = {{0.0, 0.0}};
+  s.sensors.model = SensorModel::post;
+  s.sensors.post = {kPostD, kPostH};
+  s.mesh.h_min = 0.2, s.mesh.h_max = 3.0, s.mesh.growth = 1.7;
+  s.mesh.regions = {{{0, 0}, {0, 0}, 1.0, 0.6}, {{-12.5, 0}, {12.5, 0}, 0.5, 1.0}};
+  const MeridianGreen ref = post_green([](double) { return h; }, 60, h, 0.5);
+  const PostAgainstMeridian r = post_against_meridian(s, ref, {0.0, 0.5, 1.0, 2.0, 3.0});
+  // Measured (16k, 37k, 98k DOFs): zz 3.4e-2, 2.2e-2, 1.4e-2 of peak, xz 4.2e-2, 1.5e-2, 1.6e-2, zx 2.7e-2,
+  // 1.3e-2, 3.3e-3, xx 2.6e-2, 1.4e-2, 4.7e-3: orders 1.25, 1.43 (σ_z reading, mode 0) and 3.0, 2.5 (σ_x,
+  // mode 1). `green --path 3d` on the same scene (the half mesh, point loads) gave 1.6 and 1.9 for mode 0:
+  // the σ_z reading's order lies about 1.2–1.6 depending on the mesh family, short of the 1.5 aimed at
+  // (README, "Posts on the meridian"). What is asserted: mode 1 at order >= 1.5, mode 0 at >= 1.0, and every
+  // component's error at the finest level is what the 3D levels themselves say it is: at order p >= 1 the
+  // error left is |g(1) − g(1.41)| / (1.41^p − 1) <= 2.4× that change.
+  for (size_t c = 0; c < 4; ++c) {
+    EXPECT_GT(r.order[c], c == 1 || c == 3 ? 1.5 : 1.0) << "component " << c;
+    EXPECT_LT(r.err[c].back(), 2.5 * r.last_change[c]) << "component " << c;
+  }
+}
+
 TEST(MeridianGreen, CapApexPostAgreesWithThe3DPost) {
-  // The cap of CapApexAgreesWithThe3DSolver with the paper's post at its apex; the 3D levels are one
-  // scaled_scene family (every size and the grading), the meridian at twice kfit's resolution (previous
-  // tests: ~5e-4 of peak) the reference.
+  // The cap of CapApexAgreesWithThe3DSolver with the paper's post at its apex, the meridian at twice kfit's
+  // resolution (previous tests: ~5e-4 of peak) the reference.
   Scene s;
   s.geometry.kind = GeometryKind::cap;
   s.geometry.cap = {20.0, 3.0, 0.0, 0.0, 6.0};
@@ -276,45 +352,21 @@ TEST(MeridianGreen, CapApexPostAgreesWithThe3DPost) {
   s.sensors.post = {kPostD, kPostH};
   s.mesh.h_min = 0.3, s.mesh.h_max = 1.2, s.mesh.growth = 1.5, s.mesh.sensor_h = 0.05;
   const auto top = [](double r) { return 3.0 - 20.0 + std::sqrt(400.0 - r * r); };
-  const MeridianGreen ref = post_green(top, 6.0, 3.0, 0.5);
-  std::vector<double> size;
-  std::array<std::vector<double>, 4> err;
-  for (double scale : {2.0, 1.41, 1.0}) {
-    const TetMesh mesh = build_mesh(scaled_scene(s, scale));
-    const ElasticModel model(mesh, s.material, SideCondition::free, {});
-    const green::FeGreen fe(model, s.sensors);
-    std::array<double, 4> diff{}, peak{};
-    for (double x : {0.0, 0.5, 1.0, 2.0}) {
-      const green::GreenSample g3 = fe.at(0, true, x, 0, green::LayerLoad::punch, kA),
-                               gm = punch_readings(ref, x);
-      for (size_t c = 0; c < 4; ++c) {
-        const auto comp = green::kComponents[c];
-        diff[c] = std::max(diff[c], std::abs(green::component(g3, comp) - green::component(gm, comp)));
-        peak[c] = std::max(peak[c], std::abs(green::component(gm, comp)));
-      }
-    }
-    for (size_t c = 0; c < 4; ++c) err[c].push_back(diff[c] / peak[c]);
-    std::printf("3D scale %.2f: %d DOFs; |3D - meridian| / peak at 0-2 mm: zz %.2e zx %.2e xz %.2e xx %.2e\n",
-                scale, model.solver().free_dofs(), err[0].back(), err[1].back(), err[2].back(),
-                err[3].back());
-    size.push_back(scale);
-  }
-  std::array<double, 4> order{};
-  for (size_t c = 0; c < 4; ++c) order[c] = testing::observed_order(size, err[c]);
-  std::printf("observed order of the 3D error: zz %.2f zx %.2f xz %.2f xx %.2f\n", order[0], order[1],
-              order[2], order[3]);
+  const PostAgainstMeridian r =
+      post_against_meridian(s, post_green(top, 6.0, 3.0, 0.5), {0.0, 0.5, 1.0, 2.0});
   // Measured (15k, 37k, 94k DOFs; a fourth level at scale 0.71, 237k DOFs, in parentheses): zz 3.1e-2,
   // 1.7e-2, 1.4e-2 (8.7e-3); zx 1.9e-2, 6.6e-3, 2.7e-3 (1.3e-3); xz 3.6e-2, 1.9e-2, 1.6e-2 (8.1e-3); xx
   // 2.0e-2, 5.7e-3, 1.2e-3 (1.7e-3). The σ_x reading (mode 1: zx, xx) converges at order 2.8–4; the σ_z
-  // reading (mode 0) at 1.2 (1.3 over four levels): the post's wall and top are meshed uniformly at
-  // sensor_h, and its adjoint's displacement jump at the foot and the singular rim are resolved by one
-  // element there (the meridian grades toward both corners). Every component must converge to the meridian.
-  EXPECT_GT(order[1], 1.5);
-  EXPECT_GT(order[3], 1.5);
-  EXPECT_GT(order[0], 0.8);
-  EXPECT_GT(order[2], 0.8);
-  for (size_t c = 0; c < 4; ++c) EXPECT_LT(err[c].back(), 0.6 * err[c].front()) << c;
-  EXPECT_LT(std::max(err[0].back(), err[2].back()), 2e-2);
+  // reading (mode 0) at 1.2 (1.3 over four levels) on this cap, where the mesh grows faster away from the
+  // post (growth 1.5 from a 0.3 mm h_min) than on the flat layer above (order 1.6). Grading the 3D mesh
+  // toward the post's top rim (to sensor_h²/diameter, a structured wall) did not help: 9.0e-3 at scale 1
+  // but not monotone over the levels. Every component must converge to the meridian.
+  EXPECT_GT(r.order[1], 1.5);
+  EXPECT_GT(r.order[3], 1.5);
+  EXPECT_GT(r.order[0], 0.8);
+  EXPECT_GT(r.order[2], 0.8);
+  for (size_t c = 0; c < 4; ++c) EXPECT_LT(r.err[c].back(), 0.6 * r.err[c].front()) << c;
+  EXPECT_LT(std::max(r.err[0].back(), r.err[2].back()), 2e-2);
 }
 
 }  // namespace
