@@ -10,26 +10,64 @@ std::vector<ReadingSite> reading_sites(const Sensors& sensors, bool point) {
   std::vector<ReadingSite> sites;
   for (const Vec2& p : sensors.positions)
     sites.push_back(sensors.model == SensorModel::post
-                        ? ReadingSite{p, sensors.post.diameter, sensors.post.height}
+                        ? ReadingSite{p, sensors.post.diameter, sensors.post.height, sensors.post.support}
                         : ReadingSite{p, point ? 0.0 : sensors.disc_diameter, 0.0});
   return sites;
 }
 
-SensorReadings::SensorReadings(const TetMesh& mesh, std::vector<ReadingSite> sites)
-    : mesh_(mesh), sites_(std::move(sites)), functional_(std::make_unique<ReadingFunctionals>(mesh)) {}
+SensorReadings::SensorReadings(const TetMesh& mesh, std::vector<ReadingSite> sites,
+                               const MixedSolver* supports)
+    : mesh_(mesh), sites_(std::move(sites)), functional_(std::make_unique<ReadingFunctionals>(mesh)) {
+  for (int k = 0; k < size(); ++k) {
+    if (!site(k).post() || site(k).support.rigid() || same_post(k) != k) continue;
+    bool cut = false;
+    post_nodes(k, cut);
+    for (char kind : cut ? std::string("xzv") : std::string("xyzuv")) modes_.push_back({k, kind});
+  }
+  if (modes_.empty()) return;
+  if (!supports)
+    throw std::invalid_argument("posts on membrane springs need the factored skin for their weights");
+  const int M = static_cast<int>(modes_.size());
+  for (const Mode& m : modes_) phi_.push_back(mode_vector(m).sparseView());
+  K_.resize(M, M);
+  for (int j = 0; j < M; ++j) {
+    const MixedSolution x =
+        supports->solve(Eigen::VectorXd::Zero(3 * mesh_.num_nodes()), Eigen::VectorXd(phi_[j]));
+    const Eigen::VectorXd R = supports->reactions(x, {});
+    for (int i = 0; i < M; ++i) K_(i, j) = phi_[i].dot(R);
+  }
+  // A half post on the mirror plane stands on half its membrane.
+  Eigen::VectorXd Ks(M);
+  for (int i = 0; i < M; ++i) {
+    const MembraneSprings& s = site(modes_[i].site).support;
+    bool cut = false;
+    post_nodes(modes_[i].site, cut);
+    const char kind = modes_[i].kind;
+    Ks[i] = (cut ? 0.5 : 1.0) * (kind == 'z'                  ? s.k_normal
+                                 : kind == 'x' || kind == 'y' ? s.k_tangential
+                                                              : s.k_tilt);
+  }
+  const Eigen::MatrixXd KsK = Eigen::MatrixXd(K_) + Eigen::MatrixXd(Ks.asDiagonal());
+  // T = K_s (K + K_s)⁻¹, from (K + K_s)ᵀ Tᵀ = K_s (both symmetric).
+  T_ = KsK.ldlt().solve(Eigen::MatrixXd(Ks.asDiagonal())).transpose();
+}
 
 SensorReadings::~SensorReadings() = default;
 SensorReadings::SensorReadings(SensorReadings&&) noexcept = default;
 
-Eigen::VectorXd SensorReadings::weights(int k, char component) const {
+int SensorReadings::same_post(int k) const {
+  for (int i = 0; i < k; ++i)
+    if (site(i).post() && site(i).center == site(k).center) return i;
+  return k;
+}
+
+std::vector<int> SensorReadings::post_nodes(int k, bool& cut) const {
+  // The post's nodes (its wall, top and the outline they share with the base). A half mesh holds half a post
+  // on its cut (a node on the cut marks it).
   const ReadingSite& s = site(k);
-  if (!s.post()) return (*functional_)(s.center[0], s.center[1], s.diameter, component);
-  // The post's nodes (its wall, top and the outline they share with the base): the reaction on them is the
-  // force the post exerts on the skin. A half mesh holds half a post on its cut (a node on the cut marks
-  // it), and half its force: read over half the cross-section.
   const double r = 0.5 * s.diameter;
   std::vector<int> on_post;
-  bool cut = false;
+  cut = false;
   for (int n = 0; n < mesh_.num_nodes(); ++n) {
     if (!(mesh_.node_marker(n) & kPost)) continue;
     const double d = std::hypot(mesh_.nodes(n, 0) - s.center[0], mesh_.nodes(n, 1) - s.center[1]);
@@ -40,9 +78,46 @@ Eigen::VectorXd SensorReadings::weights(int k, char component) const {
   if (on_post.empty())
     throw std::out_of_range("no post at (" + std::to_string(s.center[0]) + ", " +
                             std::to_string(s.center[1]) + ") in the mesh");
-  const double area = (cut ? 0.5 : 1.0) * M_PI * r * r;
+  return on_post;
+}
+
+Eigen::VectorXd SensorReadings::mode_vector(const Mode& m) const {
+  bool cut = false;
+  Eigen::VectorXd phi = Eigen::VectorXd::Zero(3 * mesh_.num_nodes());
+  const Vec2& c = site(m.site).center;
+  for (int n : post_nodes(m.site, cut)) {
+    const Eigen::Vector3d r(mesh_.nodes(n, 0) - c[0], mesh_.nodes(n, 1) - c[1], mesh_.nodes(n, 2));
+    Eigen::Vector3d u = Eigen::Vector3d::Zero();
+    if (m.kind == 'x') u.x() = 1;
+    if (m.kind == 'y') u.y() = 1;
+    if (m.kind == 'z') u.z() = 1;
+    if (m.kind == 'u') u = Eigen::Vector3d::UnitX().cross(r);
+    if (m.kind == 'v') u = Eigen::Vector3d::UnitY().cross(r);
+    phi.segment<3>(3 * n) = u;
+  }
+  return phi;
+}
+
+Eigen::VectorXd SensorReadings::weights(int k, char component) const {
+  const ReadingSite& s = site(k);
+  if (!s.post()) return (*functional_)(s.center[0], s.center[1], s.diameter, component);
+  // The reaction on the post's nodes is the force the post exerts on the skin; a half post carries half its
+  // force: read over half the cross-section.
+  bool cut = false;
+  const std::vector<int> on_post = post_nodes(k, cut);
+  const double r = 0.5 * s.diameter, area = (cut ? 0.5 : 1.0) * M_PI * r * r;
+  const double sign = component == 'z' ? 1.0 : -1.0;
+  if (!s.support.rigid()) {
+    // Row `component` of this post's modes in T, over every mode's φ.
+    int row = -1;
+    for (size_t i = 0; i < modes_.size(); ++i)
+      if (modes_[i].site == same_post(k) && modes_[i].kind == component) row = static_cast<int>(i);
+    Eigen::VectorXd w = Eigen::VectorXd::Zero(3 * mesh_.num_nodes());
+    for (size_t j = 0; j < modes_.size(); ++j) w += (sign * T_(row, j) / area) * phi_[j];
+    return w;
+  }
   Eigen::VectorXd w = Eigen::VectorXd::Zero(3 * mesh_.num_nodes());
-  for (int n : on_post) w[3 * n + (component == 'z' ? 2 : 0)] = (component == 'z' ? 1.0 : -1.0) / area;
+  for (int n : on_post) w[3 * n + (component == 'z' ? 2 : 0)] = sign / area;
   return w;
 }
 

@@ -14,10 +14,12 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 #include <memory>
 #include <vector>
 
 #include "fem/base_traction.hpp"
+#include "fem/mixed_solver.hpp"
 #include "mesh/tet_mesh.hpp"
 #include "scene/scene.hpp"
 
@@ -28,6 +30,7 @@ struct ReadingSite {
   double diameter = 0;     // mm: the disc the traction is averaged over (0 reads the value at the centre), or
                            // the post's
   double post_height = 0;  // mm; > 0: a post of this height (the mesh must have it), else a disc
+  MembraneSprings support{};  // a post's: rigid, or the springs its gauges read (see SensorReadings)
   bool post() const { return post_height > 0; }
   // Traits. The reading is unchanged by rotations about the vertical axis through its centre, so on a body
   // of revolution about that axis σ_z is a mode-0 and σ_x a mode-1 meridian problem.
@@ -42,10 +45,20 @@ struct ReadingSite {
 std::vector<ReadingSite> reading_sites(const Sensors& sensors, bool point = false);
 
 // Sites on one mesh: their weights, factored once for all of them (the base mass matrix).
+//
+// Posts on membrane springs. The gauges read the force the springs carry. With every post held, a load
+// gives each post's generalized force on the skin P₀ (forces and the moments about its foot's centre: the
+// rigid modes x, y, z, tilt about x, tilt about y). Let the posts move by U against springs K_s: the skin
+// then feels P₀ + K U, K the skin's stiffness against the posts' rigid motions (all posts together: they
+// interact through the skin), and each post's equilibrium is P₀ + K U + K_s U = 0. The springs carry
+// K_s U = −K_s (K + K_s)⁻¹ P₀, so the reading is T P₀ with T = K_s (K + K_s)⁻¹: still a linear functional of
+// the held posts' reactions, whose weights are T's rows over the rigid modes. K comes from one adjoint
+// solve per mode (a post displaced rigidly, everything else held): K_ij = φ_i · R(φ_j).
 class SensorReadings {
  public:
   // Keeps a reference to mesh, which must outlive it. Throws std::out_of_range when a site leaves the base.
-  SensorReadings(const TetMesh& mesh, std::vector<ReadingSite> sites);
+  // supports: the factored skin, needed when a post stands on springs (std::invalid_argument without it).
+  SensorReadings(const TetMesh& mesh, std::vector<ReadingSite> sites, const MixedSolver* supports = nullptr);
   SensorReadings(TetMesh&&, std::vector<ReadingSite>) = delete;
   ~SensorReadings();
   SensorReadings(SensorReadings&&) noexcept;
@@ -58,11 +71,26 @@ class SensorReadings {
   Eigen::MatrixXd weight_block() const;
   // The forward reading of site k from a solved field's reactions (3N), w·R.
   SensorReading read(int k, const Eigen::VectorXd& reactions) const;
+  // Posts on springs: the skin's stiffness against the posts' rigid modes (K above; N/mm, N, N·mm/rad) and
+  // T = K_s (K + K_s)⁻¹, M×M over the modes in order (posts in site order, each x, y, z, tilt x, tilt y; a
+  // half post on the mirror plane x, z, tilt y only). Empty for rigid posts.
+  const Eigen::MatrixXd& post_stiffness() const { return K_; }
+  const Eigen::MatrixXd& spring_transfer() const { return T_; }
 
  private:
+  struct Mode {
+    int site;
+    char kind;  // 'x', 'y', 'z', 'u' (tilt about x), 'v' (tilt about y)
+  };
+  std::vector<int> post_nodes(int k, bool& cut) const;
+  int same_post(int k) const;  // the first site standing for site k's post (a list may name a post twice)
+  Eigen::VectorXd mode_vector(const Mode& m) const;  // φ (3N): the rigid mode on its post's nodes
   const TetMesh& mesh_;
   std::vector<ReadingSite> sites_;
   std::unique_ptr<ReadingFunctionals> functional_;
+  std::vector<Mode> modes_;
+  std::vector<Eigen::SparseVector<double>> phi_;  // each mode's φ
+  Eigen::MatrixXd K_, T_;
 };
 
 }  // namespace skinfem

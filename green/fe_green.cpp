@@ -35,7 +35,7 @@ FeGreen::FeGreen(const ElasticModel& model, const Sensors& sensors,
   std::vector<ReadingSite> sites;
   const auto points = reading_sites(sensors, true), discs = reading_sites(sensors);
   for (int s = 0; s < ns; ++s) sites.insert(sites.end(), {points[s], discs[s]});
-  const SensorReadings readings(m, sites);
+  const SensorReadings readings(m, sites, &model.solver());
   Eigen::MatrixXd W(3 * m.num_nodes(), 4 * ns);
   for (int s = 0; s < ns; ++s)
     for (bool disc : {false, true})

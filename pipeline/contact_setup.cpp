@@ -39,7 +39,7 @@ std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<
     watch_faces = contact::watch_path(solved, zone, sw.from, sw.to, 0.5 * sw.hole_diameter);
   }
   Stopwatch condense_clock;
-  s->readings = std::make_unique<SensorReadings>(solved, reading_sites(scene.sensors));
+  s->readings = std::make_unique<SensorReadings>(solved, reading_sites(scene.sensors), &s->model->solver());
   s->condensed = std::make_unique<contact::CondensedContact>(contact::condense(
       *s->model, zone, *s->indenter, *s->readings, scene.contact->direction,
       [&](double fraction, const std::string& what) {

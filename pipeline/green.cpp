@@ -105,7 +105,7 @@ GreenRun green_run(const Scene& scene, const SensorGreens& greens, const Adjoint
     const LoadCaseResult direct =
         model.solve(model.point_load(s0[0] + 1.0, s0[1], {0, 0, half ? -0.5 : -1.0}), {});
     const SensorReading direct_reading =
-        SensorReadings(setup->mesh, {reading_sites(scene.sensors).at(0)}).read(0, direct.reactions);
+        SensorReadings(setup->mesh, reading_sites(scene.sensors), &model.solver()).read(0, direct.reactions);
     const GreenSample adjoint_value = greens.at(0, true, 1.0, 0.0, LayerLoad::point, 0);
     run.reciprocity_rel =
         std::abs(direct_reading.sigma_z - adjoint_value.zz) / std::abs(direct_reading.sigma_z);

@@ -55,6 +55,8 @@ std::string meridian_unavailable(const Scene& scene) {
   if (g.kind == GeometryKind::surface) return "an imported surface is not known to be a body of revolution";
   if (g.ridges.present()) return "the ridged top is not a body of revolution";
   if (posts_among_others(scene)) return "the other posts are rigid inclusions off the axis of each";
+  if (scene.sensors.model == SensorModel::post && !scene.sensors.post.support.rigid())
+    return "the meridian post is held rigidly; its membrane springs are modelled in 3D only";
   if (g.kind == GeometryKind::flat) {
     // The meridian stands for the unbounded layer: it answers the scene only where the layer's side is far
     // from every calibration load. The side's influence decays as exp(−0.739 d/h) (README, Truncation); at

@@ -36,7 +36,7 @@ SolveRun solve_run(const Scene& scene, SolverKind solver) {
   run.wall["solve"] = clock.seconds();
   run.metrics = load_metrics(scene, mesh, run.result, base);
   run.base_force_N = base.total_force();
-  const SensorReadings readings(mesh, reading_sites(scene.sensors));
+  const SensorReadings readings(mesh, reading_sites(scene.sensors), &run.model->solver());
   for (int i = 0; i < readings.size(); ++i) run.readings.push_back(readings.read(i, run.result.reactions));
   return run;
 }

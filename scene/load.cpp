@@ -16,7 +16,9 @@
 //   material      {"E", "nu"}
 //   sensors       {"positions": [[x, y], ...]} or {"line": {"start": [x, y], "step": [dx, dy], "count"}},
 //                 plus "model"*: "disc" (default, with "disc_diameter") | "post" with "post"*: {"diameter"*
-//                 (0.2), "height"* (0.4, below the skin's top), "support"*: "rigid"} (flat and cap skins)
+//                 (0.2), "height"* (0.4, below the skin's top), "support"*: "rigid" (default) | {"k_normal"
+//                 (N/mm), "k_tangential" (N/mm), "k_tilt" (N mm/rad)}: the membrane's springs} (flat and cap
+//                 skins)
 //   mesh          {"h_min", "growth", "h_max", "refine_sensors"*, "sensor_h"*, "min_dihedral_deg"*,
 //                  "max_radius_edge"*, "regions"*: [{"from": [x, y], "to": [x, y], "radius", "h"*}]}
 //                 sensor_h: <mm, in (0, h_min]>, size at each sensor disc on the base (default min(h_min,
@@ -472,8 +474,21 @@ Sensors read_sensors(const Reader& r, const json& s, std::vector<SensorSource>& 
     r.object(*post, PP, {"diameter", "height", "support"});
     out.post.diameter = r.number_or(*post, PP, "diameter", out.post.diameter, length());
     out.post.height = r.number_or(*post, PP, "height", out.post.height, length());
-    if (const json* support = Reader::find(*post, "support"); support && *support != "rigid")
-      r.fail(sub(PP, "support"), *support, R"(must be "rigid" (membrane springs are not modelled yet))");
+    if (const json* support = Reader::find(*post, "support"); support && *support != "rigid") {
+      const std::string PS = sub(PP, "support");
+      if (!support->is_object())
+        r.fail(PS, *support,
+               R"(must be "rigid" or the membrane's springs {"k_normal", "k_tangential", "k_tilt"})");
+      r.object(*support, PS, {"k_normal", "k_tangential", "k_tilt"});
+      // Stiffnesses from 1e-6 to 1e9 N/mm: a silicon membrane's are about 1e2–1e4 N/mm (README, Posts).
+      const auto stiffness = [](const std::string& unit) {
+        return Rule{"a stiffness in [1e-06, 1e+09] " + unit, [](double x) { return x >= 1e-6 && x <= 1e9; }};
+      };
+      MembraneSprings& k = out.post.support;
+      k.k_normal = r.number(*support, PS, "k_normal", stiffness("N/mm"));
+      k.k_tangential = r.number(*support, PS, "k_tangential", stiffness("N/mm"));
+      k.k_tilt = r.number(*support, PS, "k_tilt", stiffness("N mm/rad"));
+    }
   }
   const json* positions = Reader::find(s, "positions");
   const json* line = Reader::find(s, "line");
@@ -615,7 +630,7 @@ MeshControls read_mesh(const Reader& r, const json& m) {
   return mc;
 }
 
-Loads read_loads(const Reader& r, const json& l) {
+Loads read_loads(const Reader& r, const json& l, bool posts_on_springs) {
   const std::string P = "loads";
   r.object(l, P, {"punches", "patches"});
   Loads loads;
@@ -634,6 +649,11 @@ Loads read_loads(const Reader& r, const json& l) {
       if ((force != nullptr) == (disp != nullptr))
         r.fail(PP, j, R"(must have exactly one of "force" (N) or "displacement" (mm))");
       if (force) punch.force = r.number(*force, sub(PP, "force"), force_rule());
+      // A post on springs moves under the load; a punch held at its force moves with it, and the skin's
+      // stiffness against the posts' motions (fem/sensor_reading.hpp) is then not the held skin's.
+      if (force && posts_on_springs)
+        r.fail(sub(PP, "force"), *force,
+               "cannot drive a punch with posts on membrane springs: give its displacement, or use a patch");
       if (disp) punch.displacement = r.number(*disp, sub(PP, "displacement"), length());
       loads.punches.push_back(punch);
     }
@@ -1037,7 +1057,8 @@ Scene parse_scene(const std::string& json_text, const std::string& source_path) 
   check_sensor_footprint(r, scene.geometry, scene.sensors, sources);
   scene.mesh = read_mesh(r, r.need(root, "", "mesh", "an object"));
   if (const json* loads = Reader::find(root, "loads")) {
-    scene.loads = read_loads(r, *loads);
+    scene.loads = read_loads(r, *loads,
+                             scene.sensors.model == SensorModel::post && !scene.sensors.post.support.rigid());
     check_loads(r, scene);
   }
   if (const json* cal = Reader::find(root, "calibration")) {

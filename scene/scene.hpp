@@ -102,9 +102,18 @@ struct Material {
 // rigid cylinder standing on the base, bonded to the skin around it) reads the force the skin exerts on it,
 // as that force over its cross-section (fem/sensor_reading.hpp).
 enum class SensorModel { disc, post };
+// The membrane a post stands on, as springs between the post's foot and the frame: the gauges read the force
+// the springs carry. All zero: a rigid support (the post held still).
+struct MembraneSprings {
+  double k_normal = 0;      // N/mm, along z
+  double k_tangential = 0;  // N/mm, along x and y
+  double k_tilt = 0;        // N·mm/rad, about x and y through the foot's centre
+  bool rigid() const { return k_normal == 0; }
+};
 struct PostSensor {
   double diameter = 0.2;  // mm
   double height = 0.4;    // mm, above the base; less than the skin's thickness there
+  MembraneSprings support{};
 };
 struct Sensors {
   std::vector<Vec2> positions;  // mm, numbered 1..n in this order

@@ -60,7 +60,8 @@ Side condensed_side(const Scene& s, const TetMesh& m) {
   const HoleSweep sw = test_sweep();
   const std::vector<int> faces = watch_path(m, zone, sw.from, sw.to, 0.5 * sw.hole_diameter);
   x.condensed = std::make_unique<CondensedContact>(
-      condense(*x.model, zone, *x.indenter, SensorReadings(m, reading_sites(s.sensors)), {1, 0}, {}, faces));
+      condense(*x.model, zone, *x.indenter, SensorReadings(m, reading_sites(s.sensors), &x.model->solver()),
+               {1, 0}, {}, faces));
   return x;
 }
 
@@ -146,10 +147,16 @@ TEST(MirrorContact, HalfEqualsTheMirroredWholeInEveryFrictionModeWithHoles) {
 // Posts on y = 0 cut in half: the half's top keeps its own points on the cut, the base has the posts' ends
 // there (mesh/surface.cpp), and the cut face is meshed from both. Its mirror is a valid whole whose contact,
 // sweep and readings the half reproduces.
-TEST(MirrorContact, HalfWithPostsEqualsTheMirroredWhole) {
+// Posts on membrane springs as well: the half's posts on the cut move in their symmetric modes (x, z, tilt
+// about y) on half their springs; the whole's in all five, whose antisymmetric ones no symmetric load
+// excites.
+class MirrorPosts : public testing::TestWithParam<bool> {};
+
+TEST_P(MirrorPosts, HalfWithPostsEqualsTheMirroredWhole) {
   Scene s = plate_on_cap();
   s.sensors.model = SensorModel::post;
   s.sensors.post = {0.2, 0.4};
+  if (GetParam()) s.sensors.post.support = {8.0, 3.0, 0.05};
   const TetMesh half = build_mesh(s, MeshPart::half_y);
   std::vector<int> source;
   const TetMesh whole = mirror_half(half, &source);
@@ -179,6 +186,10 @@ TEST(MirrorContact, HalfWithPostsEqualsTheMirroredWhole) {
               w.model->solver().free_dofs(), worst);
   EXPECT_LT(worst, 1e-8);  // as above: round-off of two factorizations and LCP solves
 }
+INSTANTIATE_TEST_SUITE_P(MirrorContact, MirrorPosts, testing::Values(false, true),
+                         [](const testing::TestParamInfo<bool>& p) {
+                           return p.param ? "OnSprings" : "Held";
+                         });
 
 }  // namespace
 }  // namespace skinfem::contact

@@ -5,6 +5,7 @@
 // reading of a unit load equals the forward reading of the direct solve, a second method).
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstdio>
 
@@ -184,6 +185,89 @@ TEST(PostSensor, AdjointReadingIsTheForwardOne) {
     }
   }
   EXPECT_LT(worst, 1e-6 * peak);
+}
+
+// Posts on membrane springs (fem/sensor_reading.hpp): the reading T·P₀ by the adjoint weights against the
+// forward equilibrium found independently. Forward: the loaded skin with both posts displaced rigidly by
+// each mode in turn gives the skin's stiffness against the posts' motions; the posts' equilibrium
+// displacement U* solves (K + K_s) U = −P₀; a last direct solve with the posts at U* gives the force each
+// post exerts on the skin, which the springs must balance (P + K_s U* = 0) and which the gauges read.
+TEST(PostSensor, SpringReadingIsTheForwardEquilibrium) {
+  const TetMesh& m = post_mesh();
+  Scene s = post_scene();
+  s.sensors.post.support = {8.0, 3.0, 0.05};  // N/mm, N/mm, N·mm/rad: of the order of the skin's own
+  const ElasticModel model(m, s.material, SideCondition::free, std::vector<Punch>{});
+  const SensorReadings springs(m, reading_sites(s.sensors), &model.solver());
+  const Eigen::MatrixXd& K = springs.post_stiffness();
+  ASSERT_EQ(K.rows(), 10);  // two posts, five rigid modes each
+  std::printf(
+      "skin stiffness against post 1's modes x, y, z, tilt x, tilt y: %.3g %.3g %.3g N/mm, %.3g %.3g N "
+      "mm/rad\n",
+      K(0, 0), K(1, 1), K(2, 2), K(3, 3), K(4, 4));
+  // Maxwell–Betti: K is symmetric; it is positive definite (moving a post into the skin takes work).
+  EXPECT_LT((K - K.transpose()).norm(), 1e-9 * K.norm());
+  EXPECT_GT(
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(0.5 * (K + K.transpose())).eigenvalues().minCoeff(), 0);
+
+  // The rigid modes on a post's nodes (the same as the seam's, built here from the mesh).
+  const int N = m.num_nodes();
+  const auto mode = [&](int post, int j) {
+    Eigen::VectorXd phi = Eigen::VectorXd::Zero(3 * N);
+    const Vec2& c = s.sensors.positions[post];
+    for (int n = 0; n < N; ++n) {
+      if (!(m.node_marker(n) & kPost) || std::hypot(m.nodes(n, 0) - c[0], m.nodes(n, 1) - c[1]) > 0.1 + 1e-9)
+        continue;
+      const Eigen::Vector3d r(m.nodes(n, 0) - c[0], m.nodes(n, 1) - c[1], m.nodes(n, 2));
+      const Eigen::Vector3d u =
+          j < 3 ? Eigen::Vector3d::Unit(j).eval() : Eigen::Vector3d::Unit(j == 3 ? 0 : 1).cross(r).eval();
+      phi.segment<3>(3 * n) = u;
+    }
+    return phi;
+  };
+  std::vector<Eigen::VectorXd> phi;
+  for (int post = 0; post < 2; ++post)
+    for (int j = 0; j < 5; ++j) phi.push_back(mode(post, j));
+  Eigen::VectorXd Ks(10);
+  for (int i = 0; i < 10; ++i) Ks[i] = i % 5 == 2 ? 8.0 : i % 5 < 2 ? 3.0 : 0.05;
+
+  const TractionPatch patch{{0.6, 0.2}, 0.5, {0.3, 0.1, -1}, 1.0};
+  const Eigen::VectorXd f = model.patch_load(patch);
+  const auto P = [&](const Eigen::VectorXd& U) {  // generalized forces of the posts on the skin
+    Eigen::VectorXd u_fixed = Eigen::VectorXd::Zero(3 * N);
+    for (int i = 0; i < 10; ++i) u_fixed += U[i] * phi[i];
+    const MixedSolution x = model.solver().solve(f, u_fixed);
+    const Eigen::VectorXd R = model.solver().reactions(x, f);
+    Eigen::VectorXd out(10);
+    for (int i = 0; i < 10; ++i) out[i] = phi[i].dot(R);
+    return std::make_pair(out, R);
+  };
+  const auto [P0, R0] = P(Eigen::VectorXd::Zero(10));
+  Eigen::MatrixXd K_forward(10, 10);
+  for (int j = 0; j < 10; ++j) K_forward.col(j) = P(Eigen::VectorXd::Unit(10, j)).first - P0;
+  const Eigen::VectorXd U = -(K_forward + Eigen::MatrixXd(Ks.asDiagonal())).lu().solve(P0);
+  const Eigen::VectorXd P_star = P(U).first;
+  EXPECT_LT((P_star + Ks.cwiseProduct(U)).norm(), 1e-9 * P0.norm()) << "the posts are not in equilibrium";
+
+  // The seam's reading of the held posts' reactions is the forward reading at equilibrium.
+  const SensorReadings rigid(m, reading_sites(post_scene().sensors));
+  const double area = M_PI * 0.25 * kDiameter * kDiameter;
+  for (int k = 0; k < 2; ++k) {
+    const SensorReading adjoint = springs.read(k, R0), held = rigid.read(k, R0);
+    const double forward_z = P_star[5 * k + 2] / area, forward_x = -P_star[5 * k] / area;
+    std::printf("post %d: held sigma_z %.4f sigma_x %.4f, on springs %.4f %.4f (forward %.4f %.4f) kPa\n",
+                k + 1, 1e3 * held.sigma_z, 1e3 * held.sigma_x, 1e3 * adjoint.sigma_z, 1e3 * adjoint.sigma_x,
+                1e3 * forward_z, 1e3 * forward_x);
+    EXPECT_NEAR(adjoint.sigma_z, forward_z, 1e-8 * std::abs(held.sigma_z));
+    EXPECT_NEAR(adjoint.sigma_x, forward_x, 1e-8 * std::abs(held.sigma_x));
+    // The springs are of the skin's stiffness: the reading changes by a fraction of itself, not by round-off.
+    EXPECT_GT(std::abs(adjoint.sigma_z - held.sigma_z), 1e-2 * std::abs(held.sigma_z));
+  }
+  // Stiff springs are the held post: T = I − K (K + K_s)⁻¹ differs from I by about ‖K‖ / k.
+  s.sensors.post.support = {1e9, 1e9, 1e9};
+  const SensorReadings stiff(m, reading_sites(s.sensors), &model.solver());
+  for (int k = 0; k < 2; ++k)
+    EXPECT_NEAR(stiff.read(k, R0).sigma_z, rigid.read(k, R0).sigma_z,
+                1e-6 * std::abs(rigid.read(k, R0).sigma_z));
 }
 
 // As its height t → 0 a post becomes the base under its outline, and its reading (force over cross-section)
