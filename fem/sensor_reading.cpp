@@ -17,12 +17,15 @@ std::vector<ReadingSite> reading_sites(const Sensors& sensors, bool point) {
 
 SensorReadings::SensorReadings(const TetMesh& mesh, std::vector<ReadingSite> sites,
                                const MixedSolver* supports)
-    : mesh_(mesh), sites_(std::move(sites)), functional_(std::make_unique<ReadingFunctionals>(mesh)) {
+    : mesh_(mesh),
+      sites_(std::move(sites)),
+      posts_(sites_.size()),
+      functional_(std::make_unique<ReadingFunctionals>(mesh)) {
+  for (int k = 0; k < size(); ++k)
+    if (site(k).post()) posts_[k] = same_post(k) == k ? find_post(k) : posts_[same_post(k)];
   for (int k = 0; k < size(); ++k) {
     if (!site(k).post() || site(k).support.rigid() || same_post(k) != k) continue;
-    bool cut = false;
-    post_nodes(k, cut);
-    for (char kind : cut ? std::string("xzv") : std::string("xyzuv")) modes_.push_back({k, kind});
+    for (char kind : posts_[k].cut ? std::string("xzv") : std::string("xyzuv")) modes_.push_back({k, kind});
   }
   if (modes_.empty()) return;
   if (!supports)
@@ -40,12 +43,10 @@ SensorReadings::SensorReadings(const TetMesh& mesh, std::vector<ReadingSite> sit
   Eigen::VectorXd Ks(M);
   for (int i = 0; i < M; ++i) {
     const MembraneSprings& s = site(modes_[i].site).support;
-    bool cut = false;
-    post_nodes(modes_[i].site, cut);
     const char kind = modes_[i].kind;
-    Ks[i] = (cut ? 0.5 : 1.0) * (kind == 'z'                  ? s.k_normal
-                                 : kind == 'x' || kind == 'y' ? s.k_tangential
-                                                              : s.k_tilt);
+    Ks[i] = (posts_[modes_[i].site].cut ? 0.5 : 1.0) * (kind == 'z'                  ? s.k_normal
+                                                        : kind == 'x' || kind == 'y' ? s.k_tangential
+                                                                                     : s.k_tilt);
   }
   const Eigen::MatrixXd KsK = Eigen::MatrixXd(K_) + Eigen::MatrixXd(Ks.asDiagonal());
   // T = K_s (K + K_s)⁻¹, from (K + K_s)ᵀ Tᵀ = K_s (both symmetric).
@@ -61,31 +62,27 @@ int SensorReadings::same_post(int k) const {
   return k;
 }
 
-std::vector<int> SensorReadings::post_nodes(int k, bool& cut) const {
-  // The post's nodes (its wall, top and the outline they share with the base). A half mesh holds half a post
-  // on its cut (a node on the cut marks it).
+SensorReadings::Post SensorReadings::find_post(int k) const {
   const ReadingSite& s = site(k);
   const double r = 0.5 * s.diameter;
-  std::vector<int> on_post;
-  cut = false;
+  Post post;
   for (int n = 0; n < mesh_.num_nodes(); ++n) {
     if (!(mesh_.node_marker(n) & kPost)) continue;
     const double d = std::hypot(mesh_.nodes(n, 0) - s.center[0], mesh_.nodes(n, 1) - s.center[1]);
     if (d > r * (1 + 1e-6) || mesh_.nodes(n, 2) > s.post_height * (1 + 1e-6)) continue;
-    on_post.push_back(n);
-    cut = cut || (mesh_.node_marker(n) & kSymmetry);
+    post.nodes.push_back(n);
+    post.cut = post.cut || (mesh_.node_marker(n) & kSymmetry);
   }
-  if (on_post.empty())
+  if (post.nodes.empty())
     throw std::out_of_range("no post at (" + std::to_string(s.center[0]) + ", " +
                             std::to_string(s.center[1]) + ") in the mesh");
-  return on_post;
+  return post;
 }
 
 Eigen::VectorXd SensorReadings::mode_vector(const Mode& m) const {
-  bool cut = false;
   Eigen::VectorXd phi = Eigen::VectorXd::Zero(3 * mesh_.num_nodes());
   const Vec2& c = site(m.site).center;
-  for (int n : post_nodes(m.site, cut)) {
+  for (int n : posts_[m.site].nodes) {
     const Eigen::Vector3d r(mesh_.nodes(n, 0) - c[0], mesh_.nodes(n, 1) - c[1], mesh_.nodes(n, 2));
     Eigen::Vector3d u = Eigen::Vector3d::Zero();
     if (m.kind == 'x') u.x() = 1;
@@ -103,9 +100,8 @@ Eigen::VectorXd SensorReadings::weights(int k, char component) const {
   if (!s.post()) return (*functional_)(s.center[0], s.center[1], s.diameter, component);
   // The reaction on the post's nodes is the force the post exerts on the skin; a half post carries half its
   // force: read over half the cross-section.
-  bool cut = false;
-  const std::vector<int> on_post = post_nodes(k, cut);
-  const double r = 0.5 * s.diameter, area = (cut ? 0.5 : 1.0) * M_PI * r * r;
+  const Post& post = posts_[k];
+  const double r = 0.5 * s.diameter, area = (post.cut ? 0.5 : 1.0) * M_PI * r * r;
   const double sign = component == 'z' ? 1.0 : -1.0;
   if (!s.support.rigid()) {
     // Row `component` of this post's modes in T, over every mode's φ.
@@ -117,7 +113,7 @@ Eigen::VectorXd SensorReadings::weights(int k, char component) const {
     return w;
   }
   Eigen::VectorXd w = Eigen::VectorXd::Zero(3 * mesh_.num_nodes());
-  for (int n : on_post) w[3 * n + (component == 'z' ? 2 : 0)] = sign / area;
+  for (int n : post.nodes) w[3 * n + (component == 'z' ? 2 : 0)] = sign / area;
   return w;
 }
 

@@ -82,11 +82,16 @@ class SensorReadings {
     int site;
     char kind;  // 'x', 'y', 'z', 'u' (tilt about x), 'v' (tilt about y)
   };
-  std::vector<int> post_nodes(int k, bool& cut) const;
+  struct Post {
+    std::vector<int> nodes;  // its wall, top and the outline they share with the base
+    bool cut = false;        // a half post on the mirror plane (a half mesh holds half of it)
+  };
+  Post find_post(int k) const;
   int same_post(int k) const;  // the first site standing for site k's post (a list may name a post twice)
   Eigen::VectorXd mode_vector(const Mode& m) const;  // φ (3N): the rigid mode on its post's nodes
   const TetMesh& mesh_;
   std::vector<ReadingSite> sites_;
+  std::vector<Post> posts_;  // by site (empty for a disc), found once
   std::unique_ptr<ReadingFunctionals> functional_;
   std::vector<Mode> modes_;
   std::vector<Eigen::SparseVector<double>> phi_;  // each mode's φ

@@ -182,7 +182,26 @@ Footprint mesh_footprint(const std::vector<Vec2>& loop, const Size2d& size,
     for (const auto& p : pts) vh.push_back(cdt.insert(K::Point_2(p[0], p[1])));
     for (size_t i = 0; i < vh.size(); ++i) cdt.insert_constraint(vh[i], vh[(i + 1) % vh.size()]);
   };
-  insert_loop(loop);
+  if (!cut_at_y0) {
+    insert_loop(loop);
+  } else {
+    // A circle centred on the cut ends on it: the loop's points inside the cut (not its ends) within half
+    // the local size of a circle's end, or between its ends, go, else an edge a thousandth of that size can
+    // remain there (the scaled candelier2011's cut had a point 4e-4 mm from a post's end, and the half 3×
+    // the whole's tets per side).
+    std::vector<Vec2> kept;
+    const size_t n = loop.size();
+    for (size_t i = 0; i < n; ++i) {
+      const Vec2& p = loop[i];
+      const bool inner = p[1] == 0.0 && loop[(i + 1) % n][1] == 0.0 && loop[(i + n - 1) % n][1] == 0.0;
+      bool near_end = false;
+      for (const auto& c : circles)
+        near_end = near_end ||
+                   (c.centre[1] == 0.0 && std::abs(p[0] - c.centre[0]) < c.radius + 0.5 * size(p[0], 0.0));
+      if (!(inner && near_end)) kept.push_back(p);
+    }
+    insert_loop(kept);
+  }
   for (const auto& c : circles) {
     if (!(cut_at_y0 && c.centre[1] == 0.0)) {
       insert_loop(circle_loop(c.centre, c.radius, size));

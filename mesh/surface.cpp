@@ -188,8 +188,9 @@ bool align_rim(Footprint& base, const Footprint& top) {
 }
 
 // The same on a half whose cut the two faces need not share (it is the symmetry face, meshed from whatever
-// points either has there, close_cut): every top rim point has its base point, and the base has no rim point
-// off the cut that the top lacks. Returns the base vertex of each top boundary position (empty if not).
+// points either has there, close_cut): every top rim point has its base point (inside the cut, where the
+// base drops points beside a post's end, it may have none: −1), and the base has no rim point off the cut
+// that the top lacks. Returns the base vertex of each top boundary position (empty if not).
 std::vector<int> align_rim_off_cut(Footprint& base, const Footprint& top) {
   std::map<std::pair<double, double>, int> at;
   for (int b : base.boundary) at[{base.points(b, 0), base.points(b, 1)}] = b;
@@ -201,15 +202,18 @@ std::vector<int> align_rim_off_cut(Footprint& base, const Footprint& top) {
   };
   std::vector<int> match;
   std::vector<char> used(base.points.rows(), 0);
-  for (int t : top.boundary) {
-    const int b = find(top.points(t, 0), top.points(t, 1));
-    if (b < 0) return {};
+  const size_t n = top.boundary.size();
+  const auto on_cut = [&](size_t k) { return top.points(top.boundary[k % n], 1) == 0.0; };
+  for (size_t k = 0; k < n; ++k) {
+    const int b = find(top.points(top.boundary[k], 0), top.points(top.boundary[k], 1));
+    if (b < 0 && !(on_cut(k) && on_cut(k + 1) && on_cut(k + n - 1))) return {};
     match.push_back(b);
-    used[b] = 1;
+    if (b >= 0) used[b] = 1;
   }
   for (int b : base.boundary)
     if (!used[b] && base.points(b, 1) != 0.0) return {};
-  for (size_t k = 0; k < match.size(); ++k) base.points.row(match[k]) = top.points.row(top.boundary[k]);
+  for (size_t k = 0; k < n; ++k)
+    if (match[k] >= 0) base.points.row(match[k]) = top.points.row(top.boundary[k]);
   return match;
 }
 }  // namespace
