@@ -40,6 +40,9 @@ DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> s
   const auto& frames = run.frames;
   Stopwatch clock;
   prepare_output_dir(out_dir + "/frames");
+  // The frames folder is this command's: a previous, longer sweep's frames would outlive this one's.
+  for (const auto& f : std::filesystem::directory_iterator(out_dir + "/frames"))
+    if (f.is_regular_file() && f.path().extension() == ".vtp") std::filesystem::remove(f.path());
   std::ostringstream pvd;
   pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
   for (size_t ci = 0; ci < run.cases.size(); ++ci)

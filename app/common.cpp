@@ -24,6 +24,7 @@ void prepare_output_dir(const std::string& dir) {
 
 void check_output_dir(const std::string& dir) {
   namespace fs = std::filesystem;
+  if (dir.empty()) throw SceneError("--out '': must name a directory (an empty path names none)");
   std::error_code ec;
   fs::path p = fs::absolute(dir, ec);
   if (fs::exists(p, ec) && !fs::is_directory(p, ec))
