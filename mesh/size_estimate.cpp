@@ -91,21 +91,25 @@ struct Integrator {
 };
 }  // namespace
 
-MeshEstimate estimate_mesh(const Scene& scene, double stop_tets) {
+MeshEstimate estimate_mesh(const Scene& scene, double stop_tets, MeshPart part) {
   MeshEstimate e;
   const SkinShape shape(scene.geometry);
   if (!shape.exact()) return e;
-  const SizingField size(scene);
+  const SizingField size(scene, part);
+  const bool half = part == MeshPart::half_y;
   const Geometry& g = scene.geometry;
   const bool cap = g.kind == GeometryKind::cap;
   const double r = cap ? g.cap.truncation_radius : g.flat.half_width;
   const double cx = cap ? g.cap.apex_x : 0, cy = cap ? g.cap.apex_y : 0;
   Integrator in{size, shape, cx, cy, cap ? r : 0, post_circles(scene), scene.sensors.post.height, stop_tets};
-  // Start from a grid of cells no wider than h_max, so no feature is missed between samples.
-  const int n = std::max(1, static_cast<int>(std::ceil(2 * r / size.h_max())));
-  const double half = r / n;
+  // Start from a grid of cells no wider than h_max, so no feature is missed between samples; on a half, an
+  // even count whose upper rows are the half y >= cy.
+  const int n = half ? 2 * std::max(1, static_cast<int>(std::ceil(r / size.h_max())))
+                     : std::max(1, static_cast<int>(std::ceil(2 * r / size.h_max())));
+  const double w = r / n;
   for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) in.cell(cx - r + (2 * i + 1) * half, cy - r + (2 * j + 1) * half, half, 0);
+    for (int j = half ? n / 2 : 0; j < n; ++j)
+      in.cell(cx - r + (2 * i + 1) * w, cy - r + (2 * j + 1) * w, w, 0);
   e.tets = in.tets;
   e.dofs = kDofsPerTet * in.tets;
   e.known = true;

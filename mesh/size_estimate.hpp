@@ -8,6 +8,7 @@
 // to TetGen's actual counts (size_estimate.cpp); the estimate is meant to be right within a factor 2.
 #pragma once
 
+#include "mesh/tet_mesh.hpp"
 #include "scene/scene.hpp"
 
 namespace skinfem {
@@ -19,6 +20,9 @@ struct MeshEstimate {
 };
 
 // Stops integrating (and returns what it has, already above the limit) once `tets` exceeds stop_tets.
-MeshEstimate estimate_mesh(const Scene& scene, double stop_tets = 1e12);
+// part half_y: the half y >= 0 (the skin's axis on y = 0) with the half's sizing field, every region mirrored
+// into it (a region wholly in y > 0 makes the half as big as the whole there); the cut face's own
+// refinement is not counted (resources.cpp allows for it).
+MeshEstimate estimate_mesh(const Scene& scene, double stop_tets = 1e12, MeshPart part = MeshPart::whole);
 
 }  // namespace skinfem

@@ -18,8 +18,8 @@ double available_memory_gb();
 
 // Throws SceneError when the estimate exceeds --max-dofs (if > 0) or the available memory; else reports the
 // estimate as a progress line and returns it.
-// part: what will be meshed; a half y >= 0 is counted as 0.55 of the whole (measured 0.51 on a small cap and
-// 0.54 on candelier2011: TetGen refines the cut face).
+// part: what will be meshed; a half y >= 0 is integrated over its side with its own sizing field (every
+// region mirrored into it), and counted 1.1× for the cut face TetGen refines.
 MeshEstimate check_resources(const Scene& scene, double max_dofs, MeshPart part = MeshPart::whole);
 
 // The same limits on a built mesh, before anything is assembled: the backstop where no estimate exists

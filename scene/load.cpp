@@ -893,7 +893,10 @@ ContactLoad read_contact(const Reader& r, const json& c, const Geometry& geo) {
   } else if (type == "sphere") {
     r.object(ind, PI, {"type", "R", "center"});
     out.indenter = IndenterKind::sphere;
-    out.sphere_R = r.number(ind, PI, "R", length());
+    // Below a micrometre the curvatures that set the zone overflow (R = 5e-324 gave a NaN zone radius).
+    out.sphere_R = r.number(ind, PI, "R", {"a radius in [0.001, " + fmt(kMaxLength) + "] mm", [](double x) {
+                                             return x >= 1e-3 && x <= kMaxLength;
+                                           }});
     out.center = r.vec2(ind, PI, "center");
     const std::string off = off_footprint(geo, out.center, 0, "");
     if (!off.empty())
@@ -998,6 +1001,40 @@ void check_contact_zone(const Reader& r, const json& j, const Scene& scene) {
              "it would reach the truncated side; " + fix);
 }
 
+// Indentations the geometry cannot take and zones the mesh cannot hold, refused with the field that sets them
+// (else the solver failed later, blaming the zone's radius or "refine the mesh there", exit 1).
+void check_contact_extent(const Reader& r, const json& j, const Scene& scene) {
+  const ContactLoad& load = *scene.contact;
+  const bool generated = scene.geometry.kind != GeometryKind::surface;
+  if (load.depth && load.indenter == IndenterKind::sphere && *load.depth >= load.sphere_R)
+    r.fail(
+        "contact.depth", j.at("depth"),
+        "must be below the sphere's radius R = " + fmt(load.sphere_R) + " mm (the indenter is that sphere)");
+  if (load.depth && generated && *load.depth >= nominal_thickness(scene))
+    r.fail("contact.depth", j.at("depth"),
+           "must be below the skin's thickness (" + fmt(nominal_thickness(scene)) +
+               " mm): the indenter would reach the base");
+  if (!generated && load.zone_radius <= 0) return;  // no automatic zone before the surface is read
+  const double radius = contact_zone_radius(scene), h = contact_zone_h(scene);
+  const std::string h_words = load.h > 0 ? "contact.h = " + fmt(load.h) : "mesh.h_min = " + fmt(h);
+  if (radius < h) {
+    const bool given = load.zone_radius > 0;
+    const std::string key = given ? "zone_radius" : (load.force ? "force" : "depth");
+    r.fail(sub("contact", key), j.at(key),
+           (given ? "the candidate contact zone (radius " : "the automatic candidate contact zone (radius ") +
+               fmt(radius) + " mm) must be at least one contact element across (" + h_words + " mm); " +
+               (given ? "give a larger contact.zone_radius" : "load more, or give contact.zone_radius"));
+  }
+  const Vec2 c = contact_center(scene);
+  for (std::size_t i = 0; i < load.holes.size(); ++i) {
+    const Hole& hole = load.holes[i];
+    if (std::hypot(hole.center[0] - c[0], hole.center[1] - c[1]) + radius <= 0.5 * hole.diameter)
+      r.fail(at(sub("contact", "holes"), i) + ".diameter", json(hole.diameter),
+             "the hole covers the whole candidate contact zone (radius " + fmt(radius) + " mm about " +
+                 fmt(c) + "): nothing could touch; make it smaller than the zone");
+  }
+}
+
 // A hole removes the multipliers whose vertex lies inside it: a mesh coarser than the hole can leave it
 // holding none, a zero signal that means "not resolved". The mesh over a hole must be at most its diameter
 // (contact/contact_solver.hpp's require_hole_resolved catches the rare position that still falls between
@@ -1075,6 +1112,7 @@ Scene parse_scene(const std::string& json_text, const std::string& source_path) 
   }
   if (const json* contact = Reader::find(root, "contact")) {
     scene.contact = read_contact(r, *contact, scene.geometry);
+    check_contact_extent(r, *contact, scene);
     check_contact_zone(r, *contact, scene);
     check_hole_meshes(r, scene);
   }

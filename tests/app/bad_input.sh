@@ -217,6 +217,12 @@ bad hole_below_mesh "$sphere, \"h\": 0.8, \"holes\": [{\"center\": [0.5, 0], \"d
 bad sweep_hole_below_mesh "$sphere, \"h\": 0.8, \"sweep\": {\"from\": [-1, 0], \"to\": [1, 0], \"hole_model\": \"resolved\"}}" 'contact.sweep.hole_diameter = 0.5: must be >= the mesh size over the hole' defect
 bad sweep_bulge_soft_interface "$sphere, \"interface\": {\"law\": \"linear\", \"K\": 5}, \"sweep\": {\"from\": [-1, 0], \"to\": [1, 0], \"hole_model\": \"bulge\"}}" 'contact.sweep.hole_model = "bulge": is the hole.s solution under a hard interface; with "interface": \{"law": "linear"\} use "resolved"' defect
 bad sweep_hole_model_unknown "$sphere, \"sweep\": {\"from\": [-1, 0], \"to\": [1, 0], \"hole_model\": \"crack\"}}" 'contact.sweep.hole_model = "crack": must be one of "bulge", "resolved"' defect
+bad depth_through_skin 'd["contact"] = {"indenter": {"type": "sphere", "R": 50, "center": [0, 0]}, "depth": 5, "zone_radius": 3}' 'contact.depth = 5: must be below the skin.s thickness \(3 mm\)' contact
+bad depth_beyond_sphere 'd["contact"] = {"indenter": {"type": "sphere", "R": 1, "center": [0, 0]}, "depth": 2}' 'contact.depth = 2: must be below the sphere.s radius R = 1 mm' contact
+bad sphere_R_subnormal 'd["contact"] = {"indenter": {"type": "sphere", "R": 5e-324, "center": [0, 0]}, "force": 0.1}' 'contact.indenter.R = 5e-324: must be a radius in \[0.001, 10000\] mm' contact
+bad force_below_mesh "$sphere}; d['contact']['force'] = 5e-324" 'contact.force = 5e-324: the automatic candidate contact zone \(radius .* mm\) must be at least one contact element across' contact
+bad zone_below_mesh "$sphere, \"zone_radius\": 5e-324}" 'contact.zone_radius = 5e-324: the candidate contact zone \(radius .* mm\) must be at least one contact element across' contact
+bad hole_covers_zone "$sphere, \"zone_radius\": 3, \"holes\": [{\"center\": [0, 0], \"diameter\": 7}]}" 'contact.holes\[0\].diameter = 7(.0)?: the hole covers the whole candidate contact zone' contact
 bad ridges_mesh_coarse 'd["geometry"]["ridges"] = {"period": 0.5, "height": 0.05, "center": [0, 0], "radius": 1, "h": 5}' 'geometry.ridges.h = 5: must be a number in \(0, period/3 = 0.166667 mm\]' mesh
 bad ridges_period_tiny 'd["geometry"]["ridges"] = {"period": 1e-6, "height": 0.05, "center": [0, 0], "radius": 1, "h": 0.2}' 'geometry.ridges.h = 0.2: must be a number in \(0, period/3' mesh
 

@@ -882,7 +882,7 @@ TEST(SceneLoad, ContactErrors) {
   EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "sphere", "center": [0, 0]}, "force": 1)"),
                      "contact.indenter.R: required key is missing");
   EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "sphere", "R": 0, "center": [0, 0]}, "force": 1)"),
-                     "contact.indenter.R = 0: must be a length in (0, 10000] mm");
+                     "contact.indenter.R = 0: must be a radius in [0.001, 10000] mm");
   EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "sphere", "R": 5}, "force": 1)"),
                      "contact.indenter.center: required key is missing");
   EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "plane"})"), "contact = {",
