@@ -86,7 +86,7 @@ int run_mesh(const Scene& scene, const std::string& out_dir) {
   Stopwatch clock;
   const MeshEstimate estimate = check_resources(scene, g_max_dofs);
   progress("meshing " + scene.name);
-  const TetMesh mesh = build_mesh(scene);
+  const TetMesh mesh = build_mesh(scene, MeshPart::whole, max_tets_allowed(g_max_dofs));
   check_meshed_dofs(scene, mesh, g_max_dofs);
   nlohmann::json summary = mesh_stage(scene, mesh, clock.seconds(), out_dir);
   if (estimate.known) {

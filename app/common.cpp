@@ -35,6 +35,26 @@ void check_output_dir(const std::string& dir) {
                      " is not a writable directory)");
 }
 
+void check_run_record(const std::string& dir, const std::string& command) {
+  const std::string path = dir + "/run.json";
+  if (!std::filesystem::exists(path)) return;
+  std::string owner;
+  try {
+    std::ifstream in(path);
+    owner = nlohmann::json::parse(in).at("command").get<std::string>();
+  } catch (const std::exception&) {
+    throw SceneError("--out " + dir + ": its run.json is not one skinfem wrote; give another directory");
+  }
+  if (owner != command)
+    throw SceneError("--out " + dir + ": holds the results of `skinfem " + owner + "` (run.json); `skinfem " +
+                     command + "` would mix its files in: give another directory, or remove that one");
+}
+
+void write_run_record(const std::string& dir, const std::string& command, const Scene& scene) {
+  write_json(dir + "/run.json",
+             {{"command", command}, {"scene", scene.source_path}, {"skinfem", SKINFEM_VERSION}});
+}
+
 void write_text_atomic(const std::string& path, const std::string& text) {
   const std::string tmp = path + ".tmp";
   {

@@ -17,6 +17,11 @@ using namespace skinfem::pipeline;
 
 // Fails early (before any computation) when DIR could not be created or written; creates nothing.
 void check_output_dir(const std::string& dir);
+// An output directory belongs to one command: DIR/run.json (written after a run succeeds) names the command
+// that wrote it, and another command refuses it rather than mix its files in (contact and defect both
+// write summary.json). Throws SceneError naming both.
+void check_run_record(const std::string& dir, const std::string& command);
+void write_run_record(const std::string& dir, const std::string& command, const Scene& scene);
 // Creates DIR if needed; throws with a one-line message when it cannot.
 void prepare_output_dir(const std::string& dir);
 // Writes text to path through a temporary file and a rename: never a half-written file.

@@ -156,25 +156,31 @@ int main(int argc, char** argv) {
       skinfem::app::check_levels("--error-scales", error_scales, true);
     skinfem::pipeline::g_max_dofs = max_dofs;
     const skinfem::Scene scene = skinfem::load_scene(scene_path);
-    if (mesh->parsed()) return skinfem::app::run_mesh(scene, out_dir);
-    const auto solver =
-        solver_name == "schur_cg" ? skinfem::SolverKind::schur_cg : skinfem::SolverKind::direct_ldlt;
-    if (solve->parsed()) return skinfem::app::run_solve(scene, out_dir, solver);
+    const std::string command = cli.get_subcommands().front()->get_name();
+    const std::string out = report->parsed() && !report->count("--out") ? "out/" + scene.name : out_dir;
+    skinfem::app::check_run_record(out, command);
     const auto path = path_name == "3d"         ? skinfem::app::GreenPath::full3d
                       : path_name == "meridian" ? skinfem::app::GreenPath::meridian
                                                 : skinfem::app::GreenPath::automatic;
-    if (green_cmd->parsed()) return skinfem::app::run_green(scene, out_dir, grid_dx, path);
-    if (kfit->parsed()) return skinfem::app::run_kfit(scene, out_dir, load_name, path);
-    if (contact_cmd->parsed()) return skinfem::app::run_contact(scene, out_dir, friction);
-    if (defect->parsed())
-      return skinfem::app::run_defect(scene, out_dir, no_error_bars ? std::vector<double>{} : error_scales);
-    if (study->parsed())
-      return !ridge_levels.empty() ? skinfem::app::run_ridge_study(scene, out_dir, ridge_levels)
-             : chain               ? skinfem::app::run_chain_study(scene, out_dir, scales)
-                                   : skinfem::app::run_study(scene, out_dir, scales);
-    if (report->parsed())
-      return skinfem::app::run_report(scene, report->count("--out") ? out_dir : "out/" + scene.name,
-                                      no_error_bars ? std::vector<double>{} : error_scales);
+    const auto run = [&]() -> int {
+      if (mesh->parsed()) return skinfem::app::run_mesh(scene, out);
+      const auto solver =
+          solver_name == "schur_cg" ? skinfem::SolverKind::schur_cg : skinfem::SolverKind::direct_ldlt;
+      if (solve->parsed()) return skinfem::app::run_solve(scene, out, solver);
+      if (green_cmd->parsed()) return skinfem::app::run_green(scene, out, grid_dx, path);
+      if (kfit->parsed()) return skinfem::app::run_kfit(scene, out, load_name, path);
+      if (contact_cmd->parsed()) return skinfem::app::run_contact(scene, out, friction);
+      if (defect->parsed())
+        return skinfem::app::run_defect(scene, out, no_error_bars ? std::vector<double>{} : error_scales);
+      if (study->parsed())
+        return !ridge_levels.empty() ? skinfem::app::run_ridge_study(scene, out, ridge_levels)
+               : chain               ? skinfem::app::run_chain_study(scene, out, scales)
+                                     : skinfem::app::run_study(scene, out, scales);
+      return skinfem::app::run_report(scene, out, no_error_bars ? std::vector<double>{} : error_scales);
+    };
+    const int rc = run();
+    if (rc == 0) skinfem::app::write_run_record(out, command, scene);
+    return rc;
   } catch (const skinfem::SceneError& e) {
     std::cerr << "skinfem: " << e.what() << std::endl;
     return 2;

@@ -1,11 +1,13 @@
 #include "mesh/build.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 #include "mesh/p2_tet.hpp"
 #include "mesh/quality.hpp"
 #include "mesh/shape.hpp"
+#include "mesh/size_estimate.hpp"
 #include "mesh/surface.hpp"
 #include "mesh/tetrahedralize.hpp"
 
@@ -180,12 +182,25 @@ void straighten_folded_elements(TetMesh& m) {
   }
 }
 
-TetMesh build_mesh(const Scene& scene, MeshPart part) {
+TetMesh build_mesh(const Scene& scene, MeshPart part, double max_tets) {
   const SizingField size(scene, part);
   const bool generated = scene.geometry.kind != GeometryKind::surface;
   if (!generated && part != MeshPart::whole) throw MeshError("an imported skin is meshed whole");
   const SurfaceMesh surface =
       generated ? layer_surface(scene, size, part) : import_surface(scene.geometry.surface.path);
+  if (!generated && max_tets > 0) {
+    const double volume = signed_volume(surface), fewest = fewest_tets(volume, scene.mesh.h_max);
+    if (fewest > max_tets) {
+      char line[512];
+      std::snprintf(
+          line, sizeof line,
+          "%s: the surface encloses %.3g mm³, at least %.3g tetrahedra at mesh.h_max = %g mm, above "
+          "the %.3g this machine's memory (or --max-dofs) allows; coordinates are read as mm: "
+          "scale the surface, or raise mesh.h_max",
+          scene.geometry.surface.path.c_str(), volume, fewest, scene.mesh.h_max, max_tets);
+      throw MeshError(line);
+    }
+  }
   const FacetPolicy facets = !generated                        ? FacetPolicy::keep
                              : scene.geometry.ridges.present() ? FacetPolicy::preserve
                                                                : FacetPolicy::merge;

@@ -11,7 +11,10 @@ namespace skinfem {
 
 // Throws MeshError when the surface is unusable, TetGen fails, or an element stays folded. part: the whole
 // skin, or its half y ≥ 0 (generated skins whose axis lies on y = 0), the cut marked kSymmetry.
-TetMesh build_mesh(const Scene& scene, MeshPart part = MeshPart::whole);
+// max_tets > 0: an imported surface whose volume needs more elements than that at mesh.h_max
+// (size_estimate.hpp's fewest_tets) is refused before TetGen runs (generated skins are estimated before
+// this).
+TetMesh build_mesh(const Scene& scene, MeshPart part = MeshPart::whole, double max_tets = 0);
 
 // Mid-edge nodes placed on a surface curved on the scale of the elements (a steep cap near its rim,
 // ridges) can fold a thin element (det J ≤ 0). Each folded element gets straight edges, its mid-edge

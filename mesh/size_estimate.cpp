@@ -116,4 +116,8 @@ MeshEstimate estimate_mesh(const Scene& scene, double stop_tets, MeshPart part) 
   return e;
 }
 
+double fewest_tets(double volume_mm3, double h_max) {
+  return 6 * std::sqrt(2.0) * volume_mm3 / std::pow(h_max, 3);
+}
+
 }  // namespace skinfem

@@ -25,4 +25,9 @@ struct MeshEstimate {
 // refinement is not counted (resources.cpp allows for it).
 MeshEstimate estimate_mesh(const Scene& scene, double stop_tets = 1e12, MeshPart part = MeshPart::whole);
 
+// An imported surface has no estimate, but a floor: TetGen splits every element longer than mesh.h_max,
+// and the regular tetrahedron is the largest with edges no longer than h_max (h_max³/(6√2)), so at least
+// 6√2·volume/h_max³ elements fill the volume (a box scaled by 1e30 was meshed until killed at 9.8 GB).
+double fewest_tets(double volume_mm3, double h_max);
+
 }  // namespace skinfem

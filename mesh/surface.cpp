@@ -5,11 +5,16 @@
 #include <OpenMesh/Core/System/omstream.hh>
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <optional>
+#include <sstream>
 
 #include "mesh/footprint.hpp"
 #include "mesh/self_intersection.hpp"
@@ -133,6 +138,8 @@ void orient_faces(SurfaceMesh& s, const std::string& path) {
   }
 }
 
+}  // namespace
+
 double signed_volume(const SurfaceMesh& s) {
   double v = 0;
   for (int t = 0; t < s.triangles.rows(); ++t) {
@@ -142,7 +149,6 @@ double signed_volume(const SurfaceMesh& s) {
   }
   return v;
 }
-}  // namespace
 
 void check_watertight(const SurfaceMesh& surface, const std::string& what) {
   size_t added = 0;
@@ -524,8 +530,80 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
   return s;
 }
 
+namespace {
+// What OpenMesh reads without a word: headers that declare more than the file holds (it allocates what an
+// OFF header declares: 2e9 vertices ended in std::bad_alloc; a binary STL of the wrong length reads as "no
+// faces") and coordinates that are not finite.
+void check_before_reading(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  const double bytes = static_cast<double>(std::filesystem::file_size(path));
+  std::ifstream in(path, std::ios::binary);
+  char count_text[64];
+  if (ext == ".off") {
+    std::string word;
+    in >> word;
+    if (word != "OFF") return;  // OpenMesh's variants (COFF, NOFF, …) are its own to check
+    double nv = -1, nf = -1;
+    while (in >> std::ws && in.peek() == '#') in.ignore(1 << 20, '\n');
+    in >> nv >> nf;
+    if (!in || nv < 0 || nf < 0) throw MeshError(path + ": the OFF header has no vertex and face counts");
+    // Each vertex takes at least 6 characters ("0 0 0\n"), each triangle 8 ("3 0 1 2\n").
+    if (6 * nv + 8 * nf > bytes) {
+      std::snprintf(count_text, sizeof count_text, "%.0f vertices and %.0f faces", nv, nf);
+      throw MeshError(path + ": the OFF header declares " + count_text + ", more than its " +
+                      std::to_string(static_cast<long long>(bytes)) + " bytes can hold");
+    }
+  }
+  std::string head(512, '\0');
+  in.clear();
+  in.seekg(0);
+  in.read(head.data(), head.size());
+  head.resize(in.gcount());
+  const bool ascii_stl =
+      ext == ".stl" && head.rfind("solid", 0) == 0 && head.find("facet") != std::string::npos;
+  if (ascii_stl || ext == ".obj" || ext == ".off") {
+    // OpenMesh reads "nan" and "inf" without a word: the surface then came apart as "not watertight".
+    in.clear();
+    in.seekg(0);
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+      std::istringstream words(line);
+      std::string first;
+      words >> first;
+      // The lines that hold coordinates: "vertex x y z" (STL), "v x y z" (OBJ), every line after the header
+      // but comments (OFF).
+      const bool coordinates = ascii_stl       ? first == "vertex"
+                               : ext == ".obj" ? first == "v"
+                                               : n > 1 && !first.empty() && first[0] != '#';
+      if (!coordinates) continue;
+      if (ext == ".off") words.clear(), words.seekg(0);
+      for (std::string w; words >> w;) {
+        std::transform(w.begin(), w.end(), w.begin(), [](unsigned char c) { return std::tolower(c); });
+        const std::size_t start = w[0] == '-' || w[0] == '+' ? 1 : 0;
+        if (w.compare(start, 3, "nan") == 0 || w.compare(start, 3, "inf") == 0)
+          throw MeshError(path + ": line " + std::to_string(n) + " holds \"" + w +
+                          "\": every coordinate must be a finite number (mm)");
+      }
+    }
+    return;
+  }
+  if (ext == ".stl" && bytes >= 84) {
+    uint32_t n = 0;
+    std::memcpy(&n, head.data() + 80, 4);
+    if (84.0 + 50.0 * n != bytes) {
+      std::snprintf(count_text, sizeof count_text, "%u faces, 84 + 50 × %u = %.0f bytes", n, n,
+                    84.0 + 50.0 * n);
+      throw MeshError(path + ": a binary STL declaring " + count_text + "; the file has " +
+                      std::to_string(static_cast<long long>(bytes)));
+    }
+  }
+}
+}  // namespace
+
 SurfaceMesh import_surface(const std::string& path) {
   if (!std::filesystem::exists(path)) throw MeshError(path + ": no such file");
+  check_before_reading(path);
   OmMesh m;
   omlog().disable();
   omerr().disable();
@@ -537,6 +615,11 @@ SurfaceMesh import_surface(const std::string& path) {
   s.vertices.resize(m.n_vertices(), 3);
   for (auto v : m.vertices()) {
     const auto p = m.point(v);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
+      char at[128];
+      std::snprintf(at, sizeof at, "vertex %d is (%g, %g, %g)", v.idx(), p[0], p[1], p[2]);
+      throw MeshError(path + ": " + at + "; every coordinate must be a finite number (mm)");
+    }
     s.vertices.row(v.idx()) << p[0], p[1], p[2];
   }
   s.triangles.resize(m.n_faces(), 3);

@@ -27,9 +27,13 @@ std::vector<Circle> post_circles(const Scene& scene);
 // Reads a closed surface (STL ASCII or binary, OBJ, OFF; mm): points with equal coordinates are merged and
 // faces are oriented like their neighbours, then outward. Faces lying on z = 0 (all three vertices within
 // 1e-9·diameter, normal −z) become the base, faces with a horizontal normal the side, the rest the top.
-// Throws MeshError naming the file when it cannot be read, is not watertight, has an edge of more than two
+// Throws MeshError naming the file when its header declares more than it holds, a vertex is not finite, it
+// cannot be read, is not watertight, has an edge of more than two
 // faces (naming where), is one-sided or self-intersecting, reaches below z = 0, or has no base face.
 SurfaceMesh import_surface(const std::string& path);
+
+// The volume a closed surface encloses, mm³ (negative when it is inward oriented).
+double signed_volume(const SurfaceMesh& s);
 
 // Throws MeshError (prefixed with `what`) unless the surface is closed, manifold and outward oriented.
 void check_watertight(const SurfaceMesh& surface, const std::string& what);

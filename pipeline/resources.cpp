@@ -16,20 +16,24 @@ double estimated_memory_gb(double dofs) { return 19e3 * dofs * std::max(1.0, std
 
 double available_memory_gb() { return available_memory_mb() / 1024; }
 
+double dof_limit(double max_dofs) {
+  double limit = max_dofs > 0 ? max_dofs : 1e12;
+  const double avail = available_memory_gb();
+  if (avail > 0)
+    for (double d = 1e4; d < 1e12; d *= 1.1)
+      if (estimated_memory_gb(d) > avail) return std::min(limit, d);
+  return limit;
+}
+
+double max_tets_allowed(double max_dofs) { return dof_limit(max_dofs) / 4.3; }
+
 MeshEstimate check_resources(const Scene& scene, double max_dofs, MeshPart part) {
   // TetGen refines the half's cut face: its mesh is about 1.1 × the half of the sizing field (the whole's
   // share was 0.51 on a small cap, 0.54 on candelier2011).
   const double share = part == MeshPart::half_y ? 1.1 : 1.0;
   const double avail = available_memory_gb();
   // Stop integrating once the estimate is past every limit: the answer is already "no".
-  double limit_dofs = max_dofs > 0 ? max_dofs : 1e12;
-  if (avail > 0)
-    for (double d = 1e4; d < 1e12; d *= 1.1)
-      if (estimated_memory_gb(d) > avail) {
-        limit_dofs = std::min(limit_dofs, d);
-        break;
-      }
-  const double stop = 2 * limit_dofs / 4.3;
+  const double stop = 2 * max_tets_allowed(max_dofs);
   MeshEstimate e = estimate_mesh(scene, stop / share, part);
   if (!e.known) return e;
   e.tets *= share, e.dofs *= share;

@@ -22,6 +22,10 @@ double available_memory_gb();
 // region mirrored into it), and counted 1.1× for the cut face TetGen refines.
 MeshEstimate check_resources(const Scene& scene, double max_dofs, MeshPart part = MeshPart::whole);
 
+// The most tetrahedra memory and --max-dofs (if > 0) allow, at 4.3 DOFs per element (mesh/size_estimate.cpp):
+// build_mesh's floor for imported surfaces, which have no estimate.
+double max_tets_allowed(double max_dofs);
+
 // The same limits on a built mesh, before anything is assembled: the backstop where no estimate exists
 // (imported surfaces) or where the estimate fell short. DOFs counted as 3 per node plus 1 per vertex (the
 // Taylor–Hood unknowns before boundary conditions: an upper bound on the free ones).

@@ -12,7 +12,7 @@ std::shared_ptr<Skin> skin_setup(const Scene& scene, MeshPart part) {
   Stopwatch clock;
   check_resources(scene, g_max_dofs, part);
   progress("meshing " + scene.name + (part == MeshPart::half_y ? " (the half y >= 0: mirror symmetry)" : ""));
-  TetMesh mesh = build_mesh(scene, part);
+  TetMesh mesh = build_mesh(scene, part, max_tets_allowed(g_max_dofs));
   check_meshed_dofs(scene, mesh, g_max_dofs);
   check_sensors_on_skin(scene, mesh);
   return factored_skin(scene, std::move(mesh), clock.seconds());

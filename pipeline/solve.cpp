@@ -16,7 +16,7 @@ SolveRun solve_run(const Scene& scene, SolverKind solver) {
   Stopwatch clock;
   check_resources(scene, g_max_dofs);
   progress("meshing " + scene.name);
-  run.mesh = std::make_unique<TetMesh>(build_mesh(scene));
+  run.mesh = std::make_unique<TetMesh>(build_mesh(scene, MeshPart::whole, max_tets_allowed(g_max_dofs)));
   const TetMesh& mesh = *run.mesh;
   check_meshed_dofs(scene, mesh, g_max_dofs);
   check_sensors_on_skin(scene, mesh);

@@ -134,7 +134,23 @@ variant stl_self_intersecting 'd["geometry"] = {"type": "surface", "path": "cros
 check stl_self_intersecting 'crossing.stl: surface intersects itself near \(' "$skinfem" mesh "$tmp/stl_self_intersecting.json" --out "$tmp/out"
 /usr/bin/python3 -c 'import random, sys; random.seed(1); open(sys.argv[1], "wb").write(bytes(random.randrange(256) for _ in range(300)))' "$tmp/binary.stl"
 variant stl_binary_garbage 'd["geometry"] = {"type": "surface", "path": "binary.stl"}; d["loads"] = {}'
-check stl_binary_garbage 'binary.stl: (surface has no faces|cannot be read)' "$skinfem" mesh "$tmp/stl_binary_garbage.json" --out "$tmp/out"
+check stl_binary_garbage 'binary.stl: a binary STL declaring [0-9]+ faces, 84 \+ 50 × [0-9]+ = [0-9]+ bytes; the file has 300' "$skinfem" mesh "$tmp/stl_binary_garbage.json" --out "$tmp/out"
+# Imported skins have no size estimate, but a floor: their volume at mesh.h_max (a box scaled 1e30, and a
+# 480 × 480 × 90 mm one, were meshed until killed at 9.8 and 7.1 GB).
+for scale in 1e30 30; do
+  /usr/bin/python3 "$(dirname "$0")/box_stl.py" "$tmp/box_$scale.stl" --scale $scale
+  variant stl_box_$scale "d[\"geometry\"] = {\"type\": \"surface\", \"path\": \"box_$scale.stl\"}; d[\"loads\"] = {}"
+  check stl_box_$scale "box_$scale.stl: the surface encloses .* mm³, at least .* tetrahedra at mesh.h_max = 3 mm, above the" "$skinfem" mesh "$tmp/stl_box_$scale.json" --out "$tmp/out"
+done
+printf 'OFF\n2000000000 12 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' >"$tmp/huge_header.off"
+variant off_huge_header 'd["geometry"] = {"type": "surface", "path": "huge_header.off"}; d["loads"] = {}'
+check off_huge_header 'huge_header.off: the OFF header declares 2000000000 vertices and 12 faces, more than its [0-9]+ bytes can hold' "$skinfem" mesh "$tmp/off_huge_header.json" --out "$tmp/out"
+for bad_value in nan inf; do
+  /usr/bin/python3 "$(dirname "$0")/box_stl.py" "$tmp/$bad_value.stl"
+  sed -i "0,/vertex -8 /s//vertex $bad_value /" "$tmp/$bad_value.stl"
+  variant stl_${bad_value}_vertex "d[\"geometry\"] = {\"type\": \"surface\", \"path\": \"$bad_value.stl\"}; d[\"loads\"] = {}"
+  check stl_${bad_value}_vertex "$bad_value.stl: line [0-9]+ holds \"$bad_value\": every coordinate must be a finite number" "$skinfem" mesh "$tmp/stl_${bad_value}_vertex.json" --out "$tmp/out"
+done
 /usr/bin/python3 "$(dirname "$0")/box_stl.py" "$tmp/box.stl"
 variant stl_sensor_off 'd["geometry"] = {"type": "surface", "path": "box.stl"}; d["sensors"]["positions"] = [[7.95, 0]]; d["loads"] = {"patches": [{"center": [0, 0], "diameter": 0.5, "direction": [0, 0, -1], "force": 1}]}'
 check stl_sensor_off 'sensor 1 at \(7.95.*not entirely on the skin' "$skinfem" solve "$tmp/stl_sensor_off.json" --out "$tmp/out"
@@ -143,7 +159,7 @@ variant off_non_manifold 'd["geometry"] = {"type": "surface", "path": "edge.off"
 check off_non_manifold 'edge.off: 4 faces share the edge at \(8, 8, 1.5\) mm' "$skinfem" mesh "$tmp/off_non_manifold.json" --out "$tmp/out"
 # No size estimate exists for an imported surface: the built mesh is checked before anything is assembled.
 variant stl_max_dofs 'd["geometry"] = {"type": "surface", "path": "box.stl"}; d["loads"] = {}'
-check stl_max_dofs 'stl_max_dofs.json: the mesh has [0-9]+ tetrahedra and [0-9]+ DOFs, above --max-dofs = 1e\+03' "$skinfem" green "$tmp/stl_max_dofs.json" --max-dofs 1000 --out "$tmp/out"
+check stl_max_dofs 'stl_max_dofs.json: the mesh has [0-9]+ tetrahedra and [0-9]+ DOFs, above --max-dofs = 3e\+03' "$skinfem" green "$tmp/stl_max_dofs.json" --max-dofs 3000 --out "$tmp/out"
 variant stl_missing 'd["geometry"] = {"type": "surface", "path": "none.stl"}'
 check stl_missing 'geometry.path = "none.stl": must name an existing file' "$skinfem" mesh "$tmp/stl_missing.json" --out "$tmp/out"
 variant stl_extension 'd["geometry"] = {"type": "surface", "path": "base.json"}'
@@ -198,6 +214,8 @@ check max_dofs_negative '--max-dofs: -1: must be a number >= 0' "$skinfem" mesh 
 check grid_subnormal '--grid = 4.94066e-324: the kernel grid .* would have inf points' "$skinfem" green "$tmp/base.json" --grid 5e-324 --out "$tmp/out"
 check grid_text '--grid: abc: must be a number' "$skinfem" green "$tmp/base.json" --grid abc --out "$tmp/out"
 check out_empty "--out '': must name a directory" "$skinfem" mesh "$tmp/base.json" --out ""
+"$skinfem" mesh "$tmp/base.json" --out "$tmp/owned" >/dev/null 2>&1 || echo "FAIL: mesh into $tmp/owned"
+check out_owned_by_another '--out .*owned: holds the results of `skinfem mesh` \(run.json\); `skinfem solve` would mix' "$skinfem" solve "$tmp/base.json" --out "$tmp/owned"
 check study_ridges_coarse '--ridges: 2.000000: a level must give at least 3 mesh elements per ridge period' "$skinfem" study "$tmp/ridged.json" --ridges 2,3,4 --out "$tmp/out"
 check error_scales_equal '--error-scales: 2 then 2: levels must be distinct and decreasing' "$skinfem" report "$tmp/base.json" --error-scales 2,2 --out "$tmp/out"
 

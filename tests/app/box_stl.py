@@ -6,10 +6,12 @@ tests. Usage: box_stl.py OUT [options]; the format follows OUT's extension (.stl
   --edge       add a second box shifted by (16, 16, 0): the two share one vertical edge (non-manifold)
   --mixed      every third triangle written inward (orientations mixed)
   --inward     every triangle written inward
-  --unshared   (.obj, .off) every triangle with its own three points, repeated coordinates"""
+  --unshared   (.obj, .off) every triangle with its own three points, repeated coordinates
+  --scale S    every coordinate times S"""
 import sys
 
-L, H = 8.0, 3.0
+S = float(sys.argv[sys.argv.index("--scale") + 1]) if "--scale" in sys.argv else 1.0
+L, H = 8.0 * S, 3.0 * S
 V = [(-L, -L, 0), (L, -L, 0), (L, L, 0), (-L, L, 0), (-L, -L, H), (L, -L, H), (L, L, H), (-L, L, H)]
 QUADS = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]
 
