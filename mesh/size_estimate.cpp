@@ -14,7 +14,6 @@ namespace skinfem {
 namespace {
 constexpr double kTetsPerCube = 43.3;  // c⁻¹: elements per h³ of volume (fitted below)
 constexpr double kThinCap = 2.5;       // κ: the element size a thin skin allows, in thicknesses
-constexpr double kDofsPerTet = 4.3;    // P2 displacements + P1 pressure per tetrahedron (graded meshes)
 constexpr int kDepthIntervals = 24;    // midpoint rule through the thickness, on intervals that grow
 constexpr double kDepthRatio = 1.35;   // by this ratio down from the top (the first is t/1800 thick)
 

@@ -13,6 +13,9 @@
 
 namespace skinfem {
 
+// P2 displacements + P1 pressure per tetrahedron (graded meshes).
+constexpr double kDofsPerTet = 4.3;
+
 struct MeshEstimate {
   double tets = 0;     // quadratic tetrahedra
   double dofs = 0;     // free displacement + pressure DOFs of the Taylor–Hood system, about

@@ -540,10 +540,9 @@ void check_before_reading(const std::string& path) {
   const double bytes = static_cast<double>(std::filesystem::file_size(path));
   std::ifstream in(path, std::ios::binary);
   char count_text[64];
-  if (ext == ".off") {
-    std::string word;
-    in >> word;
-    if (word != "OFF") return;  // OpenMesh's variants (COFF, NOFF, …) are its own to check
+  std::string word;
+  if (ext == ".off") in >> word;
+  if (word == "OFF") {  // OpenMesh's variants (COFF, NOFF, …) put other counts there: theirs to check
     double nv = -1, nf = -1;
     while (in >> std::ws && in.peek() == '#') in.ignore(1 << 20, '\n');
     in >> nv >> nf;

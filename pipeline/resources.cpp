@@ -25,7 +25,7 @@ double dof_limit(double max_dofs) {
   return limit;
 }
 
-double max_tets_allowed(double max_dofs) { return dof_limit(max_dofs) / 4.3; }
+double max_tets_allowed(double max_dofs) { return dof_limit(max_dofs) / kDofsPerTet; }
 
 MeshEstimate check_resources(const Scene& scene, double max_dofs, MeshPart part) {
   // TetGen refines the half's cut face: its mesh is about 1.1 × the half of the sizing field (the whole's

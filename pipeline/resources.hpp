@@ -22,7 +22,7 @@ double available_memory_gb();
 // region mirrored into it), and counted 1.1× for the cut face TetGen refines.
 MeshEstimate check_resources(const Scene& scene, double max_dofs, MeshPart part = MeshPart::whole);
 
-// The most tetrahedra memory and --max-dofs (if > 0) allow, at 4.3 DOFs per element (mesh/size_estimate.cpp):
+// The most tetrahedra memory and --max-dofs (if > 0) allow, at kDofsPerTet (mesh/size_estimate.hpp):
 // build_mesh's floor for imported surfaces, which have no estimate.
 double max_tets_allowed(double max_dofs);
 

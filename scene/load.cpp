@@ -1001,6 +1001,12 @@ void check_contact_zone(const Reader& r, const json& j, const Scene& scene) {
              "it would reach the truncated side; " + fix);
 }
 
+// The field that sets the contact zone's mesh size, with its value: "contact.h = …" or "mesh.h_min = …".
+std::string contact_h_words(const Scene& scene) {
+  const double h = scene.contact->h;
+  return h > 0 ? "contact.h = " + fmt(h) : "mesh.h_min = " + fmt(contact_zone_h(scene));
+}
+
 // Indentations the geometry cannot take and zones the mesh cannot hold, refused with the field that sets them
 // (else the solver failed later, blaming the zone's radius or "refine the mesh there", exit 1).
 void check_contact_extent(const Reader& r, const json& j, const Scene& scene) {
@@ -1016,13 +1022,13 @@ void check_contact_extent(const Reader& r, const json& j, const Scene& scene) {
                " mm): the indenter would reach the base");
   if (!generated && load.zone_radius <= 0) return;  // no automatic zone before the surface is read
   const double radius = contact_zone_radius(scene), h = contact_zone_h(scene);
-  const std::string h_words = load.h > 0 ? "contact.h = " + fmt(load.h) : "mesh.h_min = " + fmt(h);
   if (radius < h) {
     const bool given = load.zone_radius > 0;
     const std::string key = given ? "zone_radius" : (load.force ? "force" : "depth");
     r.fail(sub("contact", key), j.at(key),
            (given ? "the candidate contact zone (radius " : "the automatic candidate contact zone (radius ") +
-               fmt(radius) + " mm) must be at least one contact element across (" + h_words + " mm); " +
+               fmt(radius) + " mm) must be at least one contact element across (" + contact_h_words(scene) +
+               " mm); " +
                (given ? "give a larger contact.zone_radius" : "load more, or give contact.zone_radius"));
   }
   const Vec2 c = contact_center(scene);
@@ -1042,7 +1048,7 @@ void check_contact_extent(const Reader& r, const json& j, const Scene& scene) {
 void check_hole_meshes(const Reader& r, const Scene& scene) {
   const ContactLoad& c = *scene.contact;
   const double zone_h = contact_zone_h(scene);
-  const std::string zone_words = c.h > 0 ? "contact.h = " + fmt(c.h) : "mesh.h_min = " + fmt(zone_h);
+  const std::string zone_words = contact_h_words(scene);
   const auto check = [&](const std::string& path, double diameter, double h, const std::string& h_field) {
     if (hole_mesh_h(scene, h) > diameter)
       r.fail(path, json(diameter),
