@@ -38,8 +38,9 @@ struct MixedSolver::Impl {
   std::vector<int> p_index;     // vertex → pressure unknown, −1 when pinned
   int nf = 0, np = 0, pinned_pressures = 0;
   double tolerance = 1e-10;
-  double sigma = 1;  // 2μ, MPa: the unknowns' scale (residual_norm)
-  SparseMatrixd Aff, Bf, C;
+  double sigma = 1;   // 2μ, MPa: the unknowns' scale (residual_norm)
+  SparseMatrixd Aff;  // schur_cg only: the direct path reads A_ff out of M.A (one copy of A, not two)
+  SparseMatrixd Bf, C;
   // schur_cg
   Eigen::CholmodSupernodalLLT<SparseMatrixd> chol;
   Eigen::SimplicialLLT<SparseMatrixd> mass;  // the Schur preconditioner's M_p
@@ -49,13 +50,24 @@ struct MixedSolver::Impl {
 
   explicit Impl(const MixedMatrices& m) : M(m) {}
 
+  // A_ff x, through the whole A when A_ff is not kept.
+  Eigen::VectorXd apply_Aff(const Eigen::VectorXd& x) const {
+    if (Aff.rows() == nf) return Aff * x;
+    Eigen::VectorXd whole = Eigen::VectorXd::Zero(M.A.rows());
+    for (int i = 0; i < nf; ++i) whole[free_dofs[i]] = x[i];
+    const Eigen::VectorXd Ax = M.A * whole;
+    Eigen::VectorXd out(nf);
+    for (int i = 0; i < nf; ++i) out[i] = Ax[free_dofs[i]];
+    return out;
+  }
+
   // The system is solved in the scaled unknowns (σu, p), σ = 2μ: [A_ff/σ  B_fᵀ; B_f  −σC] [σu; p] =
   // [b; σg] has O(1) entries for any E, where the unscaled one spans E and 1/E (MUMPS fails beyond about
   // E ∈ [1e-5, 1e8] MPa unscaled). Its residual, ‖[A_ff u + B_fᵀ p − b; σ(B_f u − C p − g)]‖, is in force
   // units in both rows. us = σu, gs = σg.
   double residual_norm(const Eigen::VectorXd& us, const Eigen::VectorXd& p, const Eigen::VectorXd& bf,
                        const Eigen::VectorXd& gs) const {
-    const Eigen::VectorXd r1 = Aff * us / sigma + Bf.transpose() * p - bf;
+    const Eigen::VectorXd r1 = apply_Aff(us) / sigma + Bf.transpose() * p - bf;
     const Eigen::VectorXd r2 = Bf * us - sigma * (C * p) - gs;
     return std::sqrt(r1.squaredNorm() + r2.squaredNorm());
   }
@@ -74,7 +86,6 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
       s.free_index[d] = s.nf++;
       s.free_dofs.push_back(d);
     }
-  s.Aff = restrict(matrices.A, s.free_index, s.nf, s.free_index, s.nf);
   // A pressure DOF coupled to no free displacement (a corner tet whose nodes are all held, possible
   // with fixed sides) is undetermined at ν = 0.5: pin it to 0. It only acts on held DOFs.
   const int nv = matrices.Mp.rows();
@@ -93,6 +104,7 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
   s.sigma = 2 * lame.mu;
 
   if (kind == SolverKind::schur_cg) {
+    s.Aff = restrict(matrices.A, s.free_index, s.nf, s.free_index, s.nf);
     s.chol.compute(s.Aff);
     if (s.chol.info() != Eigen::Success)
       throw SolverError("CHOLMOD could not factor the displacement block (is every rigid motion fixed?)");
@@ -102,7 +114,7 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
   } else {
     // Lower triangle of [A_ff/σ  Bᵀ; B  −σC] is all MUMPS reads, built straight into its arrays.
     MumpsLdlt::Triplets t;
-    const size_t nnz = s.Aff.nonZeros() / 2 + s.nf + s.Bf.nonZeros() + s.C.nonZeros();
+    const size_t nnz = matrices.A.nonZeros() / 2 + s.nf + s.Bf.nonZeros() + s.C.nonZeros();
     t.row.reserve(nnz);
     t.col.reserve(nnz);
     t.value.reserve(nnz);
@@ -111,9 +123,10 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
       t.col.push_back(c);
       t.value.push_back(v);
     };
-    for (int c = 0; c < s.Aff.outerSize(); ++c)
-      for (SparseMatrixd::InnerIterator it(s.Aff, c); it; ++it)
-        if (it.row() >= c) add(it.row(), c, it.value() / s.sigma);
+    for (int c = 0; c < matrices.A.outerSize(); ++c)
+      if (const int fc = s.free_index[c]; fc >= 0)
+        for (SparseMatrixd::InnerIterator it(matrices.A, c); it; ++it)
+          if (const int fr = s.free_index[it.row()]; fr >= fc) add(fr, fc, it.value() / s.sigma);
     for (int c = 0; c < s.Bf.outerSize(); ++c)
       for (SparseMatrixd::InnerIterator it(s.Bf, c); it; ++it) add(s.nf + it.row(), c, it.value());
     for (int c = 0; c < s.C.outerSize(); ++c)
@@ -203,11 +216,16 @@ Eigen::MatrixXd MixedSolver::solve_block(const Eigen::MatrixXd& F, const Eigen::
                                          double* residual) const {
   const Impl& s = *impl_;
   const int n3 = s.M.A.rows(), k = F.cols();
-  Eigen::MatrixXd U = Eigen::MatrixXd::Zero(n3, k);
-  if (U_fixed.size())
-    for (int d = 0; d < n3; ++d)
-      if (s.free_index[d] < 0) U.row(d) = U_fixed.row(d);
+  // The prescribed values on the held rows, zero elsewhere: the solution's frame.
+  const auto held = [&] {
+    Eigen::MatrixXd U = Eigen::MatrixXd::Zero(n3, k);
+    if (U_fixed.size())
+      for (int d = 0; d < n3; ++d)
+        if (s.free_index[d] < 0) U.row(d) = U_fixed.row(d);
+    return U;
+  };
   if (kind_ == SolverKind::schur_cg) {
+    Eigen::MatrixXd U = held();
     double worst = 0;
     for (int j = 0; j < k; ++j) {
       const MixedSolution x = solve(F.col(j), U.col(j));
@@ -222,12 +240,12 @@ Eigen::MatrixXd MixedSolver::solve_block(const Eigen::MatrixXd& F, const Eigen::
   for (int j = 0; j < k; ++j)  // column by column: the blocks are column-major and large
     for (int i = 0; i < s.nf; ++i) b(i, j) = F(s.free_dofs[i], j);
   if (U_fixed.size()) {
+    const Eigen::MatrixXd U = held();
     const Eigen::MatrixXd AU = s.M.A * U, BU = s.M.B * U;
     for (int i = 0; i < s.nf; ++i) b.row(i) -= AU.row(s.free_dofs[i]);
     for (size_t q = 0; q < s.p_index.size(); ++q)
       if (s.p_index[q] >= 0) b.row(s.nf + s.p_index[q]) = -s.sigma * BU.row(q);
   }
-  const Eigen::MatrixXd x = s.ldlt->solve(b);
   // The residual of every column would cost as much as the solve itself (a sparse product per column);
   // check one combination instead, Σ w_j x_j with w_j = c_j/‖b_j‖, c_j ∈ {1, 2, 3}: if every column meets
   // the tolerance, the combination meets tol·Σ c_j, and a failed factorization or solve (MUMPS's failure
@@ -238,8 +256,10 @@ Eigen::MatrixXd MixedSolver::solve_block(const Eigen::MatrixXd& F, const Eigen::
     const double bnorm = b.col(j).norm();
     if (bnorm > 0) w[j] = (1 + j % 3) / bnorm, bound += 1 + j % 3;
   }
+  const Eigen::VectorXd bw = b * w;
+  const Eigen::MatrixXd x = s.ldlt->solve(std::move(b));  // b's block becomes x's
   if (!x.allFinite()) throw SolverError("direct_ldlt block solve returned non-finite values");
-  const Eigen::VectorXd xw = x * w, bw = b * w;
+  const Eigen::VectorXd xw = x * w;
   const double res =
       bound > 0 ? s.residual_norm(xw.head(s.nf), xw.tail(s.np), bw.head(s.nf), bw.tail(s.np)) / bound : 0.0;
   if (!std::isfinite(res) || res > s.tolerance)
@@ -247,6 +267,7 @@ Eigen::MatrixXd MixedSolver::solve_block(const Eigen::MatrixXd& F, const Eigen::
                       std::to_string(res) + " > " + std::to_string(s.tolerance) +
                       " (weighted combination of " + std::to_string(k) + " columns)");
   if (residual) *residual = res;
+  Eigen::MatrixXd U = held();  // allocated after the solve: one block fewer at the peak
   for (int j = 0; j < k; ++j)
     for (int i = 0; i < s.nf; ++i) U(s.free_dofs[i], j) = x(i, j) / s.sigma;
   return U;

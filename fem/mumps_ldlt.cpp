@@ -187,12 +187,12 @@ Eigen::VectorXd MumpsLdlt::solve(const Eigen::VectorXd& b) const {
   return Eigen::Map<const Eigen::VectorXd>(s.rhs.data(), b.size());
 }
 
-Eigen::MatrixXd MumpsLdlt::solve(const Eigen::MatrixXd& B) const {
+Eigen::MatrixXd MumpsLdlt::solve(Eigen::MatrixXd X) const {
   std::lock_guard<std::mutex> lock(mumps_mutex);
   Impl& s = *impl_;
-  Eigen::MatrixXd X = B;  // column-major, leading dimension n: MUMPS's dense multi-RHS layout
+  // column-major, leading dimension n: MUMPS's dense multi-RHS layout
   s.id.rhs = X.data();
-  s.id.nrhs = static_cast<MUMPS_INT>(B.cols());
+  s.id.nrhs = static_cast<MUMPS_INT>(X.cols());
   s.id.lrhs = s.id.n;
   s.id.icntl[19] = 0;
   s.id.icntl[20] = 0;

@@ -33,7 +33,8 @@ class MumpsLdlt {
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   // Many right-hand sides at once (B: n×k, dense): MUMPS blocks them (ICNTL(27)), so each column costs
   // far less than a separate solve. Same results as column-by-column solves up to round-off.
-  Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
+  // B is taken by value and overwritten with the solution: move a block in to hold it once.
+  Eigen::MatrixXd solve(Eigen::MatrixXd B) const;
   double factor_entries() const;   // entries in the factors (INFOG(29))
   double estimated_flops() const;  // the analysis's estimate of the factorization's flops (RINFOG(1))
   // The analysis's estimate of the factorization's memory, MB (INFOG(17)); construction refuses (throws)
