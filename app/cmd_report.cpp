@@ -23,6 +23,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <optional>
+#include <regex>
 #include <sstream>
 
 #include "app/chain_study.hpp"
@@ -183,19 +184,79 @@ nlohmann::json error_bars_json(const std::vector<ErrorBar>& bars) {
   return j;
 }
 
-// "value ± error" with the value rounded to the error's second significant digit.
-std::string with_error(double value, double error) {
-  if (!(error > 0)) return fmt("%.6g", value);
+// A value and its error, the value rounded to the error's second significant digit (no error: 6 digits).
+std::array<std::string, 2> rounded_to_error(double value, double error) {
+  if (!(error > 0)) return {fmt("%.6g", value), ""};
   const int decimals = std::max(0, 1 - static_cast<int>(std::floor(std::log10(error))));
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "%.*f +- %.*f", decimals, value, decimals, error);
-  return buf;
+  const std::string f = "%." + std::to_string(decimals) + "f";
+  return {fmt(f.c_str(), value), fmt(f.c_str(), error)};
 }
 
+// "value +- error" (the terminal's ASCII).
+std::string with_error(double value, double error) {
+  const auto [v, e] = rounded_to_error(value, error);
+  return e.empty() ? v : v + " +- " + e;
+}
+
+// Text for the page: escaped, and in the page's notation where the shared sentences write the terminal's
+// ASCII (±, µm, ς and σ with their component).
 std::string html_escape(const std::string& s) {
   std::string o;
   for (char c : s) o += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
+  static const std::array<std::pair<std::regex, const char*>, 4> notation{{
+      {std::regex(R"(\+-)"), "±"},
+      {std::regex(R"(\bum\b)"), "µm"},
+      {std::regex(R"(\bvarsigma_?([xyz]?)\b)"), "ς$1"},
+      {std::regex(R"(\bsigma_?([xyz]?)\b)"), "σ$1"},
+  }};
+  for (const auto& [pattern, with] : notation) o = std::regex_replace(o, pattern, with);
   return o;
+}
+
+// The figures in the paper's order (its figures 1-4 first), each with what it plots; a figure not listed
+// here keeps its file name as caption and comes last.
+std::vector<std::pair<std::string, std::string>> figure_captions(const std::string& scene,
+                                                                 const std::optional<HoleBudget>& budget) {
+  const std::string on = " Scene " + scene + ".";
+  std::vector<std::pair<std::string, std::string>> f{
+      {"fig1_calibration",
+       "Paper fig. 1: the calibration scans, each sensor's FE Green tensor along y = 0 (zz, zx, xz, xx), "
+       "against the half-space rescaled by the paper's k and by the fitted one." +
+           on},
+      {"fig2_static_sliding",
+       "Paper fig. 2: mean sensor stresses σz and σx under the plate, static and sliding; full FE and each "
+       "variant that swaps one assumption into it." +
+           on},
+      {"fig3_varsigma_z",
+       "Paper fig. 3: the hole signal ςz(u) of each sensor as the hole in the plate crosses the contact, "
+       "sliding then static: full FE, the paper's model, and FE rescaled to the model for #5 and #7." +
+           on},
+      {"fig4_varsigma_x", "Paper fig. 4: the hole signal ςx(u), as fig. 3." + on},
+      {"pressure_profiles",
+       "Contact pressure p along y = 0: Hertz on the half-space, the exact bonded layer, FE frictionless "
+       "and FE with coupled friction (its tangential traction q dotted)." +
+           on},
+      {"green_vs_halfspace",
+       "Sensor #1's FE Green tensor (g_zz, g_xx) against the half-space rescaled by both k, and the "
+       "difference over the FE peak." +
+           on},
+      {"k_sweep",
+       "k of the exact layer as one calibration-protocol reading changes at a time, against the paper's "
+       "1.48 ± 0.01, and the FE k per mesh scale." +
+           on},
+      {"post_design",
+       "A post against a disc at the skin's axis (meridian solves): gain and half width of g_zz over the "
+       "post's height and diameter." +
+           on},
+      {"pareto", "Cost against accuracy of each stage over the error-bar levels (labels: DOFs)." + on}};
+  if (budget)
+    for (const validation::HypothesisResult& y : budget->results)
+      f.push_back({"budget_" + y.hypothesis.name,
+                   "The hole-signal budget under '" + y.hypothesis.name + "' (" + y.hypothesis.what +
+                       "): sliding ςz (top) and ςx (bottom) of full FE against the paper's model per sensor, "
+                       "titled with their amplitude ratio." +
+                       on});
+  return f;
 }
 
 // What index.html shows, as the stages returned it.
@@ -221,8 +282,11 @@ void write_index(const std::string& dir, const Scene& scene, const IndexInput& i
     << html_escape(scene.name)
     << "</"
        "title><style>body{font-family:sans-serif;max-width:1100px;margin:auto}table{border-collapse:collapse}"
-       "td,th{border:1px solid #bbb;padding:2px "
-       "6px;text-align:right}img{max-width:100%}</style></head><body>\n";
+       "td,th{border:1px solid #bbb;padding:2px 6px;text-align:right}"
+       // A table wider than the page scrolls inside itself.
+       "table{display:block;max-width:100%;overflow-x:auto}td:not([style]){white-space:nowrap}"
+       "img{max-width:100%}"
+       "figure{margin:1em 0}figcaption{font-size:90%}</style></head><body>\n";
   h << "<h1>skinfem report: " << html_escape(scene.name) << "</h1>\n<p>Units: mm, N, MPa (stresses in kPa). "
     << in.dofs << " DOFs, one factorization for the chain"
     << (in.error_bars.empty() ? "" : " (and one per coarser level for the error bars)") << "; total "
@@ -230,10 +294,12 @@ void write_index(const std::string& dir, const Scene& scene, const IndexInput& i
   if (!in.error_bars.empty()) {
     h << "<h2>Headline numbers and their discretization error</h2><table><tr><th>quantity</th><th>value</th>"
          "<th>error</th><th>unit</th><th>how the error is estimated</th></tr>\n";
-    for (const ErrorBar& e : in.error_bars)
-      h << "<tr><td style=\"text-align:left\">" << html_escape(e.what) << "</td><td>"
-        << html_escape(with_error(e.value, e.error)) << "</td><td>" << e.unit
+    for (const ErrorBar& e : in.error_bars) {
+      const auto [value, error] = rounded_to_error(e.value, e.error);
+      h << "<tr><td style=\"text-align:left\">" << html_escape(e.what) << "</td><td>" << value << "</td><td>"
+        << (error.empty() ? "" : "± " + error) << "</td><td>" << html_escape(e.unit)
         << "</td><td style=\"text-align:left\">" << html_escape(e.method) << "</td></tr>\n";
+    }
     h << "</table>\n";
   }
   if (in.levels) {
@@ -264,8 +330,9 @@ void write_index(const std::string& dir, const Scene& scene, const IndexInput& i
       const auto e = in.exponents.find(st);
       h << "<td>" << (e != in.exponents.end() ? fmt("%.2f", e->second) : "") << "</td>";
     }
-    h << "</tr></table><p>Values in mm and MPa; the scene's own level is scale 1 (its memory is the whole "
-         "report's). Errors per level: <a href=\"study/chain_study.csv\">study/chain_study.csv</a>, Pareto "
+    h << "<td colspan=\"" << 1 + order.size() << "\"></td></tr></table><p>Values in mm and MPa. Peak memory "
+      << "per level: each coarser level's own; the scene's level (scale 1) is the report's up to its error "
+         "bars. Errors per level: <a href=\"study/chain_study.csv\">study/chain_study.csv</a>, Pareto "
          "plot below.</p>\n";
   }
   h << "<h2>Time per stage</h2><table><tr><th>stage</th><th>seconds</th></tr>\n";
@@ -416,11 +483,23 @@ void write_index(const std::string& dir, const Scene& scene, const IndexInput& i
          "crosscheck/attribution.csv</a>.</p>\n";
   }
   h << "<h2>Figures</h2>\n";
+  std::vector<std::string> drawn;  // PNG stems, sorted: the directory's own order is the file system's
   if (fs::is_directory(dir + "/figures"))
     for (const auto& e : fs::directory_iterator(dir + "/figures"))
-      if (e.path().extension() == ".png")
-        h << "<h3>" << e.path().stem().string() << "</h3><img src=\"figures/" << e.path().filename().string()
-          << "\">\n";
+      if (e.path().extension() == ".png") drawn.push_back(e.path().stem().string());
+  std::sort(drawn.begin(), drawn.end());
+  auto captions = figure_captions(scene.name, in.budget);
+  for (const std::string& stem : drawn)
+    if (std::none_of(captions.begin(), captions.end(), [&](const auto& c) { return c.first == stem; }))
+      captions.push_back({stem, stem});
+  int number = 0;
+  for (const auto& [stem, caption] : captions)
+    if (std::binary_search(drawn.begin(), drawn.end(), stem)) {
+      const std::string file = "figures/" + stem + ".png";
+      h << "<figure id=\"" << stem << "\"><a href=\"" << file << "\"><img src=\"" << file << "\" alt=\""
+        << html_escape(stem) << "\"></a><figcaption>Figure " << ++number << " (" << stem
+        << ".png, click for full size). " << html_escape(caption) << "</figcaption></figure>\n";
+    }
   h << "<h2>Files</h2><ul>\n";
   for (const char* f :
        {"mesh/mesh.vtu", "mesh/boundary.vtu", "green/green_maps.vtp", "green/green.csv", "kfit/kfit.json",

@@ -19,6 +19,12 @@ class Stopwatch {
 
 // Peak resident set size of this process so far, MB.
 double peak_rss_mb();
+// A window for window_peak_rss_mb(): from here on, the peak of what follows alone (a refinement level after
+// a larger one). Linux resets the kernel's high-water mark on request (/proc/self/clear_refs, 5); where it
+// cannot, the window stays the whole process's and the figure is an upper bound.
+void start_peak_window();
+// Peak resident set size since the last start_peak_window() (since the start without one), MB.
+double window_peak_rss_mb();
 // Hands the heap's free pages back to the system. After a stage's solver is released its memory stays
 // resident otherwise (glibc keeps freed heap pages), and the next stage's peak sits on top of it: the
 // report's error-bar levels peaked 350 MB above its own chain on the paper's skin with posts.

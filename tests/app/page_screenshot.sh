@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# The report's page in a real browser: headless Chromium renders index.html of a coarse report
+# (tests/app/data/coarse_cap.json) at the page's design width; the screenshot must be the size asked for and
+# show the page (not a blank or an error page): mostly white background, with text and the figures' colours.
+# Where no headless browser is installed (Debian's chromium is not among skinfem's dependencies) the test is
+# skipped with the reason printed (exit 77, ctest's SKIP_RETURN_CODE).
+set -u
+skinfem=$1
+browser=""
+for b in chromium chromium-browser google-chrome; do
+  if command -v "$b" >/dev/null 2>&1; then browser=$b; break; fi
+done
+if [ -z "$browser" ]; then
+  echo "SKIP: no headless browser on PATH (chromium, chromium-browser, google-chrome); apt-get install chromium to run this test"
+  exit 77
+fi
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+if ! "$skinfem" report "$(dirname "$0")/data/coarse_cap.json" --out "$tmp/rep" >"$tmp/stdout" 2>"$tmp/stderr"; then
+  echo "FAIL report:"; cat "$tmp/stderr"; exit 1
+fi
+width=1100 height=6000
+# --no-sandbox: CI runs as root, where Chromium's sandbox refuses to start.
+"$browser" --headless --no-sandbox --disable-gpu --hide-scrollbars --window-size=$width,$height \
+  --screenshot="$tmp/page.png" "file://$tmp/rep/index.html" >"$tmp/browser.log" 2>&1
+if [ ! -s "$tmp/page.png" ]; then echo "FAIL $browser wrote no screenshot:"; tail -5 "$tmp/browser.log"; exit 1; fi
+/usr/bin/python3 - "$tmp/page.png" $width $height <<'PY'
+import sys
+import matplotlib.image as mpimg
+import numpy as np
+img = mpimg.imread(sys.argv[1])[:, :, :3]
+w, h = int(sys.argv[2]), int(sys.argv[3])
+bad = []
+if img.shape[:2] != (h, w): bad.append(f"screenshot {img.shape[1]}x{img.shape[0]}, asked {w}x{h}")
+white = np.all(img > 0.97, axis=2).mean()
+colours = len(np.unique((img * 255).astype(np.uint8).reshape(-1, 3), axis=0))
+# A blank page is all white; a page of text alone has grey levels only; figures bring hundreds of colours.
+if not 0.5 < white < 0.995: bad.append(f"white fraction {white:.3f}: blank or not the page")
+if colours < 200: bad.append(f"{colours} distinct colours: no figure rendered")
+for b in bad: print("FAIL screenshot:", b)
+print(f"screenshot {img.shape[1]}x{img.shape[0]}: white {white:.3f}, {colours} colours")
+sys.exit(1 if bad else 0)
+PY
