@@ -1,9 +1,11 @@
 #include "contact/contact_solver.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iterator>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -181,16 +183,32 @@ const Eigen::VectorXd& ContactSolver::touched(FrictionMode mode) const {
   return touched_.emplace(mode, std::move(w)).first->second;
 }
 
+Eigen::MatrixXd ContactSolver::frictionless_matrix() const {
+  Eigen::MatrixXd M = c_.C_zz;
+  // A linear interface closes by p/K over each hat: ∫ψ_i p/K, lumped to ∫ψ_i · λ_i/K.
+  if (load_.interface.law == InterfaceLaw::linear) M.diagonal() += c_.zone.area / load_.interface.K;
+  return M;
+}
+
 ContactLcp& ContactSolver::lcp(double ratio) const {
   auto& slot = lcps_[ratio];
   if (!slot) {
-    Eigen::MatrixXd M = c_.C_zz;
+    Eigen::MatrixXd M = frictionless_matrix();
     if (ratio != 0) M += ratio * c_.C_zt;
-    // A linear interface closes by p/K over each hat: ∫ψ_i p/K, lumped to ∫ψ_i · λ_i/K.
-    if (load_.interface.law == InterfaceLaw::linear) M.diagonal() += c_.zone.area / load_.interface.K;
     slot = std::make_unique<ContactLcp>(std::move(M), c_.gap0, c_.zone.area);
   }
   return *slot;
+}
+
+double ContactSolver::unique_ratio_bound() const {
+  // B + r S is positive definite, B = sym(C_zz) > 0, S = sym(C_zt), while 1 + r μ > 0 for every μ of
+  // S v = μ B v: up to r = −1/μ_min.
+  const Eigen::MatrixXd B = frictionless_matrix(), S = 0.5 * (c_.C_zt + c_.C_zt.transpose());
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(S, 0.5 * (B + B.transpose()),
+                                                                      Eigen::EigenvaluesOnly);
+  if (eig.info() != Eigen::Success) return 0.0;
+  const double mu_min = eig.eigenvalues().minCoeff();
+  return mu_min < 0 ? -1.0 / mu_min : std::numeric_limits<double>::infinity();
 }
 
 void ContactSolver::set_reference(FrictionMode mode, const std::vector<int>& active) const {
@@ -214,8 +232,26 @@ ContactResult ContactSolver::solve(FrictionMode mode, const std::vector<char>& e
   const std::vector<char>& ex = mirror_ ? half_excluded : excluded;
   const double share = mirror_ ? 0.5 : 1.0;
   const auto lcp_solve = [&](const std::vector<int>& start, const Eigen::VectorXd& shift) {
-    LcpSolution hard = load_.force ? problem.solve_force(share * *load_.force, ex, start, shift)
-                                   : problem.solve_depth(*load_.depth, ex, start, shift);
+    LcpSolution hard;
+    try {
+      hard = load_.force ? problem.solve_force(share * *load_.force, ex, start, shift)
+                         : problem.solve_depth(*load_.depth, ex, start, shift);
+    } catch (const std::runtime_error& e) {
+      // Pivoting fails where force control loses uniqueness: name the scene's ratio and the bound.
+      const double r = solved_ratio(mode), bound = r != 0 ? unique_ratio_bound() : 0.0;
+      if (r == 0 || !(r >= bound)) throw;
+      const char* field = mode == FrictionMode::static_residual ? "static_ratio" : "mu";
+      const auto g = [](double v) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.3g", v);
+        return std::string(buf);
+      };
+      throw SceneError(std::string("contact.friction.") + field + " = " + g(r) + ": the " + to_string(mode) +
+                       " contact did not solve (" + e.what() +
+                       "); the contact problem is guaranteed one solution only for " + field + " below " +
+                       g(bound) + " on this skin and contact zone (there the symmetric part of C_zz + " +
+                       field + " C_zt is positive definite)");
+    }
     if (load_.interface.law != InterfaceLaw::exponential) return hard;
     return solve_exponential(
         problem.matrix(), shift.size() ? Eigen::VectorXd(problem.gaps() + shift) : problem.gaps(),

@@ -107,6 +107,11 @@ class ContactSolver {
   // From now on solves of `mode` reuse the factorized principal system of this active set (sweeps).
   void set_reference(FrictionMode mode, const std::vector<int>& active) const;
   double ratio(FrictionMode mode) const;  // Coulomb part p_t / p of `mode`
+  // The Coulomb ratio below which force control has exactly one solution (+inf: every ratio): there the
+  // symmetric part of C_zz + ratio C_zt (+ the interface's closure) is positive definite, so the LCP matrix
+  // is a P-matrix (Cottle, Pang & Stone, The Linear Complementarity Problem, thm 3.3.7). A sufficient bound:
+  // a larger ratio may still solve. Its smallest generalized eigenvalue, O(n³) on the multipliers.
+  double unique_ratio_bound() const;
   double shear(FrictionMode mode) const;  // shear-strength part of `mode`, MPa
   // τ0 of the scene, MPa: contact.friction.tau0, else μ F / A with F and A the force and the area Σ∫ψ_i
   // of the active multipliers of the hole-free frictionless contact (so the sliding shear totals μF).
@@ -140,6 +145,8 @@ class ContactSolver {
 
  private:
   ContactLcp& lcp(double ratio) const;
+  // C_zz with the interface's closure: the LCP matrix without friction.
+  Eigen::MatrixXd frictionless_matrix() const;
   // A result with its mode, Coulomb ratio and shear strength set.
   ContactResult started(FrictionMode mode) const;
   // The Coulomb ratio acting while the pressure is solved: none in the uncoupled mode.

@@ -241,6 +241,19 @@ bad sphere_R_subnormal 'd["contact"] = {"indenter": {"type": "sphere", "R": 5e-3
 bad force_below_mesh "$sphere}; d['contact']['force'] = 5e-324" 'contact.force = 5e-324: the automatic candidate contact zone \(radius .* mm\) must be at least one contact element across' contact
 bad zone_below_mesh "$sphere, \"zone_radius\": 5e-324}" 'contact.zone_radius = 5e-324: the candidate contact zone \(radius .* mm\) must be at least one contact element across' contact
 bad hole_covers_zone "$sphere, \"zone_radius\": 3, \"holes\": [{\"center\": [0, 0], \"diameter\": 7}]}" 'contact.holes\[0\].diameter = 7(.0)?: the hole covers the whole candidate contact zone' contact
+# Coulomb ratios beyond where the contact stays unique: the bound is computed on the condensed skin (the
+# coarse cap of app/report.sh: about 6), so these fail after condensing, still with the field and the bound.
+/usr/bin/python3 - "$(dirname "$0")/data/coarse_cap.json" "$tmp" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+del d["contact"]["sweep"]
+d["contact"]["friction"] = {"mode": "coupled", "mu": 30, "static_ratio": 0.1}
+json.dump(d, open(sys.argv[2] + "/mu30.json", "w"))
+d["contact"]["friction"] = {"mode": "static", "mu": 30, "static_ratio": 30}
+json.dump(d, open(sys.argv[2] + "/static30.json", "w"))
+PY
+check mu_beyond_uniqueness 'contact.friction.mu = 30: the coupled contact did not solve .*guaranteed one solution only for mu below [0-9.]+ on this skin' "$skinfem" contact "$tmp/mu30.json" --out "$tmp/out"
+check static_ratio_beyond_uniqueness 'contact.friction.static_ratio = 30: .*only for static_ratio below [0-9.]+' "$skinfem" contact "$tmp/static30.json" --out "$tmp/out"
 bad ridges_mesh_coarse 'd["geometry"]["ridges"] = {"period": 0.5, "height": 0.05, "center": [0, 0], "radius": 1, "h": 5}' 'geometry.ridges.h = 5: must be a number in \(0, period/3 = 0.166667 mm\]' mesh
 bad ridges_period_tiny 'd["geometry"]["ridges"] = {"period": 1e-6, "height": 0.05, "center": [0, 0], "radius": 1, "h": 0.2}' 'geometry.ridges.h = 0.2: must be a number in \(0, period/3' mesh
 

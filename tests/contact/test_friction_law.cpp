@@ -9,6 +9,7 @@
 // against adjoints); the laws superpose where the pressure does not see the traction (uncoupled).
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -190,6 +191,32 @@ TEST(FrictionLaw, ShearStrengthFromTheForceTotalsMuF) {
   double area = 0;
   for (int i : r.active) area += f.condensed->zone.area[i];
   EXPECT_NEAR(solver.tau0(), kMu * 0.8 / area, 1e-12);
+}
+
+// The Coulomb ratio below which the coupled LCP matrix C_zz + r C_zt has a positive definite symmetric part
+// (a P-matrix: one solution under force control, Cottle, Pang & Stone thm 3.3.7), from the generalized
+// eigenproblem S v = μ C_zz v, against a second method: the smallest eigenvalue of the symmetric part itself
+// just below and just above the bound. Below it the coupled contact solves at force balance.
+TEST(FrictionLaw, CoupledRatioBoundIsWhereTheSymmetricPartStopsBeingPositiveDefinite) {
+  Fixture& f = layer();
+  const ContactSolver solver(*f.condensed, load(FrictionLaw::coulomb));
+  const double bound = solver.unique_ratio_bound();
+  ASSERT_TRUE(std::isfinite(bound) && bound > 0) << bound;
+  const auto smallest = [&](double r) {
+    const Eigen::MatrixXd M = f.condensed->C_zz + r * f.condensed->C_zt;
+    return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(0.5 * (M + M.transpose()), Eigen::EigenvaluesOnly)
+        .eigenvalues()
+        .minCoeff();
+  };
+  EXPECT_GT(smallest(0.999 * bound), 0) << "bound " << bound;
+  EXPECT_LT(smallest(1.001 * bound), 0) << "bound " << bound;
+  ContactLoad c = load(FrictionLaw::coulomb);
+  c.mu = 0.9 * bound;
+  const ContactResult r = ContactSolver(*f.condensed, c).solve(FrictionMode::coupled);
+  EXPECT_NEAR(r.force_N, 0.8, 1e-9);
+  EXPECT_NEAR(r.tangential_force_N, c.mu * 0.8, 1e-9 * c.mu);
+  std::printf("coupled ratio bound %.4g; solved at mu = %.4g, complementarity %.2e\n", bound, c.mu,
+              r.complementarity);
 }
 
 }  // namespace
