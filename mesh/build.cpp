@@ -188,6 +188,18 @@ TetMesh build_mesh(const Scene& scene, MeshPart part, double max_tets) {
   if (!generated && part != MeshPart::whole) throw MeshError("an imported skin is meshed whole");
   const SurfaceMesh surface =
       generated ? layer_surface(scene, size, part) : import_surface(scene.geometry.surface.path);
+  if (!generated && scene.contact && !over_top(surface, contact_center(scene))) {
+    const Vec2 c = contact_center(scene);
+    const Eigen::RowVector3d lo = surface.vertices.colwise().minCoeff(),
+                             hi = surface.vertices.colwise().maxCoeff();
+    char line[512];
+    std::snprintf(
+        line, sizeof line,
+        "contact.indenter.center = (%g, %g): not above the imported skin's top (%s spans x %g to %g, "
+        "y %g to %g mm); the indenter must press on the skin",
+        c[0], c[1], scene.geometry.surface.path.c_str(), lo[0], hi[0], lo[1], hi[1]);
+    throw MeshError(line);
+  }
   if (!generated && max_tets > 0) {
     const double volume = signed_volume(surface), fewest = fewest_tets(volume, scene.mesh.h_max);
     if (fewest > max_tets) {

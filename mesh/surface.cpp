@@ -600,6 +600,20 @@ void check_before_reading(const std::string& path) {
 }
 }  // namespace
 
+bool over_top(const SurfaceMesh& s, const Vec2& p) {
+  for (int t = 0; t < s.triangles.rows(); ++t) {
+    if ((s.marker(t) & ~kKeepOutline) != kTop) continue;
+    double w[3];
+    for (int k = 0; k < 3; ++k) {
+      const auto a = s.vertices.row(s.triangles(t, (k + 1) % 3)),
+                 b = s.vertices.row(s.triangles(t, (k + 2) % 3));
+      w[k] = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
+    }
+    if ((w[0] >= 0 && w[1] >= 0 && w[2] >= 0) || (w[0] <= 0 && w[1] <= 0 && w[2] <= 0)) return true;
+  }
+  return false;
+}
+
 SurfaceMesh import_surface(const std::string& path) {
   if (!std::filesystem::exists(path)) throw MeshError(path + ": no such file");
   check_before_reading(path);

@@ -31,6 +31,8 @@ std::vector<Circle> post_circles(const Scene& scene);
 // cannot be read, is not watertight, has an edge of more than two
 // faces (naming where), is one-sided or self-intersecting, reaches below z = 0, or has no base face.
 SurfaceMesh import_surface(const std::string& path);
+// Whether (x, y) lies under one of the surface's top faces (kTop), seen from above.
+bool over_top(const SurfaceMesh& s, const Vec2& p);
 
 // The volume a closed surface encloses, mm³ (negative when it is inward oriented).
 double signed_volume(const SurfaceMesh& s);

@@ -254,6 +254,15 @@ json.dump(d, open(sys.argv[2] + "/static30.json", "w"))
 PY
 check mu_beyond_uniqueness 'contact.friction.mu = 30: the coupled contact did not solve .*guaranteed one solution only for mu below [0-9.]+ on this skin' "$skinfem" contact "$tmp/mu30.json" --out "$tmp/out"
 check static_ratio_beyond_uniqueness 'contact.friction.static_ratio = 30: .*only for static_ratio below [0-9.]+' "$skinfem" contact "$tmp/static30.json" --out "$tmp/out"
+# An indenter beside an imported skin: refused when the surface is read, before meshing.
+/usr/bin/python3 - "$(dirname "$0")/../../scenes" "$tmp" <<'PY'
+import json, os, sys
+d = json.load(open(os.path.join(sys.argv[1], "dome_stl.json")))
+d["geometry"]["path"] = os.path.realpath(os.path.join(sys.argv[1], d["geometry"]["path"]))
+d["contact"]["indenter"]["center"] = [40.0, 0.0]
+json.dump(d, open(sys.argv[2] + "/dome_off.json", "w"))
+PY
+check sphere_off_imported_skin 'contact.indenter.center = \(40, 0\): not above the imported skin.s top \(.*dome.stl spans x' "$skinfem" contact "$tmp/dome_off.json" --out "$tmp/out"
 bad ridges_mesh_coarse 'd["geometry"]["ridges"] = {"period": 0.5, "height": 0.05, "center": [0, 0], "radius": 1, "h": 5}' 'geometry.ridges.h = 5: must be a number in \(0, period/3 = 0.166667 mm\]' mesh
 bad ridges_period_tiny 'd["geometry"]["ridges"] = {"period": 1e-6, "height": 0.05, "center": [0, 0], "radius": 1, "h": 0.2}' 'geometry.ridges.h = 0.2: must be a number in \(0, period/3' mesh
 
