@@ -43,10 +43,11 @@ StageOutput<ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const 
   const contact::ContactMetrics& m = run.metric();
   const MixedSolution& x = run.solution;
   Stopwatch clock;
+  contact::check_hole_clearance(mesh, solver, r, scene.contact->holes, "contact.holes");
   prepare_output_dir(out_dir);
   write_fields_vtu(out_dir + "/fields.vtu", mesh, setup.model->lame(),
                    setup.whole ? mirrored_solution(mesh, setup.source, x) : x);
-  contact::write_pressure_vtp(out_dir + "/pressure.vtp", mesh, solver, r);
+  contact::write_pressure_vtp(out_dir + "/pressure.vtp", mesh, solver, r, scene.contact->holes);
   std::ostringstream csv, modes;
   csv.precision(10);
   modes.precision(10);

@@ -39,6 +39,13 @@ DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> s
   const auto& results = run.sweeps;
   const auto& frames = run.frames;
   Stopwatch clock;
+  const auto hole_of = [&](size_t ci, size_t i) {
+    return std::vector<Hole>{{results[ci].centers[i], sweep.hole_diameter, 0.0, sweep.hole_depth}};
+  };
+  for (size_t ci = 0; ci < run.cases.size(); ++ci)
+    for (size_t i = 0; i < frames[ci].size(); ++i)
+      contact::check_hole_clearance(setup.mesh(), *setup.solver, frames[ci][i], hole_of(ci, i),
+                                    "contact.sweep");
   prepare_output_dir(out_dir + "/frames");
   // The frames folder is this command's: a previous, longer sweep's frames would outlive this one's.
   for (const auto& f : std::filesystem::directory_iterator(out_dir + "/frames"))
@@ -49,7 +56,8 @@ DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> s
     for (size_t i = 0; i < frames[ci].size(); ++i) {
       char file[64];
       std::snprintf(file, sizeof file, "%s_%03zu.vtp", run.cases[ci].c_str(), i);
-      contact::write_pressure_vtp(out_dir + "/frames/" + file, setup.mesh(), *setup.solver, frames[ci][i]);
+      contact::write_pressure_vtp(out_dir + "/frames/" + file, setup.mesh(), *setup.solver, frames[ci][i],
+                                  hole_of(ci, i));
       pvd << "<DataSet timestep=\"" << results[ci].centers[i][0] << "\" part=\"" << ci << "\" file=\"frames/"
           << file << "\"/>\n";
     }

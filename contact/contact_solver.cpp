@@ -488,6 +488,7 @@ ContactResult ContactSolver::solve(FrictionMode mode, const HoleDimple& dimple) 
   out.readings = solved_readings(s.lambda, out.ratio);
   if (out.tau != 0) out.readings += c_.S_t * shear_solved;
   finish(out, s, gap, {});
+  out.opening = whole_gaps(dimple.opening);
   return out;
 }
 
@@ -514,7 +515,7 @@ void ContactSolver::finish(ContactResult& out, const LcpSolution& s, const Eigen
     for (int i = 0; i < n; ++i) {
       const int j = mirror_->half[i];
       out.lambda[i] = s.lambda[j];
-      out.gap[i] = gap[j] * (images_[j] == 1 ? 2.0 : 1.0);
+      out.gap[i] = gap[j] * (images_[j] == 1 ? 2.0 : 1.0);  // as whole_gaps
       if (active[j]) out.active.push_back(i);
       if (excluded.empty() || !excluded[i]) {
         out.min_gap = first ? out.gap[i] : std::min(out.min_gap, out.gap[i]);
@@ -524,6 +525,16 @@ void ContactSolver::finish(ContactResult& out, const LcpSolution& s, const Eigen
   }
   out.force_N = zone().area.dot(out.lambda);
   out.tangential_force_N = out.ratio * out.force_N + zone().area.dot(out.shear);
+}
+
+Eigen::VectorXd ContactSolver::whole_gaps(const Eigen::VectorXd& solved) const {
+  if (!mirror_) return solved;
+  Eigen::VectorXd out(zone().size());
+  for (int i = 0; i < out.size(); ++i) {
+    const int j = mirror_->half[i];
+    out[i] = solved[j] * (images_[j] == 1 ? 2.0 : 1.0);
+  }
+  return out;
 }
 
 std::vector<char> excluded_by_holes(const MortarZone& zone, const TetMesh& mesh,

@@ -45,6 +45,9 @@ struct ContactResult {
   // n_c weighted gaps ∫ψ_i gap, mm³, in the final state (uncoupled: traction added); under a linear
   // interface the closure is included, ∫ψ_i (gap + p/K): the quantity held ≥ 0.
   Eigen::VectorXd gap;
+  // A small hole's bulge (solve with a HoleDimple): n_c weighted openings ∫ψ_i w of the indenter's surface,
+  // mm³, so gap − opening is the weighted gap to the indenter's face; empty for every other solve.
+  Eigen::VectorXd opening;
   double depth_mm = 0;            // rigid approach of the indenter from first touch
   double force_N = 0;             // ∫ p dA
   double tangential_force_N = 0;  // ratio·force + ∫ shear
@@ -154,6 +157,8 @@ class ContactSolver {
   // The result's common tail: depth, diagnostics, and λ, gaps and active set seen whole.
   void finish(ContactResult& out, const LcpSolution& s, const Eigen::VectorXd& gap,
               const std::vector<char>& excluded) const;
+  // Weighted gaps of the solved multipliers as the whole zone's (a cut row on the half is half its own).
+  Eigen::VectorXd whole_gaps(const Eigen::VectorXd& solved) const;
   Eigen::VectorXd solved_readings(const Eigen::VectorXd& solved_lambda, double ratio) const;
   const CondensedContact& c_;
   ContactLoad load_;

@@ -1,22 +1,69 @@
 #include "contact/pressure_map.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 #include "mesh/vtu.hpp"
 
 namespace skinfem::contact {
 
+namespace {
+// The hole holding vertex v of the mesh (seen from above), −1 if none.
+int hole_at(const TetMesh& m, int v, const std::vector<Hole>& holes) {
+  for (size_t k = 0; k < holes.size(); ++k)
+    if (std::hypot(m.nodes(v, 0) - holes[k].center[0], m.nodes(v, 1) - holes[k].center[1]) <
+        0.5 * holes[k].diameter)
+      return static_cast<int>(k);
+  return -1;
+}
+
+// Multiplier i's weighted gap to the indenter's face (a bulge's solve holds it to the receded surface).
+double face_gap(const ContactResult& r, int i) { return r.gap[i] - (r.opening.size() ? r.opening[i] : 0.0); }
+}  // namespace
+
+HoleClearance hole_clearance(const TetMesh& m, const ContactSolver& solver, const ContactResult& r,
+                             const std::vector<Hole>& holes) {
+  HoleClearance out;
+  const MortarZone& zone = solver.zone();
+  for (int i = 0; i < zone.size(); ++i)
+    if (const int k = hole_at(m, zone.vertices[i], holes); k >= 0) {
+      const double gap = face_gap(r, i) / zone.area[i];
+      if (gap + holes[k].depth < out.clearance_mm) out = {k, gap + holes[k].depth, -gap};
+    }
+  return out;
+}
+
+void check_hole_clearance(const TetMesh& m, const ContactSolver& solver, const ContactResult& r,
+                          const std::vector<Hole>& holes, const std::string& field) {
+  const HoleClearance c = hole_clearance(m, solver, r, holes);
+  if (c.clearance_mm > 0) return;
+  const std::string name =
+      field == "contact.sweep" ? field + ".hole_depth" : field + "[" + std::to_string(c.hole) + "].depth";
+  char line[400];
+  std::snprintf(line, sizeof line,
+                "%s = %g: the skin rises %.3g um into the hole, %s its bottom (%s friction); the contact is "
+                "solved for a hole whose bottom the skin does not touch: give a deeper hole",
+                name.c_str(), holes[c.hole].depth, 1e3 * c.rise_mm, c.clearance_mm < 0 ? "past" : "to",
+                to_string(r.mode));
+  throw SceneError(line);
+}
+
 void write_pressure_vtp(const std::string& path, const TetMesh& m, const ContactSolver& solver,
-                        const ContactResult& r) {
+                        const ContactResult& r, const std::vector<Hole>& holes) {
   const int N = m.num_nodes();
   const MortarZone& zone = solver.zone();
-  std::vector<double> p(N, 0.0), gap(N, 0.0), in(N, 0.0), pt(N, 0.0);
+  std::vector<double> p(N, 0.0), gap(N, 0.0), in(N, 0.0), pt(N, 0.0), in_hole(N, 0.0);
   for (int i : r.active) in[zone.vertices[i]] = 1.0;  // an exponential interface's λ > 0 everywhere
   for (int i = 0; i < zone.size(); ++i) {
     const int v = zone.vertices[i];
     p[v] = 1e3 * std::max(0.0, r.lambda[i]);
     pt[v] = r.ratio * p[v] + (r.shear.size() ? 1e3 * r.shear[i] : 0.0);
     gap[v] = 1e3 * r.gap[i] / zone.area[i];
+    if (const int k = hole_at(m, v, holes); k >= 0) {
+      gap[v] = 1e3 * (face_gap(r, i) / zone.area[i] + holes[k].depth);
+      in_hole[v] = 1;
+    }
   }
   // Faces with every corner in the zone: elsewhere the gap is not a constraint and is not known here.
   std::vector<char> in_zone(N, 0);
@@ -31,14 +78,16 @@ void write_pressure_vtp(const std::string& path, const TetMesh& m, const Contact
       pt[mid] = 0.5 * (pt[a] + pt[b]);
       gap[mid] = 0.5 * (gap[a] + gap[b]);
       in[mid] = in[a] * in[b];
+      in_hole[mid] = in_hole[a] * in_hole[b];
     }
   DataArray traction{"traction_kPa", 3, std::vector<double>(3 * N, 0.0)};
   for (int j = 0; j < N; ++j) {
     traction.values[3 * j] = solver.direction().x() * pt[j];
     traction.values[3 * j + 1] = solver.direction().y() * pt[j];
   }
-  write_faces_vtp(path, m, faces,
-                  {{"pressure_kPa", 1, p}, traction, {"gap_um", 1, gap}, {"in_contact", 1, in}});
+  write_faces_vtp(
+      path, m, faces,
+      {{"pressure_kPa", 1, p}, traction, {"gap_um", 1, gap}, {"in_hole", 1, in_hole}, {"in_contact", 1, in}});
 }
 
 }  // namespace skinfem::contact

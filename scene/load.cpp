@@ -32,6 +32,7 @@
 //                  "force": <N> | "depth": <mm>,     exactly one, > 0: total normal force, or rigid approach
 //                                                    from first touch
 //                  "holes"*: [{"center": [x, y], "diameter": <mm, > 0>,  discs where the indenter is absent
+//                              "depth"*: <mm, > 0> (default 0.5, the paper's 500 um),
 //                              "h"*: <mm, > 0>}],  mesh size over the disc (absent: the zone's h)
 //                  "zone_radius"*: <mm, > 0>,        candidate contact zone about the first touch; absent:
 //                                                    1.25 x Hertz's radius under a force, 1.25 x twice
@@ -53,6 +54,7 @@
 //                  "sweep"*: {"from": [x, y], "to": [x, y],  a hole swept for `skinfem defect`
 //                             "positions"*: integer in [2, 100000] (default 201),
 //                             "hole_diameter"*: > 0 (default 0.5),
+//                             "hole_depth"*: > 0 (default 0.5),
 //                             "h"*: > 0, mesh size along the path (absent: no refinement),
 //                             "hole_model"*: "bulge" (default under a hard interface: the small
 //                                            hole's bulge, seen by the contact as a dimple of the
@@ -727,10 +729,11 @@ json point(const Vec2& p) { return json::array({p[0], p[1]}); }
 
 Hole read_hole(const Reader& r, const json& j, const std::string& path, std::size_t i, std::size_t n,
                const Geometry& geo) {
-  r.object(j, path, {"center", "diameter", "h"});
+  r.object(j, path, {"center", "diameter", "depth", "h"});
   Hole h;
   h.center = r.vec2(j, path, "center");
   h.diameter = r.number(j, path, "diameter", length());
+  h.depth = r.number_or(j, path, "depth", h.depth, length());
   h.h = r.number_or(j, path, "h", 0.0, length());
   const std::string off = off_footprint(geo, h.center, 0.5 * h.diameter, "diameter/2");
   if (!off.empty())
@@ -841,7 +844,7 @@ void read_friction(const Reader& r, const json& f, const std::string& path, Cont
 }
 
 HoleSweep read_sweep(const Reader& r, const json& j, const std::string& path, const Geometry& geo) {
-  r.object(j, path, {"from", "to", "positions", "hole_diameter", "h", "hole_model"});
+  r.object(j, path, {"from", "to", "positions", "hole_diameter", "hole_depth", "h", "hole_model"});
   HoleSweep s;
   if (const json* m = Reader::find(j, "hole_model")) {
     if (*m == "bulge")
@@ -856,6 +859,7 @@ HoleSweep read_sweep(const Reader& r, const json& j, const std::string& path, co
   if (const json* n = Reader::find(j, "positions"))
     s.positions = static_cast<int>(r.integer(*n, sub(path, "positions"), 2, 100000));
   s.hole_diameter = r.number_or(j, path, "hole_diameter", s.hole_diameter, length());
+  s.hole_depth = r.number_or(j, path, "hole_depth", s.hole_depth, length());
   s.h = r.number_or(j, path, "h", 0.0, length());
   // The footprint is convex: a hole on it at both ends stays on it all along the path.
   for (const auto& [key, p] : {std::make_pair("from", s.from), std::make_pair("to", s.to)}) {

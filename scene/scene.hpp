@@ -196,6 +196,9 @@ struct Hole {
   Vec2 center{0, 0};
   double diameter = 0.5;  // mm
   double h = 0;           // mm, mesh size over the hole's disc; 0 → the contact zone's (contact_zone_h)
+  // mm, how deep the hole goes into the indenter (the paper's: 500 µm). The skin that bulges into it must
+  // stay above its bottom (the solve assumes it touches nothing there); gaps inside are measured to it.
+  double depth = 0.5;
 };
 
 // A hole swept along a straight path: `positions` solves with the hole centre evenly spaced from `from`
@@ -209,6 +212,7 @@ struct HoleSweep {
   Vec2 from{0, 0}, to{0, 0};
   int positions = 201;
   double hole_diameter = 0.5;  // mm
+  double hole_depth = 0.5;     // mm, as Hole::depth
   double h = 0;  // mm, mesh size along the path (a region of interest of radius hole/2 + h); 0 → none
   HoleModel model = HoleModel::bulge;
 };

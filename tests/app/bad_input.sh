@@ -251,8 +251,17 @@ d["contact"]["friction"] = {"mode": "coupled", "mu": 30, "static_ratio": 0.1}
 json.dump(d, open(sys.argv[2] + "/mu30.json", "w"))
 d["contact"]["friction"] = {"mode": "static", "mu": 30, "static_ratio": 30}
 json.dump(d, open(sys.argv[2] + "/static30.json", "w"))
+d["contact"]["friction"] = {"mode": "none"}
+d["contact"]["holes"] = [{"center": [0.5, 0.0], "diameter": 0.8, "depth": 1e-5}]
+json.dump(d, open(sys.argv[2] + "/shallow_hole.json", "w"))
+del d["contact"]["holes"]
+d["contact"]["sweep"] = {"from": [-2.0, 0.0], "to": [3.0, 0.0], "positions": 11, "hole_diameter": 0.8, "hole_depth": 1e-5}
+json.dump(d, open(sys.argv[2] + "/shallow_sweep.json", "w"))
 PY
 check mu_beyond_uniqueness 'contact.friction.mu = 30: the coupled contact did not solve .*guaranteed one solution only for mu below [0-9.]+ on this skin' "$skinfem" contact "$tmp/mu30.json" --out "$tmp/out"
+# A hole shallower than the skin's rise into it: the solve assumes its bottom untouched.
+check hole_too_shallow 'contact.holes\[0\].depth = 1e-05: the skin rises [0-9.]+ um into the hole, past its bottom' "$skinfem" contact "$tmp/shallow_hole.json" --out "$tmp/out"
+check sweep_hole_too_shallow 'contact.sweep.hole_depth = 1e-05: the skin rises [0-9.]+ um into the hole, past its bottom' "$skinfem" defect "$tmp/shallow_sweep.json" --out "$tmp/out"
 check static_ratio_beyond_uniqueness 'contact.friction.static_ratio = 30: .*only for static_ratio below [0-9.]+' "$skinfem" contact "$tmp/static30.json" --out "$tmp/out"
 # An indenter beside an imported skin: refused when the surface is read, before meshing.
 /usr/bin/python3 - "$(dirname "$0")/../../scenes" "$tmp" <<'PY'
