@@ -56,18 +56,22 @@ ChainLevel chain_values(const Scene& s, const AdjointSetup& adj, const ContactSe
       l.wall["sweep"] = clock.seconds();
     }
   }
-  l.peak_rss_mb = window_peak_rss_mb();
+  l.peak_rss_mb = peak_rss_mb();
   return l;
 }
 
 namespace {
 ChainLevel level_of(const Scene& s, double scale) {
-  start_peak_window();  // the level's own peak, not the larger one's before it
-  const auto skin = skin_setup(s, contact_mesh_part(s));
-  const auto adj = adjoint_setup(s, skin);
-  const auto contact = s.contact ? contact_setup(s, skin) : nullptr;
-  ChainLevel l = chain_values(s, *adj, contact.get());
+  RssSampler memory;  // the level's own peak, not the larger one's before it
+  ChainLevel l;
+  {
+    const auto skin = skin_setup(s, contact_mesh_part(s));
+    const auto adj = adjoint_setup(s, skin);
+    const auto contact = s.contact ? contact_setup(s, skin) : nullptr;
+    l = chain_values(s, *adj, contact.get());
+  }
   l.scale = scale;
+  l.peak_rss_mb = memory.peak_mb();
   return l;
 }
 }  // namespace

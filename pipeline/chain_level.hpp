@@ -21,7 +21,7 @@ struct ChainLevel {
   std::vector<double> value;    // per name, units above
   std::vector<double> seconds;  // per name: every stage the quantity needs (mesh, factor, adjoints, ...)
   nlohmann::json wall;          // seconds per stage
-  double peak_rss_mb = 0;       // this level's own peak (a chain_level); the process's up to here otherwise
+  double peak_rss_mb = 0;  // this level's own peak (chain_level: sampled); the process's up to here otherwise
   // Set when the uniformly scaled level left a hole unresolved and was redone with cap_holes: this level
   // is then not a uniform scaling of the scene, which Richardson assumes.
   std::string note;

@@ -1,11 +1,9 @@
 #include "pipeline/clock.hpp"
 
 #include <sys/resource.h>
+#include <unistd.h>
 
-#include <algorithm>
-#include <cstdlib>
-#include <fstream>
-#include <string>
+#include <cstdio>
 
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -13,31 +11,44 @@
 
 namespace skinfem::pipeline {
 
-namespace {
-// The process's peak before the last window started, MB.
-double peak_before_window_mb = 0;
-
-// The kernel's high-water mark (VmHWM, reset with the window), MB; getrusage's where /proc is not readable.
-double high_water_mb() {
-  if (std::ifstream status("/proc/self/status"); status) {
-    std::string line;
-    while (std::getline(status, line))
-      if (line.rfind("VmHWM:", 0) == 0) return std::strtod(line.c_str() + 6, nullptr) / 1024.0;  // kB
-  }
+double peak_rss_mb() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return usage.ru_maxrss / 1024.0;  // ru_maxrss is in KiB on Linux
 }
-}  // namespace
 
-double peak_rss_mb() { return std::max(peak_before_window_mb, high_water_mb()); }
-
-void start_peak_window() {
-  peak_before_window_mb = peak_rss_mb();
-  std::ofstream("/proc/self/clear_refs") << "5";
+RssSampler::RssSampler(int every_ms) {
+  sample();
+  thread_ = std::thread([this, every_ms] {
+    while (!stop_.load()) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(every_ms));
+      sample();
+    }
+  });
 }
 
-double window_peak_rss_mb() { return high_water_mb(); }
+RssSampler::~RssSampler() {
+  stop_ = true;
+  thread_.join();
+}
+
+void RssSampler::sample() {
+  // /proc/self/statm: sizes in pages, the resident set second.
+  long pages = 0, resident = 0;
+  if (std::FILE* f = std::fopen("/proc/self/statm", "r")) {
+    if (std::fscanf(f, "%ld %ld", &pages, &resident) != 2) resident = 0;
+    std::fclose(f);
+  }
+  const long kb = resident * (sysconf(_SC_PAGESIZE) / 1024);
+  long seen = peak_kb_.load();
+  while (kb > seen && !peak_kb_.compare_exchange_weak(seen, kb)) {
+  }
+}
+
+double RssSampler::peak_mb() {
+  sample();
+  return peak_kb_.load() / 1024.0;
+}
 
 void release_freed_memory() {
 #ifdef __GLIBC__

@@ -1,8 +1,10 @@
 // What a stage costs: wall time and the process's peak resident memory.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <nlohmann/json.hpp>
+#include <thread>
 
 namespace skinfem::pipeline {
 
@@ -19,12 +21,24 @@ class Stopwatch {
 
 // Peak resident set size of this process so far, MB.
 double peak_rss_mb();
-// A window for window_peak_rss_mb(): from here on, the peak of what follows alone (a refinement level after
-// a larger one). Linux resets the kernel's high-water mark on request (/proc/self/clear_refs, 5); where it
-// cannot, the window stays the whole process's and the figure is an upper bound.
-void start_peak_window();
-// Peak resident set size since the last start_peak_window() (since the start without one), MB.
-double window_peak_rss_mb();
+// The peak resident memory of a stretch of work that follows a larger one (a coarse refinement level after
+// the scene's own): the kernel keeps only the process's peak (resetting it would hide the true peak from
+// whoever measures the process from outside), so a thread samples the resident size every `every_ms` while
+// this lives. A peak shorter than the interval can be missed; a factorization's lasts seconds.
+class RssSampler {
+ public:
+  explicit RssSampler(int every_ms = 5);
+  ~RssSampler();
+  RssSampler(const RssSampler&) = delete;
+  RssSampler& operator=(const RssSampler&) = delete;
+  double peak_mb();  // the largest sample so far, this moment's included
+
+ private:
+  void sample();
+  std::atomic<bool> stop_{false};
+  std::atomic<long> peak_kb_{0};
+  std::thread thread_;
+};
 // Hands the heap's free pages back to the system. After a stage's solver is released its memory stays
 // resident otherwise (glibc keeps freed heap pages), and the next stage's peak sits on top of it: the
 // report's error-bar levels peaked 350 MB above its own chain on the paper's skin with posts.

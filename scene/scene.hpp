@@ -212,9 +212,9 @@ struct HoleSweep {
   Vec2 from{0, 0}, to{0, 0};
   int positions = 201;
   double hole_diameter = 0.5;  // mm
-  double hole_depth = 0.5;     // mm, as Hole::depth
   double h = 0;  // mm, mesh size along the path (a region of interest of radius hole/2 + h); 0 → none
   HoleModel model = HoleModel::bulge;
+  double hole_depth = 0.5;  // mm, as Hole::depth
 };
 
 // The skin–indenter interface (contact/contact_solver.hpp): hard (exact complementarity: no interpenetration)
