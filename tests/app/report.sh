@@ -136,4 +136,29 @@ sys.exit(1 if bad else 0)
 PY
 # The page as a parser reads it: tables, links, figures and their captions, notation.
 /usr/bin/python3 "$(dirname "$0")/page_check.py" "$out" || fail=1
+# A long sweep writes at most 201 frames per case, both ends included, and defect.csv keeps every position:
+# 450 positions, stride ceil(449/200) = 3, frames 0, 3, ..., 447 and 449.
+/usr/bin/python3 - "$tmp/scene.json" "$tmp/long.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+d["contact"]["sweep"]["positions"] = 450
+json.dump(d, open(sys.argv[2], "w"))
+PY
+if "$skinfem" defect "$tmp/long.json" --no-error-bars --out "$tmp/long" >/dev/null 2>"$tmp/stderr"; then
+  /usr/bin/python3 - "$tmp/long" <<'PY' || fail=1
+import os, sys
+d = sys.argv[1]
+want = [f"{c}_{i:03d}.vtp" for c in ("sliding", "static") for i in list(range(0, 448, 3)) + [449]]
+got = sorted(os.listdir(os.path.join(d, "frames")))
+rows = sum(1 for _ in open(os.path.join(d, "defect.csv"))) - 1
+bad = []
+if got != sorted(want): bad.append(f"frames: {len(got)} written, {got[:3]}...{got[-2:]}; expected {len(want)}")
+if open(os.path.join(d, "defect.pvd")).read().count("<DataSet") != len(want): bad.append("defect.pvd does not list the frames")
+if rows % 450 != 0 or rows == 0: bad.append(f"defect.csv has {rows} rows, not every position")
+for b in bad: print("FAIL long sweep:", b)
+sys.exit(1 if bad else 0)
+PY
+else
+  echo "FAIL defect with 450 positions:"; cat "$tmp/stderr"; fail=1
+fi
 exit $fail
