@@ -201,10 +201,10 @@ ContactLcp& ContactSolver::lcp(double ratio) const {
 }
 
 double ContactSolver::unique_ratio_bound() const {
-  // B + r S is positive definite, B = sym(C_zz) > 0, S = sym(C_zt), while 1 + r μ > 0 for every μ of
-  // S v = μ B v: up to r = −1/μ_min.
-  const Eigen::MatrixXd B = frictionless_matrix(), S = 0.5 * (c_.C_zt + c_.C_zt.transpose());
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(S, 0.5 * (B + B.transpose()),
+  // B + r S is positive definite, B = C_zz (+ closure) > 0, symmetric as condense() leaves it, S = sym(C_zt),
+  // while 1 + r μ > 0 for every μ of S v = μ B v: up to r = −1/μ_min.
+  const Eigen::MatrixXd S = 0.5 * (c_.C_zt + c_.C_zt.transpose());
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(S, frictionless_matrix(),
                                                                       Eigen::EigenvaluesOnly);
   if (eig.info() != Eigen::Success) return 0.0;
   const double mu_min = eig.eigenvalues().minCoeff();
@@ -505,17 +505,15 @@ void ContactSolver::finish(ContactResult& out, const LcpSolution& s, const Eigen
     out.gap = gap;
     out.active = s.active;
   } else {
-    // A cut multiplier's row on the half is half its whole row; one off the cut is its whole row.
     const int n = zone().size();
     out.lambda.resize(n);
-    out.gap.resize(n);
+    out.gap = whole_gaps(gap);  // a cut multiplier's row on the half is half its whole row
     std::vector<char> active(c_.zone.size(), 0);
     for (int j : s.active) active[j] = 1;
     bool first = true;
     for (int i = 0; i < n; ++i) {
       const int j = mirror_->half[i];
       out.lambda[i] = s.lambda[j];
-      out.gap[i] = gap[j] * (images_[j] == 1 ? 2.0 : 1.0);  // as whole_gaps
       if (active[j]) out.active.push_back(i);
       if (excluded.empty() || !excluded[i]) {
         out.min_gap = first ? out.gap[i] : std::min(out.min_gap, out.gap[i]);
@@ -537,14 +535,18 @@ Eigen::VectorXd ContactSolver::whole_gaps(const Eigen::VectorXd& solved) const {
   return out;
 }
 
+int hole_holding(const TetMesh& mesh, int v, const std::vector<Hole>& holes) {
+  for (size_t k = 0; k < holes.size(); ++k)
+    if (std::hypot(mesh.nodes(v, 0) - holes[k].center[0], mesh.nodes(v, 1) - holes[k].center[1]) <
+        0.5 * holes[k].diameter)
+      return static_cast<int>(k);
+  return -1;
+}
+
 std::vector<char> excluded_by_holes(const MortarZone& zone, const TetMesh& mesh,
                                     const std::vector<Hole>& holes) {
   std::vector<char> out(zone.size(), 0);
-  for (int i = 0; i < zone.size(); ++i)
-    for (const Hole& h : holes)
-      if (std::hypot(mesh.nodes(zone.vertices[i], 0) - h.center[0],
-                     mesh.nodes(zone.vertices[i], 1) - h.center[1]) < 0.5 * h.diameter)
-        out[i] = 1;
+  for (int i = 0; i < zone.size(); ++i) out[i] = hole_holding(mesh, zone.vertices[i], holes) >= 0;
   return out;
 }
 

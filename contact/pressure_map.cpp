@@ -9,17 +9,11 @@
 namespace skinfem::contact {
 
 namespace {
-// The hole holding vertex v of the mesh (seen from above), −1 if none.
-int hole_at(const TetMesh& m, int v, const std::vector<Hole>& holes) {
-  for (size_t k = 0; k < holes.size(); ++k)
-    if (std::hypot(m.nodes(v, 0) - holes[k].center[0], m.nodes(v, 1) - holes[k].center[1]) <
-        0.5 * holes[k].diameter)
-      return static_cast<int>(k);
-  return -1;
+// Multiplier i's mean gap over its hat to the indenter's face, mm (a bulge's solve holds the weighted gap
+// to the receded surface: its opening is taken back out).
+double face_gap(const ContactResult& r, const MortarZone& zone, int i) {
+  return (r.gap[i] - (r.opening.size() ? r.opening[i] : 0.0)) / zone.area[i];
 }
-
-// Multiplier i's weighted gap to the indenter's face (a bulge's solve holds it to the receded surface).
-double face_gap(const ContactResult& r, int i) { return r.gap[i] - (r.opening.size() ? r.opening[i] : 0.0); }
 }  // namespace
 
 HoleClearance hole_clearance(const TetMesh& m, const ContactSolver& solver, const ContactResult& r,
@@ -27,8 +21,8 @@ HoleClearance hole_clearance(const TetMesh& m, const ContactSolver& solver, cons
   HoleClearance out;
   const MortarZone& zone = solver.zone();
   for (int i = 0; i < zone.size(); ++i)
-    if (const int k = hole_at(m, zone.vertices[i], holes); k >= 0) {
-      const double gap = face_gap(r, i) / zone.area[i];
+    if (const int k = hole_holding(m, zone.vertices[i], holes); k >= 0) {
+      const double gap = face_gap(r, zone, i);
       if (gap + holes[k].depth < out.clearance_mm) out = {k, gap + holes[k].depth, -gap};
     }
   return out;
@@ -60,8 +54,8 @@ void write_pressure_vtp(const std::string& path, const TetMesh& m, const Contact
     p[v] = 1e3 * std::max(0.0, r.lambda[i]);
     pt[v] = r.ratio * p[v] + (r.shear.size() ? 1e3 * r.shear[i] : 0.0);
     gap[v] = 1e3 * r.gap[i] / zone.area[i];
-    if (const int k = hole_at(m, v, holes); k >= 0) {
-      gap[v] = 1e3 * (face_gap(r, i) / zone.area[i] + holes[k].depth);
+    if (const int k = hole_holding(m, v, holes); k >= 0) {
+      gap[v] = 1e3 * (face_gap(r, zone, i) + holes[k].depth);
       in_hole[v] = 1;
     }
   }
