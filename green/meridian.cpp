@@ -9,6 +9,7 @@
 #include "fem/mumps_ldlt.hpp"
 #include "green/fe_green.hpp"
 #include "green/halfspace.hpp"
+#include "green/meridian_mode.hpp"
 #include "mesh/gauss_legendre.hpp"
 #include "mesh/surface_quadrature.hpp"
 
@@ -153,29 +154,6 @@ MeridianMesh meridian_mesh(const std::function<double(double)>& top, double radi
 }
 
 namespace {
-// 1D P2 Lagrange basis on u ∈ [0, 1] with nodes 0, 1/2, 1 (as ordered along an edge: end, middle, end), and
-// its derivative.
-void p2_line(double u, double L[3], double dL[3]) {
-  L[0] = (1 - u) * (1 - 2 * u);
-  L[1] = 4 * u * (1 - u);
-  L[2] = u * (2 * u - 1);
-  dL[0] = 4 * u - 3, dL[1] = 4 - 8 * u, dL[2] = 4 * u - 1;
-}
-
-// The parameter u ∈ [0, 1] at which an edge with node radii r0, r1 (middle), r2 reaches rho: Newton on the
-// quadratic map from the linear guess (the map is monotone: mid-edge nodes sit between the ends).
-double edge_u(double r0, double r1, double r2, double rho) {
-  double u = (rho - r0) / (r2 - r0);
-  for (int it = 0; it < 30; ++it) {
-    double L[3], dL[3];
-    p2_line(u, L, dL);
-    const double step = (L[0] * r0 + L[1] * r1 + L[2] * r2 - rho) / (dL[0] * r0 + dL[1] * r1 + dL[2] * r2);
-    u -= step;
-    if (std::abs(step) < 1e-15) break;
-  }
-  return u;
-}
-
 // One Fourier mode's adjoint solves: (U, V, W) at the top nodes for each column of w. mode 0: u_r = U, u_z =
 // W (V = 0); mode 1: u_r = U cos θ, u_θ = V sin θ, u_z = W cos θ, p = P cos θ. w (held nodes × readings):
 // the readings' weights on the held nodes (the base and a post's wall and top), imposed as their
@@ -185,141 +163,30 @@ struct ModeField {
   int dofs = 0;
 };
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 ModeField solve_mode(const MeridianMesh& m, const std::vector<int>& held, double nu, SideCondition side,
                      int mode, const Eigen::MatrixXd& w, MeridianGreen::Cost& cost) {
-  auto clock = std::chrono::steady_clock::now();
-  const int n = static_cast<int>(m.nodes.rows()), nc = mode == 0 ? 2 : 3;  // displacement components
-  const int ndof = nc * n + m.num_vertices, nread = static_cast<int>(w.cols());
-  const auto comp = [&](int node, int c) { return nc * node + c; };  // c: 0 U, then (mode 1) 1 V, last W
-  const int cW = nc - 1;
-  const double mu = 1, theta = mode == 0 ? 2 * M_PI : M_PI;  // ∫ cos² nθ dθ
-  const double inv_lambda = nu >= 0.5 ? 0 : (1 - 2 * nu) / (2 * mu * nu);
-
-  // Constraints. Held nodes: every component prescribed; a held side: every component zero. Axis: mode 0 U =
-  // 0; mode 1 W = 0, P = 0 and U + V = 0 (the displacement single-valued there), V tied to −U.
-  std::vector<char> fixed(ndof, 0);
-  Eigen::MatrixXd value = Eigen::MatrixXd::Zero(ndof, nread);
-  std::vector<int> tie(ndof, -1);
-  if (side == SideCondition::fixed)
-    for (int k : m.side)
-      for (int c = 0; c < nc; ++c) fixed[comp(k, c)] = 1;
-  for (size_t s = 0; s < held.size(); ++s) {
-    for (int c = 0; c < nc; ++c) fixed[comp(held[s], c)] = 1;
-    if (mode == 0) {
-      value.row(comp(held[s], cW)) = -w.row(s);
-    } else {
-      value.row(comp(held[s], 0)) = w.row(s);
-      value.row(comp(held[s], 1)) = -w.row(s);
-    }
+  const MeridianMode system(m, mode, nu, 1, side, held);
+  MeridianMode::Fields prescribed;
+  if (mode == 0) {
+    prescribed.W = -w;
+  } else {
+    prescribed.U = w;
+    prescribed.V = -w;
   }
-  for (int k : m.axis) {
-    if (mode == 0) {
-      fixed[comp(k, 0)] = 1;
-    } else {
-      fixed[comp(k, cW)] = 1;
-      if (!fixed[comp(k, 1)]) tie[comp(k, 1)] = comp(k, 0);
-      if (k < m.num_vertices) fixed[nc * n + k] = 1;
-    }
-  }
-  std::vector<int> index(ndof, -1);
-  int nf = 0;
-  for (int d = 0; d < ndof; ++d)
-    if (!fixed[d] && tie[d] < 0) index[d] = nf++;
-  std::vector<double> sign(ndof, 1.0);
-  for (int d = 0; d < ndof; ++d)
-    if (tie[d] >= 0) index[d] = index[tie[d]], sign[d] = -1;
-
-  // The lower triangle straight into MUMPS's coordinate arrays (it sums duplicates): no assembled copy.
-  MumpsLdlt::Triplets lower;
-  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(nf, nread);
-  const int nl = 6 * nc + 3;  // local DOFs: displacements node by node, then the 3 vertex pressures
-  const size_t reserve = static_cast<size_t>(m.tris.rows()) * nl * (nl + 1) / 2;
-  lower.row.reserve(reserve), lower.col.reserve(reserve), lower.value.reserve(reserve);
-  const int nrows = mode == 0 ? 4 : 6;  // ε_rr, ε_θθ, ε_zz, γ_rz (, γ_rθ, γ_θz)
-  Eigen::VectorXd D(nrows);
-  D << 2 * mu, 2 * mu, 2 * mu, mu, Eigen::VectorXd::Constant(nrows - 4, mu);
-  Eigen::MatrixXd A(nl, nl), B(nrows, nl);
-  Eigen::RowVectorXd div(nl);
-  for (int e = 0; e < m.tris.rows(); ++e) {
-    A.setZero();
-    double dxi[6], deta[6];
-    for (const auto& q : triangle_rule_degree5()) {
-      const Eigen::Matrix<double, 6, 1> N = triangle_shape(q.s, q.t);
-      triangle_shape_gradient(q.s, q.t, dxi, deta);
-      double J[2][2] = {{0, 0}, {0, 0}}, r = 0;
-      for (int a = 0; a < 6; ++a) {
-        const int k = m.tris(e, a);
-        J[0][0] += m.nodes(k, 0) * dxi[a], J[0][1] += m.nodes(k, 0) * deta[a];
-        J[1][0] += m.nodes(k, 1) * dxi[a], J[1][1] += m.nodes(k, 1) * deta[a];
-        r += m.nodes(k, 0) * N[a];
-      }
-      const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-      if (!(det > 0)) throw std::runtime_error("meridian mesh: an element is inverted");
-      const double wq = q.w * 0.5 * det * theta * r;
-      B.setZero();
-      div.setZero();
-      for (int a = 0; a < 6; ++a) {
-        const double dr = (J[1][1] * dxi[a] - J[1][0] * deta[a]) / det;
-        const double dz = (-J[0][1] * dxi[a] + J[0][0] * deta[a]) / det;
-        const double nr = N[a] / r;
-        const int u = nc * a, wz = nc * a + cW;
-        B(0, u) = dr, B(1, u) = nr, B(3, u) = dz;
-        B(2, wz) = dz, B(3, wz) = dr;
-        div(u) = dr + nr, div(wz) = dz;
-        if (mode == 1) {
-          const int v = nc * a + 1;
-          B(1, v) = nr;
-          B(4, u) = -nr, B(4, v) = dr - nr;
-          B(5, v) = dz, B(5, wz) = -nr;
-          div(v) = nr;
-        }
-      }
-      const Eigen::Vector3d P(1 - q.s - q.t, q.s, q.t);
-      const int np = 6 * nc;
-      A.topLeftCorner(np, np).noalias() += wq * B.leftCols(np).transpose() * D.asDiagonal() * B.leftCols(np);
-      A.block(np, 0, 3, np).noalias() -= wq * P * div.head(np);
-      A.block(0, np, np, 3).noalias() -= wq * div.head(np).transpose() * P.transpose();
-      A.bottomRightCorner(3, 3).noalias() -= wq * inv_lambda * P * P.transpose();
-    }
-    int g[6 * 3 + 3];
-    for (int a = 0; a < 6; ++a)
-      for (int c = 0; c < nc; ++c) g[nc * a + c] = comp(m.tris(e, a), c);
-    for (int p = 0; p < 3; ++p) g[6 * nc + p] = nc * n + m.tris(e, p);
-    for (int i = 0; i < nl; ++i) {
-      const int fi = index[g[i]];
-      if (fi < 0) continue;
-      for (int j = 0; j < nl; ++j) {
-        const double a = sign[g[i]] * A(i, j);
-        const int fj = index[g[j]];
-        if (fj < 0) {
-          rhs.row(fi) -= a * value.row(g[j]);
-        } else if (fi >= fj) {  // both (i, j) and (j, i) land here when fi == fj (a tied pair)
-          lower.row.push_back(fi), lower.col.push_back(fj), lower.value.push_back(a * sign[g[j]]);
-        }
-      }
-    }
-  }
-  cost.assemble_s += seconds_since(clock);
-  clock = std::chrono::steady_clock::now();
-  const MumpsLdlt solver(nf, std::move(lower));
-  cost.factor_s += seconds_since(clock);
-  clock = std::chrono::steady_clock::now();
-  const Eigen::MatrixXd y = solver.solve(rhs);
-  const auto at = [&](int d, int c) { return fixed[d] ? value(d, c) : sign[d] * y(index[d], c); };
+  const int nread = static_cast<int>(w.cols());
+  const MeridianMode::Fields u = system.solve(prescribed, {}, nread);
   ModeField f;
-  f.dofs = nf;
+  f.dofs = system.dofs();
   f.U.resize(nread), f.V.resize(nread), f.W.resize(nread);
   for (int c = 0; c < nread; ++c)
     for (int k : m.top) {
-      f.U[c].push_back(at(comp(k, 0), c));
-      f.V[c].push_back(mode == 1 ? at(comp(k, 1), c) : 0.0);
-      f.W[c].push_back(at(comp(k, cW), c));
+      f.U[c].push_back(u.U(k, c));
+      f.V[c].push_back(mode == 1 ? u.V(k, c) : 0.0);
+      f.W[c].push_back(u.W(k, c));
     }
-  cost.solve_s += seconds_since(clock);
+  cost.assemble_s += system.cost().assemble_s;
+  cost.factor_s += system.cost().factor_s;
+  cost.solve_s += system.cost().solve_s;
   return f;
 }
 // The base weights of the point value at the axis and, for disc_radius > 0, of the disc mean: w = M⁻¹ b (base
@@ -327,31 +194,27 @@ ModeField solve_mode(const MeridianMesh& m, const std::vector<int>& held, double
 // b_i = ∫_disc φ_i dA / (π a²) for the disc mean. The same M serves x readings: a traction τ(r) e_x has
 // |e_x|² = 1 at every angle.
 Eigen::MatrixXd disc_weights(const MeridianMesh& m, double disc_radius) {
-  const int nb = static_cast<int>(m.base.size());
+  const MeridianTrace trace(m, m.base, 2 * M_PI);
+  const std::vector<double>& r = trace.radii();
+  const int nb = static_cast<int>(r.size());
   const bool has_disc = disc_radius > 0;
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(nb, nb), b = Eigen::MatrixXd::Zero(nb, has_disc ? 2 : 1);
+  Eigen::MatrixXd b = Eigen::MatrixXd::Zero(nb, has_disc ? 2 : 1);
   b(0, 0) = 1;
-  const GaussRule1d g = gauss_legendre01(4);  // P2 × P2 × r: degree 5
-  for (int s = 0; s + 2 < nb; s += 2) {
-    const double r0 = m.nodes(m.base[s], 0), r1 = m.nodes(m.base[s + 1], 0), r2 = m.nodes(m.base[s + 2], 0);
+  const GaussRule1d g = gauss_legendre01(4);
+  for (int s = 0; s + 2 < nb && has_disc && r[s] < disc_radius; s += 2) {
     // The part of the edge inside the disc: u ∈ [0, u_disc].
-    const double u_disc = !has_disc || r0 >= disc_radius ? 0
-                          : r2 <= disc_radius            ? 1
-                                                         : edge_u(r0, r1, r2, disc_radius);
-    for (size_t k = 0; k < g.x.size(); ++k)
-      for (int part = 0; part < 2; ++part) {
-        const double u = part == 0 ? g.x[k] : u_disc * g.x[k], wk = part == 0 ? g.w[k] : u_disc * g.w[k];
-        if (part == 1 && u_disc == 0) continue;
-        double L[3], dL[3];
-        p2_line(u, L, dL);
-        const double r = L[0] * r0 + L[1] * r1 + L[2] * r2, drdu = dL[0] * r0 + dL[1] * r1 + dL[2] * r2;
-        for (int i = 0; i < 3; ++i) {
-          if (part == 1) b(s + i, 1) += wk * drdu * 2 * r * L[i] / (disc_radius * disc_radius);
-          for (int j = 0; j < 3 && part == 0; ++j) M(s + i, s + j) += wk * drdu * 2 * M_PI * r * L[i] * L[j];
-        }
-      }
+    const double u_disc =
+        r[s + 2] <= disc_radius ? 1 : meridian_edge_parameter(r[s], r[s + 1], r[s + 2], disc_radius);
+    for (size_t k = 0; k < g.x.size(); ++k) {
+      double L[3], dL[3];
+      meridian_p2_line(u_disc * g.x[k], L, dL);
+      const double rk = L[0] * r[s] + L[1] * r[s + 1] + L[2] * r[s + 2];
+      const double drdu = dL[0] * r[s] + dL[1] * r[s + 1] + dL[2] * r[s + 2];
+      for (int i = 0; i < 3; ++i)
+        b(s + i, 1) += u_disc * g.w[k] * drdu * 2 * rk * L[i] / (disc_radius * disc_radius);
+    }
   }
-  return M.ldlt().solve(b);
+  return trace.solve_mass(b);
 }
 }  // namespace
 
@@ -393,18 +256,8 @@ MeridianGreen::MeridianGreen(const MeridianMesh& m, double nu, SideCondition sid
 }
 
 double MeridianGreen::interpolate(const std::vector<double>& f, double rho) const {
-  rho = std::clamp(rho, r_.front(), r_.back());
-  // The top edge (nodes s, s+1, s+2) that holds rho: vertices sit at even indices.
-  const size_t nv = (r_.size() + 1) / 2;
-  size_t lo = 0, hi = nv - 1;  // vertex numbers: r(2 lo) <= rho <= r(2 hi)
-  while (hi - lo > 1) {
-    const size_t mid = (lo + hi) / 2;
-    (r_[2 * mid] <= rho ? lo : hi) = mid;
-  }
-  const size_t s = 2 * lo;
-  double L[3], dL[3];
-  p2_line(edge_u(r_[s], r_[s + 1], r_[s + 2], rho), L, dL);
-  return L[0] * f[s] + L[1] * f[s + 1] + L[2] * f[s + 2];
+  return meridian_interpolate(
+      r_, Eigen::Map<const Eigen::VectorXd>(f.data(), static_cast<Eigen::Index>(f.size())), rho);
 }
 
 green::GreenSample MeridianGreen::at(double x, double y, bool disc) const {
@@ -441,14 +294,14 @@ MeridianGreen::Shape MeridianGreen::shape(const std::vector<double>& along_x,
   for (size_t e = 0; e + 2 < r_.size(); e += 2) {
     double L[3], dL[3];
     for (size_t k = 0; k < g.x.size(); ++k) {
-      p2_line(g.x[k], L, dL);
+      meridian_p2_line(g.x[k], L, dL);
       const double r = L[0] * r_[e] + L[1] * r_[e + 1] + L[2] * r_[e + 2];
       const double drdu = dL[0] * r_[e] + dL[1] * r_[e + 1] + dL[2] * r_[e + 2];
       const double f = L[0] * integrand[e] + L[1] * integrand[e + 1] + L[2] * integrand[e + 2];
       s.integral += angular * g.w[k] * f * r * drdu;
     }
     for (int k = 0; k < 16; ++k) {
-      p2_line(k / 16.0, L, dL);
+      meridian_p2_line(k / 16.0, L, dL);
       samples.push_back({L[0] * r_[e] + L[1] * r_[e + 1] + L[2] * r_[e + 2],
                          L[0] * along_x[e] + L[1] * along_x[e + 1] + L[2] * along_x[e + 2]});
     }

@@ -1,0 +1,255 @@
+#include "green/meridian_mode.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "fem/mumps_ldlt.hpp"
+#include "mesh/gauss_legendre.hpp"
+#include "mesh/surface_quadrature.hpp"
+
+namespace skinfem {
+
+void meridian_p2_line(double u, double L[3], double dL[3]) {
+  L[0] = (1 - u) * (1 - 2 * u);
+  L[1] = 4 * u * (1 - u);
+  L[2] = u * (2 * u - 1);
+  dL[0] = 4 * u - 3, dL[1] = 4 - 8 * u, dL[2] = 4 * u - 1;
+}
+
+double meridian_edge_parameter(double r0, double r1, double r2, double rho) {
+  double u = (rho - r0) / (r2 - r0);
+  for (int it = 0; it < 30; ++it) {
+    double L[3], dL[3];
+    meridian_p2_line(u, L, dL);
+    const double step = (L[0] * r0 + L[1] * r1 + L[2] * r2 - rho) / (dL[0] * r0 + dL[1] * r1 + dL[2] * r2);
+    u -= step;
+    if (std::abs(step) < 1e-15) break;
+  }
+  return u;
+}
+
+double meridian_interpolate(const std::vector<double>& r, const Eigen::Ref<const Eigen::VectorXd>& f,
+                            double rho) {
+  rho = std::clamp(rho, r.front(), r.back());
+  size_t lo = 0, hi = (r.size() - 1) / 2;  // vertex numbers: r(2 lo) <= rho <= r(2 hi)
+  while (hi - lo > 1) {
+    const size_t mid = (lo + hi) / 2;
+    (r[2 * mid] <= rho ? lo : hi) = mid;
+  }
+  const size_t s = 2 * lo;
+  double L[3], dL[3];
+  meridian_p2_line(meridian_edge_parameter(r[s], r[s + 1], r[s + 2], rho), L, dL);
+  return L[0] * f[s] + L[1] * f[s + 1] + L[2] * f[s + 2];
+}
+
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
+
+MeridianMode::MeridianMode(const MeridianMesh& m, int mode, double nu, double mu, SideCondition side,
+                           std::vector<int> held)
+    : mode_(mode),
+      nc_(mode == 0 ? 2 : 3),
+      n_(static_cast<int>(m.nodes.rows())),
+      nv_(m.num_vertices),
+      held_(std::move(held)) {
+  if (mode != 0 && mode != 1) throw std::invalid_argument("MeridianMode: mode must be 0 or 1");
+  auto clock = std::chrono::steady_clock::now();
+  const int nc = nc_, n = n_, ndof = nc * n + m.num_vertices;
+  const auto comp = [&](int node, int c) { return nc * node + c; };  // c: 0 U, then (mode 1) 1 V, last W
+  const int cW = nc - 1;
+  const double theta = mode == 0 ? 2 * M_PI : M_PI;  // ∫ cos² nθ dθ
+  const double inv_lambda = nu >= 0.5 ? 0 : (1 - 2 * nu) / (2 * mu * nu);
+
+  // Constraints. Held nodes and a held side: every component. Axis: mode 0 U = 0; mode 1 W = 0, P = 0 and
+  // U + V = 0 (the displacement single-valued there), V tied to −U.
+  fixed_.assign(ndof, 0);
+  std::vector<int> tie(ndof, -1);
+  if (side == SideCondition::fixed)
+    for (int k : m.side)
+      for (int c = 0; c < nc; ++c) fixed_[comp(k, c)] = 1;
+  for (int k : held_)
+    for (int c = 0; c < nc; ++c) fixed_[comp(k, c)] = 1;
+  for (int k : m.axis) {
+    if (mode == 0) {
+      fixed_[comp(k, 0)] = 1;
+    } else {
+      fixed_[comp(k, cW)] = 1;
+      if (!fixed_[comp(k, 1)]) tie[comp(k, 1)] = comp(k, 0);
+      if (k < m.num_vertices) fixed_[nc * n + k] = 1;
+    }
+  }
+  index_.assign(ndof, -1);
+  for (int d = 0; d < ndof; ++d)
+    if (!fixed_[d] && tie[d] < 0) index_[d] = free_++;
+  sign_.assign(ndof, 1.0);
+  for (int d = 0; d < ndof; ++d)
+    if (tie[d] >= 0) index_[d] = index_[tie[d]], sign_[d] = -1;
+
+  std::vector<Eigen::Triplet<double>> triplets;
+  const int nl = 6 * nc + 3;  // local DOFs: displacements node by node, then the 3 vertex pressures
+  triplets.reserve(static_cast<size_t>(m.tris.rows()) * nl * nl);
+  const int nrows = mode == 0 ? 4 : 6;  // ε_rr, ε_θθ, ε_zz, γ_rz (, γ_rθ, γ_θz)
+  Eigen::VectorXd D(nrows);
+  D << 2 * mu, 2 * mu, 2 * mu, mu, Eigen::VectorXd::Constant(nrows - 4, mu);
+  Eigen::MatrixXd A(nl, nl), B(nrows, nl);
+  Eigen::RowVectorXd div(nl);
+  for (int e = 0; e < m.tris.rows(); ++e) {
+    A.setZero();
+    double dxi[6], deta[6];
+    for (const auto& q : triangle_rule_degree5()) {
+      const Eigen::Matrix<double, 6, 1> N = triangle_shape(q.s, q.t);
+      triangle_shape_gradient(q.s, q.t, dxi, deta);
+      double J[2][2] = {{0, 0}, {0, 0}}, r = 0;
+      for (int a = 0; a < 6; ++a) {
+        const int k = m.tris(e, a);
+        J[0][0] += m.nodes(k, 0) * dxi[a], J[0][1] += m.nodes(k, 0) * deta[a];
+        J[1][0] += m.nodes(k, 1) * dxi[a], J[1][1] += m.nodes(k, 1) * deta[a];
+        r += m.nodes(k, 0) * N[a];
+      }
+      const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+      if (!(det > 0)) throw std::runtime_error("meridian mesh: an element is inverted");
+      const double wq = q.w * 0.5 * det * theta * r;
+      B.setZero();
+      div.setZero();
+      for (int a = 0; a < 6; ++a) {
+        const double dr = (J[1][1] * dxi[a] - J[1][0] * deta[a]) / det;
+        const double dz = (-J[0][1] * dxi[a] + J[0][0] * deta[a]) / det;
+        const double nr = N[a] / r;
+        const int u = nc * a, wz = nc * a + cW;
+        B(0, u) = dr, B(1, u) = nr, B(3, u) = dz;
+        B(2, wz) = dz, B(3, wz) = dr;
+        div(u) = dr + nr, div(wz) = dz;
+        if (mode == 1) {
+          const int v = nc * a + 1;
+          B(1, v) = nr;
+          B(4, u) = -nr, B(4, v) = dr - nr;
+          B(5, v) = dz, B(5, wz) = -nr;
+          div(v) = nr;
+        }
+      }
+      const Eigen::Vector3d P(1 - q.s - q.t, q.s, q.t);
+      const int np = 6 * nc;
+      A.topLeftCorner(np, np).noalias() += wq * B.leftCols(np).transpose() * D.asDiagonal() * B.leftCols(np);
+      A.block(np, 0, 3, np).noalias() -= wq * P * div.head(np);
+      A.block(0, np, np, 3).noalias() -= wq * div.head(np).transpose() * P.transpose();
+      A.bottomRightCorner(3, 3).noalias() -= wq * inv_lambda * P * P.transpose();
+    }
+    int g[6 * 3 + 3];
+    for (int a = 0; a < 6; ++a)
+      for (int c = 0; c < nc; ++c) g[nc * a + c] = comp(m.tris(e, a), c);
+    for (int p = 0; p < 3; ++p) g[6 * nc + p] = nc * n + m.tris(e, p);
+    for (int i = 0; i < nl; ++i)
+      for (int j = 0; j < nl; ++j) triplets.emplace_back(g[i], g[j], A(i, j));
+  }
+  K_.resize(ndof, ndof);
+  K_.setFromTriplets(triplets.begin(), triplets.end());
+  triplets = {};
+  // The free block's lower triangle (MUMPS sums duplicates): a tied pair's entries (i, j) and (j, i) both
+  // land on its diagonal.
+  MumpsLdlt::Triplets lower;
+  for (int j = 0; j < K_.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(K_, j); it; ++it) {
+      const int fi = index_[it.row()], fj = index_[j];
+      if (fi < 0 || fj < 0 || fi < fj) continue;
+      lower.row.push_back(fi), lower.col.push_back(fj);
+      lower.value.push_back(sign_[it.row()] * sign_[j] * it.value());
+    }
+  cost_.assemble_s += seconds_since(clock);
+  clock = std::chrono::steady_clock::now();
+  solver_ = std::make_unique<MumpsLdlt>(free_, std::move(lower));
+  cost_.factor_s += seconds_since(clock);
+}
+
+MeridianMode::~MeridianMode() = default;
+MeridianMode::MeridianMode(MeridianMode&&) noexcept = default;
+
+Eigen::MatrixXd MeridianMode::gather(const Fields& f, int columns, const std::vector<int>* nodes) const {
+  Eigen::MatrixXd full = Eigen::MatrixXd::Zero(K_.rows(), columns);
+  const int rows = nodes ? static_cast<int>(nodes->size()) : n_;
+  const auto check = [&](const Eigen::MatrixXd& p, int expected) {
+    if (p.size() != 0 && (p.rows() != expected || p.cols() != columns))
+      throw std::invalid_argument("MeridianMode: a field block has the wrong shape");
+    return p.size() != 0;
+  };
+  const Eigen::MatrixXd* parts[3] = {&f.U, &f.V, &f.W};
+  for (int c = 0; c < nc_; ++c) {
+    const Eigen::MatrixXd& p = *parts[c == nc_ - 1 ? 2 : c];
+    if (!check(p, rows)) continue;
+    for (int i = 0; i < rows; ++i) full.row(nc_ * (nodes ? (*nodes)[i] : i) + c) = p.row(i);
+  }
+  if (!nodes && check(f.P, nv_)) full.bottomRows(nv_) = f.P;
+  return full;
+}
+
+MeridianMode::Fields MeridianMode::scatter(const Eigen::MatrixXd& full) const {
+  Fields f;
+  const auto part = [&](int c) {
+    Eigen::MatrixXd p(n_, full.cols());
+    for (int i = 0; i < n_; ++i) p.row(i) = full.row(nc_ * i + c);
+    return p;
+  };
+  f.U = part(0);
+  if (mode_ == 1) f.V = part(1);
+  f.W = part(nc_ - 1);
+  f.P = full.bottomRows(nv_);
+  return f;
+}
+
+MeridianMode::Fields MeridianMode::solve(const Fields& held_values, const Fields& load, int columns) const {
+  const auto clock = std::chrono::steady_clock::now();
+  Eigen::MatrixXd u = gather(held_values, columns, &held_);
+  const Eigen::MatrixXd residual = gather(load, columns, nullptr) - K_ * u;
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(free_, columns);
+  for (int d = 0; d < residual.rows(); ++d)
+    if (index_[d] >= 0) rhs.row(index_[d]) += sign_[d] * residual.row(d);
+  const Eigen::MatrixXd y = solver_->solve(std::move(rhs));
+  for (int d = 0; d < u.rows(); ++d)
+    if (index_[d] >= 0) u.row(d) = sign_[d] * y.row(index_[d]);
+  cost_.solve_s += seconds_since(clock);
+  return scatter(u);
+}
+
+MeridianMode::Fields MeridianMode::reactions(const Fields& u, const Fields& load) const {
+  const int columns = static_cast<int>(u.W.cols());
+  Fields r = scatter(K_ * gather(u, columns, nullptr) - gather(load, columns, nullptr));
+  r.P.resize(0, 0);
+  return r;
+}
+
+MeridianTrace::MeridianTrace(const MeridianMesh& m, std::vector<int> nodes, double angular)
+    : nodes_(std::move(nodes)) {
+  const int nb = static_cast<int>(nodes_.size());
+  if (nb < 3 || nb % 2 == 0) throw std::invalid_argument("MeridianTrace: needs whole P2 edges");
+  for (int k : nodes_) r_.push_back(m.nodes(k, 0));
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(nb, nb);
+  const GaussRule1d g = gauss_legendre01(4);  // P2 × P2 × r: degree 5
+  for (int s = 0; s + 2 < nb; s += 2)
+    for (size_t k = 0; k < g.x.size(); ++k) {
+      double L[3], dL[3];
+      meridian_p2_line(g.x[k], L, dL);
+      const double r = L[0] * r_[s] + L[1] * r_[s + 1] + L[2] * r_[s + 2];
+      const double drdu = dL[0] * r_[s] + dL[1] * r_[s + 1] + dL[2] * r_[s + 2];
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) M(s + i, s + j) += g.w[k] * drdu * angular * r * L[i] * L[j];
+    }
+  mass_.compute(M);
+}
+
+Eigen::MatrixXd MeridianTrace::solve_mass(const Eigen::MatrixXd& b) const { return mass_.solve(b); }
+
+Eigen::MatrixXd MeridianTrace::traction(const Eigen::MatrixXd& reactions) const {
+  Eigen::MatrixXd b(nodes_.size(), reactions.cols());
+  for (size_t i = 0; i < nodes_.size(); ++i) b.row(i) = reactions.row(nodes_[i]);
+  return mass_.solve(b);
+}
+
+double MeridianTrace::value(const Eigen::Ref<const Eigen::VectorXd>& t, double rho) const {
+  return meridian_interpolate(r_, t, rho);
+}
+
+}  // namespace skinfem
