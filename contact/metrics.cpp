@@ -85,40 +85,47 @@ ContactMetrics contact_metrics(const ContactSolver& solver, const TetMesh& m, co
       if ((xy(i) - Eigen::Vector2d(h.center[0], h.center[1])).norm() < h.diameter) return false;
     return true;
   };
+  std::vector<double> radii, values;
   double r_max = 0;
   for (int i = 0; i < z.size(); ++i)
-    if (fitted(i)) r_max = std::max(r_max, (xy(i) - fc).norm());
-  std::vector<Eigen::Vector3d> rows;
-  std::vector<double> rhs;
-  for (int i = 0; i < z.size(); ++i) {
-    const double rr = (xy(i) - fc).norm();
-    if (fitted(i) && rr >= 0.6 * r_max) {
-      const double X = rr * rr / (r_max * r_max);  // scaled for conditioning
-      rows.emplace_back(1.0, X, X * X);
-      rhs.push_back(linear_edge ? r.lambda[i] : r.lambda[i] * r.lambda[i]);
+    if (fitted(i)) {
+      radii.push_back((xy(i) - fc).norm());
+      values.push_back(linear_edge ? r.lambda[i] : r.lambda[i] * r.lambda[i]);
+      r_max = std::max(r_max, radii.back());
     }
-  }
   // Too few rows for the fit: the area-equivalent radius, or with holes (whose area it misses) the farthest
   // fitted vertex.
-  out.contact_radius_mm = holes.empty() ? out.equivalent_radius_mm : r_max;
-  if (rows.size() >= 6) {
-    Eigen::MatrixXd A(rows.size(), 3);
-    Eigen::VectorXd b(rows.size());
-    for (size_t k = 0; k < rows.size(); ++k) A.row(k) = rows[k].transpose(), b[k] = rhs[k];
-    const Eigen::Vector3d co = A.colPivHouseholderQr().solve(b);
-    // Root of α + βX + γX² nearest X = 1 (the last active ring).
-    double X = -co[0] / co[1];
-    if (std::abs(co[2]) > 1e-12 * std::abs(co[1])) {
-      const double disc = co[1] * co[1] - 4 * co[2] * co[0];
-      if (disc >= 0) {
-        const double q = -0.5 * (co[1] + std::copysign(std::sqrt(disc), co[1]));
-        const double X1 = q / co[2], X2 = co[0] / q;
-        X = std::abs(X1 - 1) < std::abs(X2 - 1) ? X1 : X2;
-      }
-    }
-    if (X > 0 && std::isfinite(X)) out.contact_radius_mm = r_max * std::sqrt(X);
-  }
+  out.contact_radius_mm = edge_fit_radius(radii, values, holes.empty() ? out.equivalent_radius_mm : r_max);
   return out;
+}
+
+double edge_fit_radius(const std::vector<double>& radii, const std::vector<double>& values, double fallback) {
+  double r_max = 0;
+  for (double r : radii) r_max = std::max(r_max, r);
+  std::vector<Eigen::Vector3d> rows;
+  std::vector<double> rhs;
+  for (size_t i = 0; i < radii.size(); ++i)
+    if (radii[i] >= 0.6 * r_max) {
+      const double X = radii[i] * radii[i] / (r_max * r_max);  // scaled for conditioning
+      rows.emplace_back(1.0, X, X * X);
+      rhs.push_back(values[i]);
+    }
+  if (rows.size() < 6) return fallback;
+  Eigen::MatrixXd A(rows.size(), 3);
+  Eigen::VectorXd b(rows.size());
+  for (size_t k = 0; k < rows.size(); ++k) A.row(k) = rows[k].transpose(), b[k] = rhs[k];
+  const Eigen::Vector3d co = A.colPivHouseholderQr().solve(b);
+  // Root of α + βX + γX² nearest X = 1 (the last active ring).
+  double X = -co[0] / co[1];
+  if (std::abs(co[2]) > 1e-12 * std::abs(co[1])) {
+    const double disc = co[1] * co[1] - 4 * co[2] * co[0];
+    if (disc >= 0) {
+      const double q = -0.5 * (co[1] + std::copysign(std::sqrt(disc), co[1]));
+      const double X1 = q / co[2], X2 = co[0] / q;
+      X = std::abs(X1 - 1) < std::abs(X2 - 1) ? X1 : X2;
+    }
+  }
+  return X > 0 && std::isfinite(X) ? r_max * std::sqrt(X) : fallback;
 }
 
 }  // namespace skinfem::contact

@@ -34,7 +34,24 @@ MeridianMesh meridian_mesh(const std::function<double(double)>& top, double radi
   for (double cell = z.axis_cell; rows.back() < radius * (1 - 1e-9); cell *= z.growth)
     rows.push_back(rows.back() + std::min(cell, z.max_cell));
   for (double& r : rows) r *= radius / rows.back();
-  const int nr = static_cast<int>(rows.size()) - 1, nz = z.layers;
+  std::vector<double> tau(2 * z.layers + 1);
+  for (size_t j = 0; j < tau.size(); ++j) {
+    const double t = double(j) / (tau.size() - 1);
+    tau[j] = t - z.layer_grading * std::sin(2 * M_PI * t) / (2 * M_PI);
+  }
+  return meridian_mesh(top, rows, tau);
+}
+
+MeridianMesh meridian_mesh(const std::function<double(double)>& top, const std::vector<double>& rows,
+                           const std::vector<double>& tau) {
+  if (rows.size() < 2 || rows.front() != 0 || tau.size() < 3 || tau.size() % 2 == 0 || tau.front() != 0 ||
+      tau.back() != 1)
+    throw std::invalid_argument("meridian_mesh: need rows from 0 and an odd number of fractions from 0 to 1");
+  for (size_t i = 1; i < rows.size(); ++i)
+    if (!(rows[i] > rows[i - 1])) throw std::invalid_argument("meridian_mesh: rows must increase");
+  for (size_t j = 1; j < tau.size(); ++j)
+    if (!(tau[j] > tau[j - 1])) throw std::invalid_argument("meridian_mesh: fractions must increase");
+  const int nr = static_cast<int>(rows.size()) - 1, nz = static_cast<int>(tau.size() / 2);
   const int ni = 2 * nr + 1, nj = 2 * nz + 1;  // the P2 node grid
   MeridianMesh m;
   m.num_vertices = (nr + 1) * (nz + 1);
@@ -45,11 +62,9 @@ MeridianMesh meridian_mesh(const std::function<double(double)>& top, double radi
     for (int j = 0; j < nj; ++j) {
       const int k = (i % 2 == 0 && j % 2 == 0) ? next_vertex++ : next_mid++;
       id[i * nj + j] = k;
-      const double t = double(j) / (nj - 1);
       const double r = i % 2 == 0 ? rows[i / 2] : 0.5 * (rows[i / 2] + rows[i / 2 + 1]);
-      const double tau = t - z.layer_grading * std::sin(2 * M_PI * t) / (2 * M_PI);
       m.nodes(k, 0) = r;
-      m.nodes(k, 1) = top(r) * tau;
+      m.nodes(k, 1) = top(r) * tau[j];
     }
   const auto at = [&](int i, int j) { return id[i * nj + j]; };
   m.tris.resize(2 * nr * nz, 6);
@@ -73,11 +88,7 @@ MeridianMesh meridian_mesh(const std::function<double(double)>& top, double radi
   return m;
 }
 
-namespace {
-// Points 0 = x_0 < … < x_n = L whose cells start at c0 at 0 and at c1 at L and grow by `growth` per cell away
-// from either end (a cell at distance d from an end with first cell c is about c + (growth − 1)·d), capped at
-// cap. The last cell takes what is left: between half and one and a half of its size.
-std::vector<double> graded(double L, double c0, double c1, double growth, double cap) {
+std::vector<double> graded_points(double L, double c0, double c1, double growth, double cap) {
   std::vector<double> x{0};
   const auto cell = [&](double p) {
     return std::min({cap, c0 + (growth - 1) * p, c1 + (growth - 1) * std::max(0.0, L - p)});
@@ -86,7 +97,6 @@ std::vector<double> graded(double L, double c0, double c1, double growth, double
   x.push_back(L);
   return x;
 }
-}  // namespace
 
 MeridianMesh meridian_mesh(const std::function<double(double)>& top, double radius, const MeridianSizes& z,
                            const MeridianPost& post) {
@@ -97,14 +107,15 @@ MeridianMesh meridian_mesh(const std::function<double(double)>& top, double radi
         "meridian_mesh: need 0 < post radius < radius, 0 < post height < top, cells > 0, growth >= 1");
   const double rim = post.rim_cell > 0 ? post.rim_cell : z.axis_cell / 8;
   // Radial vertex rows: inside the post's radius (above its top) and beyond it, fine at the rim.
-  std::vector<double> rows = graded(a, z.axis_cell, rim, z.growth, z.axis_cell);
+  std::vector<double> rows = graded_points(a, z.axis_cell, rim, z.growth, z.axis_cell);
   const int ia = static_cast<int>(rows.size()) - 1;  // the row at r = a
-  for (double r : graded(radius - a, rim, z.max_cell, z.growth, z.max_cell))
+  for (double r : graded_points(radius - a, rim, z.max_cell, z.growth, z.max_cell))
     if (r > 0) rows.push_back(a + r);
   // Heights beside the post (fine at its foot and top) and the fractions τ above its top (fine at the post,
   // at the top as the layer grading's end cells, top(0)/(2·layers)).
-  const std::vector<double> low = graded(H, rim, rim, z.growth, z.axis_cell);
-  std::vector<double> tau = graded(T0, rim, top(0) / (2 * z.layers), z.growth, 1.5 * top(0) / z.layers);
+  const std::vector<double> low = graded_points(H, rim, rim, z.growth, z.axis_cell);
+  std::vector<double> tau =
+      graded_points(T0, rim, top(0) / (2 * z.layers), z.growth, 1.5 * top(0) / z.layers);
   for (double& t : tau) t /= T0;
   const int nr = static_cast<int>(rows.size()) - 1, n1 = static_cast<int>(low.size()) - 1;
   const int nz = n1 + static_cast<int>(tau.size()) - 1;

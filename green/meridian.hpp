@@ -59,6 +59,16 @@ struct MeridianSizes {
 MeridianMesh meridian_mesh(const std::function<double(double)>& top, double radius,
                            const MeridianSizes& sizes);
 
+// The same on given radial vertex rows (0 first, increasing; the last is the radius) and fractions τ of the
+// thickness at every P2 row (0 to 1, increasing, vertices at even indices): z = top(r)·τ.
+MeridianMesh meridian_mesh(const std::function<double(double)>& top, const std::vector<double>& rows,
+                           const std::vector<double>& tau);
+
+// Points 0 = x_0 < … < x_n = L whose cells start at c0 at 0 and at c1 at L and grow by `growth` per cell away
+// from either end (a cell at distance d from an end with first cell c is about c + (growth − 1)·d), capped at
+// cap. The last cell takes what is left: between half and one and a half of its size.
+std::vector<double> graded_points(double L, double c0, double c1, double growth, double cap);
+
 // A post sensor on the axis (scene.hpp's PostSensor): the rigid rectangle r ≤ radius, z ≤ height cut from
 // the meridian. The stress is singular at its top rim and its foot, so cells shrink toward both corners to
 // rim_cell (mm) at the sizes' growth.

@@ -1,0 +1,243 @@
+#include "contact/meridian_contact.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "contact/lcp.hpp"
+#include "contact/metrics.hpp"
+#include "green/meridian_mode.hpp"
+#include "mesh/gauss_legendre.hpp"
+
+namespace skinfem::contact {
+
+MeridianContactSizes MeridianContactSizes::for_zone(double zone_radius, double h, double scale) {
+  MeridianContactSizes z;
+  z.zone_cell = zone_radius / 30 * scale;
+  z.edge_cell = zone_radius / 30000 * scale;
+  z.growth = 1 + 0.2 * scale;
+  z.max_cell = 4 * h / 3 * scale;
+  z.top_cell = zone_radius / 1100 * scale;
+  z.base_cell = h / 36 * scale;
+  z.layer_cell = h / 12 * scale;
+  return z;
+}
+
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Vertex radii from the axis to `radius`: zone_cell inside the zone (graded down to edge_cell at `edge` when
+// edge > 0), growing beyond it up to max_cell.
+std::vector<double> radial_rows(double zone_radius, double radius, const MeridianContactSizes& z,
+                                double edge) {
+  const auto cell = [&](double r) {
+    double c = z.zone_cell;
+    if (edge > 0) c = std::min(c, z.edge_cell + (z.growth - 1) * std::abs(r - edge));
+    if (r > zone_radius)
+      c = std::min(z.max_cell, std::max(c, z.zone_cell + (z.growth - 1) * (r - zone_radius)));
+    return c;
+  };
+  std::vector<double> x{0};
+  while (x.back() + 1.5 * cell(x.back()) < radius) x.push_back(x.back() + cell(x.back()));
+  x.push_back(radius);
+  return x;
+}
+
+// A sensor's disc as quadrature points about the axis: radius ρ, cos θ, sin θ, weight (summing to 1). Polar
+// Gauss, 12 radii × 32 angles (fem/base_traction.hpp's disc mean); a disc of diameter 0 is its centre.
+struct DiscPoint {
+  double rho, c, s, w;
+};
+std::vector<DiscPoint> disc_points(const ReadingSite& site) {
+  std::vector<DiscPoint> out;
+  const auto add = [&](double x, double y, double w) {
+    const double rho = std::hypot(x, y);
+    out.push_back({rho, rho > 0 ? x / rho : 1, rho > 0 ? y / rho : 0, w});
+  };
+  if (site.diameter <= 0) {
+    add(site.center[0], site.center[1], 1);
+    return out;
+  }
+  const double a = 0.5 * site.diameter;
+  const GaussRule1d g = gauss_legendre01(12);
+  for (size_t i = 0; i < g.x.size(); ++i)
+    for (int k = 0; k < 32; ++k) {
+      const double rr = a * g.x[i], phi = 2 * M_PI * k / 32;
+      // ∫∫ f ρ' dρ' dφ / (π a²) with ρ' = a x: weight 2 x w_i / 32.
+      add(site.center[0] + rr * std::cos(phi), site.center[1] + rr * std::sin(phi), 2 * g.x[i] * g.w[i] / 32);
+    }
+  return out;
+}
+
+// One pass: the mesh, its mode-0 system and the condensed problem.
+struct Pass {
+  MeridianMesh mesh;
+  std::vector<int> vertex;  // per multiplier: its position in mesh.top
+  std::vector<double> r;    // per multiplier
+  Eigen::MatrixXd D;        // n_c × |top|: ∫ψ_i φ_k 2πr dr, mm²
+  Eigen::VectorXd area, gap0;
+  Eigen::MatrixXd C, S;  // n_c × n_c compliance (mm³/MPa), 2·sensors × n_c readings (MPa per MPa)
+  int dofs = 0;          // mode 0's free unknowns
+};
+
+// Readings (2·sensors × columns) of base traction amplitudes of one mode (|base| × columns per component).
+Eigen::MatrixXd mode_readings(const MeridianTrace& trace, const std::vector<std::vector<DiscPoint>>& discs,
+                              int mode, const Eigen::MatrixXd& Tr, const Eigen::MatrixXd& Tt,
+                              const Eigen::MatrixXd& Tz) {
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(2 * static_cast<Eigen::Index>(discs.size()), Tz.cols());
+  for (size_t k = 0; k < discs.size(); ++k)
+    for (const DiscPoint& q : discs[k])
+      for (Eigen::Index c = 0; c < Tz.cols(); ++c) {
+        const double tr = trace.value(Tr.col(c), q.rho), tz = trace.value(Tz.col(c), q.rho);
+        // t_x = t_r cos θ − t_θ sin θ; mode 1: t_r = T_r cos θ, t_θ = T_θ sin θ, t_z = T_z cos θ.
+        const double tx = mode == 0 ? tr * q.c : tr * q.c * q.c - trace.value(Tt.col(c), q.rho) * q.s * q.s;
+        out(2 * k, c) += q.w * (mode == 0 ? tz : tz * q.c);  // σ_z = t_z
+        out(2 * k + 1, c) -= q.w * tx;                       // σ_x = −t_x
+      }
+  return out;
+}
+
+Pass condense_pass(const MeridianContactSkin& skin, double zone_radius,
+                   const std::function<double(double)>& gap0,
+                   const std::vector<std::vector<DiscPoint>>& discs, const MeridianContactSizes& sizes,
+                   double edge, MeridianContactResult::Cost& cost) {
+  auto clock = std::chrono::steady_clock::now();
+  Pass p;
+  std::vector<double> tau;
+  for (double t : graded_points(skin.h, sizes.base_cell, sizes.top_cell, sizes.growth, sizes.layer_cell)) {
+    if (!tau.empty()) tau.push_back(0.5 * (tau.back() + t / skin.h));
+    tau.push_back(t / skin.h);
+  }
+  p.mesh = meridian_mesh(skin.top, radial_rows(zone_radius, skin.radius, sizes, edge), tau);
+  const MeridianMesh& m = p.mesh;
+  const int ntop = static_cast<int>(m.top.size());
+  std::vector<double> rt(ntop);
+  for (int k = 0; k < ntop; ++k) rt[k] = m.nodes(m.top[k], 0);
+  for (int k = 0; k + 1 < ntop; k += 2)  // vertices, the side's excepted
+    if (rt[k] <= zone_radius) p.vertex.push_back(k), p.r.push_back(rt[k]);
+  const int n = static_cast<int>(p.vertex.size());
+  // Hats: on top edge (s, s+1, s+2), ψ = 1 − u for the vertex s and u for s + 2.
+  p.D = Eigen::MatrixXd::Zero(n, ntop);
+  p.area = p.gap0 = Eigen::VectorXd::Zero(n);
+  const GaussRule1d g = gauss_legendre01(4);
+  for (int i = 0; i < n; ++i)
+    for (int side = 0; side < 2; ++side) {
+      const int s = side == 0 ? p.vertex[i] - 2 : p.vertex[i];  // the edge before or after the vertex
+      if (s < 0 || s + 2 >= ntop) continue;
+      for (size_t q = 0; q < g.x.size(); ++q) {
+        double L[3], dL[3];
+        meridian_p2_line(g.x[q], L, dL);
+        const double r = L[0] * rt[s] + L[1] * rt[s + 1] + L[2] * rt[s + 2];
+        const double w = g.w[q] * (dL[0] * rt[s] + dL[1] * rt[s + 1] + dL[2] * rt[s + 2]) * 2 * M_PI * r;
+        const double psi = side == 0 ? g.x[q] : 1 - g.x[q];
+        p.area[i] += w * psi;
+        p.gap0[i] += w * psi * gap0(r);
+        for (int a = 0; a < 3; ++a) p.D(i, s + a) += w * psi * L[a];
+      }
+    }
+  cost.mesh_s += seconds_since(clock);
+
+  const double mu = skin.E / (2 * (1 + skin.nu));
+  const MeridianMode mode0(m, 0, skin.nu, mu, skin.side, m.base);
+  cost.assemble_s += mode0.cost().assemble_s;
+  cost.factor_s += mode0.cost().factor_s;
+  p.dofs = mode0.dofs();
+  clock = std::chrono::steady_clock::now();
+  const MeridianTrace trace(m, m.base, 2 * M_PI);
+  p.C.resize(n, n);
+  p.S.resize(2 * static_cast<Eigen::Index>(discs.size()), n);
+  const int N = static_cast<int>(m.nodes.rows());
+  constexpr int kBlock = 32;  // right-hand sides per solve: keeps the N × block fields small
+  for (int j0 = 0; j0 < n; j0 += kBlock) {
+    const int b = std::min(kBlock, n - j0);
+    MeridianMode::Fields load;
+    load.W = Eigen::MatrixXd::Zero(N, b);
+    for (int c = 0; c < b; ++c)
+      for (int k = 0; k < ntop; ++k) load.W(m.top[k], c) = -p.D(j0 + c, k);  // the pressure pushes down
+    const MeridianMode::Fields u = mode0.solve({}, load, b);
+    Eigen::MatrixXd Wtop(ntop, b);
+    for (int k = 0; k < ntop; ++k) Wtop.row(k) = u.W.row(m.top[k]);
+    p.C.middleCols(j0, b) = -p.D * Wtop;  // the gap opens as the top moves down
+    const MeridianMode::Fields R = mode0.reactions(u, load);
+    p.S.middleCols(j0, b) =
+        mode_readings(trace, discs, 0, trace.traction(R.U), Eigen::MatrixXd(), trace.traction(R.W));
+  }
+  // C is symmetric up to round-off (Maxwell–Betti); the LCP's frictionless theory wants it exactly so.
+  p.C = 0.5 * (p.C + p.C.transpose()).eval();
+  cost.condense_s += seconds_since(clock);
+  return p;
+}
+}  // namespace
+
+MeridianContactResult meridian_contact(const MeridianContactSkin& skin, double zone_radius,
+                                       const std::function<double(double)>& gap0, double force_N,
+                                       double ratio, const std::vector<ReadingSite>& sites,
+                                       const MeridianContactSizes& sizes) {
+  if (!(force_N > 0) || !(ratio >= 0) || !(zone_radius > 0) || !(zone_radius < skin.radius))
+    throw std::invalid_argument("meridian_contact: need force > 0, ratio >= 0, 0 < zone radius < radius");
+  std::vector<std::vector<DiscPoint>> discs;
+  for (const ReadingSite& s : sites) {
+    if (s.post()) throw std::invalid_argument("meridian_contact: reads disc sensors only");
+    discs.push_back(disc_points(s));
+  }
+  MeridianContactResult out;
+  double edge = 0;
+  for (int pass = 0; pass < 2; ++pass) {
+    const Pass p = condense_pass(skin, zone_radius, gap0, discs, sizes, edge, out.cost);
+    auto clock = std::chrono::steady_clock::now();
+    const ContactLcp lcp(p.C, p.gap0, p.area);
+    const LcpSolution s = lcp.solve_force(force_N);
+    out.cost.lcp_s += seconds_since(clock);
+    const int n = static_cast<int>(p.r.size());
+    if (s.lambda[n - 1] > 0)
+      throw std::runtime_error("meridian contact: the contact reaches the zone's edge at r = " +
+                               std::to_string(p.r.back()) + " mm; enlarge the zone");
+    std::vector<double> radii, values;
+    for (int i = 0; i < n; ++i)
+      if (s.lambda[i] > 0) radii.push_back(p.r[i]), values.push_back(s.lambda[i] * s.lambda[i]);
+    out.contact_radius_mm = edge_fit_radius(radii, values, radii.empty() ? 0 : radii.back());
+    edge = out.contact_radius_mm;
+    if (pass == 0) continue;
+    out.r = p.r;
+    out.lambda = s.lambda;
+    out.gap = s.gap;
+    out.depth_mm = s.delta;
+    out.force_N = p.area.dot(s.lambda);
+    out.ratio = ratio;
+    out.tangential_force_N = ratio * out.force_N;
+    out.p0_MPa = p.r.front() == 0 ? s.lambda[0] : 0;
+    out.complementarity = s.complementarity, out.min_lambda = s.min_lambda, out.min_gap = s.min_gap;
+    out.pivots = s.pivots;
+    out.multipliers = n;
+    clock = std::chrono::steady_clock::now();
+    out.readings = p.S * s.lambda;
+    out.dofs = p.dofs;
+    if (ratio > 0) {
+      // p_t = ratio·p along +x: mode 1, U = ratio·π∫pφr dr = ratio·(Dᵀλ)/2 and V = −U (header).
+      const MeridianMode mode1(p.mesh, 1, skin.nu, skin.E / (2 * (1 + skin.nu)), skin.side, p.mesh.base);
+      out.cost.assemble_s += mode1.cost().assemble_s;
+      out.cost.factor_s += mode1.cost().factor_s;
+      out.dofs += mode1.dofs();
+      const Eigen::VectorXd nodal = 0.5 * ratio * (p.D.transpose() * s.lambda);
+      MeridianMode::Fields load;
+      const int N = static_cast<int>(p.mesh.nodes.rows());
+      load.U = load.V = Eigen::MatrixXd::Zero(N, 1);
+      for (size_t k = 0; k < p.mesh.top.size(); ++k)
+        load.U(p.mesh.top[k], 0) = nodal[k], load.V(p.mesh.top[k], 0) = -nodal[k];
+      const MeridianMode::Fields u = mode1.solve({}, load, 1);
+      const MeridianMode::Fields R = mode1.reactions(u, load);
+      const MeridianTrace trace(p.mesh, p.mesh.base, M_PI);
+      out.readings +=
+          mode_readings(trace, discs, 1, trace.traction(R.U), trace.traction(R.V), trace.traction(R.W))
+              .col(0);
+    }
+    out.cost.readings_s += seconds_since(clock);
+  }
+  return out;
+}
+
+}  // namespace skinfem::contact
