@@ -85,18 +85,28 @@ struct Pass {
 };
 
 // Readings (2·sensors × columns) of base traction amplitudes of one mode (|base| × columns per component).
+// Mode 1 is the field of a traction along +x; along t = (cos α, sin α) it is that field rotated by α: read at
+// the point turned back by α and its vector turned by α.
 Eigen::MatrixXd mode_readings(const MeridianTrace& trace, const std::vector<std::vector<DiscPoint>>& discs,
                               int mode, const Eigen::MatrixXd& Tr, const Eigen::MatrixXd& Tt,
-                              const Eigen::MatrixXd& Tz) {
+                              const Eigen::MatrixXd& Tz, const Eigen::Vector2d& t = {1, 0}) {
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(2 * static_cast<Eigen::Index>(discs.size()), Tz.cols());
   for (size_t k = 0; k < discs.size(); ++k)
     for (const DiscPoint& q : discs[k])
-      for (Eigen::Index c = 0; c < Tz.cols(); ++c) {
-        const double tr = trace.value(Tr.col(c), q.rho), tz = trace.value(Tz.col(c), q.rho);
-        // t_x = t_r cos θ − t_θ sin θ; mode 1: t_r = T_r cos θ, t_θ = T_θ sin θ, t_z = T_z cos θ.
-        const double tx = mode == 0 ? tr * q.c : tr * q.c * q.c - trace.value(Tt.col(c), q.rho) * q.s * q.s;
-        out(2 * k, c) += q.w * (mode == 0 ? tz : tz * q.c);  // σ_z = t_z
-        out(2 * k + 1, c) -= q.w * tx;                       // σ_x = −t_x
+      for (Eigen::Index col = 0; col < Tz.cols(); ++col) {
+        const double tr = trace.value(Tr.col(col), q.rho), tz = trace.value(Tz.col(col), q.rho);
+        double sz, tx;
+        if (mode == 0) {
+          sz = tz, tx = tr * q.c;
+        } else {
+          // t_r = T_r cos θ, t_θ = T_θ sin θ, t_z = T_z cos θ at θ' = θ − α.
+          const double c = q.c * t.x() + q.s * t.y(), s = q.s * t.x() - q.c * t.y();
+          const double tt = trace.value(Tt.col(col), q.rho);
+          sz = tz * c;
+          tx = t.x() * (tr * c * c - tt * s * s) - t.y() * (tr + tt) * s * c;
+        }
+        out(2 * k, col) += q.w * sz;      // σ_z = t_z
+        out(2 * k + 1, col) -= q.w * tx;  // σ_x = −t_x
       }
   return out;
 }
@@ -163,8 +173,7 @@ Pass condense_pass(const MeridianContactSkin& skin, double zone_radius,
     for (int k = 0; k < ntop; ++k) Wtop.row(k) = u.W.row(m.top[k]);
     p.C.middleCols(j0, b) = -p.D * Wtop;  // the gap opens as the top moves down
     const MeridianMode::Fields R = mode0.reactions(u, load);
-    p.S.middleCols(j0, b) =
-        mode_readings(trace, discs, 0, trace.traction(R.U), Eigen::MatrixXd(), trace.traction(R.W));
+    p.S.middleCols(j0, b) = mode_readings(trace, discs, 0, trace.traction(R.U), {}, trace.traction(R.W));
   }
   // C is symmetric up to round-off (Maxwell–Betti); the LCP's frictionless theory wants it exactly so.
   p.C = 0.5 * (p.C + p.C.transpose()).eval();
@@ -173,12 +182,20 @@ Pass condense_pass(const MeridianContactSkin& skin, double zone_radius,
 }
 }  // namespace
 
+ZoneTooSmall::ZoneTooSmall(double r)
+    : std::runtime_error("the contact reaches the zone's last multiplier at r = " + std::to_string(r) +
+                         " mm"),
+      last_multiplier_mm(r) {}
+
 MeridianContactResult meridian_contact(const MeridianContactSkin& skin, double zone_radius,
                                        const std::function<double(double)>& gap0, double force_N,
-                                       double ratio, const std::vector<ReadingSite>& sites,
+                                       double ratio, const Eigen::Vector2d& direction,
+                                       const std::vector<ReadingSite>& sites,
                                        const MeridianContactSizes& sizes) {
-  if (!(force_N > 0) || !(ratio >= 0) || !(zone_radius > 0) || !(zone_radius < skin.radius))
-    throw std::invalid_argument("meridian_contact: need force > 0, ratio >= 0, 0 < zone radius < radius");
+  if (!(force_N > 0) || !(ratio >= 0) || !(zone_radius > 0) || !(zone_radius < skin.radius) ||
+      !(direction.norm() > 0))
+    throw std::invalid_argument(
+        "meridian_contact: need force > 0, ratio >= 0, 0 < zone radius < radius, a sliding direction");
   std::vector<std::vector<DiscPoint>> discs;
   for (const ReadingSite& s : sites) {
     if (s.post()) throw std::invalid_argument("meridian_contact: reads disc sensors only");
@@ -193,9 +210,7 @@ MeridianContactResult meridian_contact(const MeridianContactSkin& skin, double z
     const LcpSolution s = lcp.solve_force(force_N);
     out.cost.lcp_s += seconds_since(clock);
     const int n = static_cast<int>(p.r.size());
-    if (s.lambda[n - 1] > 0)
-      throw std::runtime_error("meridian contact: the contact reaches the zone's edge at r = " +
-                               std::to_string(p.r.back()) + " mm; enlarge the zone");
+    if (s.lambda[n - 1] > 0) throw ZoneTooSmall(p.r.back());
     std::vector<double> radii, values;
     for (int i = 0; i < n; ++i)
       if (s.lambda[i] > 0) radii.push_back(p.r[i]), values.push_back(s.lambda[i] * s.lambda[i]);

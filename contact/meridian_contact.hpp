@@ -23,6 +23,7 @@
 
 #include <Eigen/Dense>
 #include <functional>
+#include <stdexcept>
 #include <vector>
 
 #include "fem/sensor_reading.hpp"
@@ -72,15 +73,21 @@ struct MeridianContactResult {
   } cost;  // both passes
 };
 
+// The contact reaches the zone's outermost multiplier: the zone may be cutting it short.
+struct ZoneTooSmall : std::runtime_error {
+  explicit ZoneTooSmall(double last_multiplier_mm);
+  double last_multiplier_mm;
+};
+
 // Force control: the indenter pressed with force_N > 0; ratio ≥ 0: the uncoupled Coulomb traction p_t =
-// ratio·p along +x (0: frictionless). gap0(r): the indenter's height above the undeformed top at radius r
-// before loading (≥ 0, 0 at first touch on the axis). sites: disc sensors (posts are refused:
-// std::invalid_argument), centres relative to the axis. zone_radius: the multipliers' extent (the side's
-// vertex never carries one). Throws std::runtime_error when the contact reaches the zone's edge (the zone
-// is too small) and what contact/lcp.hpp throws.
+// ratio·p along `direction` (in the base plane; 0: frictionless). gap0(r): the indenter's height above the
+// undeformed top at radius r before loading (≥ 0, 0 at first touch on the axis). sites: disc sensors (posts
+// are refused: std::invalid_argument), centres relative to the axis. zone_radius: the multipliers' extent
+// (the side's vertex never carries one). Throws ZoneTooSmall, and what contact/lcp.hpp throws.
 MeridianContactResult meridian_contact(const MeridianContactSkin& skin, double zone_radius,
                                        const std::function<double(double)>& gap0, double force_N,
-                                       double ratio, const std::vector<ReadingSite>& sites,
+                                       double ratio, const Eigen::Vector2d& direction,
+                                       const std::vector<ReadingSite>& sites,
                                        const MeridianContactSizes& sizes);
 
 }  // namespace skinfem::contact

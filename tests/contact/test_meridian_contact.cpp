@@ -38,8 +38,9 @@ TEST(MeridianContact, HertzOnTheBondedLayerConvergesToTheExactSolution) {
   const LayerHertzResult ex = layer_hertz_force(kF, kR, kH, kE, 0.5);
   std::vector<Errors> levels;
   for (double scale : {2.0, 1.41, 1.0}) {
-    const MeridianContactResult m = meridian_contact(flat_layer(), kZone, sphere_gap, kF, 0, {},
-                                                     MeridianContactSizes::for_zone(kZone, kH, scale));
+    const MeridianContactResult m =
+        meridian_contact(flat_layer(), kZone, sphere_gap, kF, 0, Eigen::Vector2d(1, 0), {},
+                         MeridianContactSizes::for_zone(kZone, kH, scale));
     const Errors e = against_exact(m, ex);
     std::printf(
         "scale %.2f: %d multipliers, %d DOFs; a %+.2e p0 %+.2e delta %+.2e, pressure %.2e of p0; "
