@@ -29,12 +29,15 @@
 #include "fem/fields.hpp"
 #include "pipeline/contact.hpp"
 #include "pipeline/contact_setup.hpp"
+#include "pipeline/meridian_contact.hpp"
 
 namespace skinfem::app {
 
 StageOutput<ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const ContactSetup> shared,
-                                      const std::string& out_dir, FrictionMode chosen) {
+                                      const std::string& out_dir, FrictionMode chosen,
+                                      const std::string& not_meridian) {
   ContactRun run = contact_run(scene, std::move(shared), chosen);
+  run.not_meridian = not_meridian;
   const ContactSetup& setup = *run.setup;
   const TetMesh& mesh = setup.mesh();
   const contact::ContactSolver& solver = *setup.solver;
@@ -99,14 +102,77 @@ StageOutput<ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const 
       setup.model->solver().free_dofs(), c.zone.size(), symmetry_used(scene, setup).c_str(),
       wall["mesh"].get<double>(), wall["assemble"].get<double>(), wall["factor"].get<double>(),
       wall["condense"].get<double>(), c.block_solves, wall["contact_solves"].get<double>(), peak_rss_mb());
+  if (!not_meridian.empty())
+    std::printf("  3D path: the meridian does not apply: %s\n", not_meridian.c_str());
   std::printf("  wrote %s/pressure.vtp, fields.vtu, sensors.csv, modes.csv, summary.json\n", out_dir.c_str());
   return {std::move(run), std::move(summary)};
 }
 
-int run_contact(const Scene& scene, const std::string& out_dir, const std::string& friction) {
+namespace {
+void meridian_contact_stage(const Scene& scene, const std::string& out_dir, FrictionMode chosen) {
+  MeridianContactRun run = meridian_contact_run(scene, chosen);
+  const contact::MeridianContactResult& s = run.solved;
+  const MeridianContactRun::Mode& m = run.modes.at(chosen);
+  Stopwatch clock;
+  prepare_output_dir(out_dir);
+  std::ostringstream pressure, csv, modes;
+  for (auto* o : {&pressure, &csv, &modes}) o->precision(10);
+  pressure << "r_mm,pressure_kPa,weighted_gap_mm3\n";
+  for (size_t i = 0; i < s.r.size(); ++i)
+    pressure << s.r[i] << "," << 1e3 * s.lambda[i] << "," << s.gap[i] << "\n";
+  csv << "sensor,x_mm,y_mm,sigma_z_kPa,sigma_x_kPa\n";
+  modes << "sensor,x_mm,y_mm,friction,sigma_z_kPa,sigma_x_kPa\n";
+  for (size_t k = 0; k < scene.sensors.positions.size(); ++k) {
+    const auto& p = scene.sensors.positions[k];
+    csv << k + 1 << "," << p[0] << "," << p[1] << "," << 1e3 * m.readings[2 * k] << ","
+        << 1e3 * m.readings[2 * k + 1] << "\n";
+    for (const auto& [mode, v] : run.modes)
+      modes << k + 1 << "," << p[0] << "," << p[1] << "," << contact::to_string(mode) << ","
+            << 1e3 * v.readings[2 * k] << "," << 1e3 * v.readings[2 * k + 1] << "\n";
+  }
+  write_text_atomic(out_dir + "/pressure.csv", pressure.str());
+  write_text_atomic(out_dir + "/sensors.csv", csv.str());
+  write_text_atomic(out_dir + "/modes.csv", modes.str());
+  run.wall["write"] = clock.seconds();
+  const nlohmann::json summary = meridian_contact_json(scene, run);
+  write_json(out_dir + "/summary.json", summary);
+  const nlohmann::json& wall = run.wall;
+  std::printf(
+      "contact %s (%s), meridian path: %.4f N normal, %.4f N tangential; a = %.4f mm, p0 = %.2f kPa, "
+      "indentation %.3f um\n",
+      scene.name.c_str(), contact::to_string(chosen), s.force_N, m.ratio * s.force_N, s.contact_radius_mm,
+      1e3 * s.p0_MPa, 1e3 * s.depth_mm);
+  std::printf("  %s\n", run.model.c_str());
+  std::printf("  complementarity %.1e, min pressure %.2e kPa\n", s.complementarity, 1e3 * s.min_lambda);
+  std::string left;
+  for (FrictionMode mode : run.left_out)
+    left += std::string(left.empty() ? "" : ", ") + contact::to_string(mode);
+  if (!left.empty())
+    std::printf(
+        "  left out (not exact on the meridian, their contact zone is not a disc): %s; --path 3d solves "
+        "them\n",
+        left.c_str());
+  std::printf(
+      "  %d DOFs, %d multipliers (second pass, graded to the edge); mesh %.3f s, assemble %.3f s, factor "
+      "%.3f s, "
+      "condense %.3f s, contact %.3f s, readings %.3f s; peak %.0f MB\n",
+      s.dofs, s.multipliers, wall["mesh"].get<double>(), wall["assemble"].get<double>(),
+      wall["factor"].get<double>(), wall["condense"].get<double>(), wall["contact_solves"].get<double>(),
+      wall["readings"].get<double>(), peak_rss_mb());
+  std::printf("  wrote %s/pressure.csv, sensors.csv, modes.csv, summary.json\n", out_dir.c_str());
+}
+}  // namespace
+
+int run_contact(const Scene& scene, const std::string& out_dir, const std::string& friction, GreenPath path) {
   const FrictionMode chosen = friction_mode_named(scene, friction);  // or a SceneError without a contact
   check_output_dir(out_dir);
-  contact_stage(scene, contact_setup(scene, nullptr, HolePath::none), out_dir, chosen);
+  const std::string why =
+      path == GreenPath::automatic ? meridian_contact_unavailable(scene, chosen, true) : std::string();
+  if (path == GreenPath::meridian || (path == GreenPath::automatic && why.empty())) {
+    meridian_contact_stage(scene, out_dir, chosen);
+    return 0;
+  }
+  contact_stage(scene, contact_setup(scene, nullptr, HolePath::none), out_dir, chosen, why);
   return 0;
 }
 

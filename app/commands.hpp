@@ -15,7 +15,8 @@ int run_solve(const Scene& scene, const std::string& out_dir, SolverKind solver)
 int run_green(const Scene& scene, const std::string& out_dir, double grid_dx, pipeline::GreenPath path);
 int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& load,
              pipeline::GreenPath path);
-int run_contact(const Scene& scene, const std::string& out_dir, const std::string& friction);
+int run_contact(const Scene& scene, const std::string& out_dir, const std::string& friction,
+                pipeline::GreenPath path);
 // error_scales: coarser mesh levels (every size × s, s > 1) for the error bars (defect: of the largest
 // sliding signal; report: of the headline numbers); empty: none.
 int run_defect(const Scene& scene, const std::string& out_dir, const std::vector<double>& error_scales);

@@ -97,6 +97,13 @@ int main(int argc, char** argv) {
       ->add_option("--friction", friction, "friction mode (default: the scene's contact.friction.mode)")
       ->check(CLI::IsMember({"scene", "none", "static", "uncoupled", "coupled"}))
       ->capture_default_str();
+  contact_cmd
+      ->add_option("--path", path_name,
+                   "contact solver: meridian (2D axisymmetric: a flat layer or a cap's apex, the indenter on "
+                   "its axis; frictionless and uncoupled modes), 3d, or auto (the meridian where every mode "
+                   "contact reports is exact there)")
+      ->check(CLI::IsMember({"auto", "3d", "meridian"}))
+      ->capture_default_str();
   auto* defect = cli.add_subcommand(
       "defect", "hole swept through the contact, static and sliding (defect.csv, defect.pvd, summary.json)");
   auto* report = cli.add_subcommand(
@@ -169,7 +176,7 @@ int main(int argc, char** argv) {
       if (solve->parsed()) return skinfem::app::run_solve(scene, out, solver);
       if (green_cmd->parsed()) return skinfem::app::run_green(scene, out, grid_dx, path);
       if (kfit->parsed()) return skinfem::app::run_kfit(scene, out, load_name, path);
-      if (contact_cmd->parsed()) return skinfem::app::run_contact(scene, out, friction);
+      if (contact_cmd->parsed()) return skinfem::app::run_contact(scene, out, friction, path);
       if (defect->parsed())
         return skinfem::app::run_defect(scene, out, no_error_bars ? std::vector<double>{} : error_scales);
       if (study->parsed())

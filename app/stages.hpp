@@ -34,8 +34,10 @@ struct StageOutput {
 };
 StageOutput<pipeline::KfitResult> kfit_stage(const Scene& scene, const SensorGreens& greens,
                                              const std::string& out_dir, const std::string& load_name);
+// not_meridian: why the automatic path did not take the meridian (said and kept in summary.json).
 StageOutput<pipeline::ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const ContactSetup> setup,
-                                                const std::string& out_dir, FrictionMode chosen);
+                                                const std::string& out_dir, FrictionMode chosen,
+                                                const std::string& not_meridian = "");
 
 // Both sweeps of `defect` (static, then coupled sliding) with every position's contact solution; coarse:
 // pipeline::largest_sliding_levels' levels for the largest sliding signal's error bar (empty: none).

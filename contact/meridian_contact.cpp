@@ -84,31 +84,52 @@ struct Pass {
   int dofs = 0;          // mode 0's free unknowns
 };
 
-// Readings (2·sensors × columns) of base traction amplitudes of one mode (|base| × columns per component).
-// Mode 1 is the field of a traction along +x; along t = (cos α, sin α) it is that field rotated by α: read at
-// the point turned back by α and its vector turned by α.
-Eigen::MatrixXd mode_readings(const MeridianTrace& trace, const std::vector<std::vector<DiscPoint>>& discs,
-                              int mode, const Eigen::MatrixXd& Tr, const Eigen::MatrixXd& Tt,
-                              const Eigen::MatrixXd& Tz, const Eigen::Vector2d& t = {1, 0}) {
-  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(2 * static_cast<Eigen::Index>(discs.size()), Tz.cols());
+// The readings as weights on a mode's base traction amplitudes: σ = Wr·T_r + Wt·T_θ + Wz·T_z, each
+// 2·sensors × |base| (σ_z of sensor k in row 2k, σ_x in row 2k + 1). Mode 1 is the field of a traction along
+// +x; along t = (cos α, sin α) it is that field turned by α: read at the point turned back by α, its vector
+// turned by α.
+struct ReadingWeights {
+  Eigen::MatrixXd Wr, Wt, Wz;
+  Eigen::MatrixXd of(const Eigen::MatrixXd& Tr, const Eigen::MatrixXd& Tt, const Eigen::MatrixXd& Tz) const {
+    Eigen::MatrixXd out = Wr * Tr + Wz * Tz;
+    if (Tt.size()) out += Wt * Tt;
+    return out;
+  }
+};
+
+ReadingWeights reading_weights(const MeridianTrace& trace, const std::vector<std::vector<DiscPoint>>& discs,
+                               int mode, const Eigen::Vector2d& t = {1, 0}) {
+  const std::vector<double>& r = trace.radii();
+  const Eigen::Index rows = 2 * static_cast<Eigen::Index>(discs.size()),
+                     nb = static_cast<Eigen::Index>(r.size());
+  ReadingWeights w{Eigen::MatrixXd::Zero(rows, nb), Eigen::MatrixXd::Zero(rows, nb),
+                   Eigen::MatrixXd::Zero(rows, nb)};
   for (size_t k = 0; k < discs.size(); ++k)
-    for (const DiscPoint& q : discs[k])
-      for (Eigen::Index col = 0; col < Tz.cols(); ++col) {
-        const double tr = trace.value(Tr.col(col), q.rho), tz = trace.value(Tz.col(col), q.rho);
-        double sz, tx;
-        if (mode == 0) {
-          sz = tz, tx = tr * q.c;
-        } else {
-          // t_r = T_r cos θ, t_θ = T_θ sin θ, t_z = T_z cos θ at θ' = θ − α.
-          const double c = q.c * t.x() + q.s * t.y(), s = q.s * t.x() - q.c * t.y();
-          const double tt = trace.value(Tt.col(col), q.rho);
-          sz = tz * c;
-          tx = t.x() * (tr * c * c - tt * s * s) - t.y() * (tr + tt) * s * c;
-        }
-        out(2 * k, col) += q.w * sz;      // σ_z = t_z
-        out(2 * k + 1, col) -= q.w * tx;  // σ_x = −t_x
+    for (const DiscPoint& q : discs[k]) {
+      // The base edge (s, s+1, s+2) holding ρ and its P2 weights there.
+      const double rho = std::clamp(q.rho, r.front(), r.back());
+      const size_t e = std::min<size_t>(2 * ((std::upper_bound(r.begin(), r.end(), rho) - r.begin() - 1) / 2),
+                                        r.size() - 3);
+      double L[3], dL[3];
+      meridian_p2_line(meridian_edge_parameter(r[e], r[e + 1], r[e + 2], rho), L, dL);
+      // σ_z = t_z, σ_x = −t_x with t_x = t_r cos θ − t_θ sin θ; mode 1: t_r = T_r cos θ', t_θ = T_θ sin θ',
+      // t_z = T_z cos θ' at θ' = θ − α.
+      double zr = 0, zz = 1, xr = q.c, xt = 0;
+      if (mode == 1) {
+        const double c = q.c * t.x() + q.s * t.y(), s = q.s * t.x() - q.c * t.y();
+        zz = c;
+        xr = t.x() * c * c - t.y() * s * c;
+        xt = -t.x() * s * s - t.y() * s * c;
       }
-  return out;
+      for (int a = 0; a < 3; ++a) {
+        const Eigen::Index j = static_cast<Eigen::Index>(e) + a;
+        w.Wr(2 * k, j) += q.w * L[a] * zr;
+        w.Wz(2 * k, j) += q.w * L[a] * zz;
+        w.Wr(2 * k + 1, j) -= q.w * L[a] * xr;
+        w.Wt(2 * k + 1, j) -= q.w * L[a] * xt;
+      }
+    }
+  return w;
 }
 
 Pass condense_pass(const MeridianContactSkin& skin, double zone_radius,
@@ -158,10 +179,11 @@ Pass condense_pass(const MeridianContactSkin& skin, double zone_radius,
   p.dofs = mode0.dofs();
   clock = std::chrono::steady_clock::now();
   const MeridianTrace trace(m, m.base, 2 * M_PI);
+  const ReadingWeights weights = reading_weights(trace, discs, 0);
   p.C.resize(n, n);
   p.S.resize(2 * static_cast<Eigen::Index>(discs.size()), n);
   const int N = static_cast<int>(m.nodes.rows());
-  constexpr int kBlock = 32;  // right-hand sides per solve: keeps the N × block fields small
+  constexpr int kBlock = 16;  // right-hand sides per solve: keeps the N × block fields small
   for (int j0 = 0; j0 < n; j0 += kBlock) {
     const int b = std::min(kBlock, n - j0);
     MeridianMode::Fields load;
@@ -173,7 +195,7 @@ Pass condense_pass(const MeridianContactSkin& skin, double zone_radius,
     for (int k = 0; k < ntop; ++k) Wtop.row(k) = u.W.row(m.top[k]);
     p.C.middleCols(j0, b) = -p.D * Wtop;  // the gap opens as the top moves down
     const MeridianMode::Fields R = mode0.reactions(u, load);
-    p.S.middleCols(j0, b) = mode_readings(trace, discs, 0, trace.traction(R.U), {}, trace.traction(R.W));
+    p.S.middleCols(j0, b) = weights.of(trace.traction(R.U), {}, trace.traction(R.W));
   }
   // C is symmetric up to round-off (Maxwell–Betti); the LCP's frictionless theory wants it exactly so.
   p.C = 0.5 * (p.C + p.C.transpose()).eval();
@@ -188,14 +210,13 @@ ZoneTooSmall::ZoneTooSmall(double r)
       last_multiplier_mm(r) {}
 
 MeridianContactResult meridian_contact(const MeridianContactSkin& skin, double zone_radius,
-                                       const std::function<double(double)>& gap0, double force_N,
-                                       double ratio, const Eigen::Vector2d& direction,
-                                       const std::vector<ReadingSite>& sites,
+                                       const std::function<double(double)>& gap0,
+                                       const MeridianContactLoad& load, const std::vector<ReadingSite>& sites,
                                        const MeridianContactSizes& sizes) {
-  if (!(force_N > 0) || !(ratio >= 0) || !(zone_radius > 0) || !(zone_radius < skin.radius) ||
-      !(direction.norm() > 0))
+  if (!(load.force_N > 0 || (load.force_N == 0 && load.depth_mm > 0)) || !(zone_radius > 0) ||
+      !(zone_radius < skin.radius))
     throw std::invalid_argument(
-        "meridian_contact: need force > 0, ratio >= 0, 0 < zone radius < radius, a sliding direction");
+        "meridian_contact: need a force > 0 or a depth > 0, 0 < zone radius < radius");
   std::vector<std::vector<DiscPoint>> discs;
   for (const ReadingSite& s : sites) {
     if (s.post()) throw std::invalid_argument("meridian_contact: reads disc sensors only");
@@ -207,7 +228,7 @@ MeridianContactResult meridian_contact(const MeridianContactSkin& skin, double z
     const Pass p = condense_pass(skin, zone_radius, gap0, discs, sizes, edge, out.cost);
     auto clock = std::chrono::steady_clock::now();
     const ContactLcp lcp(p.C, p.gap0, p.area);
-    const LcpSolution s = lcp.solve_force(force_N);
+    const LcpSolution s = load.force_N > 0 ? lcp.solve_force(load.force_N) : lcp.solve_depth(load.depth_mm);
     out.cost.lcp_s += seconds_since(clock);
     const int n = static_cast<int>(p.r.size());
     if (s.lambda[n - 1] > 0) throw ZoneTooSmall(p.r.back());
@@ -222,8 +243,6 @@ MeridianContactResult meridian_contact(const MeridianContactSkin& skin, double z
     out.gap = s.gap;
     out.depth_mm = s.delta;
     out.force_N = p.area.dot(s.lambda);
-    out.ratio = ratio;
-    out.tangential_force_N = ratio * out.force_N;
     out.p0_MPa = p.r.front() == 0 ? s.lambda[0] : 0;
     out.complementarity = s.complementarity, out.min_lambda = s.min_lambda, out.min_gap = s.min_gap;
     out.pivots = s.pivots;
@@ -231,24 +250,23 @@ MeridianContactResult meridian_contact(const MeridianContactSkin& skin, double z
     clock = std::chrono::steady_clock::now();
     out.readings = p.S * s.lambda;
     out.dofs = p.dofs;
-    if (ratio > 0) {
-      // p_t = ratio·p along +x: mode 1, U = ratio·π∫pφr dr = ratio·(Dᵀλ)/2 and V = −U (header).
+    if (load.direction.norm() > 0) {
+      // p_t = p along +x: mode 1, U = π∫pφr dr = (Dᵀλ)/2 and V = −U (header); turned to the direction.
       const MeridianMode mode1(p.mesh, 1, skin.nu, skin.E / (2 * (1 + skin.nu)), skin.side, p.mesh.base);
       out.cost.assemble_s += mode1.cost().assemble_s;
       out.cost.factor_s += mode1.cost().factor_s;
       out.dofs += mode1.dofs();
-      const Eigen::VectorXd nodal = 0.5 * ratio * (p.D.transpose() * s.lambda);
-      MeridianMode::Fields load;
+      const Eigen::VectorXd nodal = 0.5 * (p.D.transpose() * s.lambda);
+      MeridianMode::Fields shear;
       const int N = static_cast<int>(p.mesh.nodes.rows());
-      load.U = load.V = Eigen::MatrixXd::Zero(N, 1);
+      shear.U = shear.V = Eigen::MatrixXd::Zero(N, 1);
       for (size_t k = 0; k < p.mesh.top.size(); ++k)
-        load.U(p.mesh.top[k], 0) = nodal[k], load.V(p.mesh.top[k], 0) = -nodal[k];
-      const MeridianMode::Fields u = mode1.solve({}, load, 1);
-      const MeridianMode::Fields R = mode1.reactions(u, load);
+        shear.U(p.mesh.top[k], 0) = nodal[k], shear.V(p.mesh.top[k], 0) = -nodal[k];
+      const MeridianMode::Fields R = mode1.reactions(mode1.solve({}, shear, 1), shear);
       const MeridianTrace trace(p.mesh, p.mesh.base, M_PI);
-      out.readings +=
-          mode_readings(trace, discs, 1, trace.traction(R.U), trace.traction(R.V), trace.traction(R.W))
-              .col(0);
+      out.readings_per_ratio = reading_weights(trace, discs, 1, load.direction.normalized())
+                                   .of(trace.traction(R.U), trace.traction(R.V), trace.traction(R.W))
+                                   .col(0);
     }
     out.cost.readings_s += seconds_since(clock);
   }

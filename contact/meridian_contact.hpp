@@ -54,20 +54,21 @@ struct MeridianContactSizes {
 };
 
 struct MeridianContactResult {
-  std::vector<double> r;          // n_c multiplier radii, mm
-  Eigen::VectorXd lambda;         // n_c nodal pressures, MPa
-  Eigen::VectorXd gap;            // n_c weighted gaps ∫ψ_i gap dA, mm³
-  double depth_mm = 0;            // rigid approach from first touch
-  double force_N = 0;             // ∫ p dA
-  double ratio = 0;               // the uncoupled traction's p_t / p
-  double tangential_force_N = 0;  // ratio · force
-  double contact_radius_mm = 0;   // the edge fit (metrics.hpp)
-  double p0_MPa = 0;              // λ on the axis
-  Eigen::VectorXd readings;       // 2·sensors, MPa: σ_z of sensor k at 2k, σ_x at 2k + 1
+  std::vector<double> r;         // n_c multiplier radii, mm
+  Eigen::VectorXd lambda;        // n_c nodal pressures, MPa
+  Eigen::VectorXd gap;           // n_c weighted gaps ∫ψ_i gap dA, mm³
+  double depth_mm = 0;           // rigid approach from first touch
+  double force_N = 0;            // ∫ p dA
+  double contact_radius_mm = 0;  // the edge fit (metrics.hpp)
+  double p0_MPa = 0;             // λ on the axis
+  Eigen::VectorXd readings;      // 2·sensors, MPa: σ_z of sensor k at 2k, σ_x at 2k + 1, frictionless
+  // The same for the traction p_t = p along the sliding direction alone (ratio 1; empty when not asked): the
+  // uncoupled mode's readings at ratio μ are readings + μ·readings_per_ratio.
+  Eigen::VectorXd readings_per_ratio;
   double complementarity = 0, min_lambda = 0, min_gap = 0;
   int pivots = 0;
-  int dofs = 0;  // mode 0's free unknowns (mode 1's added when ratio > 0)
-  int multipliers = 0;
+  int dofs = 0;         // mode 0's free unknowns (mode 1's added with a sliding direction)
+  int multipliers = 0;  // the second pass's
   struct Cost {
     double mesh_s = 0, assemble_s = 0, factor_s = 0, condense_s = 0, lcp_s = 0, readings_s = 0;
   } cost;  // both passes
@@ -79,15 +80,20 @@ struct ZoneTooSmall : std::runtime_error {
   double last_multiplier_mm;
 };
 
-// Force control: the indenter pressed with force_N > 0; ratio ≥ 0: the uncoupled Coulomb traction p_t =
-// ratio·p along `direction` (in the base plane; 0: frictionless). gap0(r): the indenter's height above the
-// undeformed top at radius r before loading (≥ 0, 0 at first touch on the axis). sites: disc sensors (posts
-// are refused: std::invalid_argument), centres relative to the axis. zone_radius: the multipliers' extent
-// (the side's vertex never carries one). Throws ZoneTooSmall, and what contact/lcp.hpp throws.
+// The indenter pressed with force_N > 0 (force control) or, when force_N is 0, to depth_mm > 0 (depth
+// control). direction: the sliding direction in the base plane for readings_per_ratio, or zero (none).
+struct MeridianContactLoad {
+  double force_N = 0, depth_mm = 0;
+  Eigen::Vector2d direction{0, 0};
+};
+
+// gap0(r): the indenter's height above the undeformed top at radius r before loading (≥ 0, 0 at first touch
+// on the axis). sites: disc sensors (posts are refused: std::invalid_argument), centres relative to the
+// axis. zone_radius: the multipliers' extent (the side's vertex never carries one). Throws ZoneTooSmall, and
+// what contact/lcp.hpp throws.
 MeridianContactResult meridian_contact(const MeridianContactSkin& skin, double zone_radius,
-                                       const std::function<double(double)>& gap0, double force_N,
-                                       double ratio, const Eigen::Vector2d& direction,
-                                       const std::vector<ReadingSite>& sites,
+                                       const std::function<double(double)>& gap0,
+                                       const MeridianContactLoad& load, const std::vector<ReadingSite>& sites,
                                        const MeridianContactSizes& sizes);
 
 }  // namespace skinfem::contact

@@ -90,9 +90,14 @@ MeridianMode::MeridianMode(const MeridianMesh& m, int mode, double nu, double mu
   for (int d = 0; d < ndof; ++d)
     if (tie[d] >= 0) index_[d] = index_[tie[d]], sign_[d] = -1;
 
-  std::vector<Eigen::Triplet<double>> triplets;
+  // The free block's lower triangle straight into MUMPS's coordinate arrays (it sums duplicates), and the
+  // rows of constrained DOFs (right-hand sides of prescribed values, reactions) as triplets: no assembled
+  // copy of the whole matrix.
+  MumpsLdlt::Triplets lower;
+  std::vector<Eigen::Triplet<double>> constrained;
   const int nl = 6 * nc + 3;  // local DOFs: displacements node by node, then the 3 vertex pressures
-  triplets.reserve(static_cast<size_t>(m.tris.rows()) * nl * nl);
+  const size_t reserve = static_cast<size_t>(m.tris.rows()) * nl * (nl + 1) / 2;
+  lower.row.reserve(reserve), lower.col.reserve(reserve), lower.value.reserve(reserve);
   const int nrows = mode == 0 ? 4 : 6;  // ε_rr, ε_θθ, ε_zz, γ_rz (, γ_rθ, γ_θz)
   Eigen::VectorXd D(nrows);
   D << 2 * mu, 2 * mu, 2 * mu, mu, Eigen::VectorXd::Constant(nrows - 4, mu);
@@ -143,22 +148,23 @@ MeridianMode::MeridianMode(const MeridianMesh& m, int mode, double nu, double mu
     for (int a = 0; a < 6; ++a)
       for (int c = 0; c < nc; ++c) g[nc * a + c] = comp(m.tris(e, a), c);
     for (int p = 0; p < 3; ++p) g[6 * nc + p] = nc * n + m.tris(e, p);
-    for (int i = 0; i < nl; ++i)
-      for (int j = 0; j < nl; ++j) triplets.emplace_back(g[i], g[j], A(i, j));
-  }
-  K_.resize(ndof, ndof);
-  K_.setFromTriplets(triplets.begin(), triplets.end());
-  triplets = {};
-  // The free block's lower triangle (MUMPS sums duplicates): a tied pair's entries (i, j) and (j, i) both
-  // land on its diagonal.
-  MumpsLdlt::Triplets lower;
-  for (int j = 0; j < K_.outerSize(); ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(K_, j); it; ++it) {
-      const int fi = index_[it.row()], fj = index_[j];
-      if (fi < 0 || fj < 0 || fi < fj) continue;
-      lower.row.push_back(fi), lower.col.push_back(fj);
-      lower.value.push_back(sign_[it.row()] * sign_[j] * it.value());
+    for (int i = 0; i < nl; ++i) {
+      const int fi = index_[g[i]];
+      for (int j = 0; j < nl; ++j) {
+        if (fi < 0) {
+          constrained.emplace_back(g[i], g[j], A(i, j));
+          continue;
+        }
+        const int fj = index_[g[j]];
+        if (fj >= 0 && fi >= fj) {  // both (i, j) and (j, i) land here when fi == fj (a tied pair)
+          lower.row.push_back(fi), lower.col.push_back(fj);
+          lower.value.push_back(sign_[g[i]] * sign_[g[j]] * A(i, j));
+        }
+      }
     }
+  }
+  Kc_.resize(ndof, ndof);
+  Kc_.setFromTriplets(constrained.begin(), constrained.end());
   cost_.assemble_s += seconds_since(clock);
   clock = std::chrono::steady_clock::now();
   solver_ = std::make_unique<MumpsLdlt>(free_, std::move(lower));
@@ -169,7 +175,7 @@ MeridianMode::~MeridianMode() = default;
 MeridianMode::MeridianMode(MeridianMode&&) noexcept = default;
 
 Eigen::MatrixXd MeridianMode::gather(const Fields& f, int columns, const std::vector<int>* nodes) const {
-  Eigen::MatrixXd full = Eigen::MatrixXd::Zero(K_.rows(), columns);
+  Eigen::MatrixXd full = Eigen::MatrixXd::Zero(Kc_.rows(), columns);
   const int rows = nodes ? static_cast<int>(nodes->size()) : n_;
   const auto check = [&](const Eigen::MatrixXd& p, int expected) {
     if (p.size() != 0 && (p.rows() != expected || p.cols() != columns))
@@ -203,7 +209,8 @@ MeridianMode::Fields MeridianMode::scatter(const Eigen::MatrixXd& full) const {
 MeridianMode::Fields MeridianMode::solve(const Fields& held_values, const Fields& load, int columns) const {
   const auto clock = std::chrono::steady_clock::now();
   Eigen::MatrixXd u = gather(held_values, columns, &held_);
-  const Eigen::MatrixXd residual = gather(load, columns, nullptr) - K_ * u;
+  // K's free rows times the prescribed values: by symmetry, K_c's columns (K(f, c) = K(c, f)).
+  const Eigen::MatrixXd residual = gather(load, columns, nullptr) - Eigen::MatrixXd(Kc_.transpose() * u);
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(free_, columns);
   for (int d = 0; d < residual.rows(); ++d)
     if (index_[d] >= 0) rhs.row(index_[d]) += sign_[d] * residual.row(d);
@@ -216,7 +223,7 @@ MeridianMode::Fields MeridianMode::solve(const Fields& held_values, const Fields
 
 MeridianMode::Fields MeridianMode::reactions(const Fields& u, const Fields& load) const {
   const int columns = static_cast<int>(u.W.cols());
-  Fields r = scatter(K_ * gather(u, columns, nullptr) - gather(load, columns, nullptr));
+  Fields r = scatter(Kc_ * gather(u, columns, nullptr) - gather(load, columns, nullptr));
   r.P.resize(0, 0);
   return r;
 }

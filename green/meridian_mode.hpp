@@ -67,7 +67,8 @@ class MeridianMode {
   std::vector<char> fixed_;
   std::vector<int> index_;    // free unknown of each DOF (a tied DOF shares its partner's), −1 when fixed
   std::vector<double> sign_;  // −1 on a tied DOF (mode 1: V = −U on the axis)
-  Eigen::SparseMatrix<double> K_;  // every DOF, constraints not applied
+  Eigen::SparseMatrix<double>
+      Kc_;  // ndof × ndof: the rows of constrained DOFs (fixed or tied away), all columns
   std::unique_ptr<MumpsLdlt> solver_;
   int free_ = 0;
   mutable Cost cost_;

@@ -152,6 +152,8 @@ nlohmann::json contact_json(const Scene& scene, const ContactRun& run) {
   const auto& metrics = run.metrics;
   nlohmann::json summary = metrics_json(m, r);
   summary["scene"] = scene_json(scene);
+  summary["path"] = "3d";
+  if (!run.not_meridian.empty()) summary["not_meridian"] = run.not_meridian;
   summary["friction_law"] = contact::to_string(scene.contact->law);
   if (scene.contact->law != FrictionLaw::coulomb) summary["tau0_kPa"] = 1e3 * solver.tau0();
   const Interface& interface = scene.contact->interface;

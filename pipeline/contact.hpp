@@ -31,6 +31,8 @@ struct ContactRun {
     Vec2 pressure_xy_mm{0, 0}, zone_xy_mm{0, 0};
   } coupling_shift;
   nlohmann::json wall;  // seconds per stage (the set-up's, contact_solves, full_solve)
+  // Why the 3D path ran where the path was automatic (pipeline/meridian_contact.hpp); empty otherwise.
+  std::string not_meridian;
 
   const contact::ContactResult& result() const { return results.at(chosen); }
   const contact::ContactMetrics& metric() const { return metrics.at(chosen); }
