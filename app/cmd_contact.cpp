@@ -166,9 +166,8 @@ void meridian_contact_stage(const Scene& scene, const std::string& out_dir, Fric
 int run_contact(const Scene& scene, const std::string& out_dir, const std::string& friction, GreenPath path) {
   const FrictionMode chosen = friction_mode_named(scene, friction);  // or a SceneError without a contact
   check_output_dir(out_dir);
-  const std::string why =
-      path == GreenPath::automatic ? meridian_contact_unavailable(scene, chosen, true) : std::string();
-  if (path == GreenPath::meridian || (path == GreenPath::automatic && why.empty())) {
+  std::string why;
+  if (contact_on_meridian(scene, chosen, path, &why)) {
     meridian_contact_stage(scene, out_dir, chosen);
     return 0;
   }

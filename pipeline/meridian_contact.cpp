@@ -83,6 +83,13 @@ std::string meridian_contact_unavailable(const Scene& scene, FrictionMode chosen
   return "";
 }
 
+bool contact_on_meridian(const Scene& scene, FrictionMode chosen, GreenPath path, std::string* not_meridian) {
+  if (path != GreenPath::automatic) return path == GreenPath::meridian;
+  const std::string why = meridian_contact_unavailable(scene, chosen, true);
+  if (not_meridian) *not_meridian = why;
+  return why.empty();
+}
+
 MeridianContactRun meridian_contact_run(const Scene& scene, FrictionMode chosen) {
   if (const std::string why = meridian_contact_unavailable(scene, chosen, false); !why.empty())
     throw SceneError(scene.source_path + ": the meridian (axisymmetric) contact path does not apply: " + why +

@@ -21,6 +21,10 @@ namespace skinfem::pipeline {
 // automatic choice: then the path does not change what is written).
 std::string meridian_contact_unavailable(const Scene& scene, FrictionMode chosen, bool every_mode);
 
+// Whether `contact` with `path` takes the meridian: asked, or automatic and every reported mode exact there.
+// not_meridian (when automatic and not taken): why.
+bool contact_on_meridian(const Scene& scene, FrictionMode chosen, GreenPath path, std::string* not_meridian);
+
 struct MeridianContactRun {
   std::string model;  // what was solved, one sentence
   FrictionMode chosen = FrictionMode::none;

@@ -23,6 +23,7 @@
 #include "pipeline/defect.hpp"
 #include "pipeline/green.hpp"
 #include "pipeline/kfit.hpp"
+#include "pipeline/meridian_contact.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/sensor_greens.hpp"
 #include "pipeline/symmetry.hpp"
@@ -276,15 +277,73 @@ PYBIND11_MODULE(_skinfem, m) {
   m.def("_contact_json", [](const pipeline::ContactRun& r, const Scene& scene) {
     return pipeline::contact_json(scene, r).dump();
   });
+  py::class_<pipeline::MeridianContactRun>(
+      m, "MeridianContactRun", py::dynamic_attr(),
+      "The indenter on the axis of a body of revolution, on its meridian, in the modes exact there; "
+      "attributes are the chosen mode's (pipeline/meridian_contact.hpp).")
+      .def_property_readonly(
+          "friction", [](const pipeline::MeridianContactRun& r) { return contact::to_string(r.chosen); })
+      .def_property_readonly("left_out",
+                             [](const pipeline::MeridianContactRun& r) {
+                               std::vector<std::string> v;
+                               for (FrictionMode m : r.left_out) v.push_back(contact::to_string(m));
+                               return v;
+                             })
+      .def_property_readonly("force_N",
+                             [](const pipeline::MeridianContactRun& r) { return r.solved.force_N; })
+      .def_property_readonly(
+          "tangential_force_N",
+          [](const pipeline::MeridianContactRun& r) { return r.modes.at(r.chosen).ratio * r.solved.force_N; })
+      .def_property_readonly("indentation_um",
+                             [](const pipeline::MeridianContactRun& r) { return 1e3 * r.solved.depth_mm; })
+      .def_property_readonly("contact_radius_mm",
+                             [](const pipeline::MeridianContactRun& r) { return r.solved.contact_radius_mm; })
+      .def_property_readonly("p0_kPa",
+                             [](const pipeline::MeridianContactRun& r) { return 1e3 * r.solved.p0_MPa; })
+      .def_property_readonly(
+          "readings_kPa",
+          [](const pipeline::MeridianContactRun& r) {
+            const Eigen::VectorXd& v = r.modes.at(r.chosen).readings;
+            return kpa(v, {v.size() / 2, 2});
+          },
+          "sensors × (sigma_z, sigma_x), kPa")
+      .def_property_readonly(
+          "pressure_kPa",
+          [](const pipeline::MeridianContactRun& r) {
+            return kpa(r.solved.lambda, {r.solved.lambda.size()});
+          },
+          "nodal pressure of each contact multiplier, kPa")
+      .def_property_readonly(
+          "multiplier_r_mm",
+          [](const pipeline::MeridianContactRun& r) {
+            return py::array_t<double>(static_cast<py::ssize_t>(r.solved.r.size()), r.solved.r.data());
+          },
+          "each multiplier's distance from the axis, mm")
+      .def_property_readonly("dofs", [](const pipeline::MeridianContactRun& r) { return r.solved.dofs; })
+      .def_property_readonly("wall_s",
+                             [](const pipeline::MeridianContactRun& r) { return json_object(r.wall); });
+  m.def("_meridian_contact_json", [](const pipeline::MeridianContactRun& r, const Scene& scene) {
+    return pipeline::meridian_contact_json(scene, r).dump();
+  });
   m.def(
       "_contact",
-      [](const Scene& scene, const std::string& friction) {
+      [](const Scene& scene, const std::string& friction, const std::string& path) -> py::object {
         const FrictionMode chosen = pipeline::friction_mode_named(scene, friction);
+        std::string why;
+        if (pipeline::contact_on_meridian(scene, chosen, green_path_named(path), &why)) {
+          py::gil_scoped_release free;
+          auto run = pipeline::meridian_contact_run(scene, chosen);
+          py::gil_scoped_acquire held;
+          return py::cast(std::move(run));
+        }
         py::gil_scoped_release free;
-        return pipeline::contact_run(scene, pipeline::contact_setup(scene, nullptr, pipeline::HolePath::none),
-                                     chosen);
+        auto run = pipeline::contact_run(
+            scene, pipeline::contact_setup(scene, nullptr, pipeline::HolePath::none), chosen);
+        run.not_meridian = why;
+        py::gil_scoped_acquire held;
+        return py::cast(std::move(run));
       },
-      py::arg("scene"), py::arg("friction") = "");
+      py::arg("scene"), py::arg("friction") = "", py::arg("path") = "auto");
   py::class_<pipeline::DefectRun>(
       m, "DefectRun", py::dynamic_attr(),
       "A hole swept through the contact, static and sliding (pipeline/defect.hpp).")

@@ -27,7 +27,8 @@ import json as _json
 import os as _os
 
 from ._skinfem import *  # noqa: F401,F403
-from ._skinfem import SceneError, _contact, _contact_json, _defect, _defect_json, _kfit_json, load_scene, parse_scene
+from ._skinfem import (SceneError, _contact, _contact_json, _defect, _defect_json, _kfit_json,
+                       _meridian_contact_json, load_scene, parse_scene)
 from ._skinfem import greens as _greens
 from ._skinfem import _skinfem_version as __version__
 
@@ -52,10 +53,12 @@ def _kfit_to_dict(self):
 KfitResult.to_dict = _kfit_to_dict  # noqa: F405
 
 
-def contact(scene, friction=""):
+def contact(scene, friction="", path="auto"):
     """The scene's indenter on the skin, solved in every friction mode (what `skinfem contact` computes);
-    attributes are those of `friction` ("none", "static", "uncoupled", "coupled"; default the scene's)."""
-    run = _contact(scene, friction)
+    attributes are those of `friction` ("none", "static", "uncoupled", "coupled"; default the scene's).
+    path "auto" (the meridian where every reported mode is exact there), "3d" or "meridian": a ContactRun
+    (3D) or a MeridianContactRun (its multipliers at multiplier_r_mm, the modes it left out in left_out)."""
+    run = _contact(scene, friction, path)
     run._scene = scene
     return run
 
@@ -65,7 +68,13 @@ def _contact_to_dict(self):
     return _json.loads(_contact_json(self, self._scene))
 
 
+def _meridian_contact_to_dict(self):
+    """The result as `skinfem contact` writes it on the meridian (summary.json)."""
+    return _json.loads(_meridian_contact_json(self, self._scene))
+
+
 ContactRun.to_dict = _contact_to_dict  # noqa: F405
+MeridianContactRun.to_dict = _meridian_contact_to_dict  # noqa: F405
 
 
 def defect(scene, error_scales=(2.0, 1.41)):

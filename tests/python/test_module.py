@@ -68,22 +68,28 @@ def test_kfit_reproduces_the_command(flat_kfit):
 
 
 def test_contact_reproduces_the_command(tmp_path):
-    r = run_cli("contact", HERTZ, "--out", str(tmp_path))
-    assert r.returncode == 0, r.stderr
-    with open(tmp_path / "summary.json") as f:
-        summary = json.load(f)
-    c = skinfem.contact(skinfem.scene(HERTZ))
-    assert_same(summary, c.to_dict())
-    assert c.friction == summary["friction"]
-    assert (c.contact_radius_mm, c.p0_kPa, c.indentation_um) == (
-        summary["contact_radius_mm"], summary["p0_kPa"], summary["indentation_um"])
-    # The sensor readings of the command's sensors.csv (written with 10 digits).
-    rows = [line.split(",") for line in (tmp_path / "sensors.csv").read_text().splitlines()[1:]]
-    assert np.allclose(c.readings_kPa, [[float(r[3]), float(r[4])] for r in rows], rtol=1e-9, atol=1e-12)
-    # One non-negative nodal pressure per multiplier, each at its zone vertex.
-    assert c.pressure_kPa.shape == (c.multiplier_xy_mm.shape[0],) and c.pressure_kPa.min() >= 0
+    # hertz_layer is frictionless: the automatic path is the meridian in both front ends; the 3D one asked.
+    for path, out in (("auto", tmp_path / "auto"), ("3d", tmp_path / "3d")):
+        r = run_cli("contact", HERTZ, "--path", path, "--out", str(out))
+        assert r.returncode == 0, r.stderr
+        with open(out / "summary.json") as f:
+            summary = json.load(f)
+        c = skinfem.contact(skinfem.scene(HERTZ), path=path)
+        assert summary["path"] == ("meridian" if path == "auto" else "3d")
+        assert_same(summary, c.to_dict())
+        assert c.friction == summary["friction"]
+        assert (c.contact_radius_mm, c.p0_kPa, c.indentation_um) == (
+            summary["contact_radius_mm"], summary["p0_kPa"], summary["indentation_um"])
+        # The sensor readings of the command's sensors.csv (written with 10 digits).
+        rows = [line.split(",") for line in (out / "sensors.csv").read_text().splitlines()[1:]]
+        assert np.allclose(c.readings_kPa, [[float(r[3]), float(r[4])] for r in rows], rtol=1e-9, atol=1e-12)
+        # One non-negative nodal pressure per multiplier, each at its zone vertex.
+        where = c.multiplier_r_mm if path == "auto" else c.multiplier_xy_mm
+        assert c.pressure_kPa.shape == (where.shape[0],) and c.pressure_kPa.min() >= 0
     with pytest.raises(skinfem.SceneError, match="^friction: 'sticky' is not one of none, static, uncoupled, coupled$"):
         skinfem.contact(skinfem.scene(HERTZ), friction="sticky")
+    with pytest.raises(skinfem.SceneError, match="^path: 'flat' is not one of auto, 3d, meridian$"):
+        skinfem.contact(skinfem.scene(HERTZ), path="flat")
 
 
 SWEEP_CONTACT = {
