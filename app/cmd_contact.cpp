@@ -143,6 +143,9 @@ void meridian_contact_stage(const Scene& scene, const std::string& out_dir, Fric
       scene.name.c_str(), contact::to_string(chosen), s.force_N, m.ratio * s.force_N, s.contact_radius_mm,
       1e3 * s.p0_MPa, 1e3 * s.depth_mm);
   std::printf("  %s\n", run.model.c_str());
+  if (scene.contact->interface.law == InterfaceLaw::linear)
+    std::printf("  linear interface: K = %.4g MPa/mm, it closes by %.3g um under p0\n",
+                scene.contact->interface.K, 1e3 * s.p0_MPa / scene.contact->interface.K);
   std::printf("  complementarity %.1e, min pressure %.2e kPa\n", s.complementarity, 1e3 * s.min_lambda);
   std::string left;
   for (FrictionMode mode : run.left_out)

@@ -37,6 +37,9 @@ struct MeridianContactSkin {
   double h = 0;                       // thickness on the axis
   SideCondition side = SideCondition::free;
   double E = 0, nu = 0.5;  // MPa, –
+  // MPa/mm; > 0: a linear interface in series (scene.hpp, InterfaceLaw::linear), its closure p/K adding
+  // λ_i ∫ψ_i / K to every weighted gap (C + diag(area/K), as contact/contact_solver.hpp); 0: hard.
+  double interface_K = 0;
 };
 
 // Radial cells: zone_cell across the zone, edge_cell at the contact edge (second pass), growing by `growth`

@@ -42,7 +42,7 @@ std::string meridian_contact_unavailable(const Scene& scene, FrictionMode chosen
     return "the ellipsoidal cap (R_y ≠ R) is not a body of revolution";
   if (scene.sensors.model == SensorModel::post) return "posts are read on the 3D contact path only";
   if (!c.holes.empty()) return "the indenter's holes break its symmetry";
-  if (c.interface.law != InterfaceLaw::hard)
+  if (c.interface.law == InterfaceLaw::exponential)
     return std::string("the ") + contact::to_string(c.interface.law) + " interface is on the 3D path only";
   if (c.law != FrictionLaw::coulomb)
     return std::string("the ") + contact::to_string(c.law) + " friction law is on the 3D path only";
@@ -104,8 +104,8 @@ MeridianContactRun meridian_contact_run(const Scene& scene, FrictionMode chosen)
   if (!(run.zone_radius < ms.radius))
     throw SceneError(scene.source_path + ": contact.zone_radius = " + std::to_string(run.zone_radius) +
                      " mm reaches the meridian's edge at " + std::to_string(ms.radius) + " mm");
-  const contact::MeridianContactSkin skin{ms.top,  ms.radius,        ms.h,
-                                          ms.side, scene.material.E, scene.material.nu};
+  contact::MeridianContactSkin skin{ms.top, ms.radius, ms.h, ms.side, scene.material.E, scene.material.nu};
+  if (c.interface.law == InterfaceLaw::linear) skin.interface_K = c.interface.K;
   const auto phi = [&](double r) {  // the indenter's rise above its lowest point (contact/indenter.cpp)
     if (c.indenter == IndenterKind::plane) return 0.0;
     const double R = c.sphere_R;
@@ -161,6 +161,9 @@ nlohmann::json meridian_contact_json(const Scene& scene, const MeridianContactRu
   j["path"] = "meridian";
   j["model"] = run.model;
   j["friction"] = contact::to_string(run.chosen);
+  j["interface"] = contact::to_string(scene.contact->interface.law);
+  if (scene.contact->interface.law == InterfaceLaw::linear)
+    j["interface_K_MPa_per_mm"] = scene.contact->interface.K;
   j["ratio"] = m.ratio;
   j["force_N"] = s.force_N;
   j["tangential_force_N"] = m.ratio * s.force_N;

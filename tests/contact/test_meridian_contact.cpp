@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "contact/layer_hertz.hpp"
+#include "contact/layer_hertz_interface.hpp"
 #include "contact/meridian_contact.hpp"
 #include "green/layer_exact.hpp"
 #include "mesh/gauss_legendre.hpp"
@@ -66,6 +67,32 @@ TEST(MeridianContact, HertzOnTheBondedLayerConvergesToTheExactSolution) {
   std::printf("observed order of p0's error: %.2f\n", order);
   EXPECT_GT(order, 1.5);
   EXPECT_LT(levels[1].pressure, 1e-2);
+}
+
+// Through a linear interface in series (K = 30 and 3 MPa/mm: closure at p0 of 2 and 16 µm against δ of 30
+// and 38 µm) against the exact layer with the same interface (contact/layer_hertz_interface.hpp, a Chebyshev
+// series converging algebraically: 64 terms).
+TEST(MeridianContact, ThroughALinearInterfaceConvergesToTheExactSolution) {
+  for (double K : {30.0, 3.0}) {
+    const LayerHertzInterfaceResult ex = layer_hertz_interface_force(kF, kR, kH, kE, 0.5, K);
+    MeridianContactSkin skin = flat_layer();
+    skin.interface_K = K;
+    std::vector<Errors> levels;
+    for (double scale : {2.0, 1.41, 1.0}) {
+      const double zone = K < 10 ? 4.5 : kZone;  // the compliant interface's contact is larger
+      const MeridianContactResult m = meridian_contact(skin, zone, sphere_gap, MeridianContactLoad{kF}, {},
+                                                       MeridianContactSizes::for_zone(zone, kH, scale));
+      const Errors e{m.contact_radius_mm / ex.a_mm - 1, m.p0_MPa / ex.p0_MPa - 1,
+                     m.depth_mm / ex.delta_mm - 1, 0, m.dofs};
+      std::printf("K = %g, scale %.2f: a %+.2e p0 %+.2e delta %+.2e\n", K, scale, e.a, e.p0, e.delta);
+      levels.push_back(e);
+    }
+    // The hard contact's targets at the default sizes; p0 converging (order fitted over the three levels).
+    EXPECT_LT(std::abs(levels[2].a), 5e-4) << "K = " << K;
+    EXPECT_LT(std::abs(levels[2].p0), 5e-4) << "K = " << K;
+    EXPECT_LT(std::abs(levels[2].delta), 5e-4) << "K = " << K;
+    EXPECT_GT(std::log(std::abs(levels[0].p0 / levels[2].p0)) / std::log(2.0), 1.2) << "K = " << K;
+  }
 }
 
 // Sensor readings of the frictionless and the uncoupled contact against a second, independent route: the
