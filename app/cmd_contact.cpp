@@ -102,6 +102,11 @@ StageOutput<ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const 
       setup.model->solver().free_dofs(), c.zone.size(), symmetry_used(scene, setup).c_str(),
       wall["mesh"].get<double>(), wall["assemble"].get<double>(), wall["factor"].get<double>(),
       wall["condense"].get<double>(), c.block_solves, wall["contact_solves"].get<double>(), peak_rss_mb());
+  if (const auto& mc = run.meridian_check)
+    std::printf(
+        "  against the meridian (frictionless and uncoupled, exact in 2D, %d DOFs, %.2f s): readings within "
+        "%.1e of the largest; a %+.1e, p0 %+.1e, indentation %+.1e\n",
+        mc->dofs, mc->seconds, mc->readings_rel, mc->a_rel, mc->p0_rel, mc->indentation_rel);
   if (!not_meridian.empty())
     std::printf("  3D path: the meridian does not apply: %s\n", not_meridian.c_str());
   std::printf("  wrote %s/pressure.vtp, fields.vtu, sensors.csv, modes.csv, summary.json\n", out_dir.c_str());

@@ -5,6 +5,7 @@
 
 #include "contact/hole_cover.hpp"
 #include "pipeline/clock.hpp"
+#include "pipeline/meridian_contact.hpp"
 #include "pipeline/scene_json.hpp"
 #include "pipeline/symmetry.hpp"
 
@@ -79,6 +80,25 @@ ContactRun contact_run(const Scene& scene, std::shared_ptr<const ContactSetup> s
         contact::contact_metrics(solver, mesh, *setup.top, results[mode], centre, scene.contact->holes);
   }
   wall["contact_solves"] = clock.seconds();
+  if (meridian_contact_unavailable(scene, FrictionMode::none, false).empty()) {
+    Stopwatch check_clock;
+    const MeridianContactRun m = meridian_contact_run(scene, FrictionMode::none);
+    ContactRun::MeridianCheck c;
+    double gap = 0, scale = 0;
+    for (FrictionMode mode : {FrictionMode::none, FrictionMode::uncoupled}) {
+      gap = std::max(gap, (results[mode].readings - m.modes.at(mode).readings).cwiseAbs().maxCoeff());
+      scale = std::max(scale, m.modes.at(mode).readings.cwiseAbs().maxCoeff());
+    }
+    c.readings_rel = scale > 0 ? gap / scale : 0.0;
+    const contact::ContactMetrics& fm = metrics[FrictionMode::none];
+    c.a_rel = fm.contact_radius_mm / m.solved.contact_radius_mm - 1;
+    c.p0_rel = fm.p0_MPa / m.solved.p0_MPa - 1;
+    c.indentation_rel = results[FrictionMode::none].depth_mm / m.solved.depth_mm - 1;
+    c.dofs = m.solved.dofs;
+    c.seconds = check_clock.seconds();
+    run.meridian_check = c;
+    wall["meridian_check"] = c.seconds;
+  }
   const ContactResult& r = results[chosen];
 
   // The volume solution of the chosen mode: one more solve with the contact load, on the solved skin (the
@@ -168,6 +188,13 @@ nlohmann::json contact_json(const Scene& scene, const ContactRun& run) {
   summary["max_penetration_um"] = 1e3 * run.max_penetration_mm;
   summary["pressure_centroid_x_mm"] = m.pressure_centroid[0];
   summary["readings_condensed_vs_reactions_rel"] = run.readings_condensed_vs_reactions_rel;
+  if (const auto& c = run.meridian_check)
+    summary["meridian_check"] = {{"readings_rel", c->readings_rel},
+                                 {"contact_radius_rel", c->a_rel},
+                                 {"p0_rel", c->p0_rel},
+                                 {"indentation_rel", c->indentation_rel},
+                                 {"dofs", c->dofs},
+                                 {"modes", {"none", "uncoupled"}}};
   summary["residual"] = run.solution.residual;
   for (const auto& [mode, res] : results)
     summary["modes"][contact::to_string(mode)] = metrics_json(metrics.at(mode), res);

@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "contact/metrics.hpp"
 #include "fem/mixed_solver.hpp"
@@ -33,6 +34,17 @@ struct ContactRun {
   nlohmann::json wall;  // seconds per stage (the set-up's, contact_solves, full_solve)
   // Why the 3D path ran where the path was automatic (pipeline/meridian_contact.hpp); empty otherwise.
   std::string not_meridian;
+  // A second method where the scene is a body of revolution about the indenter
+  // (pipeline/meridian_contact.hpp): the frictionless and uncoupled modes on the meridian, exact restrictions
+  // of this problem, against the 3D ones. readings_rel: the largest |3D − meridian| over every sensor, σ_z
+  // and σ_x and both modes, over the largest |reading|; the frictionless contact radius, p0 and indentation
+  // as 3D / meridian − 1.
+  struct MeridianCheck {
+    double readings_rel = 0, a_rel = 0, p0_rel = 0, indentation_rel = 0;
+    int dofs = 0;
+    double seconds = 0;
+  };
+  std::optional<MeridianCheck> meridian_check;
 
   const contact::ContactResult& result() const { return results.at(chosen); }
   const contact::ContactMetrics& metric() const { return metrics.at(chosen); }
