@@ -19,6 +19,7 @@
 // are pipeline/contact.hpp's; this file writes and prints them.
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <sstream>
 
 #include "app/commands.hpp"
@@ -32,6 +33,28 @@
 #include "pipeline/meridian_contact.hpp"
 
 namespace skinfem::app {
+
+namespace {
+// sensors.csv (the chosen mode) and modes.csv (every mode solved); readings: 2·sensors per mode, MPa.
+void write_readings(const std::string& out_dir, const Scene& scene, FrictionMode chosen,
+                    const std::map<FrictionMode, Eigen::VectorXd>& readings) {
+  std::ostringstream csv, modes;
+  csv.precision(10);
+  modes.precision(10);
+  csv << "sensor,x_mm,y_mm,sigma_z_kPa,sigma_x_kPa\n";
+  modes << "sensor,x_mm,y_mm,friction,sigma_z_kPa,sigma_x_kPa\n";
+  const Eigen::VectorXd& r = readings.at(chosen);
+  for (size_t k = 0; k < scene.sensors.positions.size(); ++k) {
+    const auto& p = scene.sensors.positions[k];
+    csv << k + 1 << "," << p[0] << "," << p[1] << "," << 1e3 * r[2 * k] << "," << 1e3 * r[2 * k + 1] << "\n";
+    for (const auto& [mode, v] : readings)
+      modes << k + 1 << "," << p[0] << "," << p[1] << "," << contact::to_string(mode) << "," << 1e3 * v[2 * k]
+            << "," << 1e3 * v[2 * k + 1] << "\n";
+  }
+  write_text_atomic(out_dir + "/sensors.csv", csv.str());
+  write_text_atomic(out_dir + "/modes.csv", modes.str());
+}
+}  // namespace
 
 StageOutput<ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const ContactSetup> shared,
                                       const std::string& out_dir, FrictionMode chosen,
@@ -51,21 +74,9 @@ StageOutput<ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const 
   write_fields_vtu(out_dir + "/fields.vtu", mesh, setup.model->lame(),
                    setup.whole ? mirrored_solution(mesh, setup.source, x) : x);
   contact::write_pressure_vtp(out_dir + "/pressure.vtp", mesh, solver, r, scene.contact->holes);
-  std::ostringstream csv, modes;
-  csv.precision(10);
-  modes.precision(10);
-  csv << "sensor,x_mm,y_mm,sigma_z_kPa,sigma_x_kPa\n";
-  modes << "sensor,x_mm,y_mm,friction,sigma_z_kPa,sigma_x_kPa\n";
-  for (size_t k = 0; k < scene.sensors.positions.size(); ++k) {
-    const auto& p = scene.sensors.positions[k];
-    csv << k + 1 << "," << p[0] << "," << p[1] << "," << 1e3 * r.readings[2 * k] << ","
-        << 1e3 * r.readings[2 * k + 1] << "\n";
-    for (const auto& [mode, res] : run.results)
-      modes << k + 1 << "," << p[0] << "," << p[1] << "," << contact::to_string(mode) << ","
-            << 1e3 * res.readings[2 * k] << "," << 1e3 * res.readings[2 * k + 1] << "\n";
-  }
-  write_text_atomic(out_dir + "/sensors.csv", csv.str());
-  write_text_atomic(out_dir + "/modes.csv", modes.str());
+  std::map<FrictionMode, Eigen::VectorXd> readings;
+  for (const auto& [mode, res] : run.results) readings[mode] = res.readings;
+  write_readings(out_dir, scene, chosen, readings);
   run.wall["write"] = clock.seconds();
   nlohmann::json summary = contact_json(scene, run);
   const nlohmann::json& wall = run.wall;
@@ -120,24 +131,15 @@ void meridian_contact_stage(const Scene& scene, const std::string& out_dir, Fric
   const MeridianContactRun::Mode& m = run.modes.at(chosen);
   Stopwatch clock;
   prepare_output_dir(out_dir);
-  std::ostringstream pressure, csv, modes;
-  for (auto* o : {&pressure, &csv, &modes}) o->precision(10);
+  std::ostringstream pressure;
+  pressure.precision(10);
   pressure << "r_mm,pressure_kPa,weighted_gap_mm3\n";
   for (size_t i = 0; i < s.r.size(); ++i)
     pressure << s.r[i] << "," << 1e3 * s.lambda[i] << "," << s.gap[i] << "\n";
-  csv << "sensor,x_mm,y_mm,sigma_z_kPa,sigma_x_kPa\n";
-  modes << "sensor,x_mm,y_mm,friction,sigma_z_kPa,sigma_x_kPa\n";
-  for (size_t k = 0; k < scene.sensors.positions.size(); ++k) {
-    const auto& p = scene.sensors.positions[k];
-    csv << k + 1 << "," << p[0] << "," << p[1] << "," << 1e3 * m.readings[2 * k] << ","
-        << 1e3 * m.readings[2 * k + 1] << "\n";
-    for (const auto& [mode, v] : run.modes)
-      modes << k + 1 << "," << p[0] << "," << p[1] << "," << contact::to_string(mode) << ","
-            << 1e3 * v.readings[2 * k] << "," << 1e3 * v.readings[2 * k + 1] << "\n";
-  }
   write_text_atomic(out_dir + "/pressure.csv", pressure.str());
-  write_text_atomic(out_dir + "/sensors.csv", csv.str());
-  write_text_atomic(out_dir + "/modes.csv", modes.str());
+  std::map<FrictionMode, Eigen::VectorXd> readings;
+  for (const auto& [mode, v] : run.modes) readings[mode] = v.readings;
+  write_readings(out_dir, scene, chosen, readings);
   run.wall["write"] = clock.seconds();
   const nlohmann::json summary = meridian_contact_json(scene, run);
   write_json(out_dir + "/summary.json", summary);
