@@ -127,7 +127,10 @@ validation::KTargetAnswer k_paper_answer(const Scene& scene, double h,
     j["within_0.01"].push_back(
         {{"parameter", n.parameter}, {"value", n.value}, {"criterion", n.criterion}, {"k", n.k}});
   for (const auto& c : a.crossings)
-    j["crossings"].push_back({{"parameter", c.parameter}, {"criterion", c.criterion}, {"value", c.value}});
+    j["crossings"].push_back({{"parameter", c.parameter},
+                              {"criterion", c.criterion},
+                              {"value", c.value},
+                              {"linear_interpolation", c.interpolated}});
   j["answer"] = a.answer;
   entry = j;
   return a;

@@ -1,6 +1,7 @@
 #include "validation/k_sweep.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "green/calibration.hpp"
 #include "validation/text.hpp"
@@ -76,6 +77,50 @@ std::vector<double> crossings(const std::vector<KSweepPoint>& points, const std:
   return out;
 }
 
+namespace {
+double criterion_of(const KSweepPoint& k, const std::string& criterion) {
+  return criterion == "k_central" ? k.k_central : k.k_lsq_line;
+}
+
+KProtocol with(KProtocol p, const std::string& parameter, double value) {
+  if (parameter == "nu")
+    p.nu = value;
+  else if (parameter == "punch_diameter_mm")
+    p.punch_diameter = value;
+  else if (parameter == "disc_diameter_mm")
+    p.disc_diameter = value;
+  else if (parameter == "h_mm")
+    p.h = value;
+  else
+    throw std::invalid_argument("crossing_root: " + parameter + " is not a continuous protocol parameter");
+  return p;
+}
+}  // namespace
+
+double crossing_root(const KProtocol& base, const std::string& parameter, const std::string& criterion,
+                     double target, double lo, double hi) {
+  const auto f = [&](double v) { return criterion_of(k_of(with(base, parameter, v)), criterion) - target; };
+  double a = lo, b = hi, fa = f(a), fb = f(b);
+  if (fa == 0) return a;
+  if (fb == 0) return b;
+  if (fa * fb > 0) throw std::invalid_argument("crossing_root: k − target has one sign on the bracket");
+  const double tol = 1e-9 * std::abs(hi - lo);
+  int side = 0;
+  for (int it = 0; it < 40 && std::abs(b - a) > tol; ++it) {
+    const double c = b - fb * (b - a) / (fb - fa), fc = f(c);
+    if (fc == 0) return c;
+    if (fc * fb < 0) {
+      a = b, fa = fb;
+      side = 0;
+    } else if (++side == 2) {  // Illinois: halve the stale end's value so it moves too
+      fa *= 0.5;
+      side = 0;
+    }
+    b = c, fb = fc;
+  }
+  return std::abs(fa) < std::abs(fb) ? a : b;
+}
+
 KTargetAnswer k_target_answer(const KProtocol& base, const std::vector<KSweepPoint>& extra, double target,
                               double band) {
   KTargetAnswer a;
@@ -97,12 +142,23 @@ KTargetAnswer k_target_answer(const KProtocol& base, const std::vector<KSweepPoi
       }
     }
   for (const char* param : {"nu", "punch_diameter_mm", "disc_diameter_mm", "h_mm"})
-    for (const char* crit : {"k_central", "k_lsq_line"})
-      for (double v : crossings(a.points, param, crit, target)) {
+    for (const char* crit : {"k_central", "k_lsq_line"}) {
+      // The sweep's points of this parameter bracket each crossing; the root is found between them.
+      std::vector<const KSweepPoint*> group;
+      for (const auto& p : a.points)
+        if (p.parameter == param) group.push_back(&p);
+      for (size_t i = 1; i < group.size(); ++i) {
+        const double fa = criterion_of(*group[i - 1], crit) - target,
+                     fb = criterion_of(*group[i], crit) - target;
+        if (!(fa * fb < 0) && !(fa == 0)) continue;
+        const std::vector<KSweepPoint> pair{*group[i - 1], *group[i]};
+        const double linear = crossings(pair, param, crit, target).front();
+        const double v = crossing_root(base, param, crit, target, group[i - 1]->value, group[i]->value);
         cross += (cross.empty() ? "" : "; ") + std::string(crit) + " = " + fmt("%.2f", target) + " at " +
-                 param + " = " + fmt("%.3g", v);
-        a.crossings.push_back({param, crit, v});
+                 param + " = " + fmt("%.4g", v);
+        a.crossings.push_back({param, crit, v, linear});
       }
+    }
   a.answer = "Exact layer (h " + fmt("%.3g", base.h) + " mm) with one protocol reading changed at a time" +
              (extra.empty() ? std::string() : ", and the FE mesh scale") + ": " +
              (near.empty()

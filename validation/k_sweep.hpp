@@ -37,10 +37,18 @@ std::vector<KSweepPoint> k_sweep(const KProtocol& base, double spacing = 0.05);
 std::vector<double> crossings(const std::vector<KSweepPoint>& points, const std::string& parameter,
                               const std::string& criterion, double target);
 
+// The same crossing found on the exact layer itself: k of `criterion` as `parameter` (nu, punch_diameter_mm,
+// disc_diameter_mm or h_mm) varies alone about `base`, root-found between lo and hi, where k − target
+// changes sign (Illinois' regula falsi to |Δvalue| ≤ 1e-9 of the bracket, at most 40 evaluations of k_of).
+// The crossings above interpolate linearly between sweep points, which k is not: on the paper's protocol
+// they are about 0.8 % off (tests/validation/test_k_sweep.cpp).
+double crossing_root(const KProtocol& base, const std::string& parameter, const std::string& criterion,
+                     double target, double lo, double hi);
+
 // Which single change of the protocol gives a target k (the paper's 1.48): the sweep about `base`, with
 // `extra` points appended (the report adds the FE k per mesh scale, parameter "mesh_scale"), the readings
-// whose k lies within `band` of the target, and where each parameter's k crosses it. `answer` says so in
-// one sentence computed from these numbers.
+// whose k lies within `band` of the target, and where each parameter's k crosses it (crossing_root, from the
+// sweep's brackets). `answer` says so in one sentence computed from these numbers.
 struct KTargetAnswer {
   struct Near {
     std::string parameter, criterion;  // criterion: k_central or k_lsq_line
@@ -48,7 +56,8 @@ struct KTargetAnswer {
   };
   struct Crossing {
     std::string parameter, criterion;
-    double value = 0;
+    double value = 0;         // crossing_root's: k of the protocol with it equals the target
+    double interpolated = 0;  // the linear interpolation between sweep points
   };
   double target = 0, band = 0;
   std::vector<KSweepPoint> points;

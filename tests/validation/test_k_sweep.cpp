@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "../common/convergence.hpp"
 #include "validation/k_sweep.hpp"
@@ -45,6 +46,28 @@ TEST(KSweep, CrossingsInterpolateBetweenNeighbours) {
   EXPECT_EQ(crossings(pts, "a", "k_central", 1.5), (std::vector<double>{0.5, 1.5}));
   EXPECT_EQ(crossings(pts, "a", "k_lsq_line", 1.25), (std::vector<double>{0.75, 2.0}));
   EXPECT_TRUE(crossings(pts, "a", "k_central", 3.0).empty());
+}
+
+// The crossings the report prints are roots of the exact layer's k (issue: they were linear interpolations
+// between sweep points, about 0.8 % off): k_of at each crossing equals the target to the root finder's
+// tolerance, a second evaluation independent of the sweep.
+TEST(KSweep, CrossingsAreRootsOfTheExactLayersK) {
+  const KProtocol base;
+  const KTargetAnswer a = k_target_answer(base, {}, 1.48);
+  ASSERT_FALSE(a.crossings.empty());
+  for (const auto& c : a.crossings) {
+    KProtocol p = base;
+    if (c.parameter == "nu") p.nu = c.value;
+    if (c.parameter == "punch_diameter_mm") p.punch_diameter = c.value;
+    if (c.parameter == "disc_diameter_mm") p.disc_diameter = c.value;
+    if (c.parameter == "h_mm") p.h = c.value;
+    const KSweepPoint k = k_of(p);
+    const double kc = c.criterion == "k_central" ? k.k_central : k.k_lsq_line;
+    std::printf("%s = 1.48 at %s = %.6f (linear interpolation %.6f, %+.2f %%); k there %.9f\n",
+                c.criterion.c_str(), c.parameter.c_str(), c.value, c.interpolated,
+                100 * (c.interpolated / c.value - 1), kc);
+    EXPECT_NEAR(kc, 1.48, 1e-7) << c.parameter << " " << c.criterion;
+  }
 }
 
 // The sweep varies one parameter at a time: every group holds the base case, with the same k.
