@@ -449,6 +449,7 @@ def pareto(d):
                  {"stage": text, "level": number, "dofs": integer, "seconds": positive, "error": positive})
     fig, ax = plt.subplots(figsize=(10, 7))
     markers = "osD^vPX*h"
+    labelled = []  # (log10 s, log10 e, DOFs) of the labels placed so far
     for i, stage in enumerate(in_order(t["stage"])):
         m = t["stage"] == stage
         o = np.argsort(t["level"][m], kind="stable")
@@ -456,7 +457,14 @@ def pareto(d):
         ax.plot(sec, err, marker=markers[i % len(markers)], ms=8, lw=1, color=plt.get_cmap("Dark2")(i % 8),
                 label=stage)
         for s, e, n in zip(sec, err, dofs):
-            ax.annotate(f"{n:,}", (s, e), textcoords="offset points", xytext=(6, 5), fontsize=8)
+            # Stages of one level share its solve, so their points can coincide: one label for the same DOFs
+            # at the same place, and labels of others near it stacked below instead of on top.
+            x, y = np.log10(s), np.log10(e)
+            near = [(a, b, k) for a, b, k in labelled if abs(a - x) < 0.06 and abs(b - y) < 0.06]
+            if any(k == n for _, _, k in near):
+                continue
+            ax.annotate(f"{n:,}", (s, e), textcoords="offset points", xytext=(6, 5 - 11 * len(near)), fontsize=8)
+            labelled.append((x, y, n))
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.margins(0.1)
