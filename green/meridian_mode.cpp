@@ -209,8 +209,9 @@ MeridianMode::Fields MeridianMode::scatter(const Eigen::MatrixXd& full) const {
 MeridianMode::Fields MeridianMode::solve(const Fields& held_values, const Fields& load, int columns) const {
   const auto clock = std::chrono::steady_clock::now();
   Eigen::MatrixXd u = gather(held_values, columns, &held_);
+  Eigen::MatrixXd residual = gather(load, columns, nullptr);
   // K's free rows times the prescribed values: by symmetry, K_c's columns (K(f, c) = K(c, f)).
-  const Eigen::MatrixXd residual = gather(load, columns, nullptr) - Eigen::MatrixXd(Kc_.transpose() * u);
+  if (held_values.U.size() || held_values.V.size() || held_values.W.size()) residual -= Kc_.transpose() * u;
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(free_, columns);
   for (int d = 0; d < residual.rows(); ++d)
     if (index_[d] >= 0) rhs.row(index_[d]) += sign_[d] * residual.row(d);
