@@ -3,20 +3,28 @@
 // factorization condensed onto the contact multipliers. All four friction modes are solved (each a
 // small dense complementarity problem once the skin is condensed); the chosen one is written in full. A
 // mirror-symmetric scene (pipeline/symmetry.hpp) is solved on its half y ≥ 0 at half the force and written
-// whole.
+// whole. Where the skin is a body of revolution about the indenter (pipeline/meridian_contact.hpp) the
+// contact is solved on its meridian instead (`--path meridian`, or `auto` where every reported mode is
+// exact there), and a 3D run checks itself against it (meridian_check).
 //
 //   $ skinfem contact scenes/hertz_layer.json --out out/hertz
-//   contact hertz_layer (none): 0.8000 N normal, 0.0000 N tangential; a = 2.4776 mm, p0 = 63.74 kPa, ...
-//     80680 DOFs, 257 multipliers (mirror y = 0: the half y >= 0 solved); ...
+//   contact hertz_layer (none), meridian path: 0.8000 N normal, 0.0000 N tangential; a = 2.4878 mm, ...
+//     32069 DOFs, 89 multipliers (second pass, graded to the edge); ...
+//   $ skinfem contact scenes/candelier2011.json --out out/contact
+//   contact candelier2011 (coupled): 0.8000 N normal, 2.4000 N tangential; ...
+//     against the meridian (frictionless and uncoupled, exact in 2D, 67986 DOFs, 0.77 s): readings ...
 //
-// Writes DIR/pressure.vtp (contact zone: pressure_kPa, traction_kPa, gap_um, in_contact), DIR/fields.vtu
+// Writes (3D) DIR/pressure.vtp (contact zone: pressure_kPa, traction_kPa, gap_um, in_contact), DIR/fields.vtu
 // (the volume solution of the chosen mode), DIR/sensors.csv (sensor,x_mm,y_mm,sigma_z_kPa,sigma_x_kPa),
-// DIR/modes.csv (the same readings for every friction mode) and DIR/summary.json (friction_law, tau0_kPa,
-// interface (interface_K_MPa_per_mm or interface_u0_um, interface_p_ref_kPa), contact_radius_mm, p0_kPa,
-// indentation_um, force_N, tangential_force_N, max_penetration_um, min_pressure_kPa, pressure_centroid_x_mm,
-// complementarity, every mode's metrics, coupled − uncoupled differences (centroid shifts along the sliding
-// direction and as (x, y) vectors), dofs, wall_s per stage, peak_rss_mb). The computation and summary.json
-// are pipeline/contact.hpp's; this file writes and prints them.
+// DIR/modes.csv (the same readings for every friction mode) and DIR/summary.json (path, friction_law,
+// tau0_kPa, interface (interface_K_MPa_per_mm or interface_u0_um, interface_p_ref_kPa), contact_radius_mm,
+// p0_kPa, indentation_um, force_N, tangential_force_N, max_penetration_um, min_pressure_kPa,
+// pressure_centroid_x_mm, complementarity, every mode's metrics, coupled − uncoupled differences (centroid
+// shifts along the sliding direction and as (x, y) vectors), meridian_check, not_meridian, dofs, wall_s per
+// stage, peak_rss_mb); on the meridian DIR/pressure.csv (r_mm,pressure_kPa,weighted_gap_mm3), sensors.csv,
+// modes.csv (the modes solved) and summary.json (path, model, left_out, the modes' readings). The
+// computations and summaries are pipeline/contact.hpp's and pipeline/meridian_contact.hpp's; this file
+// writes and prints them.
 #include <cmath>
 #include <cstdio>
 #include <map>

@@ -68,8 +68,11 @@ def test_kfit_reproduces_the_command(flat_kfit):
 
 
 def test_contact_reproduces_the_command(tmp_path):
-    # hertz_layer is frictionless: the automatic path is the meridian in both front ends; the 3D one asked.
-    for path, out in (("auto", tmp_path / "auto"), ("3d", tmp_path / "3d")):
+    # hertz_layer is frictionless: the automatic path is the meridian in both front ends; the 3D one asked
+    # (Release only: under the sanitizers the 3D contact runs in the contact suites and the defect test below).
+    paths = ("auto",) if os.environ.get("SKINFEM_SANITIZE") else ("auto", "3d")
+    for path in paths:
+        out = tmp_path / path
         r = run_cli("contact", HERTZ, "--path", path, "--out", str(out))
         assert r.returncode == 0, r.stderr
         with open(out / "summary.json") as f:
