@@ -106,12 +106,8 @@ ReadingWeights reading_weights(const MeridianTrace& trace, const std::vector<std
                    Eigen::MatrixXd::Zero(rows, nb)};
   for (size_t k = 0; k < discs.size(); ++k)
     for (const DiscPoint& q : discs[k]) {
-      // The base edge (s, s+1, s+2) holding ρ and its P2 weights there.
-      const double rho = std::clamp(q.rho, r.front(), r.back());
-      const size_t e = std::min<size_t>(2 * ((std::upper_bound(r.begin(), r.end(), rho) - r.begin() - 1) / 2),
-                                        r.size() - 3);
-      double L[3], dL[3];
-      meridian_p2_line(meridian_edge_parameter(r[e], r[e + 1], r[e + 2], rho), L, dL);
+      double L[3];
+      const size_t e = meridian_p2_weights(r, q.rho, L);
       // σ_z = t_z, σ_x = −t_x with t_x = t_r cos θ − t_θ sin θ; mode 1: t_r = T_r cos θ', t_θ = T_θ sin θ',
       // t_z = T_z cos θ' at θ' = θ − α.
       double zr = 0, zz = 1, xr = q.c, xt = 0;

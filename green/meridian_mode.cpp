@@ -30,8 +30,7 @@ double meridian_edge_parameter(double r0, double r1, double r2, double rho) {
   return u;
 }
 
-double meridian_interpolate(const std::vector<double>& r, const Eigen::Ref<const Eigen::VectorXd>& f,
-                            double rho) {
+size_t meridian_p2_weights(const std::vector<double>& r, double rho, double L[3]) {
   rho = std::clamp(rho, r.front(), r.back());
   size_t lo = 0, hi = (r.size() - 1) / 2;  // vertex numbers: r(2 lo) <= rho <= r(2 hi)
   while (hi - lo > 1) {
@@ -39,8 +38,15 @@ double meridian_interpolate(const std::vector<double>& r, const Eigen::Ref<const
     (r[2 * mid] <= rho ? lo : hi) = mid;
   }
   const size_t s = 2 * lo;
-  double L[3], dL[3];
+  double dL[3];
   meridian_p2_line(meridian_edge_parameter(r[s], r[s + 1], r[s + 2], rho), L, dL);
+  return s;
+}
+
+double meridian_interpolate(const std::vector<double>& r, const Eigen::Ref<const Eigen::VectorXd>& f,
+                            double rho) {
+  double L[3];
+  const size_t s = meridian_p2_weights(r, rho, L);
   return L[0] * f[s] + L[1] * f[s + 1] + L[2] * f[s + 2];
 }
 

@@ -25,6 +25,9 @@ void meridian_p2_line(double u, double L[3], double dL[3]);
 // quadratic map from the linear guess (the map is monotone: mid-edge nodes sit between the ends).
 double meridian_edge_parameter(double r0, double r1, double r2, double rho);
 
+// The edge of nodes (s, s+1, s+2) of radii r (by increasing r, vertices at even indices) holding rho,
+// clamped to r's range: returns s and writes the edge's P2 weights at rho into L.
+size_t meridian_p2_weights(const std::vector<double>& r, double rho, double L[3]);
 // A P2 field f along nodes of radii r (by increasing r, vertices at even indices) at radius rho, clamped.
 double meridian_interpolate(const std::vector<double>& r, const Eigen::Ref<const Eigen::VectorXd>& f,
                             double rho);

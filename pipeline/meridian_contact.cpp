@@ -25,21 +25,13 @@ std::string not_exact(const ContactLoad& c, FrictionMode m) {
       contact::to_string(m), m == FrictionMode::coupled ? "mu" : "static_ratio", solved_ratio(c, m));
   return buf;
 }
-
-// Distance from a flat layer's side, in thicknesses, beyond which the unbounded layer stands for it (as
-// meridian_unavailable's for the Green path).
-constexpr double kSideMarginOverH = 2.5;
 }  // namespace
 
 std::string meridian_contact_unavailable(const Scene& scene, FrictionMode chosen, bool every_mode) {
   require_contact(scene);
   const Geometry& g = scene.geometry;
   const ContactLoad& c = *scene.contact;
-  char buf[300];
-  if (g.kind == GeometryKind::surface) return "an imported surface is not known to be a body of revolution";
-  if (g.ridges.present()) return "the ridged top is not a body of revolution";
-  if (g.kind == GeometryKind::cap && !g.cap.spherical())
-    return "the ellipsoidal cap (R_y ≠ R) is not a body of revolution";
+  if (std::string why = not_of_revolution(g); !why.empty()) return why;
   if (scene.sensors.model == SensorModel::post) return "posts are read on the 3D contact path only";
   if (!c.holes.empty()) return "the indenter's holes break its symmetry";
   if (c.interface.law == InterfaceLaw::exponential)
@@ -48,32 +40,20 @@ std::string meridian_contact_unavailable(const Scene& scene, FrictionMode chosen
     return std::string("the ") + contact::to_string(c.law) + " friction law is on the 3D path only";
   const Vec2 centre = contact_center(scene);
   if (g.kind == GeometryKind::cap && std::hypot(centre[0] - g.cap.apex_x, centre[1] - g.cap.apex_y) > 1e-9) {
+    char buf[200];
     std::snprintf(buf, sizeof buf, "the indenter at (%g, %g) mm is off the cap's axis at (%g, %g) mm",
                   centre[0], centre[1], g.cap.apex_x, g.cap.apex_y);
     return buf;
   }
   if (g.kind == GeometryKind::flat) {
-    // The meridian stands for the unbounded layer: the zone and every sensor must be far from the side.
-    const double h = g.flat.h, w = g.flat.half_width;
+    const double w = g.flat.half_width;
     const double zone = w - std::max(std::abs(centre[0]), std::abs(centre[1])) - contact_zone_radius(scene);
-    if (zone < kSideMarginOverH * h) {
-      std::snprintf(buf, sizeof buf,
-                    "the contact zone ends %.3g mm (%.2g h) from the layer's side, closer than %.3g h: the "
-                    "unbounded layer of the meridian path would not be this scene",
-                    zone, zone / h, kSideMarginOverH);
-      return buf;
-    }
+    if (std::string why = side_too_near(g, "the contact zone ends", zone); !why.empty()) return why;
     for (size_t i = 0; i < scene.sensors.positions.size(); ++i) {
       const Vec2& p = scene.sensors.positions[i];
       const double margin = w - std::max(std::abs(p[0]), std::abs(p[1])) - 0.5 * scene.sensors.disc_diameter;
-      if (margin < kSideMarginOverH * h) {
-        std::snprintf(
-            buf, sizeof buf,
-            "sensor %zu is %.3g mm (%.2g h) from the layer's side, closer than %.3g h: the unbounded "
-            "layer of the meridian path would not be this scene",
-            i + 1, margin, margin / h, kSideMarginOverH);
-        return buf;
-      }
+      if (std::string why = side_too_near(g, "sensor " + std::to_string(i + 1) + " is", margin); !why.empty())
+        return why;
     }
   }
   if (solved_ratio(c, chosen) > 0) return not_exact(c, chosen);

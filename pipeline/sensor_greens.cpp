@@ -36,12 +36,6 @@ SensorGreens with_path_reason(SensorGreens greens, const Scene& scene, GreenPath
 }
 
 namespace {
-// Distance from the farthest calibration load to a flat layer's side, in thicknesses, beyond which the
-// unbounded layer stands for it (meridian_unavailable).
-constexpr double kSideMarginOverH = 2.5;
-}  // namespace
-
-namespace {
 // A post is a rigid inclusion: the others stiffen the skin around each (on the paper's skin with posts 1 mm
 // apart, the apex post's 3D k was 7 % off the isolated post's), where other discs are only base. The
 // meridian's isolated post does not stand for one among others.
@@ -50,35 +44,45 @@ bool posts_among_others(const Scene& scene) {
 }
 }  // namespace
 
-std::string meridian_unavailable(const Scene& scene) {
-  const Geometry& g = scene.geometry;
+std::string not_of_revolution(const Geometry& g) {
   if (g.kind == GeometryKind::surface) return "an imported surface is not known to be a body of revolution";
   if (g.ridges.present()) return "the ridged top is not a body of revolution";
+  if (g.kind == GeometryKind::cap && !g.cap.spherical())
+    return "the ellipsoidal cap (R_y ≠ R) is not a body of revolution";
+  return "";
+}
+
+std::string side_too_near(const Geometry& g, const std::string& what, double margin) {
+  constexpr double kSideMarginOverH = 2.5;
+  const double h = g.flat.h;
+  if (g.kind != GeometryKind::flat || margin >= kSideMarginOverH * h) return "";
+  char buf[200];
+  std::snprintf(buf, sizeof buf,
+                " %.3g mm (%.2g h) from the layer's %s side, closer than %.3g h: the unbounded layer of the "
+                "meridian path would not be this scene",
+                margin, margin / h, g.side == SideCondition::fixed ? "clamped" : "free", kSideMarginOverH);
+  return what + buf;
+}
+
+std::string meridian_unavailable(const Scene& scene) {
+  const Geometry& g = scene.geometry;
+  if (std::string why = not_of_revolution(g); !why.empty()) return why;
   if (posts_among_others(scene)) return "the other posts are rigid inclusions off the axis of each";
   if (scene.sensors.model == SensorModel::post && !scene.sensors.post.support.rigid())
     return "the meridian post is held rigidly; its membrane springs are modelled in 3D only";
   if (g.kind == GeometryKind::flat) {
-    // The meridian stands for the unbounded layer: it answers the scene only where the layer's side is far
-    // from every calibration load. The side's influence decays as exp(−0.739 d/h) (README, Truncation); at
-    // the shipped scenes' margin, 2.5 h beyond the farthest load, it is below 0.2 % of g_xx's peak.
     const double h = g.flat.h;
     for (size_t i = 0; i < scene.sensors.positions.size(); ++i) {
       const Vec2& p = scene.sensors.positions[i];
       const double reach = std::abs(p[0]) + scan_half_width(scene, nullptr, h, p);
       const double margin = g.flat.half_width - std::max(reach, std::abs(p[1]));
-      if (margin < kSideMarginOverH * h) {
-        char buf[300];
-        std::snprintf(buf, sizeof buf,
-                      "sensor %zu's calibration scan ends %.3g mm (%.2g h) from the layer's %s side, closer "
-                      "than %.3g h: the unbounded layer of the meridian path would not be this scene",
-                      i + 1, margin, margin / h, g.side == SideCondition::fixed ? "clamped" : "free",
-                      kSideMarginOverH);
-        return buf;
-      }
+      if (std::string why =
+              side_too_near(g, "sensor " + std::to_string(i + 1) + "'s calibration scan ends", margin);
+          !why.empty())
+        return why;
     }
     return "";
   }
-  if (!g.cap.spherical()) return "the ellipsoidal cap (R_y ≠ R) is not a body of revolution";
   for (size_t i = 0; i < scene.sensors.positions.size(); ++i) {
     const Vec2& p = scene.sensors.positions[i];
     if (std::hypot(p[0] - g.cap.apex_x, p[1] - g.cap.apex_y) > 1e-9) {

@@ -51,6 +51,14 @@ struct SensorGreens {
 // The 3D path on an adjoint setup, which must outlive the result.
 SensorGreens sensor_greens(const Scene& scene, const AdjointSetup& setup);
 
+// Why the skin is not a body of revolution (a sentence); empty for a flat layer or a spherical cap without
+// ridges.
+std::string not_of_revolution(const Geometry& g);
+// The meridian stands for the unbounded layer: a flat layer's side must lie at least 2.5 h beyond every load
+// and reading (the side's influence decays as exp(−0.739 d/h), README "Truncation": below 0.2 % of g_xx's
+// peak there). Why `what` at `margin` mm from the side is too near (a sentence), or empty.
+std::string side_too_near(const Geometry& g, const std::string& what, double margin);
+
 // Why the meridian path cannot serve the scene (a sentence naming what breaks the symmetry); empty when it
 // can: a flat layer without ridges (read as the unbounded layer of its thickness) or a spherical cap without
 // ridges with every sensor at its apex.

@@ -151,9 +151,9 @@ KTargetAnswer k_target_answer(const KProtocol& base, const std::vector<KSweepPoi
         const double fa = criterion_of(*group[i - 1], crit) - target,
                      fb = criterion_of(*group[i], crit) - target;
         if (!(fa * fb < 0) && !(fa == 0)) continue;
-        const std::vector<KSweepPoint> pair{*group[i - 1], *group[i]};
-        const double linear = crossings(pair, param, crit, target).front();
-        const double v = crossing_root(base, param, crit, target, group[i - 1]->value, group[i]->value);
+        const double va = group[i - 1]->value, vb = group[i]->value;
+        const double linear = fa == 0 ? va : va + (vb - va) * fa / (fa - fb);
+        const double v = crossing_root(base, param, crit, target, va, vb);
         cross += (cross.empty() ? "" : "; ") + std::string(crit) + " = " + fmt("%.2f", target) + " at " +
                  param + " = " + fmt("%.4g", v);
         a.crossings.push_back({param, crit, v, linear});
