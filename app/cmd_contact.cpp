@@ -117,10 +117,11 @@ StageOutput<ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const 
       shift.zone_mm, cu.front_back_peak_ratio, un.front_back_peak_ratio);
   std::printf(
       "  %d DOFs, %d multipliers (%s); mesh %.2f s, assemble %.2f s, factor %.2f s, "
-      "condense %.2f s (%d rhs), contact %.3f s; peak %.0f MB\n",
+      "condense %.2f s (%s), contact %.3f s; peak %.0f MB\n",
       setup.model->solver().free_dofs(), c.zone.size(), symmetry_used(scene, setup).c_str(),
       wall["mesh"].get<double>(), wall["assemble"].get<double>(), wall["factor"].get<double>(),
-      wall["condense"].get<double>(), c.block_solves, wall["contact_solves"].get<double>(), peak_rss_mb());
+      wall["condense"].get<double>(), condensation_said(setup).c_str(), wall["contact_solves"].get<double>(),
+      peak_rss_mb());
   if (const auto& mc = run.meridian_check)
     std::printf(
         "  against the meridian (frictionless and uncoupled, exact in 2D, %d DOFs, %.2f s): readings within "

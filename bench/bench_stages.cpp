@@ -6,10 +6,13 @@
 //   $ build/bench/skinfem_bench --benchmark_format=json > bench.json && bench/exponents.py bench.json
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
+#include "contact/condensed.hpp"
 #include "fem/assembly.hpp"
 #include "fem/elastic_model.hpp"
 #include "green/calibration.hpp"
@@ -139,6 +142,62 @@ BENCHMARK(BM_MeridianGreen)
     ->Arg(200)
     ->Arg(141)
     ->Arg(100)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(2)
+    ->ReportAggregatesOnly(false);
+
+// The contact's condensation (contact/condensed.hpp) on the shipped contact scenes as `contact` meshes them
+// (hertz_layer whole, candelier2011's half): factor + condense by block solves of the plain factorization
+// (method 0), from the factorization bordered by the condensation's columns (method 1, MUMPS's Schur
+// complement), or the one MUMPS's estimates choose (method 2, what `contact` does). Counters: the two
+// stages' seconds, DOFs, multipliers, right-hand sides solved, the factorization's flops, bordered or not.
+//   $ build/bench/skinfem_bench --benchmark_filter=Condense
+void BM_Condense(benchmark::State& st) {
+  static const char* names[2] = {"hertz_layer", "candelier2011"};
+  const Scene sc = load_scene(std::string(SKINFEM_SOURCE_DIR) + "/scenes/" + names[st.range(0)] + ".json");
+  const TetMesh mesh = build_mesh(sc, st.range(0) == 1 ? MeshPart::half_y : MeshPart::whole);
+  const contact::Indenter indenter(sc, mesh);
+  const auto zone = contact::mortar_zone(mesh, contact_center(sc), contact_zone_radius(sc));
+  const SensorReadings readings(mesh, reading_sites(sc.sensors));
+  const bool bordered = st.range(1) > 0;
+  double factor_s = 0, condense_s = 0;
+  int dofs = 0, rhs = 0;
+  double flops = 0;
+  bool chose_border = false;
+  for (auto _ : st) {
+    const auto t0 = std::chrono::steady_clock::now();
+    std::optional<contact::CondenseColumns> cols;
+    ModelOptions options;
+    if (bordered) {
+      cols = contact::condense_columns(mesh, zone, readings.weight_block(), sc.contact->direction, {});
+      if (st.range(1) == 1) cols->coupling.solves_instead = 0;  // bordered whatever it costs
+      options.coupling = &cols->coupling;
+    }
+    const ElasticModel model(mesh, sc.material, sc.geometry.side, {}, options);
+    const auto t1 = std::chrono::steady_clock::now();
+    const auto c = contact::condense(model, zone, indenter, readings, sc.contact->direction, {}, {},
+                                     bordered ? &*cols : nullptr);
+    const auto t2 = std::chrono::steady_clock::now();
+    factor_s = std::chrono::duration<double>(t1 - t0).count();
+    condense_s = std::chrono::duration<double>(t2 - t1).count();
+    dofs = model.solver().free_dofs();
+    rhs = c.block_solves;
+    flops = model.solver().factor_flops();
+    chose_border = bordered && model.solver().border_choice()->bordered;
+  }
+  st.counters["factor_s"] = factor_s;
+  st.counters["condense_s"] = condense_s;
+  st.counters["dofs"] = dofs;
+  st.counters["multipliers"] = zone.size();
+  st.counters["rhs"] = rhs;
+  st.counters["flops"] = flops;
+  st.counters["bordered"] = chose_border;
+  const char* method[3] = {" block solves", " bordered", " chosen by MUMPS's estimates"};
+  st.SetLabel(std::string(names[st.range(0)]) + method[st.range(1)]);
+}
+BENCHMARK(BM_Condense)
+    ->ArgsProduct({{0, 1}, {0, 1, 2}})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1)
     ->Repetitions(2)

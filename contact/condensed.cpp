@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <stdexcept>
 
 namespace skinfem::contact {
@@ -12,59 +13,77 @@ namespace {
 constexpr int kBlock = 64;
 }  // namespace
 
+CondenseColumns condense_columns(const TetMesh& m, const MortarZone& zone, const Eigen::MatrixXd& weights,
+                                 const Vec2& direction, const std::vector<int>& watch_faces) {
+  CondenseColumns c;
+  const int N = m.num_nodes();
+  const Eigen::Vector2d t = Eigen::Vector2d(direction[0], direction[1]).normalized();
+  c.nc = zone.size();
+  c.nr = static_cast<int>(weights.cols());
+  std::vector<char> seen(N, 0);
+  for (int f : watch_faces)
+    for (int k = 0; k < 6; ++k)
+      if (!seen[m.faces(f, k)]) {
+        seen[m.faces(f, k)] = 1;
+        c.watched.push_back(m.faces(f, k));
+      }
+  c.nw = static_cast<int>(c.watched.size());
+  const int a0 = 0, b0 = c.nc, ez0 = 2 * c.nc, et0 = ez0 + c.nw, c0 = et0 + c.nw;
+  std::vector<Eigen::Triplet<double>> f, u;
+  using RowSparse = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+  for (int i = 0; i < c.nc; ++i)
+    for (RowSparse::InnerIterator it(zone.D, i); it; ++it) {
+      const int n = static_cast<int>(it.col());
+      f.emplace_back(3 * n + 2, a0 + i, -it.value());
+      f.emplace_back(3 * n, b0 + i, t.x() * it.value());
+      f.emplace_back(3 * n + 1, b0 + i, t.y() * it.value());
+    }
+  for (int w = 0; w < c.nw; ++w) {
+    f.emplace_back(3 * c.watched[w] + 2, ez0 + w, -1.0);
+    f.emplace_back(3 * c.watched[w], et0 + w, t.x());
+    f.emplace_back(3 * c.watched[w] + 1, et0 + w, t.y());
+  }
+  for (int r = 0; r < c.nr; ++r)
+    for (int d = 0; d < weights.rows(); ++d)
+      if (weights(d, r) != 0) u.emplace_back(d, c0 + r, -weights(d, r));
+  c.coupling.F.resize(3 * N, c.size());
+  c.coupling.F.setFromTriplets(f.begin(), f.end());
+  c.coupling.U_fixed.resize(3 * N, c.size());
+  c.coupling.U_fixed.setFromTriplets(u.begin(), u.end());
+  c.coupling.solves_instead = c.nc + c.nw + c.nr;  // the sources a, ez, c
+  return c;
+}
+
 CondensedContact condense(const ElasticModel& model, const MortarZone& zone, const Indenter& indenter,
                           const SensorReadings& readings, const Vec2& direction,
                           const std::function<void(double, const std::string&)>& progress,
-                          const std::vector<int>& watch_faces) {
+                          const std::vector<int>& watch_faces, const CondenseColumns* bordered) {
   const auto start = std::chrono::steady_clock::now();
   const TetMesh& m = model.mesh();
-  const int nc = zone.size(), N = m.num_nodes();
   CondensedContact c;
   c.zone = zone;
   c.direction = Eigen::Vector2d(direction[0], direction[1]).normalized();
   c.gap0 = zone.weighted(
       m, [&](const Eigen::Vector3d& x) { return indenter.z_touch() + indenter.phi(x.x(), x.y()) - x.z(); });
+  std::optional<CondenseColumns> own;
+  if (!bordered) own = condense_columns(m, zone, readings.weight_block(), direction, watch_faces);
+  const CondenseColumns& cols = bordered ? *bordered : *own;
+  const int nc = cols.nc, nw = cols.nw, nr = cols.nr, nread = 2 * nc + 2 * nw;
+  if (nc != zone.size() || nr != 2 * readings.size())
+    throw std::logic_error("condense: the bordered columns are not this zone's and these sensors'");
 
-  // D acting on one displacement component of a 3N vector: D_z picks u_z, D_t the slip direction's u_t.
-  using RowSparse = Eigen::SparseMatrix<double, Eigen::RowMajor>;
-  std::vector<Eigen::Triplet<double>> tz, tt;
-  for (int i = 0; i < nc; ++i)
-    for (RowSparse::InnerIterator it(zone.D, i); it; ++it) {
-      tz.emplace_back(i, 3 * it.col() + 2, it.value());
-      tt.emplace_back(i, 3 * it.col(), c.direction.x() * it.value());
-      tt.emplace_back(i, 3 * it.col() + 1, c.direction.y() * it.value());
-    }
-  RowSparse D_z(nc, 3 * N), D_t(nc, 3 * N);
-  D_z.setFromTriplets(tz.begin(), tz.end());
-  D_t.setFromTriplets(tt.begin(), tt.end());
-
-  // Adjoints of the sensor readings: base displacement −w, no load (fem/sensor_reading.hpp).
-  const int ns = readings.size();
-  const Eigen::MatrixXd W = -readings.weight_block();
-  if (progress) progress(0.0, "adjoint solves for " + std::to_string(ns) + " sensors");
-  const Eigen::MatrixXd Y = model.solver().solve_block(Eigen::MatrixXd::Zero(3 * N, 2 * ns), W);
-  // reading = y·f: the pressure of multiplier i loads −e_z·(Dᵀe_i), its traction t·(Dᵀe_i).
-  c.S_p = -(D_z * Y).transpose();
-  c.S_t = (D_t * Y).transpose();
-  c.block_solves += 2 * ns;
-
-  // Watched nodes (hole_cut.hpp): where the multipliers' displacements and the adjoints are kept.
-  std::vector<int> watch;  // mesh node → watched index, −1
-  const auto t_of = [&](const Eigen::MatrixXd& X, int node, int col) {
-    return c.direction.x() * X(3 * node, col) + c.direction.y() * X(3 * node + 1, col);
-  };
+  c.C_zz.resize(nc, nc);
+  c.C_zt.resize(nc, nc);
+  c.S_p.resize(nr, nc);
+  c.S_t.resize(nr, nc);
   if (!watch_faces.empty()) {
     PathCompliance& p = c.path.emplace();
     p.indenter = std::make_shared<const Indenter>(indenter);
-    watch.assign(N, -1);
-    std::vector<int> mult(N, -1);
+    p.nodes = cols.watched;
+    std::vector<int> watch(m.num_nodes(), -1),
+        mult(m.num_nodes(), -1);  // mesh node → watched index, multiplier
+    for (int w = 0; w < nw; ++w) watch[p.nodes[w]] = w;
     for (int i = 0; i < nc; ++i) mult[zone.vertices[i]] = i;
-    for (int f : watch_faces)
-      for (int k = 0; k < 6; ++k)
-        if (watch[m.faces(f, k)] < 0) {
-          watch[m.faces(f, k)] = static_cast<int>(p.nodes.size());
-          p.nodes.push_back(m.faces(f, k));
-        }
     for (int f : watch_faces) {
       PathCompliance::Face face;
       for (int k = 0; k < 6; ++k) {
@@ -74,11 +93,10 @@ CondensedContact condense(const ElasticModel& model, const MortarZone& zone, con
       for (int k = 0; k < 3; ++k) face.multiplier[k] = mult[m.faces(f, k)];
       p.faces.push_back(face);
     }
-    const int nw = static_cast<int>(p.nodes.size());
     std::vector<Eigen::Triplet<double>> dw;
     p.watched_hat.assign(nc, 1);
     for (int i = 0; i < nc; ++i)
-      for (RowSparse::InnerIterator it(zone.D, i); it; ++it) {
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(zone.D, i); it; ++it) {
         if (watch[it.col()] < 0)
           p.watched_hat[i] = 0;
         else
@@ -88,62 +106,70 @@ CondensedContact condense(const ElasticModel& model, const MortarZone& zone, con
     p.Dw.setFromTriplets(dw.begin(), dw.end());
     p.Wz.resize(nw, nc);
     p.Ut.resize(nw, nc);
-    p.Rz.resize(nw, 2 * ns);
-    p.Rt.resize(nw, 2 * ns);
-    for (int k = 0; k < nw; ++k)
-      for (int r = 0; r < 2 * ns; ++r) {
-        p.Rz(k, r) = -Y(3 * p.nodes[k] + 2, r);  // reading = y·f, f = −e_z
-        p.Rt(k, r) = t_of(Y, p.nodes[k], r);
-      }
-  }
-
-  c.C_zz.resize(nc, nc);
-  c.C_zt.resize(nc, nc);
-  for (int j0 = 0; j0 < nc; j0 += kBlock) {
-    const int k = std::min(kBlock, nc - j0);
-    if (progress) progress(double(j0) / nc, "condensing onto " + std::to_string(nc) + " contact multipliers");
-    Eigen::MatrixXd F = Eigen::MatrixXd::Zero(3 * N, k);
-    for (int j = 0; j < k; ++j)
-      for (RowSparse::InnerIterator it(D_z, j0 + j); it; ++it) F(it.col(), j) = -it.value();
-    const Eigen::MatrixXd U = model.solver().solve_block(F);
-    c.C_zz.middleCols(j0, k) = -(D_z * U);
-    c.C_zt.middleRows(j0, k) = (D_t * U).transpose();
-    c.block_solves += k;
-    if (c.path)
-      for (int w = 0; w < static_cast<int>(c.path->nodes.size()); ++w)
-        for (int j = 0; j < k; ++j) {
-          c.path->Wz(w, j0 + j) = -U(3 * c.path->nodes[w] + 2, j);
-          c.path->Ut(w, j0 + j) = t_of(U, c.path->nodes[w], j);
-        }
-  }
-  // A unit downward force at each watched node.
-  if (c.path) {
-    PathCompliance& p = *c.path;
-    const int nw = static_cast<int>(p.nodes.size());
+    p.Rz.resize(nw, nr);
+    p.Rt.resize(nw, nr);
     p.Gzz.resize(nw, nw);
     p.Gtz.resize(nw, nw);
     p.DtG.resize(nc, nw);
-    for (int j0 = 0; j0 < nw; j0 += kBlock) {
-      const int k = std::min(kBlock, nw - j0);
-      if (progress)
-        progress(double(j0) / nw,
-                 "compliance of the " + std::to_string(nw) + " nodes a swept hole can reach");
-      Eigen::MatrixXd F = Eigen::MatrixXd::Zero(3 * N, k);
-      for (int j = 0; j < k; ++j) F(3 * p.nodes[j0 + j] + 2, j) = -1.0;
-      const Eigen::MatrixXd U = model.solver().solve_block(F);
-      for (int j = 0; j < k; ++j)
-        for (int w = 0; w < nw; ++w) {
-          p.Gzz(w, j0 + j) = -U(3 * p.nodes[w] + 2, j);
-          p.Gtz(w, j0 + j) = t_of(U, p.nodes[w], j);
-        }
-      p.DtG.middleCols(j0, k) = D_t * U;
-      p.block_solves += k;
-    }
-    p.Gzz = 0.5 * (p.Gzz + p.Gzz.transpose()).eval();
-    c.block_solves += p.block_solves;
   }
-  // Symmetric by reciprocity up to the solver's round-off; make it exactly so for the LCP.
+
+  // Readouts [a | b | ez | et] (rows of G) of k sources from j0 on, placed where they belong.
+  enum Source { multiplier, adjoint, watched };
+  const auto place = [&](Source src, int j0, const Eigen::MatrixXd& G) {
+    const int k = static_cast<int>(G.cols());
+    const auto a = G.topRows(nc), b = G.middleRows(nc, nc), ez = G.middleRows(2 * nc, nw),
+               et = G.bottomRows(nw);
+    PathCompliance* p = c.path ? &*c.path : nullptr;
+    if (src == multiplier) {
+      c.C_zz.middleCols(j0, k) = a;
+      c.C_zt.middleRows(j0, k) = b.transpose();
+      if (p) p->Wz.middleCols(j0, k) = ez, p->Ut.middleCols(j0, k) = et;
+    } else if (src == adjoint) {
+      c.S_p.middleRows(j0, k) = a.transpose();
+      c.S_t.middleRows(j0, k) = b.transpose();
+      if (p) p->Rz.middleCols(j0, k) = ez, p->Rt.middleCols(j0, k) = et;
+    } else {
+      p->Gzz.middleCols(j0, k) = ez;
+      p->Gtz.middleCols(j0, k) = et;
+      p->DtG.middleCols(j0, k) = b;
+    }
+  };
+  const struct {
+    Source src;
+    int first, count;
+    std::string what;
+  } sources[] = {
+      {adjoint, nread, nr, "adjoint solves for " + std::to_string(readings.size()) + " sensors"},
+      {multiplier, 0, nc, "condensing onto " + std::to_string(nc) + " contact multipliers"},
+      {watched, 2 * nc, nw, "compliance of the " + std::to_string(nw) + " nodes a swept hole can reach"}};
+  if (bordered && model.solver().coupling_products().size() > 0) {
+    const Eigen::MatrixXd& G = model.solver().coupling_products();
+    if (G.rows() != cols.size())
+      throw std::logic_error("condense: the model was not factored with these columns");
+    if (progress) progress(0.0, "condensing onto " + std::to_string(nc) + " contact multipliers (bordered)");
+    for (const auto& s : sources)
+      if (s.count > 0) place(s.src, 0, G.block(0, s.first, nread, s.count));
+  } else {
+    // Readouts on the free DOFs only (the products' definition), as sparse rows.
+    Eigen::SparseMatrix<double> R = cols.coupling.F.leftCols(nread);
+    R.prune([&](int row, int, double) { return !model.fixed()[row]; });
+    const Eigen::SparseMatrix<double, Eigen::RowMajor> Rt = R.transpose();
+    for (const auto& s : sources)
+      for (int j0 = 0; j0 < s.count; j0 += kBlock) {
+        const int k = std::min(kBlock, s.count - j0);
+        if (progress) progress(double(j0) / s.count, s.what);
+        const Eigen::MatrixXd F = cols.coupling.F.middleCols(s.first + j0, k);
+        const Eigen::MatrixXd U = s.src == adjoint
+                                      ? Eigen::MatrixXd(cols.coupling.U_fixed.middleCols(s.first + j0, k))
+                                      : Eigen::MatrixXd();
+        place(s.src, j0, Rt * model.solver().solve_block(F, U));
+        c.block_solves += k;
+        if (s.src == watched) c.path->block_solves += k;
+      }
+  }
+  // Symmetric by reciprocity up to the solver's round-off; make them exactly so for the LCP.
   c.C_zz = 0.5 * (c.C_zz + c.C_zz.transpose()).eval();
+  if (c.path) c.path->Gzz = 0.5 * (c.path->Gzz + c.path->Gzz.transpose()).eval();
   if (progress) progress(1.0, "condensed");
   c.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return c;

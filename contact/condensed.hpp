@@ -32,16 +32,40 @@ struct CondensedContact {
   // The skin's answer at the P2 nodes a swept hole can reach, for holes that cut the hats
   // (contact/hole_cut.hpp); absent unless condense was given the faces to watch.
   std::optional<PathCompliance> path;
-  double solve_seconds = 0;  // block solves (multipliers and adjoints)
-  int block_solves = 0;      // right-hand sides solved
+  double solve_seconds = 0;  // block solves (multipliers and adjoints), or reading the bordered products
+  int block_solves = 0;      // right-hand sides solved (0 from a bordered factorization)
 };
 
+// Every load and readout of the condensation as one set of columns, each a load (F) or prescribed base
+// values (U_fixed) on the skin: order [a | b | ez | et | c]:
+//   a: the multipliers' pressures, −D_zᵀ e_j (n_c)      b: their tractions along t, D_tᵀ e_j (n_c)
+//   ez: a unit downward force at each watched node (n_w) et: a unit force along t there (n_w)
+//   c: the sensors' adjoints, base displacement −w with no load (2·sensors; fem/sensor_reading.hpp).
+// All condense() needs are products G(i, j) = F_iᵀ u_j (MixedSolver::coupling_products) of a readout i in
+// [a | b | ez | et] and a source j in a, ez or c: by block solves of the sources (n_c + n_w + 2·sensors
+// right-hand sides), or all at once from a factorization bordered by these columns (MUMPS's Schur
+// complement: ElasticModel with ModelOptions::coupling = &columns.coupling).
+struct CondenseColumns {
+  MixedSolver::Coupling coupling;  // 3N × (2n_c + 2n_w + 2·sensors)
+  int nc = 0, nw = 0, nr = 0;      // multipliers, watched nodes, readings (2·sensors)
+  std::vector<int> watched;        // the watched mesh nodes, in the order of PathCompliance::nodes
+  int size() const { return 2 * nc + 2 * nw + nr; }
+};
+// weights: the sensors' reading weights (SensorReadings::weight_block, 3N × 2·sensors); watch_faces as in
+// condense. Needs the mesh only: the columns can border the skin's first factorization.
+CondenseColumns condense_columns(const TetMesh& mesh, const MortarZone& zone, const Eigen::MatrixXd& weights,
+                                 const Vec2& direction, const std::vector<int>& watch_faces);
+
 // progress(fraction done, message) is called between blocks. watch_faces: top faces of the zone a swept
-// hole can cut (contact/hole_cut.hpp, watch_path); their P2 nodes get one more solve each.
+// hole can cut (contact/hole_cut.hpp, watch_path); their P2 nodes get one more solve each. When the model
+// was factored with the coupling of condense_columns(…) of these same arguments, pass it as `bordered`:
+// its products replace every block solve (where MUMPS's estimates chose the plain factorization instead,
+// MixedSolver::border_choice, the block solves run).
 CondensedContact condense(const ElasticModel& model, const MortarZone& zone, const Indenter& indenter,
                           const SensorReadings& readings, const Vec2& direction,
                           const std::function<void(double, const std::string&)>& progress = {},
-                          const std::vector<int>& watch_faces = {});
+                          const std::vector<int>& watch_faces = {},
+                          const CondenseColumns* bordered = nullptr);
 
 // The condensed problem with a hole that cuts the hats (hole_cut.hpp): the hole-free one with the rows and
 // columns of the multipliers the hole touches (T) replaced. Shapes: |T| × n for rows, 2·sensors × |T| for

@@ -56,7 +56,7 @@ ElasticModel::ElasticModel(const TetMesh& mesh, const Material& material, SideCo
   }
   top_index_ = std::make_unique<PlanarFaceIndex>(mesh, kTop);
   solver_ = std::make_unique<MixedSolver>(matrices_, lame_, fixed_, options.solver, options.tolerance,
-                                          options.factor_progress);
+                                          options.factor_progress, options.coupling);
 }
 
 LoadCaseResult ElasticModel::solve(const Eigen::VectorXd& f, const std::vector<Punch>& punches) const {

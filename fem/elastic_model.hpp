@@ -18,6 +18,9 @@ struct ModelOptions {
   SolverKind solver = SolverKind::direct_ldlt;
   double tolerance = 1e-10;
   FactorProgress factor_progress;  // hears from a long factorization (fem/factor_progress.hpp); may be empty
+  // Columns whose products the factorization gives at once (MixedSolver::Coupling); read during
+  // construction only.
+  const MixedSolver::Coupling* coupling = nullptr;
 };
 
 // The nodes a rigid flat punch holds: top corner nodes with (x, y) within its radius and the mid-edge

@@ -11,6 +11,7 @@
 
 #include <Eigen/Sparse>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -37,10 +38,39 @@ struct MixedSolution {
 
 class MixedSolver {
  public:
+  // Columns coupled to the system before it is factored, so that the one factorization also gives all
+  // their products (MUMPS's Schur complement of the system bordered by them; direct_ldlt only). Column j is
+  // a load F.col(j) (3N, free DOFs read) with prescribed values U_fixed.col(j) (3N, fixed DOFs read; U_fixed
+  // may be empty).
+  struct Coupling {
+    Eigen::SparseMatrix<double> F, U_fixed;  // 3N × m each
+    // The right-hand sides the caller would solve instead: where MUMPS's analysis says the bordered
+    // factorization costs more than the plain one and these solves, the plain one is factored
+    // (coupling_products() then empty; border_choice() says why). 0: always bordered.
+    int solves_instead = 0;
+  };
+  // The estimates the choice was made on (flops; a solve costs 4 flops per factor entry and right-hand side,
+  // weighted by the factorization's rate over the solves', measured: mixed_solver.cpp), and the choice.
+  struct BorderChoice {
+    bool bordered = false;
+    double bordered_flops = 0, plain_flops = 0, solve_flops = 0;  // estimates
+    double bordered_mb = 0, plain_mb = 0;                         // MUMPS's memory estimates
+    int solves = 0;                                               // Coupling::solves_instead
+  };
+
   // fixed: 3N flags, true where the displacement DOF is prescribed. Factors immediately; progress (may be
   // empty) hears from the direct_ldlt factorization every few seconds.
   MixedSolver(const MixedMatrices& matrices, const Lame& lame, const std::vector<bool>& fixed,
-              SolverKind kind, double tolerance = 1e-10, const FactorProgress& progress = {});
+              SolverKind kind, double tolerance = 1e-10, const FactorProgress& progress = {},
+              const Coupling* coupling = nullptr);
+
+  // The coupling's products, m × m (empty without a coupling): G(i, j) = F.col(i) · u_j over the free DOFs,
+  // u_j = solve_block(F.col(j), U_fixed.col(j)). Between two loads it is their compliance, symmetric by
+  // Maxwell–Betti; a load's entry on a column with prescribed values is that load's reading of its solution;
+  // between two columns with prescribed values it reads nothing. mm/N per N (or the columns' units).
+  const Eigen::MatrixXd& coupling_products() const;
+  // With a coupling: the choice between the bordered and the plain factorization.
+  const std::optional<BorderChoice>& border_choice() const;
   ~MixedSolver();
 
   // f: 3N load vector (entries at fixed DOFs ignored); u_fixed: 3N prescribed values (only fixed DOFs

@@ -28,6 +28,10 @@ struct MumpsLdlt::Impl {
   std::vector<MUMPS_INT> irn, jcn;
   std::vector<double> a;
   mutable std::vector<double> rhs;
+  int schur_size = 0;
+  bool factored = false;
+  std::vector<MUMPS_INT> schur_vars;
+  Eigen::MatrixXd schur;
 
   void call(int job) const {
     id.job = job;
@@ -107,7 +111,14 @@ MumpsLdlt::Triplets MumpsLdlt::lower_triangle(const Eigen::SparseMatrix<double>&
 constexpr int kPordMinUnknowns = 5000;
 
 MumpsLdlt::MumpsLdlt(int n, Triplets lower, const FactorProgress& progress, double every_s)
+    : MumpsLdlt(n, std::move(lower), 0, progress, every_s) {}
+
+MumpsLdlt::MumpsLdlt(int n, Triplets lower, int schur_size, const FactorProgress& progress, double every_s,
+                     bool factor_now)
     : impl_(new Impl) {
+  if (schur_size < 0 || schur_size >= n)
+    throw std::invalid_argument("MumpsLdlt: Schur size " + std::to_string(schur_size) + " outside [0, " +
+                                std::to_string(n) + ")");
   std::lock_guard<std::mutex> lock(mumps_mutex);
   Impl& s = *impl_;
   // MUMPS counts from 1; the value array is taken over without a copy.
@@ -138,26 +149,64 @@ MumpsLdlt::MumpsLdlt(int n, Triplets lower, const FactorProgress& progress, doub
   s.id.irn = s.irn.data();
   s.id.jcn = s.jcn.data();
   s.id.a = s.a.data();
+  if (schur_size > 0) {
+    // Centralized on the host (ICNTL(19) = 1), into a buffer of ours; for a symmetric matrix MUMPS fills
+    // one triangle of it, completed below.
+    s.schur_size = schur_size;
+    for (int i = n - schur_size; i < n; ++i) s.schur_vars.push_back(i + 1);
+    s.schur = Eigen::MatrixXd::Zero(schur_size, schur_size);
+    s.id.icntl[18] = 1;
+    s.id.size_schur = schur_size;
+    s.id.listvar_schur = s.schur_vars.data();
+    s.id.schur = s.schur.data();
+  }
   try {
     s.call(1);  // analysis: ordering, symbolic factorization, flop and memory estimates
-    // INFOG(17): the factorization's estimated memory, MB (in-core, all of MUMPS's data).
-    const double need_mb = s.id.infog[16], avail_mb = available_memory_mb();
-    if (avail_mb > 0 && need_mb > avail_mb) {
-      char buf[200];
-      std::snprintf(buf, sizeof buf,
-                    "the factorization of %lld unknowns would need about %.3g GB (MUMPS analysis), more than "
-                    "the %.3g GB available; coarsen the mesh",
-                    static_cast<long long>(n), need_mb / 1024, avail_mb / 1024);
-      throw std::runtime_error(buf);
-    }
-    {
-      Watcher watcher(progress, s.id.rinfog[0], every_s);
-      s.call(2);
-    }
   } catch (...) {
     s.id.job = -2;
     dmumps_c(&s.id);
     throw;
+  }
+  if (factor_now) factor_locked(progress, every_s);
+}
+
+MumpsLdlt::Estimate MumpsLdlt::analysis() const {
+  const auto& id = impl_->id;
+  // INFOG(20) counts in millions when negative.
+  return {id.rinfog[0], id.infog[19] < 0 ? -1e6 * id.infog[19] : id.infog[19],
+          static_cast<double>(id.infog[16])};
+}
+
+void MumpsLdlt::factor(const FactorProgress& progress, double every_s) {
+  std::lock_guard<std::mutex> lock(mumps_mutex);
+  factor_locked(progress, every_s);
+}
+
+void MumpsLdlt::factor_locked(const FactorProgress& progress, double every_s) {
+  Impl& s = *impl_;
+  if (s.factored) throw std::logic_error("MumpsLdlt: factored twice");
+  // INFOG(17): the factorization's estimated memory, MB (in-core, all of MUMPS's data).
+  const double need_mb = s.id.infog[16], avail_mb = available_memory_mb();
+  if (avail_mb > 0 && need_mb > avail_mb) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "the factorization of %lld unknowns would need about %.3g GB (MUMPS analysis), more than "
+                  "the %.3g GB available; coarsen the mesh",
+                  static_cast<long long>(s.id.n), need_mb / 1024, avail_mb / 1024);
+    throw std::runtime_error(buf);
+  }
+  {
+    Watcher watcher(progress, s.id.rinfog[0], every_s);
+    s.call(2);
+  }
+  s.factored = true;
+  if (s.schur_size > 0) {
+    // MUMPS returns a symmetric matrix's Schur complement as its lower triangle by rows, i.e. the upper
+    // triangle of our column-major buffer; what it leaves in the other triangle is not specified.
+    Eigen::MatrixXd& S = s.schur;
+    S.triangularView<Eigen::StrictlyLower>() = S.transpose();
+    s.id.schur = nullptr;
+    s.id.listvar_schur = nullptr;
   }
   // The solve phase needs only the factors (no iterative refinement or error analysis is requested):
   // release the matrix.
@@ -177,12 +226,17 @@ MumpsLdlt::~MumpsLdlt() {
 Eigen::VectorXd MumpsLdlt::solve(const Eigen::VectorXd& b) const {
   std::lock_guard<std::mutex> lock(mumps_mutex);
   Impl& s = *impl_;
-  s.rhs.assign(b.data(), b.data() + b.size());
+  if (!s.factored) throw std::logic_error("MumpsLdlt: solve before factor");
+  // With a Schur complement the right-hand side still has MUMPS's order n; ICNTL(26) = 0 solves the
+  // interior problem A₁₁ x = b and leaves the Schur rows out.
+  s.rhs.assign(s.id.n, 0.0);
+  std::copy(b.data(), b.data() + b.size(), s.rhs.begin());
   s.id.rhs = s.rhs.data();
   s.id.nrhs = 1;
   s.id.lrhs = s.id.n;
   s.id.icntl[19] = 0;  // ICNTL(20): dense right-hand side
   s.id.icntl[20] = 0;  // ICNTL(21): centralized solution, written over rhs
+  s.id.icntl[25] = 0;
   s.call(3);
   return Eigen::Map<const Eigen::VectorXd>(s.rhs.data(), b.size());
 }
@@ -190,6 +244,12 @@ Eigen::VectorXd MumpsLdlt::solve(const Eigen::VectorXd& b) const {
 Eigen::MatrixXd MumpsLdlt::solve(Eigen::MatrixXd X) const {
   std::lock_guard<std::mutex> lock(mumps_mutex);
   Impl& s = *impl_;
+  if (!s.factored) throw std::logic_error("MumpsLdlt: solve before factor");
+  if (s.schur_size > 0) {  // MUMPS's order n: the Schur rows appended (and ignored, ICNTL(26) = 0)
+    Eigen::MatrixXd padded = Eigen::MatrixXd::Zero(s.id.n, X.cols());
+    padded.topRows(X.rows()) = X;
+    X = std::move(padded);
+  }
   // column-major, leading dimension n: MUMPS's dense multi-RHS layout
   s.id.rhs = X.data();
   s.id.nrhs = static_cast<MUMPS_INT>(X.cols());
@@ -197,9 +257,13 @@ Eigen::MatrixXd MumpsLdlt::solve(Eigen::MatrixXd X) const {
   s.id.icntl[19] = 0;
   s.id.icntl[20] = 0;
   s.id.icntl[26] = 32;  // ICNTL(27): blocking factor of the solve phase
+  s.id.icntl[25] = 0;
   s.call(3);
+  if (s.schur_size > 0) X.conservativeResize(s.id.n - s.schur_size, Eigen::NoChange);
   return X;
 }
+
+const Eigen::MatrixXd& MumpsLdlt::schur() const { return impl_->schur; }
 
 double MumpsLdlt::factor_entries() const {
   const auto& id = impl_->id;

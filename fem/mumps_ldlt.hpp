@@ -3,6 +3,7 @@
 // substitution. Not copyable; not thread-safe.
 #pragma once
 
+#include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <memory>
 #include <vector>
@@ -25,7 +26,21 @@ class MumpsLdlt {
     std::vector<double> value;
   };
   MumpsLdlt(int n, Triplets lower, const FactorProgress& progress = {}, double every_s = 5);
+  // The last `schur_size` unknowns kept out of the factorization (MUMPS ICNTL(19)): it factors the leading
+  // block A₁₁ only, returns the Schur complement S = A₂₂ − A₂₁ A₁₁⁻¹ A₁₂ (schur(), dense, symmetric), and
+  // solve() solves A₁₁ x = b (b of order n − schur_size). With factor_now false only MUMPS's analysis runs
+  // (ordering, symbolic factorization): analysis() says what factoring would cost, factor() factors.
+  MumpsLdlt(int n, Triplets lower, int schur_size, const FactorProgress& progress = {}, double every_s = 5,
+            bool factor_now = true);
   static Triplets lower_triangle(const Eigen::SparseMatrix<double>& K);
+  struct Estimate {
+    double flops = 0;           // RINFOG(1)
+    double factor_entries = 0;  // INFOG(20)
+    double memory_mb = 0;       // INFOG(17)
+  };
+  Estimate analysis() const;
+  // Throws as the constructor does (also when the estimated memory exceeds what is available).
+  void factor(const FactorProgress& progress = {}, double every_s = 5);
   ~MumpsLdlt();
   MumpsLdlt(const MumpsLdlt&) = delete;
   MumpsLdlt& operator=(const MumpsLdlt&) = delete;
@@ -35,13 +50,15 @@ class MumpsLdlt {
   // far less than a separate solve. Same results as column-by-column solves up to round-off.
   // B is taken by value and overwritten with the solution: move a block in to hold it once.
   Eigen::MatrixXd solve(Eigen::MatrixXd B) const;
-  double factor_entries() const;   // entries in the factors (INFOG(29))
-  double estimated_flops() const;  // the analysis's estimate of the factorization's flops (RINFOG(1))
+  const Eigen::MatrixXd& schur() const;  // schur_size × schur_size (empty without a Schur complement)
+  double factor_entries() const;         // entries in the factors (INFOG(29))
+  double estimated_flops() const;        // the analysis's estimate of the factorization's flops (RINFOG(1))
   // The analysis's estimate of the factorization's memory, MB (INFOG(17)); construction refuses (throws)
   // when it exceeds the machine's available memory.
   double estimated_memory_mb() const;
 
  private:
+  void factor_locked(const FactorProgress& progress, double every_s);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

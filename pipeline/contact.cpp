@@ -233,6 +233,7 @@ nlohmann::json contact_json(const Scene& scene, const ContactRun& run) {
   summary["nodes"] = mesh.num_nodes();
   summary["elements"] = mesh.num_tets();
   summary["block_solves"] = c.block_solves;
+  summary["condensation"] = condensation_json(setup);
   summary["wall_s"] = run.wall;
   summary["wall_total_s"] = total_seconds(run.wall);
   summary["peak_rss_mb"] = peak_rss_mb();

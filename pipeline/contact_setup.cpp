@@ -15,28 +15,43 @@ std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<
                                             HolePath hole_path) {
   if (!scene.contact)
     throw SceneError(scene.source_path + ": contact: missing; this command needs a \"contact\" section");
+  const Vec2 centre = contact_center(scene);
+  const double zone_radius = contact_zone_radius(scene);
+  const auto& sweep = scene.contact->sweep;
+  const bool watch = sweep && (hole_path == HolePath::always ||
+                               (hole_path == HolePath::as_scene && sweep->model == HoleModel::resolved));
+  const auto watch_faces_of = [&](const TetMesh& mesh, const contact::MortarZone& zone) {
+    return watch ? contact::watch_path(mesh, zone, sweep->from, sweep->to, 0.5 * sweep->hole_diameter)
+                 : std::vector<int>{};
+  };
+  // A skin meshed here is factored bordered by the condensation's columns: the factorization gives every
+  // product the condensation needs (contact/condensed.hpp). Posts on springs read through the factored
+  // skin itself, so their columns come after it: block solves.
+  std::unique_ptr<contact::CondenseColumns> columns;
+  const bool springs = scene.sensors.model == SensorModel::post && !scene.sensors.post.support.rigid();
+  if (!skin && !springs)
+    skin = skin_setup(scene, contact_mesh_part(scene), [&](const TetMesh& mesh) {
+      const auto zone = contact::mortar_zone(mesh, centre, zone_radius);
+      columns = std::make_unique<contact::CondenseColumns>(contact::condense_columns(
+          mesh, zone, SensorReadings(mesh, reading_sites(scene.sensors)).weight_block(),
+          scene.contact->direction, watch_faces_of(mesh, zone)));
+      return &columns->coupling;
+    });
   auto s =
       std::make_unique<ContactSetup>(skin ? std::move(skin) : skin_setup(scene, contact_mesh_part(scene)));
   s->wall = s->skin->wall;
   Stopwatch clock;
   const TetMesh& solved = s->skin->mesh;
-  s->zone_radius = contact_zone_radius(scene);
+  s->zone_radius = zone_radius;
   s->zone_h = contact_zone_h(scene);
   s->indenter = std::make_unique<contact::Indenter>(scene, solved);
-  const auto zone = contact::mortar_zone(solved, contact_center(scene), s->zone_radius);
+  const auto zone = contact::mortar_zone(solved, centre, zone_radius);
   if (is_half_y(solved)) {
     if (!contact_mirror_unavailable(scene).empty())
       throw std::logic_error("contact_setup: a half skin for a contact that is not mirror-symmetric");
     s->whole = std::make_unique<TetMesh>(mirror_half(solved, &s->source));
     s->mirror = std::make_unique<contact::MirrorView>(
-        contact::mirror_view(*s->whole, s->source, zone, contact_center(scene), s->zone_radius));
-  }
-  std::vector<int> watch_faces;
-  const auto& sweep = scene.contact->sweep;
-  if (sweep && (hole_path == HolePath::always ||
-                (hole_path == HolePath::as_scene && sweep->model == HoleModel::resolved))) {
-    const HoleSweep& sw = *scene.contact->sweep;
-    watch_faces = contact::watch_path(solved, zone, sw.from, sw.to, 0.5 * sw.hole_diameter);
+        contact::mirror_view(*s->whole, s->source, zone, centre, zone_radius));
   }
   Stopwatch condense_clock;
   s->readings = std::make_unique<SensorReadings>(solved, reading_sites(scene.sensors), &s->model->solver());
@@ -48,11 +63,40 @@ std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<
                       condense_clock.seconds());
         progress(buf);
       },
-      watch_faces));
+      watch_faces_of(solved, zone), columns.get()));
   s->solver = std::make_unique<contact::ContactSolver>(*s->condensed, *scene.contact, s->mirror.get());
   s->top = std::make_unique<PlanarFaceIndex>(s->mesh(), kTop);
   s->wall["condense"] = clock.seconds();
   return s;
+}
+
+nlohmann::json condensation_json(const ContactSetup& setup) {
+  nlohmann::json j = {
+      {"method", setup.condensed->block_solves > 0 ? "block solves" : "bordered factorization"},
+      {"block_solves", setup.condensed->block_solves}};
+  if (const auto& c = setup.model->solver().border_choice())
+    j["choice"] = {{"bordered", c->bordered},
+                   {"bordered_factor_flops", c->bordered_flops},
+                   {"plain_factor_flops", c->plain_flops},
+                   {"block_solve_flops", c->solve_flops},
+                   {"bordered_factor_mb", c->bordered_mb},
+                   {"block_solves_instead", c->solves},
+                   {"plain_factor_mb", c->plain_mb}};
+  return j;
+}
+
+std::string condensation_said(const ContactSetup& setup) {
+  const int rhs = setup.condensed->block_solves;
+  const std::string how = rhs > 0 ? std::to_string(rhs) + " rhs" : "from a bordered factorization";
+  const auto& c = setup.model->solver().border_choice();
+  if (!c || c->plain_flops == 0) return how;  // no choice was made
+  char buf[300];
+  std::snprintf(
+      buf, sizeof buf,
+      "%s, chosen on MUMPS's estimates: bordered %.2g flops, %.0f MB; plain %.2g flops and %d block "
+      "solves %.2g, %.0f MB",
+      how.c_str(), c->bordered_flops, c->bordered_mb, c->plain_flops, c->solves, c->solve_flops, c->plain_mb);
+  return buf;
 }
 
 void check_zone(const Scene& scene, const ContactSetup& s, const contact::ContactResult& r) {

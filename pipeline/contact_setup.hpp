@@ -44,6 +44,12 @@ enum class HolePath { none, as_scene, always };
 std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<Skin> skin = nullptr,
                                             HolePath hole_path = HolePath::as_scene);
 
+// How the skin was condensed, for the summary and the printed line: by block solves of a plain
+// factorization or from a factorization bordered by the condensation's columns, with MUMPS's estimates that
+// chose between them (MixedSolver::BorderChoice) when there was a choice.
+nlohmann::json condensation_json(const ContactSetup& setup);
+std::string condensation_said(const ContactSetup& setup);
+
 // Throws (one line, naming contact.zone_radius) when an active multiplier lies in the zone's outer ring:
 // the contact could be larger than the zone allows, so the answer would be wrong.
 void check_zone(const Scene& scene, const ContactSetup& setup, const contact::ContactResult& r);

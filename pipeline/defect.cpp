@@ -164,6 +164,7 @@ nlohmann::json defect_json(const Scene& scene, const DefectRun& run) {
   summary["multipliers"] = setup.solver->zone().size();
   summary["multipliers_solved"] = setup.condensed->zone.size();
   summary["block_solves"] = setup.condensed->block_solves;
+  summary["condensation"] = condensation_json(setup);
   if (run.levels.size() >= 3) {
     const ChainError e = largest_sliding_error(run);
     nlohmann::json b{{"value_kPa", 1e3 * e.value},

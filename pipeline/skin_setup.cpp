@@ -8,17 +8,18 @@
 
 namespace skinfem::pipeline {
 
-std::shared_ptr<Skin> skin_setup(const Scene& scene, MeshPart part) {
+std::shared_ptr<Skin> skin_setup(const Scene& scene, MeshPart part, const Border& border) {
   Stopwatch clock;
   check_resources(scene, g_max_dofs, part);
   progress("meshing " + scene.name + (part == MeshPart::half_y ? " (the half y >= 0: mirror symmetry)" : ""));
   TetMesh mesh = build_mesh(scene, part, max_tets_allowed(g_max_dofs));
   check_meshed_dofs(scene, mesh, g_max_dofs);
   check_sensors_on_skin(scene, mesh);
-  return factored_skin(scene, std::move(mesh), clock.seconds());
+  return factored_skin(scene, std::move(mesh), clock.seconds(), border);
 }
 
-std::shared_ptr<Skin> factored_skin(const Scene& scene, TetMesh mesh, double mesh_seconds) {
+std::shared_ptr<Skin> factored_skin(const Scene& scene, TetMesh mesh, double mesh_seconds,
+                                    const Border& border) {
   auto s = std::make_shared<Skin>();
   s->mesh = std::move(mesh);
   s->wall["mesh"] = mesh_seconds;
@@ -33,6 +34,7 @@ std::shared_ptr<Skin> factored_skin(const Scene& scene, TetMesh mesh, double mes
                   100 * f.fraction, f.elapsed_s, f.estimated_s, f.estimated_flops);
     progress(buf);
   };
+  if (border) options.coupling = border(s->mesh);
   s->model = std::make_unique<ElasticModel>(s->mesh, scene.material, scene.geometry.side,
                                             std::vector<Punch>{}, options);
   s->wall["assemble"] = s->model->assemble_seconds();

@@ -2,6 +2,7 @@
 // meshing and the factorization are done once per scene.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 
@@ -17,10 +18,16 @@ struct Skin {
   nlohmann::json wall;                  // seconds: mesh, assemble, factor
 };
 
+// Given the skin's mesh before it is factored, columns to border the factorization with
+// (MixedSolver::Coupling: their products come with it), or null; what it returns must outlive the call.
+using Border = std::function<const MixedSolver::Coupling*(const TetMesh&)>;
+
 // Meshes the scene (with its contact zone and hole path refined when it has a contact), whole or its half
 // y ≥ 0 (pipeline/symmetry.hpp), and factors it.
-std::shared_ptr<Skin> skin_setup(const Scene& scene, MeshPart part = MeshPart::whole);
+std::shared_ptr<Skin> skin_setup(const Scene& scene, MeshPart part = MeshPart::whole,
+                                 const Border& border = {});
 // Factors an already meshed skin of the scene (mesh_seconds: what meshing it took, for `wall`).
-std::shared_ptr<Skin> factored_skin(const Scene& scene, TetMesh mesh, double mesh_seconds);
+std::shared_ptr<Skin> factored_skin(const Scene& scene, TetMesh mesh, double mesh_seconds,
+                                    const Border& border = {});
 
 }  // namespace skinfem::pipeline

@@ -204,6 +204,53 @@ TEST(MixedSolver, BlockSolveEqualsColumnByColumnSolves) {
   }
 }
 
+// A factorization bordered by columns (loads and prescribed base values) gives their products from MUMPS's
+// Schur complement: each must equal the same product from a block solve of the unbordered system (a
+// second method), and the bordered factorization's own solves must be the unbordered ones.
+TEST(MixedSolver, BorderedProductsEqualBlockSolves) {
+  const Lame lame = Lame::from(3.0, 0.5);
+  const TetMesh m = box_mesh(1.5, 1.5, 0.4);
+  const MixedMatrices mm = assemble_mixed(m, lame);
+  const int n3 = 3 * m.num_nodes();
+  std::vector<bool> fixed(n3, false);
+  std::vector<int> base, top;
+  for (int i = 0; i < m.num_nodes(); ++i) {
+    if (m.node_marker(i) & kBase)
+      fixed[3 * i] = fixed[3 * i + 1] = fixed[3 * i + 2] = true, base.push_back(i);
+    if (m.node_marker(i) == kTop) top.push_back(i);
+  }
+  // 12 loads on top nodes (all three components), 4 columns of prescribed base values.
+  const int nl = 12, np = 4;
+  std::vector<Eigen::Triplet<double>> f, u;
+  for (int j = 0; j < nl; ++j) {
+    f.emplace_back(3 * top[(7 * j) % top.size()] + j % 3, j, 1.0 + j);
+    f.emplace_back(3 * top[(7 * j + 3) % top.size()] + 2, j, -0.5);
+  }
+  for (int j = 0; j < np; ++j)
+    for (int k = 0; k < 5; ++k)
+      u.emplace_back(3 * base[(11 * j + 5 * k) % base.size()] + k % 3, nl + j, 0.1 * (k + 1));
+  MixedSolver::Coupling c;
+  c.F.resize(n3, nl + np);
+  c.F.setFromTriplets(f.begin(), f.end());
+  c.U_fixed.resize(n3, nl + np);
+  c.U_fixed.setFromTriplets(u.begin(), u.end());
+  const MixedSolver plain(mm, lame, fixed, SolverKind::direct_ldlt);
+  const MixedSolver bordered(mm, lame, fixed, SolverKind::direct_ldlt, 1e-10, {}, &c);
+  const Eigen::MatrixXd U = plain.solve_block(Eigen::MatrixXd(c.F), Eigen::MatrixXd(c.U_fixed));
+  Eigen::MatrixXd Ff = Eigen::MatrixXd(c.F);
+  for (int d = 0; d < n3; ++d)
+    if (fixed[d]) Ff.row(d).setZero();
+  const Eigen::MatrixXd expected = Ff.transpose() * U;
+  const Eigen::MatrixXd& G = bordered.coupling_products();
+  ASSERT_EQ(G.rows(), nl + np);
+  const double scale = expected.topRows(nl).cwiseAbs().maxCoeff();
+  EXPECT_LT((G.topRows(nl) - expected.topRows(nl)).cwiseAbs().maxCoeff(), 1e-10 * scale);
+  EXPECT_LT((G.topLeftCorner(nl, nl) - G.topLeftCorner(nl, nl).transpose()).cwiseAbs().maxCoeff(),
+            1e-10 * scale);
+  EXPECT_LT((bordered.solve_block(Eigen::MatrixXd(c.F), Eigen::MatrixXd(c.U_fixed)) - U).norm(),
+            1e-10 * U.norm());
+}
+
 // Linear elasticity under force loads: u ∝ 1/E, p independent of E (scale invariance of the continuous
 // problem). The solver's scaled unknowns must keep that exact from E = 1e-6 to 1e12 MPa, for both roads,
 // ν = 0.5 and 0.3, point loads (block) and prescribed base displacements (single solve: u − u_c ∝ 1/E

@@ -81,5 +81,32 @@ TEST(MumpsLdlt, FailedFactorizationNeverReportsDone) {
   for (const auto& c : calls) EXPECT_LT(c.fraction, 1.0);
 }
 
+TEST(MumpsLdlt, SchurComplementOfABorderedLaplacianIsTheDenseOne) {
+  // [K G; Gᵀ 0] with K the Laplacian on a 40 × 40 grid and G five sparse columns: the Schur complement on
+  // the last five unknowns is −Gᵀ K⁻¹ G, here against Eigen's dense LDLᵀ of K (a second method); the
+  // interior solves are K's own.
+  const int m = 40, n = m * m, s = 5;
+  const Eigen::SparseMatrix<double> K = laplacian(m);
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(n, s);
+  for (int j = 0; j < s; ++j)
+    for (int k = 0; k < 7; ++k) G((37 * j + 211 * k) % n, j) = 1.0 + 0.1 * k - 0.3 * j;
+  MumpsLdlt::Triplets t = MumpsLdlt::lower_triangle(K);
+  for (int j = 0; j < s; ++j)
+    for (int i = 0; i < n; ++i)
+      if (G(i, j) != 0) t.row.push_back(n + j), t.col.push_back(i), t.value.push_back(G(i, j));
+  const MumpsLdlt ldlt(n + s, std::move(t), s);
+  const Eigen::MatrixXd full =
+      Eigen::MatrixXd(Eigen::SparseMatrix<double>(K.selfadjointView<Eigen::Lower>()));
+  const Eigen::LDLT<Eigen::MatrixXd> dense(full);
+  const Eigen::MatrixXd expected = -G.transpose() * dense.solve(G);
+  ASSERT_EQ(ldlt.schur().rows(), s);
+  EXPECT_LT((ldlt.schur() - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
+  const Eigen::VectorXd one = Eigen::VectorXd::Ones(n);
+  EXPECT_LT((ldlt.solve(Eigen::VectorXd(full * one)) - one).norm(), 1e-10 * one.norm());
+  const Eigen::MatrixXd X = ldlt.solve(Eigen::MatrixXd(full * G));
+  EXPECT_EQ(X.rows(), n);
+  EXPECT_LT((X - G).norm(), 1e-10 * G.norm());
+}
+
 }  // namespace
 }  // namespace skinfem
