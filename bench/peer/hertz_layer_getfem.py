@@ -313,6 +313,21 @@ def newton(md, label, log):
     return int(it), conv
 
 
+def taylor_hood_spaces(m, dim, top):
+    """Q2 displacement (dim components), Q1 pressure, and the Q1 contact multiplier on region `top` (its
+    whole-mesh space, its DOFs there, and the partial space over them), as both GetFEM models use them."""
+    import getfem as gf
+
+    mfu = gf.MeshFem(m, dim)
+    mfu.set_classical_fem(2)
+    mfp = gf.MeshFem(m, 1)
+    mfp.set_classical_fem(1)
+    mfl_all = gf.MeshFem(m, 1)
+    mfl_all.set_classical_fem(1)
+    ldof = mfl_all.basic_dof_on_region(top)
+    return mfu, mfp, mfl_all, ldof, gf.MeshFem("partial", mfl_all, ldof)
+
+
 def solve_3d(p, h3d):
     import numpy as np
     import getfem as gf
@@ -324,14 +339,7 @@ def solve_3d(p, h3d):
     TOP, BASE, SYMX, SYMY = 1, 2, 3, 4
     for rid, v in ((TOP, [0, 0, 1]), (BASE, [0, 0, -1]), (SYMX, [-1, 0, 0]), (SYMY, [0, -1, 0])):
         m.set_region(rid, m.outer_faces_with_direction(v, 0.01))
-    mfu = gf.MeshFem(m, 3)
-    mfu.set_classical_fem(2)
-    mfp = gf.MeshFem(m, 1)
-    mfp.set_classical_fem(1)
-    mfl_all = gf.MeshFem(m, 1)
-    mfl_all.set_classical_fem(1)
-    ldof = mfl_all.basic_dof_on_region(TOP)
-    mfl = gf.MeshFem("partial", mfl_all, ldof)
+    mfu, mfp, mfl_all, ldof, mfl = taylor_hood_spaces(m, 3, TOP)
     mfobs = gf.MeshFem(m, 1)
     mfobs.set_classical_fem(2)
     mim = gf.MeshIm(m, gf.Integ("IM_GAUSS_PARALLELEPIPED(3,4)"))
@@ -423,14 +431,7 @@ def solve_meridian(p, hmer, growth=1.2, r_coarse=1.0, z_coarse=0.5):
     TOP, BASE, AXIS = 1, 2, 3
     for rid, v in ((TOP, [0, 1]), (BASE, [0, -1]), (AXIS, [-1, 0])):
         m.set_region(rid, m.outer_faces_with_direction(v, 0.01))
-    mfu = gf.MeshFem(m, 2)
-    mfu.set_classical_fem(2)
-    mfp = gf.MeshFem(m, 1)
-    mfp.set_classical_fem(1)
-    mfl_all = gf.MeshFem(m, 1)
-    mfl_all.set_classical_fem(1)
-    ldof = mfl_all.basic_dof_on_region(TOP)
-    mfl = gf.MeshFem("partial", mfl_all, ldof)
+    mfu, mfp, mfl_all, ldof, mfl = taylor_hood_spaces(m, 2, TOP)
     mim = gf.MeshIm(m, gf.Integ("IM_GAUSS_PARALLELEPIPED(2,6)"))
     mimc = gf.MeshIm(m, gf.Integ("IM_GAUSS_PARALLELEPIPED(2,10)"))
 
