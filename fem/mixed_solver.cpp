@@ -148,6 +148,7 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
     // lifts them. Its Schur complement is −Rᵀ K⁻¹ R, and Rᵢᵀ K⁻¹ R_j = σ F_iᵀ u_j for a load column i
     // (K is in the scaled unknowns (σu, p)).
     int m = coupling ? static_cast<int>(coupling->F.cols()) : 0;
+    const size_t plain_entries = t.value.size();
     if (m > 0) {
       if (coupling->F.rows() != n3 ||
           (coupling->U_fixed.size() && (coupling->U_fixed.rows() != n3 || coupling->U_fixed.cols() != m)))
@@ -170,13 +171,14 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
       }
       SparseMatrixd R(s.nf + s.np, m);
       R.setFromTriplets(r.begin(), r.end());
-      const size_t plain_entries = t.value.size();
       for (int j = 0; j < m; ++j)
         for (SparseMatrixd::InnerIterator it(R, j); it; ++it)
           if (it.value() != 0) add(s.nf + s.np + j, static_cast<int>(it.row()), it.value());
-      BorderChoice& c = s.border_choice.emplace();
-      c.bordered = true;
-      try {
+    }
+    try {
+      if (m > 0) {
+        BorderChoice& c = s.border_choice.emplace();
+        c.bordered = true;
         if (coupling->solves_instead > 0) {
           // Both analysed, the cheaper factored: the plain matrix is the bordered one's leading entries.
           MumpsLdlt::Triplets plain;
@@ -193,19 +195,12 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
           c.bordered = c.bordered_flops < c.plain_flops + c.solve_flops;
           s.ldlt = c.bordered ? std::move(bordered) : std::move(unbordered);
           if (!c.bordered) m = 0;
-        } else {
-          s.ldlt = std::make_unique<MumpsLdlt>(s.nf + s.np + m, std::move(t), m, progress, 5, false);
         }
-        s.ldlt->factor(progress);
-      } catch (const std::runtime_error& e) {
-        throw SolverError(std::string("cannot factor the saddle-point matrix: ") + e.what());
       }
-    } else {
-      try {
-        s.ldlt = std::make_unique<MumpsLdlt>(s.nf + s.np, std::move(t), progress);
-      } catch (const std::runtime_error& e) {
-        throw SolverError(std::string("cannot factor the saddle-point matrix: ") + e.what());
-      }
+      if (!s.ldlt) s.ldlt = std::make_unique<MumpsLdlt>(s.nf + s.np + m, std::move(t), m, progress, 5, false);
+      s.ldlt->factor(progress);
+    } catch (const std::runtime_error& e) {
+      throw SolverError(std::string("cannot factor the saddle-point matrix: ") + e.what());
     }
     if (m > 0) {
       s.coupling_products = -s.ldlt->schur() / s.sigma;
