@@ -192,7 +192,8 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
           c.plain_flops = p.flops, c.plain_mb = p.memory_mb;
           c.solves = coupling->solves_instead;
           c.solve_flops = kFactorOverSolveRate * 4 * p.factor_entries * c.solves;
-          c.bordered = c.bordered_flops < c.plain_flops + c.solve_flops;
+          c.memory_limit_mb = coupling->memory_limit_mb;
+          c.bordered = c.cheaper() && c.fits();
           s.ldlt = c.bordered ? std::move(bordered) : std::move(unbordered);
           if (!c.bordered) m = 0;
         }

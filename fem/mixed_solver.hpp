@@ -48,6 +48,9 @@ class MixedSolver {
     // factorization costs more than the plain one and these solves, the plain one is factored
     // (coupling_products() then empty; border_choice() says why). 0: always bordered.
     int solves_instead = 0;
+    // The memory the bordered factorization may take, MB (MUMPS's estimate): above it the plain one, which
+    // needs less, is factored whatever the flops say. 0: no bound.
+    double memory_limit_mb = 0;
   };
   // The estimates the choice was made on (flops; a solve costs 4 flops per factor entry and right-hand side,
   // weighted by the factorization's rate over the solves', measured: mixed_solver.cpp), and the choice.
@@ -55,7 +58,10 @@ class MixedSolver {
     bool bordered = false;
     double bordered_flops = 0, plain_flops = 0, solve_flops = 0;  // estimates
     double bordered_mb = 0, plain_mb = 0;                         // MUMPS's memory estimates
+    double memory_limit_mb = 0;                                   // Coupling::memory_limit_mb
     int solves = 0;                                               // Coupling::solves_instead
+    bool cheaper() const { return bordered_flops < plain_flops + solve_flops; }
+    bool fits() const { return memory_limit_mb <= 0 || bordered_mb <= memory_limit_mb; }
   };
 
   // fixed: 3N flags, true where the displacement DOF is prescribed. Factors immediately; progress (may be

@@ -2,11 +2,13 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 
 #include "mesh/mirror.hpp"
 #include "pipeline/clock.hpp"
 #include "pipeline/progress.hpp"
+#include "pipeline/resources.hpp"
 #include "pipeline/symmetry.hpp"
 
 namespace skinfem::pipeline {
@@ -20,21 +22,28 @@ std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<
   const auto& sweep = scene.contact->sweep;
   const bool watch = sweep && (hole_path == HolePath::always ||
                                (hole_path == HolePath::as_scene && sweep->model == HoleModel::resolved));
-  const auto watch_faces_of = [&](const TetMesh& mesh, const contact::MortarZone& zone) {
-    return watch ? contact::watch_path(mesh, zone, sweep->from, sweep->to, 0.5 * sweep->hole_diameter)
-                 : std::vector<int>{};
-  };
   // A skin meshed here is factored bordered by the condensation's columns: the factorization gives every
   // product the condensation needs (contact/condensed.hpp). Posts on springs read through the factored
   // skin itself, so their columns come after it: block solves.
   std::unique_ptr<contact::CondenseColumns> columns;
+  // The zone and the faces a swept hole reaches: found once, on the skin's mesh.
+  std::optional<contact::MortarZone> zone;
+  std::vector<int> watch_faces;
+  const auto find_zone = [&](const TetMesh& mesh) {
+    zone = contact::mortar_zone(mesh, centre, zone_radius);
+    if (watch)
+      watch_faces = contact::watch_path(mesh, *zone, sweep->from, sweep->to, 0.5 * sweep->hole_diameter);
+  };
   const bool springs = scene.sensors.model == SensorModel::post && !scene.sensors.post.support.rigid();
   if (!skin && !springs)
     skin = skin_setup(scene, contact_mesh_part(scene), [&](const TetMesh& mesh) {
-      const auto zone = contact::mortar_zone(mesh, centre, zone_radius);
+      find_zone(mesh);
       columns = std::make_unique<contact::CondenseColumns>(contact::condense_columns(
-          mesh, zone, SensorReadings(mesh, reading_sites(scene.sensors)).weight_block(),
-          scene.contact->direction, watch_faces_of(mesh, zone)));
+          mesh, *zone, SensorReadings(mesh, reading_sites(scene.sensors)).weight_block(),
+          scene.contact->direction, watch_faces));
+      // Within the memory the run was admitted with (check_resources found this estimate available): a
+      // bound that depends on the scene only, so its choice does not change with the machine's load.
+      columns->coupling.memory_limit_mb = 1024 * estimated_memory_gb(unknowns_bound(mesh));
       return &columns->coupling;
     });
   auto s =
@@ -45,25 +54,25 @@ std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<
   s->zone_radius = zone_radius;
   s->zone_h = contact_zone_h(scene);
   s->indenter = std::make_unique<contact::Indenter>(scene, solved);
-  const auto zone = contact::mortar_zone(solved, centre, zone_radius);
+  if (!zone) find_zone(solved);
   if (is_half_y(solved)) {
     if (!contact_mirror_unavailable(scene).empty())
       throw std::logic_error("contact_setup: a half skin for a contact that is not mirror-symmetric");
     s->whole = std::make_unique<TetMesh>(mirror_half(solved, &s->source));
     s->mirror = std::make_unique<contact::MirrorView>(
-        contact::mirror_view(*s->whole, s->source, zone, centre, zone_radius));
+        contact::mirror_view(*s->whole, s->source, *zone, centre, zone_radius));
   }
   Stopwatch condense_clock;
   s->readings = std::make_unique<SensorReadings>(solved, reading_sites(scene.sensors), &s->model->solver());
   s->condensed = std::make_unique<contact::CondensedContact>(contact::condense(
-      *s->model, zone, *s->indenter, *s->readings, scene.contact->direction,
+      *s->model, *zone, *s->indenter, *s->readings, scene.contact->direction,
       [&](double fraction, const std::string& what) {
         char buf[160];
         std::snprintf(buf, sizeof buf, "%s: %.0f %% (%.1f s)", what.c_str(), 100 * fraction,
                       condense_clock.seconds());
         progress(buf);
       },
-      watch_faces_of(solved, zone), columns.get()));
+      watch_faces, columns.get()));
   s->solver = std::make_unique<contact::ContactSolver>(*s->condensed, *scene.contact, s->mirror.get());
   s->top = std::make_unique<PlanarFaceIndex>(s->mesh(), kTop);
   s->wall["condense"] = clock.seconds();
@@ -81,7 +90,8 @@ nlohmann::json condensation_json(const ContactSetup& setup) {
                    {"block_solve_flops", c->solve_flops},
                    {"bordered_factor_mb", c->bordered_mb},
                    {"block_solves_instead", c->solves},
-                   {"plain_factor_mb", c->plain_mb}};
+                   {"plain_factor_mb", c->plain_mb},
+                   {"memory_limit_mb", c->memory_limit_mb}};
   return j;
 }
 
@@ -96,7 +106,11 @@ std::string condensation_said(const ContactSetup& setup) {
       "%s, chosen on MUMPS's estimates: bordered %.2g flops, %.0f MB; plain %.2g flops and %d block "
       "solves %.2g, %.0f MB",
       how.c_str(), c->bordered_flops, c->bordered_mb, c->plain_flops, c->solves, c->solve_flops, c->plain_mb);
-  return buf;
+  std::string said = buf;
+  if (c->cheaper() && !c->fits())
+    said += "; the bordered one is cheaper but needs more than the run's " +
+            std::to_string(static_cast<long>(c->memory_limit_mb)) + " MB";
+  return said;
 }
 
 void check_zone(const Scene& scene, const ContactSetup& s, const contact::ContactResult& r) {

@@ -63,8 +63,10 @@ MeshEstimate check_resources(const Scene& scene, double max_dofs, MeshPart part)
   return e;
 }
 
+double unknowns_bound(const TetMesh& mesh) { return 3.0 * mesh.num_nodes() + mesh.num_vertices; }
+
 void check_meshed_dofs(const Scene& scene, const TetMesh& mesh, double max_dofs) {
-  const double dofs = 3.0 * mesh.num_nodes() + mesh.num_vertices;
+  const double dofs = unknowns_bound(mesh);
   const double gb = estimated_memory_gb(dofs), avail = available_memory_gb();
   char buf[512];
   const char* fields = scene.geometry.kind == GeometryKind::surface

@@ -26,9 +26,12 @@ MeshEstimate check_resources(const Scene& scene, double max_dofs, MeshPart part 
 // build_mesh's floor for imported surfaces, which have no estimate.
 double max_tets_allowed(double max_dofs);
 
+// The Taylor–Hood unknowns before boundary conditions, 3 per node plus 1 per vertex: an upper bound on the
+// free DOFs.
+double unknowns_bound(const TetMesh& mesh);
+
 // The same limits on a built mesh, before anything is assembled: the backstop where no estimate exists
-// (imported surfaces) or where the estimate fell short. DOFs counted as 3 per node plus 1 per vertex (the
-// Taylor–Hood unknowns before boundary conditions: an upper bound on the free ones).
+// (imported surfaces) or where the estimate fell short. DOFs counted by unknowns_bound.
 void check_meshed_dofs(const Scene& scene, const TetMesh& mesh, double max_dofs);
 
 // The --max-dofs of this process (0: only the memory limit), set once by main.

@@ -61,12 +61,18 @@ TEST(Condensed, BorderedFactorizationEqualsBlockSolves) {
   EXPECT_EQ(b.gap0, a.gap0);
 
   // Asked to weigh the cost, the factorization takes the plain road when a single solve would do instead,
-  // the bordered one when a million would; the estimates it chose on are MUMPS's own.
-  for (int solves : {1, 1000000}) {
-    cols.coupling.solves_instead = solves;
+  // the bordered one when a million would, unless its memory is above the limit; the estimates it chose on
+  // are MUMPS's own.
+  double between_mb = 0;  // a limit between the two roads' memory, once they are known
+  for (int solves : {1, 1000000, -1}) {
+    cols.coupling.solves_instead = solves > 0 ? solves : 1000000;
+    cols.coupling.memory_limit_mb = solves > 0 ? 0 : between_mb;
     const ElasticModel weighed(mesh, s.material, s.geometry.side, {}, bordered_options);
     const auto& choice = *weighed.solver().border_choice();
+    between_mb = 0.5 * (choice.plain_mb + choice.bordered_mb);
     EXPECT_EQ(choice.bordered, solves > 1) << solves;
+    EXPECT_EQ(choice.fits(), solves > 0) << solves;
+    EXPECT_GT(choice.bordered_mb, choice.plain_mb);
     EXPECT_GT(choice.bordered_flops, choice.plain_flops);
     EXPECT_GT(choice.solve_flops, 0);
     EXPECT_EQ(weighed.solver().coupling_products().size() > 0, choice.bordered);
