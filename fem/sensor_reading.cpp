@@ -71,6 +71,7 @@ SensorReadings::Post SensorReadings::find_post(int k) const {
     const double d = std::hypot(mesh_.nodes(n, 0) - s.center[0], mesh_.nodes(n, 1) - s.center[1]);
     if (d > r * (1 + 1e-6) || mesh_.nodes(n, 2) > s.post_height * (1 + 1e-6)) continue;
     post.nodes.push_back(n);
+    post.on_foot.push_back(mesh_.node_marker(n) & kBase);
     post.cut = post.cut || (mesh_.node_marker(n) & kSymmetry);
   }
   if (post.nodes.empty())
@@ -82,7 +83,9 @@ SensorReadings::Post SensorReadings::find_post(int k) const {
 Eigen::VectorXd SensorReadings::mode_vector(const Mode& m) const {
   Eigen::VectorXd phi = Eigen::VectorXd::Zero(3 * mesh_.num_nodes());
   const Vec2& c = site(m.site).center;
-  for (int n : posts_[m.site].nodes) {
+  const Post& post = posts_[m.site];
+  for (size_t i = 0; i < post.nodes.size(); ++i) {
+    const int n = post.nodes[i];
     const Eigen::Vector3d r(mesh_.nodes(n, 0) - c[0], mesh_.nodes(n, 1) - c[1], mesh_.nodes(n, 2));
     Eigen::Vector3d u = Eigen::Vector3d::Zero();
     if (m.kind == 'x') u.x() = 1;
@@ -90,6 +93,7 @@ Eigen::VectorXd SensorReadings::mode_vector(const Mode& m) const {
     if (m.kind == 'z') u.z() = 1;
     if (m.kind == 'u') u = Eigen::Vector3d::UnitX().cross(r);
     if (m.kind == 'v') u = Eigen::Vector3d::UnitY().cross(r);
+    if (post.on_foot[i]) u.z() = 0;  // the foot's normal component is the base's (Post::on_foot)
     phi.segment<3>(3 * n) = u;
   }
   return phi;
@@ -113,7 +117,8 @@ Eigen::VectorXd SensorReadings::weights(int k, char component) const {
     return w;
   }
   Eigen::VectorXd w = Eigen::VectorXd::Zero(3 * mesh_.num_nodes());
-  for (int n : post.nodes) w[3 * n + (component == 'z' ? 2 : 0)] = sign / area;
+  for (size_t i = 0; i < post.nodes.size(); ++i)
+    if (component != 'z' || !post.on_foot[i]) w[3 * post.nodes[i] + (component == 'z' ? 2 : 0)] = sign / area;
   return w;
 }
 

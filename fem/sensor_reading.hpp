@@ -83,8 +83,15 @@ class SensorReadings {
     char kind;  // 'x', 'y', 'z', 'u' (tilt about x), 'v' (tilt about y)
   };
   struct Post {
-    std::vector<int> nodes;  // its wall, top and the outline they share with the base
-    bool cut = false;        // a half post on the mirror plane (a half mesh holds half of it)
+    std::vector<int> nodes;  // its wall, top and the outline they share with the base (its foot)
+    // By node: on the foot. A node there carries the reaction of the wall and of the base beside it; at the
+    // corner the skin's stress is the pressure alone (both faces held), which pushes the wall sideways and
+    // the base down. So the foot's tangential reaction is the post's and its normal one the base's: either
+    // other way the reading takes in, or leaves out, p × the node's area, an O(h) error (σ_z converged at
+    // order 1.2 with the foot wholly the post's); this way the error left is O(h²) (docs/theory.md, "The
+    // post's foot").
+    std::vector<bool> on_foot;
+    bool cut = false;  // a half post on the mirror plane (a half mesh holds half of it)
   };
   Post find_post(int k) const;
   int same_post(int k) const;  // the first site standing for site k's post (a list may name a post twice)

@@ -105,7 +105,7 @@ MeridianMesh meridian_mesh(const std::function<double(double)>& top, double radi
       !(z.growth >= 1) || !(z.max_cell > 0) || z.layers < 1 || post.rim_cell < 0)
     throw std::invalid_argument(
         "meridian_mesh: need 0 < post radius < radius, 0 < post height < top, cells > 0, growth >= 1");
-  const double rim = post.rim_cell > 0 ? post.rim_cell : z.axis_cell / 8;
+  const double rim = post.rim_cell > 0 ? post.rim_cell : 7.5 * z.axis_cell * z.axis_cell / top(0);
   // Radial vertex rows: inside the post's radius (above its top) and beyond it, fine at the rim.
   std::vector<double> rows = graded_points(a, z.axis_cell, rim, z.growth, z.axis_cell);
   const int ia = static_cast<int>(rows.size()) - 1;  // the row at r = a
@@ -234,7 +234,7 @@ MeridianGreen::MeridianGreen(const MeridianMesh& m, double nu, SideCondition sid
   if (!sensor.axisymmetric())
     throw std::invalid_argument("the meridian path reads only sensors that are bodies of revolution");
   std::vector<int> held = m.base;
-  Eigen::MatrixXd w;
+  Eigen::MatrixXd w, w_z;  // the weights of the x and z readings (the same but on a post's foot)
   if (sensor.post()) {
     // The force on the post over its cross-section: weight 1/(πa²) on every post node, none on the base.
     const double a = 0.5 * sensor.diameter;
@@ -244,14 +244,19 @@ MeridianGreen::MeridianGreen(const MeridianMesh& m, double nu, SideCondition sid
     held.insert(held.end(), m.post.begin(), m.post.end());
     w = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(held.size()), 1);
     w.bottomRows(static_cast<Eigen::Index>(m.post.size())).setConstant(1 / (M_PI * a * a));
+    // The foot (m.post's first node) reads with the post sideways and with the base along z, as in 3D
+    // (fem/sensor_reading.hpp, Post::on_foot).
+    w_z = w;
+    w_z(static_cast<Eigen::Index>(m.base.size()), 0) = 0;
   } else {
     if (!m.post.empty())
       throw std::invalid_argument("MeridianGreen: a disc sensor on a meridian cut for a post");
     w = disc_weights(m, 0.5 * sensor.diameter);
+    w_z = w;
   }
   // σ_z = t_z (the base's traction on the skin, whose outward normal is −e_z): impose −w along z. σ_x = −t_x:
   // impose +w along x.
-  const ModeField z = solve_mode(m, held, nu, side, 0, w, cost_),
+  const ModeField z = solve_mode(m, held, nu, side, 0, w_z, cost_),
                   x = solve_mode(m, held, nu, side, 1, w, cost_);
   dofs_ = z.dofs + x.dofs;
   for (size_t i = 0; i < m.top.size(); ++i) r_.push_back(m.nodes(m.top[i], 0));

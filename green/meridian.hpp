@@ -71,10 +71,13 @@ std::vector<double> graded_points(double L, double c0, double c1, double growth,
 
 // A post sensor on the axis (scene.hpp's PostSensor): the rigid rectangle r ≤ radius, z ≤ height cut from
 // the meridian. The stress is singular at its top rim and its foot, so cells shrink toward both corners to
-// rim_cell (mm) at the sizes' growth.
+// rim_cell (mm) at the sizes' growth. At the top rim the skin wraps a right angle of the held post: a 270°
+// wedge held on both faces, whose stress goes as ρ^(λ−1), λ = 0.5445 when ν = 0.5 (sin λω = ±λ sin ω,
+// ω = 3π/2: Williams' clamped wedge). A reading's error from it goes as rim_cell^(2λ) = rim_cell^1.09, so the
+// rim cell shrinks as the square of the sizes to keep pace with the P2 error elsewhere.
 struct MeridianPost {
   double radius = 0, height = 0;  // mm
-  double rim_cell = 0;            // mm; 0: the sizes' axis_cell / 8
+  double rim_cell = 0;            // mm; 0: 7.5 axis_cell² / top(0), thickness/480 at for_thickness(h, 1)
 };
 // The block-structured mesh of the region less the post: radial rows graded toward the post's radius, z rows
 // below the post's top graded toward both ends (beside the post only), z = height + (top(r) − height)·τ

@@ -103,16 +103,16 @@ for q in ("k_central", "k_lsq_line"):
     if not abs(check.get(q + "_3d_vs_meridian", 1) - rel) < 1e-12:
         bad.append(f"apex3d meridian_check {q}_3d_vs_meridian {check.get(q + '_3d_vs_meridian')} vs {rel}")
 if "meridian_check" in apex: bad.append("the meridian path checks itself against itself")
-# Posts: both ways, the 3D run checked against the meridian's post. The 3D post's maps are within 1.4–1.6e-2
-# of the peak of the meridian's at these sizes (test_meridian's CapApexPostAgreesWithThe3DPost, order 1.2 for
-# g_zz); k moves by less (measured 0.8 %): 2 % bounds it.
+# Posts: both ways, the 3D run checked against the meridian's post. The 3D post's maps are within 9.3e-3 of
+# the peak of the meridian's at these sizes (g_xz; g_zz 1.7e-3: test_meridian's CapApexPostAgreesWithThe3DPost,
+# every component at order >= 1.5); k, a fit of the maps' shape, moves by less (measured 0.03 %): 1 % bounds it.
 post, post3d = load("post"), load("post3d")
 if post["path"] != "meridian" or post3d["path"] != "3d": bad.append(f"post paths {post['path']}, {post3d['path']}")
 check = post3d.get("meridian_check", {})
 for q in ("k_central", "k_lsq_line"):
     rel = post3d["sensors"][0][q] / post["sensors"][0][q] - 1
     print(f"cap apex post: {q} meridian {post['sensors'][0][q]:.5f}, 3d {post3d['sensors'][0][q]:.5f} ({rel:+.2e})")
-    if not abs(rel) < 0.02: bad.append(f"cap apex post {q}: 3d vs meridian {rel:+.2e}")
+    if not abs(rel) < 0.01: bad.append(f"cap apex post {q}: 3d vs meridian {rel:+.2e}")
     if not abs(check.get(q + "_3d_vs_meridian", 1) - rel) < 1e-12: bad.append(f"post3d meridian_check {q}: {check}")
 for b_ in bad: print("FAIL", b_)
 sys.exit(1 if bad else 0)

@@ -138,10 +138,15 @@ TEST(PostSensor, BaseAndPostsBalanceTheLoad) {
   const ElasticModel model(m, post_scene().material, SideCondition::free, std::vector<Punch>{});
   const TractionPatch patch{{0.6, 0.2}, 0.5, {0.3, 0.1, -1}, 1.0};
   const LoadCaseResult r = model.solve(model.patch_load(patch), {});
-  Eigen::Vector3d total = Eigen::Vector3d::Zero(), on_posts = Eigen::Vector3d::Zero();
+  // The force on the posts: every post node's tangential reaction, the normal one off the foot (where the
+  // post meets the base, the normal reaction is the base's: fem/sensor_reading.hpp, Post::on_foot).
+  Eigen::Vector3d total = Eigen::Vector3d::Zero(), on_posts = Eigen::Vector3d::Zero(), on_feet_z(0, 0, 0);
   for (int n = 0; n < m.num_nodes(); ++n) {
     total += r.reactions.segment<3>(3 * n);
-    if (m.node_marker(n) & kPost) on_posts += r.reactions.segment<3>(3 * n);
+    if (!(m.node_marker(n) & kPost)) continue;
+    on_posts += r.reactions.segment<3>(3 * n);
+    if (m.node_marker(n) & kBase)
+      on_posts.z() -= r.reactions[3 * n + 2], on_feet_z.z() += r.reactions[3 * n + 2];
   }
   const Eigen::Vector3d applied(r.applied_force_N[0], r.applied_force_N[1], r.applied_force_N[2]);
   EXPECT_LT((total + applied).norm(), 1e-9 * applied.norm());
@@ -156,7 +161,8 @@ TEST(PostSensor, BaseAndPostsBalanceTheLoad) {
   }
   EXPECT_NEAR(read.x(), on_posts.x(), 1e-12 * on_posts.norm());
   EXPECT_NEAR(read.z(), on_posts.z(), 1e-12 * on_posts.norm());
-  EXPECT_GT(on_posts.norm(), 1e-3 * applied.norm());  // the post is not a zero-force no-op
+  EXPECT_GT(on_posts.norm(), 1e-3 * applied.norm());           // the post is not a zero-force no-op
+  EXPECT_GT(std::abs(on_feet_z.z()), 1e-3 * on_posts.norm());  // and the foot's share is not negligible
 }
 
 TEST(PostSensor, AdjointReadingIsTheForwardOne) {
@@ -209,7 +215,8 @@ TEST(PostSensor, SpringReadingIsTheForwardEquilibrium) {
   EXPECT_GT(
       Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(0.5 * (K + K.transpose())).eigenvalues().minCoeff(), 0);
 
-  // The rigid modes on a post's nodes (the same as the seam's, built here from the mesh).
+  // The rigid modes on a post's nodes (the same as the seam's, built here from the mesh: the foot moves with
+  // the post along the base and stays with the base along z).
   const int N = m.num_nodes();
   const auto mode = [&](int post, int j) {
     Eigen::VectorXd phi = Eigen::VectorXd::Zero(3 * N);
@@ -221,6 +228,7 @@ TEST(PostSensor, SpringReadingIsTheForwardEquilibrium) {
       const Eigen::Vector3d u =
           j < 3 ? Eigen::Vector3d::Unit(j).eval() : Eigen::Vector3d::Unit(j == 3 ? 0 : 1).cross(r).eval();
       phi.segment<3>(3 * n) = u;
+      if (m.node_marker(n) & kBase) phi[3 * n + 2] = 0;
     }
     return phi;
   };
