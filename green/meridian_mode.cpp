@@ -192,7 +192,8 @@ Eigen::MatrixXd MeridianMode::gather(const Fields& f, int columns, const std::ve
   for (int c = 0; c < nc_; ++c) {
     const Eigen::MatrixXd& p = *parts[c == nc_ - 1 ? 2 : c];
     if (!check(p, rows)) continue;
-    for (int i = 0; i < rows; ++i) full.row(nc_ * (nodes ? (*nodes)[i] : i) + c) = p.row(i);
+    for (int j = 0; j < columns; ++j)
+      for (int i = 0; i < rows; ++i) full(nc_ * (nodes ? (*nodes)[i] : i) + c, j) = p(i, j);
   }
   if (!nodes && check(f.P, nv_)) full.bottomRows(nv_) = f.P;
   return full;
@@ -202,7 +203,8 @@ MeridianMode::Fields MeridianMode::scatter(const Eigen::MatrixXd& full) const {
   Fields f;
   const auto part = [&](int c) {
     Eigen::MatrixXd p(n_, full.cols());
-    for (int i = 0; i < n_; ++i) p.row(i) = full.row(nc_ * i + c);
+    for (int j = 0; j < full.cols(); ++j)
+      for (int i = 0; i < n_; ++i) p(i, j) = full(nc_ * i + c, j);
     return p;
   };
   f.U = part(0);
@@ -218,12 +220,15 @@ MeridianMode::Fields MeridianMode::solve(const Fields& held_values, const Fields
   Eigen::MatrixXd residual = gather(load, columns, nullptr);
   // K's free rows times the prescribed values: by symmetry, K_c's columns (K(f, c) = K(c, f)).
   if (held_values.U.size() || held_values.V.size() || held_values.W.size()) residual -= Kc_.transpose() * u;
+  // Column by column: the blocks are column-major, and a row-wise copy strides by their height.
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(free_, columns);
-  for (int d = 0; d < residual.rows(); ++d)
-    if (index_[d] >= 0) rhs.row(index_[d]) += sign_[d] * residual.row(d);
+  for (int j = 0; j < columns; ++j)
+    for (int d = 0; d < residual.rows(); ++d)
+      if (index_[d] >= 0) rhs(index_[d], j) += sign_[d] * residual(d, j);
   const Eigen::MatrixXd y = solver_->solve(std::move(rhs));
-  for (int d = 0; d < u.rows(); ++d)
-    if (index_[d] >= 0) u.row(d) = sign_[d] * y.row(index_[d]);
+  for (int j = 0; j < columns; ++j)
+    for (int d = 0; d < u.rows(); ++d)
+      if (index_[d] >= 0) u(d, j) = sign_[d] * y(index_[d], j);
   cost_.solve_s += seconds_since(clock);
   return scatter(u);
 }
