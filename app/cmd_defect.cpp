@@ -32,43 +32,32 @@ namespace skinfem::app {
 
 using validation::fmt;
 
-constexpr size_t kMaxFrames = 201;
-
 DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> shared,
-                       const std::string& out_dir, std::vector<pipeline::ChainLevel> coarse) {
-  DefectRun run = defect_run(scene, std::move(shared), std::move(coarse));
+                       const std::string& out_dir, std::vector<pipeline::ChainLevel> coarse,
+                       pipeline::DefectFrames keep) {
+  DefectRun run = defect_run(scene, std::move(shared), std::move(coarse), keep);
   const ContactSetup& setup = *run.setup;
   const HoleSweep& sweep = *scene.contact->sweep;
   const auto& results = run.sweeps;
   const auto& frames = run.frames;
   Stopwatch clock;
-  const auto hole_of = [&](size_t ci, size_t i) {
-    return std::vector<Hole>{{results[ci].centers[i], sweep.hole_diameter, 0.0, sweep.hole_depth}};
-  };
-  for (size_t ci = 0; ci < run.cases.size(); ++ci)
-    for (size_t i = 0; i < frames[ci].size(); ++i)
-      contact::check_hole_clearance(setup.mesh(), *setup.solver, frames[ci][i], hole_of(ci, i),
-                                    "contact.sweep");
   prepare_output_dir(out_dir + "/frames");
   // The frames folder is this command's: a previous, longer sweep's frames would outlive this one's.
   for (const auto& f : std::filesystem::directory_iterator(out_dir + "/frames"))
     if (f.is_regular_file() && f.path().extension() == ".vtp") std::filesystem::remove(f.path());
   std::ostringstream pvd;
   pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
-  // At most kMaxFrames per case, evenly spaced with both ends (a frame is ~100 kB; 100,000 positions wrote
-  // 1.8 GB in 300 s for 4 s of solving); defect.csv keeps every position.
-  const size_t stride = (frames.empty() || frames[0].size() <= kMaxFrames)
-                            ? 1
-                            : (frames[0].size() - 1 + kMaxFrames - 2) / (kMaxFrames - 1);
+  // The frames pipeline::written_frame picks (the run may keep more); defect.csv keeps every position.
   for (size_t ci = 0; ci < run.cases.size(); ++ci)
-    for (size_t i = 0; i < frames[ci].size(); ++i) {
-      if (i % stride != 0 && i + 1 != frames[ci].size()) continue;
+    for (size_t k = 0; k < frames[ci].size(); ++k) {
+      const int i = run.frame_positions[ci][k];
+      if (!pipeline::written_frame(i, sweep.positions)) continue;
       char file[64];
-      std::snprintf(file, sizeof file, "%s_%03zu.vtp", run.cases[ci].c_str(), i);
-      contact::write_pressure_vtp(out_dir + "/frames/" + file, setup.mesh(), *setup.solver, frames[ci][i],
-                                  hole_of(ci, i));
-      pvd << "<DataSet timestep=\"" << results[ci].centers[i][0] << "\" part=\"" << ci << "\" file=\"frames/"
-          << file << "\"/>\n";
+      std::snprintf(file, sizeof file, "%s_%03d.vtp", run.cases[ci].c_str(), i);
+      const Vec2& c = results[ci].centers[i];
+      contact::write_pressure_vtp(out_dir + "/frames/" + file, setup.mesh(), *setup.solver, frames[ci][k],
+                                  {Hole{c, sweep.hole_diameter, 0.0, sweep.hole_depth}});
+      pvd << "<DataSet timestep=\"" << c[0] << "\" part=\"" << ci << "\" file=\"frames/" << file << "\"/>\n";
     }
   pvd << "</Collection>\n</VTKFile>\n";
   std::ostringstream csv;
@@ -130,7 +119,7 @@ int run_defect(const Scene& scene, const std::string& out_dir, const std::vector
   check_output_dir(out_dir);
   // The coarser levels first, each freed before the next: the scene's own level sets the peak memory.
   std::vector<pipeline::ChainLevel> coarse = pipeline::largest_sliding_levels(scene, error_scales);
-  defect_stage(scene, contact_setup(scene), out_dir, std::move(coarse));
+  defect_stage(scene, contact_setup(scene), out_dir, std::move(coarse), pipeline::DefectFrames::written);
   return 0;
 }
 

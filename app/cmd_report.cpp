@@ -561,7 +561,8 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
     wall["contact"] = clock.seconds();
     if (scene.contact->sweep) {
       clock = Stopwatch();
-      defect = defect_stage(scene, contact, out_dir + "/defect");
+      // Every position's frame: the crosscheck convolves each one's tractions.
+      defect = defect_stage(scene, contact, out_dir + "/defect", {}, pipeline::DefectFrames::every);
       wall["defect"] = clock.seconds();
       clock = Stopwatch();
       x = crosscheck_run(scene, *adjoints, *contact, *defect, scene.contact->force.value_or(force),

@@ -39,10 +39,12 @@ StageOutput<pipeline::ContactRun> contact_stage(const Scene& scene, std::shared_
                                                 const std::string& out_dir, FrictionMode chosen,
                                                 const std::string& not_meridian = "");
 
-// Both sweeps of `defect` (static, then coupled sliding) with every position's contact solution; coarse:
-// pipeline::largest_sliding_levels' levels for the largest sliding signal's error bar (empty: none).
+// Both sweeps of `defect` (static, then coupled sliding), keeping the contact solutions `keep` says (the
+// written frames, or every position's); coarse: pipeline::largest_sliding_levels' levels for the largest
+// sliding signal's error bar (empty: none).
 pipeline::DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> setup,
-                                 const std::string& out_dir, std::vector<pipeline::ChainLevel> coarse = {});
+                                 const std::string& out_dir, std::vector<pipeline::ChainLevel> coarse,
+                                 pipeline::DefectFrames keep);
 
 // The hole-signal budget (app/hole_budget_stage.cpp): friction hypotheses against the paper's facts, judged
 // against the crosscheck's paper_model signals; writes its tables into out_dir (the crosscheck's).

@@ -15,6 +15,12 @@ double largest_varsigma_z(const Eigen::MatrixXd& varsigma) {
   return peak;
 }
 
+Vec2 sweep_center(const HoleSweep& sweep, int i) {
+  const double s = sweep.positions > 1 ? double(i) / (sweep.positions - 1) : 0.0;
+  return {sweep.from[0] + s * (sweep.to[0] - sweep.from[0]),
+          sweep.from[1] + s * (sweep.to[1] - sweep.from[1])};
+}
+
 SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const HoleSweep& sweep,
                        FrictionMode mode, const HoleDimples* dimples,
                        const std::function<void(int, const ContactResult&)>& frame) {
@@ -29,9 +35,7 @@ SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const H
   out.varsigma.resize(n, out.baseline.readings.size());
   std::vector<int> warm = out.baseline.active;
   for (int i = 0; i < n; ++i) {
-    const double s = n > 1 ? double(i) / (n - 1) : 0.0;
-    const Vec2 c{sweep.from[0] + s * (sweep.to[0] - sweep.from[0]),
-                 sweep.from[1] + s * (sweep.to[1] - sweep.from[1])};
+    const Vec2 c = sweep_center(sweep, i);
     out.centers.push_back(c);
     const std::vector<Hole> hole{Hole{c, sweep.hole_diameter}};
     ContactResult r;

@@ -26,6 +26,9 @@ struct SweepResult {
 // The largest |ς_z| over sensors and positions of a sweep's varsigma (MPa).
 double largest_varsigma_z(const Eigen::MatrixXd& varsigma);
 
+// The hole's centre at position i of the sweep (evenly spaced from sweep.from to sweep.to).
+Vec2 sweep_center(const HoleSweep& sweep, int i);
+
 // The hole per sweep.model: HoleModel::bulge through `dimples` (required then; contact/hole_dimple.hpp),
 // resolved by cutting the hats (needs solver.condensed().path, contact/hole_cut.hpp; without a path, by
 // removing the multipliers whose vertex it holds). frame(i, result) is called after each position (to write

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "contact/pressure_map.hpp"
 #include "mesh/sizing.hpp"
 #include "pipeline/clock.hpp"
 #include "pipeline/progress.hpp"
@@ -59,8 +60,13 @@ ChainError largest_sliding_error(const DefectRun& run) {
   return chain_errors(run.levels).at(0);
 }
 
+bool written_frame(int i, int n) {
+  const int stride = n <= kDefectFrames ? 1 : (n - 1 + kDefectFrames - 2) / (kDefectFrames - 1);
+  return i % stride == 0 || i + 1 == n;
+}
+
 DefectRun defect_run(const Scene& scene, std::shared_ptr<const ContactSetup> shared,
-                     std::vector<ChainLevel> coarse) {
+                     std::vector<ChainLevel> coarse, DefectFrames keep) {
   require_sweep(scene);
   DefectRun run;
   run.setup = std::move(shared);
@@ -70,6 +76,7 @@ DefectRun defect_run(const Scene& scene, std::shared_ptr<const ContactSetup> sha
   const std::vector<std::pair<std::string, FrictionMode>> cases{{"static", FrictionMode::static_residual},
                                                                 {"sliding", FrictionMode::coupled}};
   run.frames.resize(cases.size());
+  run.frame_positions.resize(cases.size());
   for (const auto& c : cases) check_zone(scene, setup, setup.solver->solve(c.second));
   const contact::HoleDimples dimples(*setup.solver, setup.mesh(), *setup.top, scene.material.E,
                                      scene.material.nu);
@@ -79,7 +86,14 @@ DefectRun defect_run(const Scene& scene, std::shared_ptr<const ContactSetup> sha
     Stopwatch clock;
     run.sweeps.push_back(contact::hole_sweep(
         *setup.solver, setup.mesh(), sweep, mode, &dimples, [&](int i, const contact::ContactResult& r) {
-          run.frames[ci].push_back(r);
+          contact::check_hole_clearance(
+              setup.mesh(), *setup.solver, r,
+              {Hole{contact::sweep_center(sweep, i), sweep.hole_diameter, 0.0, sweep.hole_depth}},
+              "contact.sweep");
+          if (keep == DefectFrames::every || written_frame(i, sweep.positions)) {
+            run.frames[ci].push_back(r);
+            run.frame_positions[ci].push_back(i);
+          }
           if ((i + 1) % 50 == 0 || i + 1 == sweep.positions) {
             char buf[128];
             std::snprintf(buf, sizeof buf, "sweep %s: %d/%d positions (%.1f s)", name.c_str(), i + 1,

@@ -16,11 +16,20 @@
 
 namespace skinfem::pipeline {
 
+// The frames a run keeps: the ones `skinfem defect` writes (at most kDefectFrames per case, evenly spaced
+// with both ends: a frame is ~100 kB on disk, and 100,000 positions wrote 1.8 GB), or every position's (the
+// report's crosscheck convolves each position's tractions).
+enum class DefectFrames { written, every };
+constexpr int kDefectFrames = 201;
+// Whether `skinfem defect` writes position i of n.
+bool written_frame(int i, int n);
+
 struct DefectRun {
   std::shared_ptr<const ContactSetup> setup;  // what the results refer to
   std::vector<std::string> cases;             // "static", "sliding"
   std::vector<contact::SweepResult> sweeps;   // per case: centres, ς (positions × 2·sensors, MPa), costs
-  std::vector<std::vector<contact::ContactResult>> frames;  // [case][position]: the contact with the hole
+  std::vector<std::vector<contact::ContactResult>> frames;  // [case][kept frame]: the contact with the hole
+  std::vector<std::vector<int>> frame_positions;            // [case][kept frame]: its position
   // Per case, the jaggedest curve: validation::roughness and its column of ς (σ_z of sensor k at 2k).
   std::vector<double> max_roughness;
   std::vector<int> max_roughness_column;
@@ -43,10 +52,12 @@ ChainError largest_sliding_error(const DefectRun& run);
 // Throws SceneError, naming the command's need, when the scene has no contact.sweep: before contact_setup,
 // whose condensation is the expensive part.
 void require_sweep(const Scene& scene);
-// Throws SceneError when the scene has no contact.sweep. coarse: largest_sliding_levels' result, kept in
-// the run (with this level's value appended) for largest_sliding_error.
+// Throws SceneError when the scene has no contact.sweep, or when a position's hole reaches past what the
+// mesh resolves (contact::check_hole_clearance, every position, kept or not). coarse:
+// largest_sliding_levels' result, kept in the run (with this level's value appended) for
+// largest_sliding_error.
 DefectRun defect_run(const Scene& scene, std::shared_ptr<const ContactSetup> setup,
-                     std::vector<ChainLevel> coarse = {});
+                     std::vector<ChainLevel> coarse = {}, DefectFrames keep = DefectFrames::written);
 // summary.json of `skinfem defect`: per case the peaks per sensor, complementarity, pivots, and
 // max_roughness (the largest second difference along u over its curve's peak, validation::roughness); with
 // levels, largest_sliding: the value, its error bar and how it was obtained, and the levels.

@@ -571,7 +571,8 @@ PYBIND11_MODULE(_skinfem, m) {
         std::shared_ptr<const pipeline::ContactSetup> contact = pipeline::contact_setup(scene, skin);
         const double force = scene.contact->force.value_or(
             pipeline::contact_run(scene, contact, scene.contact->friction).result().force_N);
-        const pipeline::DefectRun defect = pipeline::defect_run(scene, contact);
+        const pipeline::DefectRun defect =
+            pipeline::defect_run(scene, contact, {}, pipeline::DefectFrames::every);
         return pipeline::crosscheck_run(scene, *adjoints, *contact, defect, force,
                                         k.sensors.at(0).fe.k_lsq_line);
       },

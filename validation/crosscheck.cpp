@@ -32,6 +32,9 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
   if (!in.mesh || !in.solver || !in.fe || !in.sweeps || !in.frames || in.sweeps->size() != 2 ||
       in.frames->size() != 2)
     throw std::invalid_argument("crosscheck: needs the mesh, solver, FE Green maps and both FE sweeps");
+  for (int c = 0; c < 2; ++c)
+    if ((*in.frames)[c].size() != (*in.sweeps)[c].centers.size())
+      throw std::invalid_argument("crosscheck: needs every position's frame (pipeline::DefectFrames::every)");
   const contact::ContactSolver& solver = *in.solver;
   const contact::MortarZone& zone = solver.zone();
   const int ns = static_cast<int>(in.sensors.positions.size());
