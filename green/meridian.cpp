@@ -236,7 +236,7 @@ MeridianGreen::MeridianGreen(const MeridianMesh& m, double nu, SideCondition sid
   std::vector<int> held = m.base;
   Eigen::MatrixXd w, w_z;  // the weights of the x and z readings (the same but on a post's foot)
   if (sensor.post()) {
-    // The force on the post over its cross-section: weight 1/(πa²) on every post node, none on the base.
+    // The force on the post over its cross-section: weight 1/(πa²) on the post nodes, none on the base.
     const double a = 0.5 * sensor.diameter;
     if (m.post.empty() || std::abs(m.post_radius - a) > 1e-12 * a ||
         std::abs(m.post_height - sensor.post_height) > 1e-12 * sensor.post_height)

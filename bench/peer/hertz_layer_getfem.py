@@ -404,21 +404,29 @@ def solve_3d(p, h3d):
     pressure = sign * md.variable("lam")
     nodes = mfl_all.basic_dof_nodes(ldof)
     on_x = np.abs(nodes[1]) < 1e-9  # the radius along the symmetry plane y = 0
-    r, pr = nodes[0][on_x], pressure[on_x]
+    if failed := read_pressure(res, nodes[0][on_x], pressure[on_x]):
+        return {**res, "status": "failed", "notes": failed}
+    res.update(delta_um=1e3 * deltas[-1], force_N=forces[-1],
+               notes=f"quarter, Q2/Q1 hexahedra, {h3d} mm under the contact; {len(deltas)} depths, {iters} Newton")
+    return res
+
+
+def read_pressure(res, r, pr):
+    """The nodal pressure pr (MPa) at radii r (mm) into res: its profile sorted by r, p0 (the innermost node)
+    and the edge fit's contact radius. Returns why the edge could not be fitted, or None."""
+    import numpy as np
     order = np.argsort(r)
     res["pressure_profile"] = {"r_mm": r[order].tolist(), "p_kPa": (1e3 * pr[order]).tolist()}
     try:
         a_fit, a_lin, hc, nfit = edge_radius(r, pr)
     except RuntimeError as e:
-        return {**res, "status": "failed", "notes": f"reading a: {e}"}
+        return f"reading a: {e}"
     res.update(a_mm=a_fit, edge_fit_nodes=nfit, a_linear_crossing_mm=a_lin, p0_kPa=1e3 * float(pr[order][0]),
-               delta_um=1e3 * deltas[-1], force_N=forces[-1], edge_cell_mm=hc,
-               notes=f"quarter, Q2/Q1 hexahedra, {h3d} mm under the contact; {len(deltas)} depths, {iters} Newton")
-    return res
+               edge_cell_mm=hc)
+    return None
 
 
 def solve_meridian(p, hmer, growth=1.2, r_coarse=1.0, z_coarse=0.5):
-    import numpy as np
     import getfem as gf
     # The unbounded layer as skinfem's meridian path takes it: radius 20 h, traction-free there (at the
     # scene's 15 mm the free rim softens the layer: delta +5e-4, a and p0 within 1e-4 of this).
@@ -462,18 +470,10 @@ def solve_meridian(p, hmer, growth=1.2, r_coarse=1.0, z_coarse=0.5):
                     "half_width_mm": W}}
     if not conv:
         return {**res, "status": "not converged", "notes": f"Newton did not converge ({it} iterations)"}
-    nodes = mfl_all.basic_dof_nodes(ldof)
-    r, pr = nodes[0], md.variable("lam")
-    order = np.argsort(r)
-    res["pressure_profile"] = {"r_mm": r[order].tolist(), "p_kPa": (1e3 * pr[order]).tolist()}
-    try:
-        a_fit, a_lin, hc, nfit = edge_radius(r, pr)
-    except RuntimeError as e:
-        return {**res, "status": "failed", "notes": f"reading a: {e}"}
+    if failed := read_pressure(res, mfl_all.basic_dof_nodes(ldof)[0], md.variable("lam")):
+        return {**res, "status": "failed", "notes": failed}
     force = gf.asm_generic(mimc, 0, "2*pi*X(1)*lam", TOP, md)
-    res.update(status="ok", a_mm=a_fit, edge_fit_nodes=nfit, a_linear_crossing_mm=a_lin,
-               p0_kPa=1e3 * float(pr[order][0]), delta_um=1e3 * float(md.variable("delta")[0]),
-               force_N=float(force), edge_cell_mm=hc,
+    res.update(status="ok", delta_um=1e3 * float(md.variable("delta")[0]), force_N=float(force),
                notes=f"axisymmetric weak form, Q2/Q1 quadrangles, {hmer} mm under the contact; {it} Newton")
     return res
 
