@@ -116,10 +116,7 @@ Eigen::VectorXd SensorReadings::weights(int k, char component) const {
     for (size_t j = 0; j < modes_.size(); ++j) w += (sign * T_(row, j) / area) * phi_[j];
     return w;
   }
-  Eigen::VectorXd w = Eigen::VectorXd::Zero(3 * mesh_.num_nodes());
-  for (size_t i = 0; i < post.nodes.size(); ++i)
-    if (component != 'z' || !post.on_foot[i]) w[3 * post.nodes[i] + (component == 'z' ? 2 : 0)] = sign / area;
-  return w;
+  return (sign / area) * mode_vector({k, component});  // the held post's reaction along its rigid mode
 }
 
 Eigen::MatrixXd SensorReadings::weight_block() const {
