@@ -177,16 +177,19 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
     }
     try {
       if (m > 0) {
+        // The plain matrix (the bordered one's leading entries) is analysed first: its PORD order, the
+        // border appended last, orders the bordered matrix too (mumps_ldlt.cpp).
+        MumpsLdlt::Triplets plain;
+        plain.row.assign(t.row.begin(), t.row.begin() + plain_entries);
+        plain.col.assign(t.col.begin(), t.col.begin() + plain_entries);
+        plain.value.assign(t.value.begin(), t.value.begin() + plain_entries);
+        auto unbordered = std::make_unique<MumpsLdlt>(s.nf + s.np, std::move(plain), 0, progress, 5, false);
+        auto bordered = std::make_unique<MumpsLdlt>(s.nf + s.np + m, std::move(t), m, progress, 5, false,
+                                                    unbordered->pivot_order());
         BorderChoice& c = s.border_choice.emplace();
         c.bordered = true;
         if (coupling->solves_instead > 0) {
-          // Both analysed, the cheaper factored: the plain matrix is the bordered one's leading entries.
-          MumpsLdlt::Triplets plain;
-          plain.row.assign(t.row.begin(), t.row.begin() + plain_entries);
-          plain.col.assign(t.col.begin(), t.col.begin() + plain_entries);
-          plain.value.assign(t.value.begin(), t.value.begin() + plain_entries);
-          auto bordered = std::make_unique<MumpsLdlt>(s.nf + s.np + m, std::move(t), m, progress, 5, false);
-          auto unbordered = std::make_unique<MumpsLdlt>(s.nf + s.np, std::move(plain), 0, progress, 5, false);
+          // Both analysed, the cheaper factored.
           const auto b = bordered->analysis(), p = unbordered->analysis();
           c.bordered_flops = b.flops, c.bordered_mb = b.memory_mb;
           c.plain_flops = p.flops, c.plain_mb = p.memory_mb;
@@ -194,11 +197,12 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
           c.solve_flops = kFactorOverSolveRate * 4 * p.factor_entries * c.solves;
           c.memory_limit_mb = coupling->memory_limit_mb;
           c.bordered = c.cheaper() && c.fits();
-          s.ldlt = c.bordered ? std::move(bordered) : std::move(unbordered);
-          if (!c.bordered) m = 0;
         }
+        s.ldlt = c.bordered ? std::move(bordered) : std::move(unbordered);
+        if (!c.bordered) m = 0;
+      } else {
+        s.ldlt = std::make_unique<MumpsLdlt>(s.nf + s.np, std::move(t), 0, progress, 5, false);
       }
-      if (!s.ldlt) s.ldlt = std::make_unique<MumpsLdlt>(s.nf + s.np + m, std::move(t), m, progress, 5, false);
       s.ldlt->factor(progress);
     } catch (const std::runtime_error& e) {
       throw SolverError(std::string("cannot factor the saddle-point matrix: ") + e.what());

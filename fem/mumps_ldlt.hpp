@@ -30,8 +30,10 @@ class MumpsLdlt {
   // block A₁₁ only, returns the Schur complement S = A₂₂ − A₂₁ A₁₁⁻¹ A₁₂ (schur(), dense, symmetric), and
   // solve() solves A₁₁ x = b (b of order n − schur_size). With factor_now false only MUMPS's analysis runs
   // (ordering, symbolic factorization): analysis() says what factoring would cost, factor() factors.
+  // leading_order (optional, n − schur_size long): the leading block's pivot order, each unknown's 0-based
+  // position (pivot_order() of the leading block analysed alone); else MUMPS orders it.
   MumpsLdlt(int n, Triplets lower, int schur_size, const FactorProgress& progress = {}, double every_s = 5,
-            bool factor_now = true);
+            bool factor_now = true, const std::vector<int>& leading_order = {});
   static Triplets lower_triangle(const Eigen::SparseMatrix<double>& K);
   struct Estimate {
     double flops = 0;           // RINFOG(1)
@@ -52,6 +54,7 @@ class MumpsLdlt {
   Eigen::MatrixXd solve(Eigen::MatrixXd B) const;
   const Eigen::MatrixXd& schur() const;  // schur_size × schur_size (empty without a Schur complement)
   double factor_entries() const;         // entries in the factors (INFOG(29))
+  std::vector<int> pivot_order() const;  // each unknown's 0-based position in the analysis's pivot order
   double estimated_flops() const;        // the analysis's estimate of the factorization's flops (RINFOG(1))
   // The analysis's estimate of the factorization's memory, MB (INFOG(17)); construction refuses (throws)
   // when it exceeds the machine's available memory.
