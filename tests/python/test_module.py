@@ -248,7 +248,10 @@ def test_crosscheck_variants_are_their_ingredients(sweep_path):
     area = math.pi * SWEEP_CONTACT["sweep"]["hole_diameter"] ** 2 / 4
     centers = [[u, 0.0] for u in x.u_mm]
     for case, ratio in (("static", fr["static_ratio"]), ("sliding", fr["mu"])):
-        assert np.allclose(x.varsigma_kPa("fe", case), d.varsigma_kPa(case), rtol=1e-12, atol=1e-15)
+        # defect may condense by a bordered factorization, crosscheck by block solves of the skin it shares
+        # with kfit: the two roads agree to 1e-10 of the largest entry (tests/contact/test_condensed.cpp).
+        fe, own = x.varsigma_kPa("fe", case), d.varsigma_kPa(case)
+        assert np.allclose(fe, own, rtol=0, atol=1e-10 * np.abs(own).max())
         assert np.allclose(x.amplitude_ratio("fe", case), 1.0, rtol=1e-14)
         t = skinfem.hertz_tractions(SWEEP_CONTACT["force"], R, E, nu, ratio=ratio, layer_h_mm=h)
         rebuilt = skinfem.first_order_hole(t, kernel, s, centers, area)
