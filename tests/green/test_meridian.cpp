@@ -316,7 +316,7 @@ PostAgainstMeridian post_against_meridian(const Scene& s, const MeridianGreen& r
 
 TEST(MeridianGreen, FlatLayerAxisPostAgreesWithThe3DPost) {
   // scenes/flat_layer.json's layer and sizes with the paper's post on its axis (0.2 × 0.4 mm, meshed at the
-  // default sensor_h, half its radius); the reference is the unbounded layer's meridian post at twice
+  // default sensor_h, 0.6 of its radius); the reference is the unbounded layer's meridian post at twice
   // kfit's resolution (its own error ~1e-3 of peak, PostConvergesOnItsMeridian); the layer's free side is
   // 17 mm beyond the farthest offset, where the side's influence is below 1e-6 (README, Truncation).
   constexpr double h = 3.04;
@@ -330,14 +330,15 @@ TEST(MeridianGreen, FlatLayerAxisPostAgreesWithThe3DPost) {
   s.mesh.regions = {{{0, 0}, {0, 0}, 1.0, 0.6}, {{-12.5, 0}, {12.5, 0}, 0.5, 1.0}};
   const MeridianGreen ref = post_green([](double) { return h; }, 60, h, 0.5);
   const PostAgainstMeridian r = post_against_meridian(s, ref, {0.0, 0.5, 1.0, 2.0, 3.0});
-  // Measured (16k, 37k, 98k DOFs): zz 1.0e-2, 3.2e-3, 8.4e-4 of peak, xz 3.6e-2, 1.7e-2, 2.8e-3, zx 2.7e-2,
-  // 1.3e-2, 3.3e-3, xx 2.6e-2, 1.4e-2, 4.8e-3: orders 3.6, 3.7 (σ_z reading, mode 0) and 3.0, 2.5 (σ_x, mode
-  // 1). Before the post's foot read its normal reaction as the base's (fem/sensor_reading.hpp, Post::on_foot)
-  // the σ_z reading converged at order 1.25 (zz 3.4e-2, 2.2e-2, 1.4e-2): the foot's share of the base's
-  // pressure is an O(h) error. What is asserted: every component at order >= 1.5 (the bound; the
-  // 270° corner at the top rim alone allows 2λ = 1.09 on a mesh not graded toward it, which these levels
-  // are, at sensor_h), and every component's error at the finest level is what the 3D levels themselves say
-  // it is: at order p >= 1 the error left is |g(1) − g(1.41)| / (1.41^p − 1) <= 2.4× that change.
+  // Measured (16k, 37k, 91k DOFs): zz 6.2e-3, 2.6e-3, 1.5e-3 of peak, xz 2.8e-2, 6.6e-3, 2.7e-3, zx 1.7e-2,
+  // 9.9e-3, 4.6e-3, xx 2.5e-2, 1.3e-2, 5.9e-3: orders 2.0, 3.4 (σ_z reading, mode 0) and 1.9, 2.1 (σ_x, mode
+  // 1); with the post at 0.05 mm (98k DOFs at the finest) zz 8.4e-4, xz 2.8e-3, zx 3.3e-3, xx 4.8e-3. Before
+  // the post's foot read its normal reaction as the base's (fem/sensor_reading.hpp, Post::on_foot) the σ_z
+  // reading converged at order 1.25 (zz 3.4e-2, 2.2e-2, 1.4e-2): the foot's share of the base's pressure is
+  // an O(h) error. What is asserted: every component at order >= 1.5 (the bound; the 270° corner at
+  // the top rim alone allows 2λ = 1.09 on a mesh not graded toward it, which these levels are, at sensor_h),
+  // and every component's error at the finest level is what the 3D levels themselves say it is: at order p >=
+  // 1 the error left is |g(1) − g(1.41)| / (1.41^p − 1) <= 2.4× that change.
   for (size_t c = 0; c < 4; ++c) {
     EXPECT_GT(r.order[c], 1.5) << "component " << c;
     EXPECT_LT(r.err[c].back(), 2.5 * r.last_change[c]) << "component " << c;
