@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -80,8 +81,8 @@ struct Pass {
   std::vector<double> r;    // per multiplier
   Eigen::MatrixXd D;        // n_c × |top|: ∫ψ_i φ_k 2πr dr, mm²
   Eigen::VectorXd area, gap0;
-  Eigen::MatrixXd C, S;  // n_c × n_c compliance (mm³/MPa), 2·sensors × n_c readings (MPa per MPa)
-  int dofs = 0;          // mode 0's free unknowns
+  Eigen::MatrixXd C;  // n_c × n_c compliance, mm³/MPa
+  std::optional<MeridianMode> mode0;
 };
 
 // The readings as weights on a mode's base traction amplitudes: σ = Wr·T_r + Wt·T_θ + Wz·T_z, each
@@ -129,9 +130,8 @@ ReadingWeights reading_weights(const MeridianTrace& trace, const std::vector<std
 }
 
 Pass condense_pass(const MeridianContactSkin& skin, double zone_radius,
-                   const std::function<double(double)>& gap0,
-                   const std::vector<std::vector<DiscPoint>>& discs, const MeridianContactSizes& sizes,
-                   double edge, MeridianContactResult::Cost& cost) {
+                   const std::function<double(double)>& gap0, const MeridianContactSizes& sizes, double edge,
+                   MeridianContactResult::Cost& cost) {
   auto clock = std::chrono::steady_clock::now();
   Pass p;
   std::vector<double> tau;
@@ -169,15 +169,11 @@ Pass condense_pass(const MeridianContactSkin& skin, double zone_radius,
   cost.mesh_s += seconds_since(clock);
 
   const double mu = skin.E / (2 * (1 + skin.nu));
-  const MeridianMode mode0(m, 0, skin.nu, mu, skin.side, m.base);
+  const MeridianMode& mode0 = p.mode0.emplace(m, 0, skin.nu, mu, skin.side, m.base);
   cost.assemble_s += mode0.cost().assemble_s;
   cost.factor_s += mode0.cost().factor_s;
-  p.dofs = mode0.dofs();
   clock = std::chrono::steady_clock::now();
-  const MeridianTrace trace(m, m.base, 2 * M_PI);
-  const ReadingWeights weights = reading_weights(trace, discs, 0);
   p.C.resize(n, n);
-  p.S.resize(2 * static_cast<Eigen::Index>(discs.size()), n);
   const int N = static_cast<int>(m.nodes.rows());
   constexpr int kBlock = 16;  // right-hand sides per solve: keeps the N × block fields small
   for (int j0 = 0; j0 < n; j0 += kBlock) {
@@ -190,8 +186,6 @@ Pass condense_pass(const MeridianContactSkin& skin, double zone_radius,
     Eigen::MatrixXd Wtop(ntop, b);
     for (int k = 0; k < ntop; ++k) Wtop.row(k) = u.W.row(m.top[k]);
     p.C.middleCols(j0, b) = -p.D * Wtop;  // the gap opens as the top moves down
-    const MeridianMode::Fields R = mode0.reactions(u, load);
-    p.S.middleCols(j0, b) = weights.of(trace.traction(R.U), {}, trace.traction(R.W));
   }
   // C is symmetric up to round-off (Maxwell–Betti); the LCP's frictionless theory wants it exactly so.
   p.C = 0.5 * (p.C + p.C.transpose()).eval();
@@ -221,7 +215,7 @@ MeridianContactResult meridian_contact(const MeridianContactSkin& skin, double z
   MeridianContactResult out;
   double edge = 0;
   for (int pass = 0; pass < 2; ++pass) {
-    const Pass p = condense_pass(skin, zone_radius, gap0, discs, sizes, edge, out.cost);
+    const Pass p = condense_pass(skin, zone_radius, gap0, sizes, edge, out.cost);
     auto clock = std::chrono::steady_clock::now();
     Eigen::MatrixXd M = p.C;
     if (skin.interface_K > 0) M.diagonal() += p.area / skin.interface_K;
@@ -258,8 +252,19 @@ MeridianContactResult meridian_contact(const MeridianContactSkin& skin, double z
     out.pivots = s.pivots;
     out.multipliers = n;
     clock = std::chrono::steady_clock::now();
-    out.readings = p.S * s.lambda;
-    out.dofs = p.dofs;
+    {
+      // The readings of the pressure found: one solve (not a reading per multiplier, of which the first
+      // pass needs none).
+      const int N = static_cast<int>(p.mesh.nodes.rows());
+      MeridianMode::Fields load;
+      load.W = Eigen::MatrixXd::Zero(N, 1);
+      const Eigen::VectorXd nodal = p.D.transpose() * s.lambda;
+      for (size_t k = 0; k < p.mesh.top.size(); ++k) load.W(p.mesh.top[k], 0) = -nodal[k];
+      const MeridianMode::Fields R = p.mode0->reactions(p.mode0->solve({}, load, 1), load);
+      const MeridianTrace trace(p.mesh, p.mesh.base, 2 * M_PI);
+      out.readings = reading_weights(trace, discs, 0).of(trace.traction(R.U), {}, trace.traction(R.W)).col(0);
+    }
+    out.dofs = p.mode0->dofs();
     if (load.direction.norm() > 0) {
       // p_t = p along +x: mode 1, U = π∫pφr dr = (Dᵀλ)/2 and V = −U (header); turned to the direction.
       const MeridianMode mode1(p.mesh, 1, skin.nu, skin.E / (2 * (1 + skin.nu)), skin.side, p.mesh.base);
