@@ -168,25 +168,21 @@ Pass condense_pass(const MeridianContactSkin& skin, double zone_radius,
     }
   cost.mesh_s += seconds_since(clock);
 
+  // The zone's top nodes (those a multiplier's hat reaches): the factorization returns their W compliance
+  // as a Schur complement, and C = D G Dᵀ needs no solve.
+  std::vector<int> zone_top, zone_column;  // node, and its column of D
+  for (int k = 0; k < ntop; ++k)
+    if (p.D.col(k).cwiseAbs().maxCoeff() > 0) zone_top.push_back(m.top[k]), zone_column.push_back(k);
   const double mu = skin.E / (2 * (1 + skin.nu));
-  const MeridianMode& mode0 = p.mode0.emplace(m, 0, skin.nu, mu, skin.side, m.base);
+  const MeridianMode& mode0 = p.mode0.emplace(m, 0, skin.nu, mu, skin.side, m.base, zone_top);
   cost.assemble_s += mode0.cost().assemble_s;
   cost.factor_s += mode0.cost().factor_s;
   clock = std::chrono::steady_clock::now();
-  p.C.resize(n, n);
-  const int N = static_cast<int>(m.nodes.rows());
-  constexpr int kBlock = 16;  // right-hand sides per solve: keeps the N × block fields small
-  for (int j0 = 0; j0 < n; j0 += kBlock) {
-    const int b = std::min(kBlock, n - j0);
-    MeridianMode::Fields load;
-    load.W = Eigen::MatrixXd::Zero(N, b);
-    for (int c = 0; c < b; ++c)
-      for (int k = 0; k < ntop; ++k) load.W(m.top[k], c) = -p.D(j0 + c, k);  // the pressure pushes down
-    const MeridianMode::Fields u = mode0.solve({}, load, b);
-    Eigen::MatrixXd Wtop(ntop, b);
-    for (int k = 0; k < ntop; ++k) Wtop.row(k) = u.W.row(m.top[k]);
-    p.C.middleCols(j0, b) = -p.D * Wtop;  // the gap opens as the top moves down
-  }
+  Eigen::MatrixXd Dz(n, zone_top.size());
+  for (size_t c = 0; c < zone_column.size(); ++c)
+    Dz.col(static_cast<Eigen::Index>(c)) = p.D.col(zone_column[c]);
+  // The pressure pushes the top down and the gap opens as it moves down: C = −D (G (−Dᵀ)).
+  p.C = Dz * mode0.compliance() * Dz.transpose();
   // C is symmetric up to round-off (Maxwell–Betti); the LCP's frictionless theory wants it exactly so.
   p.C = 0.5 * (p.C + p.C.transpose()).eval();
   cost.condense_s += seconds_since(clock);
@@ -215,7 +211,7 @@ MeridianContactResult meridian_contact(const MeridianContactSkin& skin, double z
   MeridianContactResult out;
   double edge = 0;
   for (int pass = 0; pass < 2; ++pass) {
-    const Pass p = condense_pass(skin, zone_radius, gap0, sizes, edge, out.cost);
+    Pass p = condense_pass(skin, zone_radius, gap0, sizes, edge, out.cost);
     auto clock = std::chrono::steady_clock::now();
     Eigen::MatrixXd M = p.C;
     if (skin.interface_K > 0) M.diagonal() += p.area / skin.interface_K;
@@ -265,6 +261,7 @@ MeridianContactResult meridian_contact(const MeridianContactSkin& skin, double z
       out.readings = reading_weights(trace, discs, 0).of(trace.traction(R.U), {}, trace.traction(R.W)).col(0);
     }
     out.dofs = p.mode0->dofs();
+    p.mode0.reset();  // its factor is not needed any more: mode 1 factors without it alive
     if (load.direction.norm() > 0) {
       // p_t = p along +x: mode 1, U = π∫pφr dr = (Dᵀλ)/2 and V = −U (header); turned to the direction.
       const MeridianMode mode1(p.mesh, 1, skin.nu, skin.E / (2 * (1 + skin.nu)), skin.side, p.mesh.base);

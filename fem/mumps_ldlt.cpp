@@ -116,6 +116,19 @@ MumpsLdlt::MumpsLdlt(int n, Triplets lower, const FactorProgress& progress, doub
 
 MumpsLdlt::MumpsLdlt(int n, Triplets lower, int schur_size, const FactorProgress& progress, double every_s,
                      bool factor_now, const std::vector<int>& leading_order)
+    : MumpsLdlt(n, std::move(lower), schur_size, progress, every_s, factor_now, leading_order, -1) {}
+
+std::vector<int> MumpsLdlt::min_degree_order(int n, const Triplets& lower) {
+  Triplets leading;
+  for (size_t t = 0; t < lower.row.size(); ++t)
+    if (lower.row[t] < n && lower.col[t] < n)
+      leading.row.push_back(lower.row[t]), leading.col.push_back(lower.col[t]),
+          leading.value.push_back(lower.value[t]);
+  return MumpsLdlt(n, std::move(leading), 0, {}, 5, false, {}, 6).pivot_order();
+}
+
+MumpsLdlt::MumpsLdlt(int n, Triplets lower, int schur_size, const FactorProgress& progress, double every_s,
+                     bool factor_now, const std::vector<int>& leading_order, int icntl7)
     : impl_(new Impl) {
   if (schur_size < 0 || schur_size >= n)
     throw std::invalid_argument("MumpsLdlt: Schur size " + std::to_string(schur_size) + " outside [0, " +
@@ -147,7 +160,7 @@ MumpsLdlt::MumpsLdlt(int n, Triplets lower, int schur_size, const FactorProgress
   // the last bits (their generators' state carries over). PORD ends the process on graphs it cannot split
   // (a dense 300 × 300 block: "no valid number of stages in multisector"), so small systems, where the
   // ordering costs nothing anyway, keep approximate minimum fill (2), also reproducible.
-  s.id.icntl[6] = n >= kPordMinUnknowns ? 4 : 2;
+  s.id.icntl[6] = icntl7 >= 0 ? icntl7 : n >= kPordMinUnknowns ? 4 : 2;
   if (!leading_order.empty()) {
     // ICNTL(7) = 1: the given order (PERM_IN, 1-based positions), the Schur unknowns last. MUMPS orders a
     // matrix with a Schur block by approximate minimum degree whatever ICNTL(7) asks; on candelier2011's

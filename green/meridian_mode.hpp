@@ -44,8 +44,10 @@ class MeridianMode {
   // mode: 0 or 1. shear_modulus μ, MPa (displacements scale as 1/μ). held: nodes whose every component
   // solve() prescribes (the base; a post's wall and top). A held side (SideCondition::fixed) is zero.
   // Throws std::runtime_error on an inverted element.
+  // compliance_nodes (optional): nodes whose W compliance the factorization returns as well (compliance()),
+  // from MUMPS's Schur complement on their W unknowns instead of one solve per node.
   MeridianMode(const MeridianMesh& mesh, int mode, double nu, double shear_modulus, SideCondition side,
-               std::vector<int> held);
+               std::vector<int> held, const std::vector<int>& compliance_nodes = {});
   ~MeridianMode();
   MeridianMode(MeridianMode&&) noexcept;
 
@@ -56,6 +58,9 @@ class MeridianMode {
   // returns it (with its pressure).
   Fields reactions(const Fields& u, const Fields& load) const;
 
+  // |compliance_nodes|²: W at node i under a unit nodal force along z at node j (every other load zero, the
+  // held nodes at rest), mm/N; in compliance_nodes' order. Empty without compliance nodes.
+  const Eigen::MatrixXd& compliance() const { return compliance_; }
   int mode() const { return mode_; }
   int dofs() const { return free_; }  // free unknowns (displacements and pressures)
   const Cost& cost() const { return cost_; }
@@ -74,6 +79,12 @@ class MeridianMode {
       Kc_;  // ndof × ndof: the rows of constrained DOFs (fixed or tied away), all columns
   std::unique_ptr<MumpsLdlt> solver_;
   int free_ = 0;
+  // With compliance nodes their W unknowns are the last `schur_` free ones, outside the factorization: a
+  // solve eliminates them through the Schur complement S (its LDLᵀ) and the coupling block K_is.
+  int schur_ = 0;
+  Eigen::SparseMatrix<double> coupling_;  // (free − schur) × schur
+  Eigen::LDLT<Eigen::MatrixXd> schur_ldlt_;
+  Eigen::MatrixXd compliance_;
   mutable Cost cost_;
 };
 
