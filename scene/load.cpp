@@ -22,7 +22,7 @@
 //   mesh          {"h_min", "growth", "h_max", "refine_sensors"*, "sensor_h"*, "min_dihedral_deg"*,
 //                  "max_radius_edge"*, "regions"*: [{"from": [x, y], "to": [x, y], "radius", "h"*}]}
 //                 sensor_h: <mm, in (0, h_min]>, size at each sensor disc on the base (default min(h_min,
-//                 disc radius))
+//                 disc radius); around a post, up to its top, min(h_min, 0.6 × its radius))
 //   loads*        {"punches"*: [{"center", "diameter", "force" | "displacement"}],
 //                  "patches"*: [{"center", "diameter", "direction": [x, y, z], "force"}]}
 //   calibration*  {"punch_diameter"*, "scan_half_width"*, "spacing"*}
