@@ -82,6 +82,16 @@ TEST(MumpsLdlt, FailedFactorizationNeverReportsDone) {
   for (const auto& c : calls) EXPECT_LT(c.fraction, 1.0);
 }
 
+// [K G; Gᵀ 0]'s lower triangle: K's, then G's columns as the last rows.
+MumpsLdlt::Triplets bordered_lower(const Eigen::SparseMatrix<double>& K, const Eigen::MatrixXd& G) {
+  const int n = static_cast<int>(K.rows());
+  MumpsLdlt::Triplets t = MumpsLdlt::lower_triangle(K);
+  for (int j = 0; j < G.cols(); ++j)
+    for (int i = 0; i < n; ++i)
+      if (G(i, j) != 0) t.row.push_back(n + j), t.col.push_back(i), t.value.push_back(G(i, j));
+  return t;
+}
+
 TEST(MumpsLdlt, SchurComplementOfABorderedLaplacianIsTheDenseOne) {
   // [K G; Gᵀ 0] with K the Laplacian on a 40 × 40 grid and G five sparse columns: the Schur complement on
   // the last five unknowns is −Gᵀ K⁻¹ G, here against Eigen's dense LDLᵀ of K (a second method); the
@@ -91,11 +101,7 @@ TEST(MumpsLdlt, SchurComplementOfABorderedLaplacianIsTheDenseOne) {
   Eigen::MatrixXd G = Eigen::MatrixXd::Zero(n, s);
   for (int j = 0; j < s; ++j)
     for (int k = 0; k < 7; ++k) G((37 * j + 211 * k) % n, j) = 1.0 + 0.1 * k - 0.3 * j;
-  MumpsLdlt::Triplets t = MumpsLdlt::lower_triangle(K);
-  for (int j = 0; j < s; ++j)
-    for (int i = 0; i < n; ++i)
-      if (G(i, j) != 0) t.row.push_back(n + j), t.col.push_back(i), t.value.push_back(G(i, j));
-  const MumpsLdlt ldlt(n + s, std::move(t), s);
+  const MumpsLdlt ldlt(n + s, bordered_lower(K, G), s);
   const Eigen::MatrixXd full =
       Eigen::MatrixXd(Eigen::SparseMatrix<double>(K.selfadjointView<Eigen::Lower>()));
   const Eigen::LDLT<Eigen::MatrixXd> dense(full);
@@ -118,20 +124,13 @@ TEST(MumpsLdlt, BorderedMatrixTakesThePlainMatrixsPivotOrder) {
   Eigen::MatrixXd G = Eigen::MatrixXd::Zero(n, s);
   for (int j = 0; j < s; ++j)
     for (int k = 0; k < 40; ++k) G((53 * j + 197 * k) % n, j) = 1.0 + 0.01 * k - 0.2 * j;
-  const auto bordered = [&] {
-    MumpsLdlt::Triplets t = MumpsLdlt::lower_triangle(K);
-    for (int j = 0; j < s; ++j)
-      for (int i = 0; i < n; ++i)
-        if (G(i, j) != 0) t.row.push_back(n + j), t.col.push_back(i), t.value.push_back(G(i, j));
-    return t;
-  };
   MumpsLdlt plain(n, MumpsLdlt::lower_triangle(K), 0, {}, 5, false);
   const std::vector<int> order = plain.pivot_order();
   ASSERT_EQ(static_cast<int>(order.size()), n);
-  EXPECT_THROW(MumpsLdlt(n + s, bordered(), s, {}, 5, false, std::vector<int>(n - 1, 0)),
+  EXPECT_THROW(MumpsLdlt(n + s, bordered_lower(K, G), s, {}, 5, false, std::vector<int>(n - 1, 0)),
                std::invalid_argument);
-  const MumpsLdlt own(n + s, bordered(), s, {}, 5, false);
-  const MumpsLdlt ordered(n + s, bordered(), s, {}, 5, true, order);
+  const MumpsLdlt own(n + s, bordered_lower(K, G), s, {}, 5, false);
+  const MumpsLdlt ordered(n + s, bordered_lower(K, G), s, {}, 5, true, order);
   EXPECT_LE(ordered.analysis().factor_entries, own.analysis().factor_entries);
   plain.factor();
   const Eigen::MatrixXd expected = -G.transpose() * plain.solve(G);
