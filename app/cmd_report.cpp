@@ -18,13 +18,16 @@
 // (scripts/figures.py, matplotlib) and DIR/report.json (the headline numbers with units, wall seconds per
 // stage, peak memory) and DIR/index.html (figures, tables, links to every VTK file).
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <optional>
-#include <regex>
 #include <sstream>
+#include <string>
+#include <utility>
 
 #include "app/chain_study.hpp"
 #include "app/commands.hpp"
@@ -201,19 +204,39 @@ std::string with_error(double value, double error) {
   return e.empty() ? v : v + " +- " + e;
 }
 
+// A word of the terminal's ASCII in the page's notation: um → µm, sigma[_]c → σc and varsigma[_]c → ςc
+// for a component c of x, y, z or none; any other word as it is.
+std::string page_word(const std::string& w) {
+  if (w == "um") return "µm";
+  for (const auto& [name, symbol] : {std::pair{"varsigma", "ς"}, std::pair{"sigma", "σ"}}) {
+    if (w.rfind(name, 0) != 0) continue;
+    std::string c = w.substr(std::strlen(name));
+    if (!c.empty() && c[0] == '_') c.erase(0, 1);
+    if (c.empty() || (c.size() == 1 && c[0] >= 'x' && c[0] <= 'z')) return symbol + c;
+  }
+  return w;
+}
+
 // Text for the page: escaped, and in the page's notation where the shared sentences write the terminal's
-// ASCII (±, µm, ς and σ with their component).
+// ASCII (±, µm, ς and σ with their component; words as a regular expression's \w+ delimits them).
 std::string html_escape(const std::string& s) {
   std::string o;
   for (char c : s) o += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
-  static const std::array<std::pair<std::regex, const char*>, 4> notation{{
-      {std::regex(R"(\+-)"), "±"},
-      {std::regex(R"(\bum\b)"), "µm"},
-      {std::regex(R"(\bvarsigma_?([xyz]?)\b)"), "ς$1"},
-      {std::regex(R"(\bsigma_?([xyz]?)\b)"), "σ$1"},
-  }};
-  for (const auto& [pattern, with] : notation) o = std::regex_replace(o, pattern, with);
-  return o;
+  const auto word_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  std::string page;
+  for (size_t i = 0; i < o.size();) {
+    if (o.compare(i, 2, "+-") == 0) {
+      page += "±", i += 2;
+    } else if (!word_char(o[i])) {
+      page += o[i++];
+    } else {
+      size_t j = i;
+      while (j < o.size() && word_char(o[j])) ++j;
+      page += page_word(o.substr(i, j - i));
+      i = j;
+    }
+  }
+  return page;
 }
 
 // The figures in the paper's order (its figures 1-4 first), each with what it plots; a figure not listed

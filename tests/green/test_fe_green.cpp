@@ -58,7 +58,8 @@ const SmallLayer& small_layer() {
   return l;
 }
 
-// The shipped flat-layer scene (h = 3.04 mm, half width 20 mm, one sensor at the origin), no punch.
+// The flat layer of tests/green/data (scenes/flat_layer.json with its former 1 mm sensor region: h = 3.04 mm,
+// half width 20 mm, one sensor at the origin), no punch.
 struct ShippedLayer {
   Scene scene;
   TetMesh mesh;

@@ -315,10 +315,11 @@ PostAgainstMeridian post_against_meridian(const Scene& s, const MeridianGreen& r
 }
 
 TEST(MeridianGreen, FlatLayerAxisPostAgreesWithThe3DPost) {
-  // scenes/flat_layer.json's layer and sizes with the paper's post on its axis (0.2 × 0.4 mm, meshed at the
-  // default sensor_h, 0.6 of its radius); the reference is the unbounded layer's meridian post at twice
-  // kfit's resolution (its own error ~1e-3 of peak, PostConvergesOnItsMeridian); the layer's free side is
-  // 17 mm beyond the farthest offset, where the side's influence is below 1e-6 (README, Truncation).
+  // The flat layer with a 1 mm sensor region (scenes/flat_layer.json's former sizes), the paper's post on its
+  // axis (0.2 × 0.4 mm, meshed at the default sensor_h, 0.6 of its radius); the reference is the unbounded
+  // layer's meridian post at twice kfit's resolution (its own error ~1e-3 of peak,
+  // PostConvergesOnItsMeridian); the layer's free side is 17 mm beyond the farthest offset, where the side's
+  // influence is below 1e-6 (README, Truncation).
   constexpr double h = 3.04;
   Scene s;
   s.geometry.kind = GeometryKind::flat;
