@@ -65,9 +65,9 @@ ChainLevel level_of(const Scene& s, double scale) {
   RssSampler memory;  // the level's own peak, not the larger one's before it
   ChainLevel l;
   {
-    const auto skin = skin_setup(s, contact_mesh_part(s));
-    const auto adj = adjoint_setup(s, skin);
-    const auto contact = s.contact ? contact_setup(s, skin) : nullptr;
+    ContactSkin factored = chain_skin(s);
+    const auto adj = adjoint_setup(s, factored.skin);
+    const auto contact = s.contact ? contact_setup(s, std::move(factored)) : nullptr;
     l = chain_values(s, *adj, contact.get());
   }
   l.scale = scale;

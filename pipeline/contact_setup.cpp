@@ -13,66 +13,94 @@
 
 namespace skinfem::pipeline {
 
-std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<Skin> skin,
-                                            HolePath hole_path) {
+namespace {
+void throw_unless_contact(const Scene& scene) {
   if (!scene.contact)
     throw SceneError(scene.source_path + ": contact: missing; this command needs a \"contact\" section");
-  const Vec2 centre = contact_center(scene);
-  const double zone_radius = contact_zone_radius(scene);
+}
+
+// The zone and the faces a swept hole reaches, found once, on the skin's mesh.
+void find_zone(const Scene& scene, const TetMesh& mesh, ContactSkin& cs) {
   const auto& sweep = scene.contact->sweep;
-  const bool watch = sweep && (hole_path == HolePath::always ||
-                               (hole_path == HolePath::as_scene && sweep->model == HoleModel::resolved));
-  // A skin meshed here is factored bordered by the condensation's columns: the factorization gives every
-  // product the condensation needs (contact/condensed.hpp). Posts on springs read through the factored
-  // skin itself, so their columns come after it: block solves.
-  std::unique_ptr<contact::CondenseColumns> columns;
-  // The zone and the faces a swept hole reaches: found once, on the skin's mesh.
-  std::optional<contact::MortarZone> zone;
-  std::vector<int> watch_faces;
-  const auto find_zone = [&](const TetMesh& mesh) {
-    zone = contact::mortar_zone(mesh, centre, zone_radius);
-    if (watch)
-      watch_faces = contact::watch_path(mesh, *zone, sweep->from, sweep->to, 0.5 * sweep->hole_diameter);
-  };
+  const bool watch = sweep && (cs.hole_path == HolePath::always ||
+                               (cs.hole_path == HolePath::as_scene && sweep->model == HoleModel::resolved));
+  cs.zone = contact::mortar_zone(mesh, contact_center(scene), contact_zone_radius(scene));
+  if (watch)
+    cs.watch_faces = contact::watch_path(mesh, *cs.zone, sweep->from, sweep->to, 0.5 * sweep->hole_diameter);
+}
+}  // namespace
+
+ContactSkin contact_skin(const Scene& scene, HolePath hole_path) {
+  throw_unless_contact(scene);
+  ContactSkin cs;
+  cs.hole_path = hole_path;
   const bool springs = scene.sensors.model == SensorModel::post && !scene.sensors.post.support.rigid();
-  if (!skin && !springs)
-    skin = skin_setup(scene, contact_mesh_part(scene), [&](const TetMesh& mesh) {
-      find_zone(mesh);
-      columns = std::make_unique<contact::CondenseColumns>(contact::condense_columns(
-          mesh, *zone, SensorReadings(mesh, reading_sites(scene.sensors)).weight_block(),
-          scene.contact->direction, watch_faces));
-      // Within the memory the run was admitted with (check_resources found this estimate available): a
-      // bound that depends on the scene only, so its choice does not change with the machine's load.
-      columns->coupling.memory_limit_mb = 1024 * estimated_memory_gb(unknowns_bound(mesh));
-      return &columns->coupling;
-    });
-  auto s =
-      std::make_unique<ContactSetup>(skin ? std::move(skin) : skin_setup(scene, contact_mesh_part(scene)));
+  if (springs) {
+    cs.skin = skin_setup(scene, contact_mesh_part(scene));
+    return cs;
+  }
+  cs.skin = skin_setup(scene, contact_mesh_part(scene), [&](const TetMesh& mesh) {
+    find_zone(scene, mesh, cs);
+    cs.columns = std::make_unique<contact::CondenseColumns>(contact::condense_columns(
+        mesh, *cs.zone, SensorReadings(mesh, reading_sites(scene.sensors)).weight_block(),
+        scene.contact->direction, cs.watch_faces));
+    // Within the memory the run was admitted with (check_resources found this estimate available): a
+    // bound that depends on the scene only, so its choice does not change with the machine's load.
+    cs.columns->coupling.memory_limit_mb = 1024 * estimated_memory_gb(unknowns_bound(mesh));
+    return &cs.columns->coupling;
+  });
+  return cs;
+}
+
+ContactSkin chain_skin(const Scene& scene, HolePath hole_path) {
+  if (scene.contact) return contact_skin(scene, hole_path);
+  ContactSkin cs;
+  cs.skin = skin_setup(scene, contact_mesh_part(scene));
+  return cs;
+}
+
+std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<Skin> skin,
+                                            HolePath hole_path) {
+  if (skin) {
+    throw_unless_contact(scene);
+    ContactSkin cs;
+    cs.skin = std::move(skin);
+    cs.hole_path = hole_path;
+    return contact_setup(scene, std::move(cs));
+  }
+  return contact_setup(scene, contact_skin(scene, hole_path));
+}
+
+std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, ContactSkin cs) {
+  throw_unless_contact(scene);
+  const Vec2 centre = contact_center(scene);
+  auto s = std::make_unique<ContactSetup>(cs.skin);
   s->wall = s->skin->wall;
   Stopwatch clock;
   const TetMesh& solved = s->skin->mesh;
-  s->zone_radius = zone_radius;
+  s->zone_radius = contact_zone_radius(scene);
   s->zone_h = contact_zone_h(scene);
   s->indenter = std::make_unique<contact::Indenter>(scene, solved);
-  if (!zone) find_zone(solved);
+  if (!cs.zone) find_zone(scene, solved, cs);
+  const contact::MortarZone& zone = *cs.zone;
   if (is_half_y(solved)) {
     if (!contact_mirror_unavailable(scene).empty())
       throw std::logic_error("contact_setup: a half skin for a contact that is not mirror-symmetric");
     s->whole = std::make_unique<TetMesh>(mirror_half(solved, &s->source));
     s->mirror = std::make_unique<contact::MirrorView>(
-        contact::mirror_view(*s->whole, s->source, *zone, centre, zone_radius));
+        contact::mirror_view(*s->whole, s->source, zone, centre, s->zone_radius));
   }
   Stopwatch condense_clock;
   s->readings = std::make_unique<SensorReadings>(solved, reading_sites(scene.sensors), &s->model->solver());
   s->condensed = std::make_unique<contact::CondensedContact>(contact::condense(
-      *s->model, *zone, *s->indenter, *s->readings, scene.contact->direction,
+      *s->model, zone, *s->indenter, *s->readings, scene.contact->direction,
       [&](double fraction, const std::string& what) {
         char buf[160];
         std::snprintf(buf, sizeof buf, "%s: %.0f %% (%.1f s)", what.c_str(), 100 * fraction,
                       condense_clock.seconds());
         progress(buf);
       },
-      watch_faces, columns.get()));
+      cs.watch_faces, cs.columns.get()));
   s->solver = std::make_unique<contact::ContactSolver>(*s->condensed, *scene.contact, s->mirror.get());
   s->top = std::make_unique<PlanarFaceIndex>(s->mesh(), kTop);
   s->wall["condense"] = clock.seconds();

@@ -7,8 +7,12 @@
 
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <vector>
 
+#include "contact/condensed.hpp"
 #include "contact/contact_solver.hpp"
+#include "contact/mortar.hpp"
 #include "fem/face_index.hpp"
 #include "fem/sensor_reading.hpp"
 #include "pipeline/skin_setup.hpp"
@@ -39,8 +43,27 @@ struct ContactSetup {
 // interface hypotheses resolved).
 enum class HolePath { none, as_scene, always };
 
-// Throws SceneError when the scene has no contact section. skin: an already factored skin of this scene (its
-// half when contact_mesh_part says so), or null to mesh and factor one.
+// A skin of this scene meshed and factored for its contact (its half where contact_mesh_part says so):
+// bordered by the condensation's columns where MUMPS's estimates make that the cheaper road
+// (contact/condensed.hpp), so that the condensation costs no solve. Every other stage sharing the skin
+// (green's and kfit's adjoint solves) solves on the interior block, the skin's own factor, unchanged. Posts
+// on springs read through the factored skin itself, so their columns come after it: a plain factorization.
+struct ContactSkin {
+  std::shared_ptr<Skin> skin;
+  HolePath hole_path = HolePath::as_scene;
+  std::unique_ptr<contact::CondenseColumns> columns;  // null: the condensation's columns by block solves
+  std::optional<contact::MortarZone> zone;            // on the skin's mesh, once found
+  std::vector<int> watch_faces;                       // the faces a swept hole reaches (hole_path)
+};
+// Throws SceneError when the scene has no contact section.
+ContactSkin contact_skin(const Scene& scene, HolePath hole_path = HolePath::as_scene);
+// The skin every stage of a chain shares (report, its error levels): contact_skin with a contact, else a
+// plain factorization.
+ContactSkin chain_skin(const Scene& scene, HolePath hole_path = HolePath::as_scene);
+// The condensation on that skin.
+std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, ContactSkin skin);
+// skin: an already factored skin of this scene (its half when contact_mesh_part says so; its condensation
+// then by block solves), or null to make one by contact_skin.
 std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, std::shared_ptr<Skin> skin = nullptr,
                                             HolePath hole_path = HolePath::as_scene);
 
