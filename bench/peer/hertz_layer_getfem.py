@@ -24,7 +24,12 @@ Rows of the table:
                     Newton solve is force controlled. Like skinfem's meridian path it takes the unbounded
                     layer as a disc of radius 20 h, traction-free at its rim (the 3D rows: the scene's
                     square, half width 15 mm).
-The contact in both GetFEM rows is the exact solution's linear one: the gap is vertical and measured in the
+  skinfem 3d_whole  the same on the whole layer ("symmetry": "none"), the mesh GetFEM 3d_whole reads
+  GetFEM 3d_whole   skinfem's own mesh of the whole layer (`skinfem mesh`, 10-node tetrahedra as GT_PK(3,2)),
+                    P2/P1 Taylor-Hood with the linear incompressibility brick, and the meridian model's
+                    force-controlled contact term in 3D (int lam dA = F): one Newton solve. The fair 3D
+                    comparison: the same mesh, the same read-off of a as skinfem's (edge_fit_radius).
+The contact in every GetFEM row is the exact solution's linear one: the gap is vertical and measured in the
 reference configuration, g = r^2 / (2R) - delta - u_z on z = h (the paraboloid of the sphere).
 
 Each run is a subprocess of its own; its seconds are its wall time and its peak memory its own maximum
@@ -91,10 +96,21 @@ def with_errors(row):
     return row
 
 
+def whole_scene(out):
+    """The scene solved on the whole layer ("symmetry": "none"), as skinfem's 3d_whole row and the GetFEM
+    model on skinfem's own mesh take it."""
+    scene = json.loads((REPO / SCENE).read_text())
+    scene["symmetry"] = "none"
+    path = out / "hertz_layer_whole.json"
+    path.write_text(json.dumps(scene, indent=1))
+    return path
+
+
 def skinfem_row(binary, path, out):
     row = {"code": "skinfem", "path": path}
     out_dir = out / f"skinfem_{path}"
-    cmd = [str(binary), "contact", SCENE, "--path", path, "--out", str(out_dir)]
+    scene, solver_path = (whole_scene(out), "3d") if path == "3d_whole" else (REPO / SCENE, path)
+    cmd = [str(binary), "contact", str(scene), "--path", solver_path, "--out", str(out_dir)]
     print("running:", " ".join(cmd), flush=True)
     if not Path(binary).is_file():
         return {**row, "status": "skipped", "notes": f"no skinfem binary at {binary}"}
@@ -126,6 +142,13 @@ def getfem_row(python, case, args, out):
     result_path.unlink(missing_ok=True)
     cmd = [python, str(Path(__file__).resolve()), "--worker", case, "--result", str(result_path),
            "--h3d", str(args.h3d), "--hmer", str(args.hmer)]
+    if case == "3d_whole":  # skinfem's own mesh of the whole layer, as its 3d_whole row solves it
+        mesh_dir = out / "skinfem_mesh_whole"
+        rc, _, _ = measured_run([str(REPO / args.skinfem), "mesh", str(whole_scene(out)), "--out", str(mesh_dir)],
+                                out / "skinfem_mesh_whole.log")
+        if rc != 0:
+            return {**row, "status": "failed", "notes": f"skinfem mesh exit {rc} (see skinfem_mesh_whole.log)"}
+        cmd += ["--mesh", str(mesh_dir / "mesh.vtu")]
     print("running:", " ".join(cmd), flush=True)
     rc, wall, peak = measured_run(cmd, out / f"getfem_{case}.log")
     row.update(seconds=wall, peak_mb=peak)
@@ -168,10 +191,13 @@ def main():
     ap.add_argument("--hmer", type=float, default=0.02, help="GetFEM meridian: cell size under the contact, mm")
     ap.add_argument("--skip-skinfem", action="store_true")
     ap.add_argument("--skip-getfem", action="store_true")
-    ap.add_argument("--cases", default="3d,meridian", help="which paths to run (comma separated)")
+    ap.add_argument("--cases", default="3d,meridian,3d_whole",
+                    help="which paths to run (comma separated): 3d (skinfem's half; GetFEM's hexahedral quarter), "
+                    "meridian, 3d_whole (skinfem's whole layer; GetFEM on skinfem's own tetrahedral mesh of it)")
     ap.add_argument("--exact", action="store_true", help="solve the exact layer again (numpy) and print it")
     # internal: one GetFEM solve in this process
-    ap.add_argument("--worker", choices=["3d", "meridian"], help=argparse.SUPPRESS)
+    ap.add_argument("--worker", choices=["3d", "meridian", "3d_whole"], help=argparse.SUPPRESS)
+    ap.add_argument("--mesh", help=argparse.SUPPRESS)
     ap.add_argument("--result", help=argparse.SUPPRESS)
     args = ap.parse_args()
     if args.worker:
@@ -411,6 +437,88 @@ def solve_3d(p, h3d):
     return res
 
 
+def edge_fit_radius(r, p):
+    """skinfem's read-off of a (contact/metrics.hpp edge_fit_radius), for a scattered top: p^2 at the active
+    nodes with r >= 0.6 of the largest active r, fitted by alpha + beta r^2 + gamma r^4; the root nearest
+    the largest active r. Active: p above 2 % of its peak, for the weak complementarity's tail outside the
+    contact (up to 1 % of the peak at the first nodes out, alternating in sign; skinfem's LCP has none)."""
+    import numpy as np
+    act = p > 0.02 * p.max()
+    r_max = r[act].max()
+    band = act & (r >= 0.6 * r_max)
+    c = np.polyfit(r[band] ** 2, p[band] ** 2, 2)
+    roots = np.roots(c)
+    roots = roots[np.isreal(roots) & (roots.real > 0)].real
+    return float(np.sqrt(roots[np.argmin(np.abs(roots - r_max ** 2))])), int(band.sum())
+
+
+def solve_3d_tet(p, mesh_vtu):
+    """The whole layer on skinfem's own mesh (10-node tetrahedra, graded toward the contact zone and the
+    sensors as skinfem meshes it): P2 displacement / P1 pressure, u = 0 on the base, and the meridian
+    model's force-controlled Alart-Curnier contact term on the top (a P1 multiplier, the depth an unknown
+    with the force equation int lam dA = F): one Newton solve."""
+    import numpy as np
+    import getfem as gf
+    import vtk
+    from vtk.util.numpy_support import vtk_to_numpy
+    h, W, R, F = p["h"], p["W"], p["R"], p["F"]
+    mu = p["E"] / (2 * (1 + p["nu"]))
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(mesh_vtu)
+    reader.Update()
+    grid = reader.GetOutput()
+    X = vtk_to_numpy(grid.GetPoints().GetData())
+    cells = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 10)
+    # VTK's quadratic tetrahedron: vertices 0-3, then edges 01, 12, 20, 03, 13, 23; GetFEM's GT_PK(3,2): the
+    # lattice points, x fastest: v0, 01, v1, 02, 12, v2, 03, 13, 23, v3.
+    pts = X[cells[:, [0, 4, 1, 6, 5, 2, 7, 8, 9, 3]]]  # cells x 10 x 3
+    m = gf.Mesh("empty", 3)
+    m.add_convex(gf.GeoTrans("GT_PK(3,2)"), np.ascontiguousarray(pts.transpose(2, 1, 0)))
+    TOP, BASE = 1, 2
+    for rid, v in ((TOP, [0, 0, 1]), (BASE, [0, 0, -1])):
+        m.set_region(rid, m.outer_faces_with_direction(v, 0.01))
+    mfu, mfp, mfl_all, ldof, mfl = taylor_hood_spaces(m, 3, TOP)
+    mim = gf.MeshIm(m, gf.Integ("IM_TETRAHEDRON(5)"))
+    mimc = gf.MeshIm(m, gf.Integ("IM_TETRAHEDRON(8)"))
+    volume = gf.asm_generic(mim, 0, "1", -1)
+    if abs(volume / (4 * W * W * h) - 1) > 1e-9:
+        raise RuntimeError(f"the imported mesh's volume {volume} is not the layer's {4 * W * W * h}")
+    # The cell size under the contact, for the augmentation: the mean edge of the top faces within 3 mm.
+    top_nodes = mfl_all.basic_dof_nodes(ldof)
+    md = gf.Model("real")
+    md.add_fem_variable("u", mfu)
+    md.add_fem_variable("p", mfp)
+    md.add_fem_variable("lam", mfl)  # contact pressure, >= 0
+    md.add_variable("delta", 1)
+    md.set_variable("delta", [hertz_halfspace_delta(p)])
+    h_top = 2 * W / math.sqrt(len(ldof))  # rough: only sets the augmentation's scale
+    for name, v in (("mu", mu), ("lmb", 0.0), ("R", R), ("F", F), ("A", 4 * W * W), ("raug", p["E"] / h_top)):
+        md.add_initialized_data(name, [v])
+    md.add_isotropic_linearized_elasticity_brick(mim, "u", "lmb", "mu")
+    md.add_linear_incompressibility_brick(mim, "u", "p")
+    md.add_Dirichlet_condition_with_simplification("u", BASE)
+    md.add_nonlinear_term(mimc, "lam*Test_u(3)", TOP)
+    md.add_nonlinear_term(mimc, "-1/raug*(lam - pos_part(lam - raug*((sqr(X(1))+sqr(X(2)))/(2*R) - delta - u(3))))"
+                                "*Test_lam", TOP)
+    md.add_nonlinear_term(mimc, "(lam - F/A)*Test_delta", TOP)
+    it, conv = newton(md, "3d, skinfem's mesh", LOG)
+    res = {"dofs": int(md.nbdof()), "newton_iterations": it,
+           "mesh": {"cells": int(m.nbcvs()), "nodes": int(len(X)), "top_multipliers": int(len(ldof)),
+                    "source": mesh_vtu, "half_width_mm": W}}
+    if not conv:
+        return {**res, "status": "not converged", "notes": f"Newton did not converge ({it} iterations)"}
+    lam = md.variable("lam")
+    r = np.hypot(top_nodes[0], top_nodes[1])
+    order = np.argsort(r)
+    res["pressure_profile"] = {"r_mm": r[order].tolist(), "p_kPa": (1e3 * lam[order]).tolist()}
+    a, nfit = edge_fit_radius(r, lam)
+    force = gf.asm_generic(mimc, 0, "lam", TOP, md)
+    res.update(status="ok", a_mm=a, edge_fit_nodes=nfit, p0_kPa=1e3 * float(lam.max()),
+               delta_um=1e3 * float(md.variable("delta")[0]), force_N=float(force),
+               notes=f"skinfem's whole mesh, P2/P1 tetrahedra, force controlled; {it} Newton")
+    return res
+
+
 def read_pressure(res, r, pr):
     """The nodal pressure pr (MPa) at radii r (mm) into res: its profile sorted by r, p0 (the innermost node)
     and the edge fit's contact radius. Returns why the edge could not be fitted, or None."""
@@ -486,7 +594,12 @@ def worker(args):
     p = load_problem()
     t0 = time.perf_counter()
     try:
-        res = solve_3d(p, args.h3d) if args.worker == "3d" else solve_meridian(p, args.hmer)
+        if args.worker == "3d":
+            res = solve_3d(p, args.h3d)
+        elif args.worker == "3d_whole":
+            res = solve_3d_tet(p, args.mesh)
+        else:
+            res = solve_meridian(p, args.hmer)
     except Exception as e:  # a failed GetFEM run is a row that says so
         res = {"status": "failed", "notes": f"{type(e).__name__}: {e}"}
     res["solve_seconds"] = time.perf_counter() - t0
