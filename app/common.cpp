@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -27,6 +28,15 @@ void check_output_dir(const std::string& dir) {
   if (dir.empty()) throw SceneError("--out '': must name a directory (an empty path names none)");
   std::error_code ec;
   fs::path p = fs::absolute(dir, ec);
+  // A name longer than the file system takes (ENAMETOOLONG) would fail only when the first file is written.
+  const std::string shown = dir.size() > 60 ? dir.substr(0, 40) + "..." + dir.substr(dir.size() - 12) : dir;
+  if (p.string().size() >= PATH_MAX)
+    throw SceneError("--out " + shown + ": the path has " + std::to_string(p.string().size()) +
+                     " characters; allowed fewer than " + std::to_string(PATH_MAX));
+  for (const fs::path& part : p)
+    if (part.string().size() > NAME_MAX)
+      throw SceneError("--out " + shown + ": a name in the path has " + std::to_string(part.string().size()) +
+                       " characters; allowed at most " + std::to_string(NAME_MAX) + " per name");
   if (fs::exists(p, ec) && !fs::is_directory(p, ec))
     throw SceneError("--out " + dir + ": exists and is not a directory; must be a directory or a new path");
   while (!p.empty() && !fs::exists(p, ec)) p = p.parent_path();

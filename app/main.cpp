@@ -165,6 +165,7 @@ int main(int argc, char** argv) {
     const skinfem::Scene scene = skinfem::load_scene(scene_path);
     const std::string command = cli.get_subcommands().front()->get_name();
     const std::string out = report->parsed() && !report->count("--out") ? "out/" + scene.name : out_dir;
+    skinfem::app::check_output_dir(out);
     skinfem::app::check_run_record(out, command);
     const auto path = path_name == "3d"         ? skinfem::app::GreenPath::full3d
                       : path_name == "meridian" ? skinfem::app::GreenPath::meridian

@@ -137,13 +137,16 @@ struct Rule {
   std::function<bool(double)> ok;
 };
 // Lengths (mm) and forces (N) are bounded so that every derived number stays far from overflow: 10 m and
-// 1 MN are beyond any tactile skin.
-constexpr double kMaxLength = 1e4, kMaxForce = 1e6;
+// 1 MN are beyond any tactile skin. Forces also from below, so that the loads and the pressures the solvers
+// scale stay normal doubles (a subnormal contact force reached the contact solver as 0): 1 nN is far below
+// any tactile sensor's resolution.
+constexpr double kMaxLength = 1e4, kMinForce = 1e-9, kMaxForce = 1e6;
 Rule length() {
   return {"a length in (0, " + fmt(kMaxLength) + "] mm", [](double x) { return x > 0 && x <= kMaxLength; }};
 }
 Rule force_rule() {
-  return {"a force in (0, " + fmt(kMaxForce) + "] N", [](double x) { return x > 0 && x <= kMaxForce; }};
+  return {"a force in [" + fmt(kMinForce) + ", " + fmt(kMaxForce) + "] N",
+          [](double x) { return x >= kMinForce && x <= kMaxForce; }};
 }
 Rule non_negative() {
   return {"a number >= 0", [](double x) { return x >= 0; }};

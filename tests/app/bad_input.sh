@@ -99,9 +99,10 @@ bad h_min_above_h_max 'd["mesh"]["h_min"] = 4' 'mesh.h_max = 3.0: must be a numb
 bad sensor_h_above_h_min 'd["mesh"]["sensor_h"] = 0.5' 'mesh.sensor_h = 0.5: must be a number in \(0, mesh.h_min = 0.4\]'
 bad growth_one 'd["mesh"]["growth"] = 1' 'mesh.growth = 1: must be a number > 1'
 bad h_min_negative 'd["mesh"]["h_min"] = -0.4' 'mesh.h_min = -0.4: must be a length'
+bad contact_force_subnormal 'd["contact"] = {"indenter": {"type": "sphere", "R": 50, "center": [0, 0]}, "force": 5e-324}' 'contact.force = 5e-324: must be a force in \[1e-09, 1e\+06\] N' mesh
 bad punch_both "$punch[\"displacement\"] = 0.01" 'loads.punches\[0\] = .*exactly one of "force" \(N\) or "displacement"'
 bad punch_neither "del $punch[\"force\"]" 'loads.punches\[0\] = .*exactly one of "force"'
-bad punch_force_huge "$punch[\"force\"] = 1e200" 'loads.punches\[0\].force = 1e\+200: must be a force in \(0, 1e\+06\] N'
+bad punch_force_huge "$punch[\"force\"] = 1e200" 'loads.punches\[0\].force = 1e\+200: must be a force in \[1e-09, 1e\+06\] N'
 bad punch_at_edge "$punch[\"center\"] = [7.5, 0]; $punch[\"diameter\"] = 1" 'loads.punches\[0\].center = \[7.5,0.0\]: the load disc .* must lie on the skin'
 bad punch_tiny "$punch[\"diameter\"] = 1e-9" 'loads.punches\[0\].diameter = 1e-09: must be >= 1e-6 x the skin.s width'
 bad punch_wider_than_layer "$punch[\"diameter\"] = 100" 'loads.punches\[0\].center = .*must lie on the skin'
@@ -214,6 +215,9 @@ check max_dofs_negative '--max-dofs: -1: must be a number >= 0' "$skinfem" mesh 
 check grid_subnormal '--grid = 4.94066e-324: the kernel grid .* would have inf points' "$skinfem" green "$tmp/base.json" --grid 5e-324 --out "$tmp/out"
 check grid_text '--grid: abc: must be a number' "$skinfem" green "$tmp/base.json" --grid abc --out "$tmp/out"
 check out_empty "--out '': must name a directory" "$skinfem" mesh "$tmp/base.json" --out ""
+long_name=$(printf 'x%.0s' $(seq 1 300))
+check out_name_too_long '--out .*: a name in the path has 300 characters; allowed at most 255 per name' \
+  "$skinfem" mesh "$tmp/base.json" --out "$tmp/$long_name/out"
 "$skinfem" mesh "$tmp/base.json" --out "$tmp/owned" >/dev/null 2>&1 || echo "FAIL: mesh into $tmp/owned"
 check out_owned_by_another '--out .*owned: holds the results of `skinfem mesh` \(run.json\); `skinfem solve` would mix' "$skinfem" solve "$tmp/base.json" --out "$tmp/owned"
 check study_ridges_coarse '--ridges: 2.000000: a level must give at least 3 mesh elements per ridge period' "$skinfem" study "$tmp/ridged.json" --ridges 2,3,4 --out "$tmp/out"
@@ -238,7 +242,7 @@ bad sweep_hole_model_unknown "$sphere, \"sweep\": {\"from\": [-1, 0], \"to\": [1
 bad depth_through_skin 'd["contact"] = {"indenter": {"type": "sphere", "R": 50, "center": [0, 0]}, "depth": 5, "zone_radius": 3}' 'contact.depth = 5: must be below the skin.s thickness \(3 mm\)' contact
 bad depth_beyond_sphere 'd["contact"] = {"indenter": {"type": "sphere", "R": 1, "center": [0, 0]}, "depth": 2}' 'contact.depth = 2: must be below the sphere.s radius R = 1 mm' contact
 bad sphere_R_subnormal 'd["contact"] = {"indenter": {"type": "sphere", "R": 5e-324, "center": [0, 0]}, "force": 0.1}' 'contact.indenter.R = 5e-324: must be a radius in \[0.001, 10000\] mm' contact
-bad force_below_mesh "$sphere}; d['contact']['force'] = 5e-324" 'contact.force = 5e-324: the automatic candidate contact zone \(radius .* mm\) must be at least one contact element across' contact
+bad force_below_mesh "$sphere}; d['contact']['force'] = 1e-9" 'contact.force = 1e-09: the automatic candidate contact zone \(radius .* mm\) must be at least one contact element across' contact
 bad zone_below_mesh "$sphere, \"zone_radius\": 5e-324}" 'contact.zone_radius = 5e-324: the candidate contact zone \(radius .* mm\) must be at least one contact element across' contact
 bad hole_covers_zone "$sphere, \"zone_radius\": 3, \"holes\": [{\"center\": [0, 0], \"diameter\": 7}]}" 'contact.holes\[0\].diameter = 7(.0)?: the hole covers the whole candidate contact zone' contact
 # Coulomb ratios beyond where the contact stays unique: the bound is computed on the condensed skin (the

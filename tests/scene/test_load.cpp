@@ -570,7 +570,7 @@ TEST(SceneLoad, Punches) {
   EXPECT_SCENE_ERROR(punch(R"("center": [0, 0], "diameter": 0.5, "force": 1, "displacement": 0.01)"),
                      "loads.punches[1] = {", "must have exactly one of \"force\"");
   EXPECT_SCENE_ERROR(punch(R"("center": [0, 0], "diameter": 0.5, "force": 0)"),
-                     "loads.punches[1].force = 0: must be a force in (0, 1e+06] N");
+                     "loads.punches[1].force = 0: must be a force in [1e-09, 1e+06] N");
   EXPECT_SCENE_ERROR(punch(R"("center": [0, 0], "diameter": 0.5, "displacement": -0.01)"),
                      "loads.punches[1].displacement = -0.01: must be a length in (0, 10000] mm");
 }
@@ -586,7 +586,7 @@ TEST(SceneLoad, Patches) {
   EXPECT_SCENE_ERROR(patch(R"("center": [0, 0], "diameter": 0.5, "direction": [1, 0], "force": 1)"),
                      "loads.patches[0].direction = [1,0]: must be a vector [x, y, z]");
   EXPECT_SCENE_ERROR(patch(R"("center": [0, 0], "diameter": 0.5, "direction": [1, 0, 0], "force": -1)"),
-                     "loads.patches[0].force = -1: must be a force in (0, 1e+06] N");
+                     "loads.patches[0].force = -1: must be a force in [1e-09, 1e+06] N");
 }
 
 TEST(SceneLoad, Calibration) {
@@ -889,7 +889,7 @@ TEST(SceneLoad, ContactErrors) {
                      "must have exactly one of \"force\" (N) or \"depth\" (mm)");
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "depth": 0.01)"), "contact = {", "exactly one of");
   EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "plane"}, "force": 0)"),
-                     "contact.force = 0: must be a force in (0, 1e+06] N");
+                     "contact.force = 0: must be a force in [1e-09, 1e+06] N");
   EXPECT_SCENE_ERROR(contact(R"("indenter": {"type": "plane"}, "depth": -0.1)"),
                      "contact.depth = -0.1: must be a length in (0, 10000] mm");
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "holes": {"center": [0, 0]})"), "contact.holes = {",
