@@ -29,8 +29,8 @@
 //   symmetry*     "auto" (default): mesh only the half y >= 0 where the scene is mirror-symmetric about y = 0
 //                 and the command supports it (pipeline/symmetry.hpp) | "none": always the whole skin
 //   contact*      {"indenter": {"type": "plane"} | {"type": "sphere", "R": <mm, > 0>, "center": [x, y]},
-//                  "force": <N> | "depth": <mm>,     exactly one, > 0: total normal force, or rigid approach
-//                                                    from first touch
+//                  "force": <N> | "depth": <mm>,     exactly one: total normal force (1e-9 to 1e6 N, as every
+//                                                    force), or rigid approach from first touch (> 0)
 //                  "holes"*: [{"center": [x, y], "diameter": <mm, > 0>,  discs where the indenter is absent
 //                              "depth"*: <mm, > 0> (default 0.5, the paper's 500 um),
 //                              "h"*: <mm, > 0>}],  mesh size over the disc (absent: the zone's h)
