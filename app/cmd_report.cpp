@@ -622,6 +622,7 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
     contact.reset();
     adjoints.reset();
     skin.reset();
+    factored.skin.reset();  // without a contact it was never handed on
     release_freed_memory();
     std::vector<double> scales = error_scales;
     std::sort(scales.begin(), scales.end(), std::greater<>());

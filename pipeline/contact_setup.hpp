@@ -1,8 +1,8 @@
 // The common first half of `contact` and `defect`: a meshed and factored skin (shared,
 // pipeline/skin_setup.hpp; the contact zone and hole path refined), and its condensation onto the contact
-// multipliers (block right-hand sides), each stage timed into `wall` (mesh, assemble, factor, condense). A
-// mirror-symmetric scene (pipeline/symmetry.hpp) is solved on its half and seen whole: mesh(), the solver's
-// results and `top` are the mirrored whole skin's.
+// multipliers (block right-hand sides, or the Schur complement of a bordered factorization), each stage timed
+// into `wall` (mesh, assemble, factor, condense). A mirror-symmetric scene (pipeline/symmetry.hpp) is solved
+// on its half and seen whole: mesh(), the solver's results and `top` are the mirrored whole skin's.
 #pragma once
 
 #include <memory>

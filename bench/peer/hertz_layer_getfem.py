@@ -339,6 +339,18 @@ def newton(md, label, log):
     return int(it), conv
 
 
+def add_force_controlled_contact(md, mimc, top, w, r2, z, force_density):
+    """Contact on z = h: the Alart-Curnier term of GetFEM's integral brick (option 1, with the pressure's
+    sign) written out, with the depth an unknown. The pressure lam pushes the top down; lam = max(lam - raug
+    gap, 0) weakly, gap = r^2/(2R) - delta - u_z (r2: r^2, z: u_z's component); and delta is the unknown of
+    int w lam = F, written as int (w lam - force_density) over the top (w: the measure's weight, 2 pi r on
+    the meridian)."""
+    md.add_nonlinear_term(mimc, f"{w}*lam*Test_u({z})", top)
+    md.add_nonlinear_term(mimc, f"-{w}/raug*(lam - pos_part(lam - raug*({r2}/(2*R) - delta - u({z}))))*Test_lam",
+                          top)
+    md.add_nonlinear_term(mimc, f"({w}*lam - {force_density})*Test_delta", top)
+
+
 def taylor_hood_spaces(m, dim, top):
     """Q2 displacement (dim components), Q1 pressure, and the Q1 contact multiplier on region `top` (its
     whole-mesh space, its DOFs there, and the partial space over them), as both GetFEM models use them."""
@@ -497,10 +509,7 @@ def solve_3d_tet(p, mesh_vtu):
     md.add_isotropic_linearized_elasticity_brick(mim, "u", "lmb", "mu")
     md.add_linear_incompressibility_brick(mim, "u", "p")
     md.add_Dirichlet_condition_with_simplification("u", BASE)
-    md.add_nonlinear_term(mimc, "lam*Test_u(3)", TOP)
-    md.add_nonlinear_term(mimc, "-1/raug*(lam - pos_part(lam - raug*((sqr(X(1))+sqr(X(2)))/(2*R) - delta - u(3))))"
-                                "*Test_lam", TOP)
-    md.add_nonlinear_term(mimc, "(lam - F/A)*Test_delta", TOP)
+    add_force_controlled_contact(md, mimc, TOP, "1", "(sqr(X(1))+sqr(X(2)))", 3, "F/A")
     it, conv = newton(md, "3d, skinfem's mesh", LOG)
     res = {"dofs": int(md.nbdof()), "newton_iterations": it,
            "mesh": {"cells": int(m.nbcvs()), "nodes": int(len(X)), "top_multipliers": int(len(ldof)),
@@ -565,13 +574,7 @@ def solve_meridian(p, hmer, growth=1.2, r_coarse=1.0, z_coarse=0.5):
                             " - p*(X(1)*Div_Test_u + Test_u(1)) - Test_p*(X(1)*Div_u + u(1)))")
     md.add_Dirichlet_condition_with_simplification("u", BASE)
     md.add_linear_term(mim, "1e8*u(1)*Test_u(1)", AXIS)  # u_r = 0 on the axis, penalized
-    # Contact on z = h (the Alart-Curnier term of GetFEM's integral brick, option 1, with the pressure's
-    # sign): the pressure lam pushes the top down; lam = max(lam - raug * gap, 0) weakly, gap = r^2/(2R) -
-    # delta - u_z; and the depth delta is the unknown of 2 pi int r lam dr = F.
-    md.add_nonlinear_term(mimc, "2*pi*X(1)*lam*Test_u(2)", TOP)
-    md.add_nonlinear_term(mimc, "-2*pi*X(1)/raug*(lam - pos_part(lam - raug*(sqr(X(1))/(2*R) - delta - u(2))))"
-                                "*Test_lam", TOP)
-    md.add_nonlinear_term(mimc, "(2*pi*X(1)*lam - F/W)*Test_delta", TOP)
+    add_force_controlled_contact(md, mimc, TOP, "2*pi*X(1)", "sqr(X(1))", 2, "F/W")
     it, conv = newton(md, "meridian", LOG)
     res = {"dofs": int(md.nbdof()), "newton_iterations": it,
            "mesh": {"cells": int(m.nbcvs()), "h_contact_mm": hmer, "r_ticks": len(rt), "z_ticks": len(z),
