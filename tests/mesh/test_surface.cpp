@@ -80,8 +80,7 @@ TEST(ImportedSurface, MissingFileAndSurfaceWithoutBaseAreRejected) {
   const std::string path = write_box_stl("lifted.stl");
   std::ifstream in(path);
   const std::string text((std::istreambuf_iterator<char>(in)), {});
-  // Every vertex's z, the last number of its line (0 or 1), raised by 10: " 0\n" -> " 10\n", " 1\n" -> "
-  // 11\n".
+  // Every vertex's z, the last number of its line (0 or 1), raised by 10: a "1" put before it.
   std::string lifted;
   for (size_t i = 0; i < text.size(); ++i) {
     const bool z = i + 2 < text.size() && text[i] == ' ' && (text[i + 1] == '0' || text[i + 1] == '1') &&

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/convergence.hpp"
 #include "green/layer_exact.hpp"
 #include "mesh/sizing.hpp"
 #include "pipeline/sensor_greens.hpp"
@@ -62,13 +63,9 @@ TEST(SensorGreens, ThreeDMapsOffTheSensorLineConvergeToTheExactLayer) {
   }
   const char* names[] = {"zz", "zx", "xz", "xx"};
   for (int c = 0; c < 4; ++c) {
-    // Least-squares slope of log error against log scale.
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    for (size_t l = 0; l < scales.size(); ++l) {
-      const double x = std::log(scales[l]), y = std::log(err[l][c]);
-      sx += x, sy += y, sxx += x * x, sxy += x * y;
-    }
-    const double n = scales.size(), order = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+    std::vector<double> e;
+    for (const auto& level : err) e.push_back(level[c]);
+    const double order = testing::observed_order(scales, e);
     std::printf("g_%s: observed order %.2f\n", names[c], order);
     EXPECT_GE(order, 1.5) << "g_" << names[c];
     EXPECT_LE(err.back()[c], 5e-3) << "g_" << names[c];
