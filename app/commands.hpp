@@ -7,6 +7,7 @@
 #include "fem/mixed_solver.hpp"
 #include "pipeline/sensor_greens.hpp"
 #include "scene/scene.hpp"
+#include "scene/sweep.hpp"
 
 namespace skinfem::app {
 
@@ -24,6 +25,10 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
 int run_study(const Scene& scene, const std::string& out_dir, const std::vector<double>& scales);
 // per_period: mesh elements per ridge period on the pattern, one level each (at least 3).
 int run_ridge_study(const Scene& scene, const std::string& out_dir, std::vector<double> per_period);
+// A parameter sweep (scene/sweep.hpp) on Snakemake: `cores` locally, or through a Snakemake `profile` (a
+// cluster) when it is not empty; dry_run writes the members and the manifest only.
+int run_sweep(const std::string& spec_path, const std::string& out_dir, int cores, const std::string& profile,
+              bool dry_run);
 int run_chain_study(const Scene& scene, const std::string& out_dir, const std::vector<double>& scales);
 
 }  // namespace skinfem::app

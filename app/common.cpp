@@ -87,7 +87,7 @@ int run_child(const std::vector<std::string>& argv) {
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, STDERR_FILENO, STDOUT_FILENO);
   pid_t pid = 0;
-  const int err = posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ);
+  const int err = posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   if (err != 0) return -1;
   int status = 0;
@@ -115,15 +115,22 @@ void check_levels(const std::string& option, const std::vector<double>& levels, 
 
 void progress(const std::string& message) { std::cerr << "[skinfem] " << message << std::endl; }
 
-std::string figures_script() {
+namespace {
+// A file shipped beside the command when installed (share/skinfem/NAME), else the source tree's.
+std::string shipped_file(const std::string& name, const std::string& in_source) {
   std::error_code ec;
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
   if (!ec) {
-    const std::filesystem::path installed = exe.parent_path() / ".." / "share" / "skinfem" / "figures.py";
+    const std::filesystem::path installed = exe.parent_path() / ".." / "share" / "skinfem" / name;
     if (std::filesystem::exists(installed, ec))
       return std::filesystem::weakly_canonical(installed, ec).string();
   }
-  return std::string(SKINFEM_SOURCE_DIR) + "/scripts/figures.py";
+  return std::string(SKINFEM_SOURCE_DIR) + "/" + in_source;
 }
+}  // namespace
+
+std::string figures_script() { return shipped_file("figures.py", "scripts/figures.py"); }
+
+std::string sweep_workflow() { return shipped_file("workflow/Snakefile", "sweeps/workflow/Snakefile"); }
 
 }  // namespace skinfem::app

@@ -28,9 +28,9 @@ void prepare_output_dir(const std::string& dir);
 void write_text_atomic(const std::string& path, const std::string& text);
 void write_json(const std::string& path, const nlohmann::json& j);
 
-// Runs argv[0] with these arguments, no shell in between (nothing in them is ever parsed as a command),
-// its stdout sent to our stderr so that stdout stays the summary; waits for it. Returns its exit code, or
-// -1 when it could not start or was killed.
+// Runs argv[0] (found on PATH unless it has a slash) with these arguments, no shell in between (nothing in
+// them is ever parsed as a command), its stdout sent to our stderr so that stdout stays the summary; waits
+// for it. Returns its exit code, or -1 when it could not start or was killed.
 int run_child(const std::vector<std::string>& argv);
 
 // Study levels given on the command line (--scales, --ridges, --error-scales): each finite, no two equal,
@@ -44,5 +44,8 @@ void progress(const std::string& message);
 // scripts/figures.py: installed beside the command (../share/skinfem/figures.py from its directory), else
 // the source tree's (a build tree's command).
 std::string figures_script();
+// The sweep's Snakemake workflow: ../share/skinfem/workflow/Snakefile beside the command, else the source
+// tree's sweeps/workflow/Snakefile.
+std::string sweep_workflow();
 
 }  // namespace skinfem::app

@@ -1,6 +1,6 @@
 // skinfem — finite-element verification toolkit for tactile sensors under an elastomer skin.
-// Subcommands: mesh, solve, study, kfit, green, contact, defect, report (see each cmd_*.cpp for what it
-// computes and writes). Exit codes: 0 success, 2 bad input (scene or arguments), 1 any other failure.
+// Subcommands: mesh, solve, study, kfit, green, contact, defect, report, sweep (see each cmd_*.cpp for what
+// it computes and writes). Exit codes: 0 success, 2 bad input (scene or arguments), 1 any other failure.
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdlib>
@@ -123,6 +123,20 @@ int main(int argc, char** argv) {
       ->delimiter(',')
       ->capture_default_str();
   defect->add_flag("--no-error-bars", no_error_bars, "skip the coarser levels (no error bar)");
+  auto* sweep = cli.add_subcommand("sweep",
+                                   "a family of scenes from a sweep spec, one run per member on Snakemake "
+                                   "(results.csv, results.h5, plots/)");
+  std::string spec_path, profile;
+  int cores = 1;
+  bool dry_run = false;
+  sweep->add_option("spec", spec_path, "sweep spec JSON file (format: scene/sweep.cpp, README)")->required();
+  sweep->add_option("--out", out_dir, "output directory (default: out/<sweep name>)");
+  sweep->add_option("--cores", cores, "cores Snakemake may use on this machine, one per member job")
+      ->check(CLI::Range(1, 4096))
+      ->capture_default_str();
+  sweep->add_option("--profile", profile, "a Snakemake profile (a cluster, e.g. sweeps/profiles/slurm)")
+      ->excludes("--cores");
+  sweep->add_flag("--dry-run", dry_run, "write the member scenes and the manifest, run nothing");
   double max_dofs = 0;
   for (auto* sub : {mesh, solve, study, kfit, green_cmd, contact_cmd, defect, report}) {
     sub->add_option(
@@ -161,6 +175,10 @@ int main(int argc, char** argv) {
     }
     if ((report->parsed() || defect->parsed()) && !no_error_bars)
       skinfem::app::check_levels("--error-scales", error_scales, true);
+    if (sweep->parsed()) {
+      const std::string out = sweep->count("--out") ? out_dir : "out/" + skinfem::load_sweep(spec_path).name;
+      return skinfem::app::run_sweep(spec_path, out, cores, profile, dry_run);
+    }
     skinfem::pipeline::g_max_dofs = max_dofs;
     const skinfem::Scene scene = skinfem::load_scene(scene_path);
     const std::string command = cli.get_subcommands().front()->get_name();

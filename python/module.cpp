@@ -28,6 +28,7 @@
 #include "pipeline/sensor_greens.hpp"
 #include "pipeline/symmetry.hpp"
 #include "scene/load.hpp"
+#include "validation/k_sweep.hpp"
 #include "validation/paper_model.hpp"
 
 namespace py = pybind11;
@@ -158,6 +159,20 @@ PYBIND11_MODULE(_skinfem, m) {
            "The scene with every mesh size scaled by s (the family every study's levels come from).")
       .def("__repr__",
            [](const Scene& s) { return "<skinfem.Scene '" + s.name + "' from " + s.source_path + ">"; });
+  m.def(
+      "k_sweep",
+      [](double h, double nu, double punch_diameter) {
+        validation::KProtocol base;
+        base.h = h, base.nu = nu, base.punch_diameter = punch_diameter;
+        py::list rows;
+        for (const auto& p : validation::k_sweep(base))
+          rows.append(py::dict(py::arg("parameter") = p.parameter, py::arg("value") = p.value,
+                               py::arg("k_central") = p.k_central, py::arg("k_lsq_line") = p.k_lsq_line));
+        return rows;
+      },
+      py::arg("h"), py::arg("nu"), py::arg("punch_diameter"),
+      "The report's k sweep (kfit/k_sweep.csv): both k criteria of the exact bonded layer as each reading of "
+      "the calibration protocol varies alone about this base (point sensors, a rigid punch).");
   m.def("load_scene", &load_scene, py::arg("path"), "Reads and validates a scene file.");
   m.def("parse_scene", &parse_scene, py::arg("json_text"), py::arg("source_path"),
         "Validates a scene given as JSON text; source_path names it in messages and anchors relative paths.");

@@ -11,7 +11,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 prefix=$work/prefix
 cmake --install "$build" --prefix "$prefix" >/dev/null
-for f in bin/skinfem share/skinfem/figures.py lib/cmake/skinfem/skinfemConfig.cmake \
+for f in bin/skinfem share/skinfem/figures.py share/skinfem/workflow/Snakefile share/skinfem/workflow/gather.py lib/cmake/skinfem/skinfemConfig.cmake \
   include/skinfem/pipeline/skin_setup.hpp include/skinfem/scene/scene.hpp; do
   [ -e "$prefix/$f" ] || { echo "install.sh: $f not installed" >&2; exit 1; }
 done
@@ -36,6 +36,10 @@ PY
 figures=$("$prefix/bin/skinfem" --version | sed -n 's/^figures: //p')
 [ "$figures" = "$(realpath "$prefix/share/skinfem/figures.py")" ] ||
   { echo "install.sh: the installed skinfem runs '$figures', not its installed figures.py" >&2; exit 1; }
+# ... and the installed sweep workflow.
+"$prefix/bin/skinfem" sweep "$src/sweeps/k_vs_nu_and_punch.json" --out "$work/sweep" --dry-run >"$work/sweep.txt"
+grep -q -- "--snakefile $(realpath "$prefix/share/skinfem/workflow/Snakefile") " "$work/sweep.txt" ||
+  { echo "install.sh: the installed skinfem sweep runs another workflow: $(tail -1 "$work/sweep.txt")" >&2; exit 1; }
 if [ "$python" = ON ]; then
   "$prefix/bin/skinfem" kfit "$scene" --out "$work/kfit" >/dev/null 2>&1
   PYTHONPATH=$prefix LD_PRELOAD=${SKINFEM_PYTHON_PRELOAD:-} /usr/bin/python3 - "$scene" "$work/kfit/kfit.json" <<'PY'

@@ -275,3 +275,30 @@ def test_kernel_grid_reproduces_the_command(tmp_path):
             assert np.allclose(k["g_per_mm2"][0, c], ref, rtol=1e-12, atol=1e-15), name
     with pytest.raises(skinfem.SceneError, match="^--grid = 0.001: the kernel grid"):
         skinfem.greens(skinfem.scene(FLAT)).kernel(0.001)
+
+
+def test_sweep_reproduces_the_reports_k_sweep(tmp_path):
+    """sweeps/k_vs_nu_and_punch.json (kfit on the flat layer, 6 Poisson's ratios x 7 punch diameters, run by
+    Snakemake) against the report's k sweep (skinfem.k_sweep, validation/k_sweep: the exact bonded layer):
+    on the sweep's lines through the report's base (nu 0.5, punch 0.5 mm) each member's exact-layer k is the
+    report's to round-off, both criteria."""
+    import csv
+
+    out = tmp_path / "k_sweep"
+    spec = os.path.join(SRC, "sweeps", "k_vs_nu_and_punch.json")
+    r = run_cli("sweep", spec, "--out", str(out), "--cores", "2")
+    assert r.returncode == 0, r.stderr[-3000:]
+    with open(out / "results.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == 42 and all(row["exit_code"] == "0" for row in rows)
+    by = {(float(row["material.nu"]), float(row["calibration.punch_diameter_mm"])): row for row in rows}
+    compared = 0
+    for p in skinfem.k_sweep(h=3.04, nu=0.5, punch_diameter=0.5):
+        key = {"nu": (p["value"], 0.5), "punch_diameter_mm": (0.5, p["value"])}.get(p["parameter"])
+        if key is None:
+            continue  # the load model, disc and thickness lines are not this sweep's axes
+        row = by[key]
+        assert float(row["k_central_exact"]) == pytest.approx(p["k_central"], rel=1e-12, abs=0)
+        assert float(row["k_lsq_line_exact"]) == pytest.approx(p["k_lsq_line"], rel=1e-12, abs=0)
+        compared += 1
+    assert compared == 13  # the report's 6 Poisson's ratios and 7 punch diameters

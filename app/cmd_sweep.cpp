@@ -1,0 +1,138 @@
+// skinfem sweep — a family of scenes, one skinfem run per member, on a workflow engine (Snakemake): locally
+// on N cores, or on a cluster through a Snakemake profile (sweeps/profiles/slurm/).
+//
+//   $ skinfem sweep sweeps/k_vs_nu_and_punch.json --out out/k_sweep --cores 2
+//   sweep k_vs_nu_and_punch: 42 members of `skinfem kfit --path meridian` (grid 6 x 7), 0 already done;
+//   memory per job from the mesh estimate 1873-1873 MB
+//   ... (Snakemake's job log) ...
+//   gathered 42 members (42 ok, 0 failed) into out/k_sweep/results.csv, results.h5, plots/
+//
+// The spec's format: scene/sweep.cpp. Writes DIR/scenes/<id>.json (one per member, named by a hash of its
+// content and only written when absent, so that an unchanged member is recognised), DIR/manifest.json (the
+// members, their parameters and memory estimates), then runs sweeps/workflow/Snakefile in DIR: each member
+// into DIR/members/<id>/ (the command's own files in out/, status.json with its exit code, error line and
+// time), gathered into DIR/results.csv, results.h5 and plots/ (sweeps/workflow/gather.py). A re-run runs
+// only members without a status (new, changed or interrupted). --dry-run writes and does not run.
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "app/commands.hpp"
+#include "app/common.hpp"
+#include "mesh/size_estimate.hpp"
+#include "pipeline/resources.hpp"
+
+namespace skinfem::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Memory a member's job declares, MB: the chain's memory for the mesh estimate of the whole skin (the
+// meridian path and mirror halves need less; a scheduler given too much only packs fewer jobs). An imported
+// surface has no estimate before meshing: 4 GB.
+long member_memory_mb(const Scene& scene, double& dofs) {
+  const MeshEstimate e = estimate_mesh(scene);
+  dofs = e.known ? e.dofs : 0;
+  return e.known ? std::max(256L, std::lround(1024 * estimated_memory_gb(e.dofs))) : 4096L;
+}
+
+std::string summary_file(const std::string& command) {
+  return command == "kfit"     ? "kfit.json"
+         : command == "green"  ? "summary.json"
+         : command == "report" ? "report.json"
+                               : "summary.json";
+}
+
+}  // namespace
+
+int run_sweep(const std::string& spec_path, const std::string& out_dir, int cores, const std::string& profile,
+              bool dry_run) {
+  const Sweep sweep = load_sweep(spec_path);
+  check_output_dir(out_dir);
+  check_run_record(out_dir, "sweep");
+  prepare_output_dir(out_dir + "/scenes");
+
+  nlohmann::json manifest;
+  manifest["name"] = sweep.name;
+  manifest["spec"] = fs::absolute(spec_path).lexically_normal().string();
+  manifest["base_scene"] = sweep.base_scene_path;
+  manifest["command"] = sweep.command;
+  manifest["options"] = sweep.options;
+  manifest["combine"] = sweep.combine;
+  manifest["summary_file"] = summary_file(sweep.command);
+  std::error_code ec;
+  manifest["skinfem"] = fs::read_symlink("/proc/self/exe", ec).string();
+  manifest["skinfem_version"] = SKINFEM_VERSION;
+  for (const SweepAxis& a : sweep.axes) {
+    nlohmann::json values = nlohmann::json::array();
+    for (const auto& v : a.values) values.push_back(nlohmann::json::parse(v));
+    manifest["axes"].push_back({{"pointer", a.pointer}, {"column", a.column}, {"values", values}});
+  }
+  long mem_lo = 1L << 40, mem_hi = 0;
+  int done = 0;
+  for (const SweepMember& m : sweep.members) {
+    const std::string scene_file = "scenes/" + m.id + ".json";
+    // An existing member's scene is left alone (its name is its content), so its results stay up to date.
+    if (!fs::exists(out_dir + "/" + scene_file)) write_text_atomic(out_dir + "/" + scene_file, m.scene_json);
+    double dofs = 0;
+    const long mem = member_memory_mb(m.scene, dofs);
+    mem_lo = std::min(mem_lo, mem), mem_hi = std::max(mem_hi, mem);
+    nlohmann::json values = nlohmann::json::array();
+    for (const auto& v : m.values) values.push_back(nlohmann::json::parse(v));
+    manifest["members"].push_back(
+        {{"id", m.id}, {"scene", scene_file}, {"values", values}, {"mem_mb", mem}, {"estimated_dofs", dofs}});
+    done += fs::exists(out_dir + "/members/" + m.id + "/status.json") ? 1 : 0;
+  }
+  write_json(out_dir + "/manifest.json", manifest);
+  write_json(out_dir + "/run.json",
+             {{"command", "sweep"}, {"spec", manifest["spec"]}, {"skinfem", SKINFEM_VERSION}});
+
+  std::string shape;
+  for (const SweepAxis& a : sweep.axes)
+    shape += (shape.empty() ? "" : " x ") + std::to_string(a.values.size());
+  std::string command = "skinfem " + sweep.command;
+  for (const auto& w : sweep.options) command += " " + w;
+  std::printf(
+      "sweep %s: %zu members of `%s` (%s %s), %d already done; memory per job from the mesh "
+      "estimate %ld-%ld MB\n",
+      sweep.name.c_str(), sweep.members.size(), command.c_str(), sweep.combine.c_str(), shape.c_str(), done,
+      mem_lo, mem_hi);
+
+  std::vector<std::string> argv{"snakemake", "--snakefile",        sweep_workflow(), "--directory",
+                                out_dir,     "--rerun-incomplete", "--keep-going"};
+  if (!profile.empty()) {
+    argv.insert(argv.end(), {"--profile", profile});
+  } else {
+    // Locally the jobs are packed by the memory they declare into what the machine has free.
+    const long avail_mb = std::lround(1024 * available_memory_gb());
+    // Equal one-core jobs need no ILP scheduling (the default spawns a solver per round).
+    argv.insert(argv.end(), {"--cores", std::to_string(cores), "--scheduler", "greedy"});
+    if (avail_mb > 0) argv.insert(argv.end(), {"--resources", "mem_mb=" + std::to_string(avail_mb)});
+  }
+  std::string line;
+  for (const auto& a : argv) line += (line.empty() ? "" : " ") + a;
+  std::fflush(stdout);
+  if (dry_run) {
+    std::printf("dry run: wrote %s/manifest.json and %zu scenes; to run: %s\n", out_dir.c_str(),
+                sweep.members.size(), line.c_str());
+    return 0;
+  }
+  progress("running: " + line);
+  const int rc = run_child(argv);
+  if (rc != 0) {
+    std::fprintf(
+        stderr, "skinfem: sweep: Snakemake %s; the members' errors are in %s/members/*/status.json\n",
+        rc < 0 ? "could not start or was killed (is Debian's snakemake installed? scripts/setup installs it)"
+               : ("exited with code " + std::to_string(rc)).c_str(),
+        out_dir.c_str());
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace skinfem::app

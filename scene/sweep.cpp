@@ -1,0 +1,311 @@
+// A sweep spec (JSON; units those of the scene: mm, N, MPa):
+//   {"name": "k_vs_nu",                      optional; default the file's stem
+//    "scene": "../scenes/flat_layer.json",   the base scene, relative to the spec's folder
+//    "command": "kfit",                      kfit, green, contact, defect or report
+//    "options": {"path": "meridian"},        optional; the command's options (below)
+//    "combine": "grid",                      optional; grid (default) or zip
+//    "axes": [{"pointer": "/material/nu", "values": [0.45, 0.5]},
+//             {"pointer": "/calibration/punch_diameter", "range": {"from": 0.25, "to": 1.0, "count": 4}}]}
+// A range is {"from", "to", "count" >= 2} (evenly spaced, both ends in) or {"from", "to", "step" > 0}.
+// Options, by command: path (kfit, green, contact: auto, 3d, meridian), load (kfit: punch, point), grid
+// (green: spacing > 0, mm), friction (contact: scene, none, static, uncoupled, coupled), error_scales and
+// no_error_bars (defect, report), max_dofs (every command).
+#include "scene/sweep.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "scene/load.hpp"
+
+namespace skinfem {
+namespace {
+
+using json = nlohmann::json;
+namespace fs = std::filesystem;
+
+constexpr std::size_t kMaxMembers = 10000;
+
+std::string show(const json& v) {
+  std::string s = v.dump();
+  return s.size() > 60 ? s.substr(0, 57) + "..." : s;
+}
+
+// FNV-1a, 64 bits: a stable short name for a member's content (not a security hash: the names only let a
+// re-run recognise an unchanged member).
+std::string content_id(const std::string& text) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return std::string(buf, 12);
+}
+
+struct Reader {
+  std::string file;
+  [[noreturn]] void fail(const std::string& field, const json& v, const std::string& allowed) const {
+    throw SceneError(file + ": " + field + " = " + show(v) + ": " + allowed);
+  }
+};
+
+json read_json(const std::string& path, const std::string& what) {
+  std::ifstream in(path);
+  std::error_code ec;
+  if (!in || fs::is_directory(path, ec)) throw SceneError(path + ": cannot read " + what);
+  std::stringstream text;
+  text << in.rdbuf();
+  try {
+    return json::parse(text.str());
+  } catch (const json::parse_error& e) {
+    std::string msg = e.what();
+    for (char& c : msg)
+      if (c == '\n') c = ' ';
+    throw SceneError(path + ": " + what + " is not valid JSON (" + msg + ")");
+  }
+}
+
+double number(const Reader& r, const json& v, const std::string& field) {
+  if (!v.is_number() || !std::isfinite(v.get<double>())) r.fail(field, v, "must be a finite number");
+  return v.get<double>();
+}
+
+std::string word(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+// The command's options as command-line words, each checked against what the command accepts.
+std::vector<std::string> read_options(const Reader& r, const json& o, const std::string& command) {
+  static const std::map<std::string, std::set<std::string>> choices{
+      {"path", {"auto", "3d", "meridian"}},
+      {"load", {"punch", "point"}},
+      {"friction", {"scene", "none", "static", "uncoupled", "coupled"}}};
+  static const std::map<std::string, std::set<std::string>> allowed{
+      {"kfit", {"path", "load", "max_dofs"}},
+      {"green", {"path", "grid", "max_dofs"}},
+      {"contact", {"path", "friction", "max_dofs"}},
+      {"defect", {"error_scales", "no_error_bars", "max_dofs"}},
+      {"report", {"error_scales", "no_error_bars", "max_dofs"}}};
+  if (!o.is_object()) r.fail("options", o, "must be an object of the command's options");
+  std::vector<std::string> words;
+  for (const auto& [key, v] : o.items()) {
+    const std::string field = "options." + key;
+    const auto& ok = allowed.at(command);
+    if (!ok.count(key)) {
+      std::string list;
+      for (const auto& k : ok) list += (list.empty() ? "" : ", ") + k;
+      r.fail(field, v, "not an option of " + command + "; allowed: " + list);
+    }
+    std::string flag = "--" + key;
+    for (char& c : flag)
+      if (c == '_') c = '-';
+    if (choices.count(key)) {
+      if (!v.is_string() || !choices.at(key).count(v.get<std::string>())) {
+        std::string list;
+        for (const auto& k : choices.at(key)) list += (list.empty() ? "" : ", ") + k;
+        r.fail(field, v, "must be one of " + list);
+      }
+      words.insert(words.end(), {flag, v.get<std::string>()});
+    } else if (key == "no_error_bars") {
+      if (!v.is_boolean()) r.fail(field, v, "must be true or false");
+      if (v.get<bool>()) words.push_back(flag);
+    } else if (key == "error_scales") {
+      if (!v.is_array() || v.empty()) r.fail(field, v, "must be a non-empty array of mesh scales > 1");
+      std::string list;
+      for (const json& s : v) {
+        if (!(number(r, s, field) > 1)) r.fail(field, v, "must be a non-empty array of mesh scales > 1");
+        list += (list.empty() ? "" : ",") + word(s.get<double>());
+      }
+      words.insert(words.end(), {flag, list});
+    } else {  // grid (> 0) or max_dofs (>= 0)
+      const double x = number(r, v, field);
+      if (key == "grid" ? !(x > 0) : !(x >= 0))
+        r.fail(field, v, key == "grid" ? "must be a spacing > 0 (mm)" : "must be a number >= 0");
+      words.insert(words.end(), {flag, word(x)});
+    }
+  }
+  return words;
+}
+
+std::vector<std::string> read_values(const Reader& r, const json& a, const std::string& P) {
+  const bool has_values = a.contains("values"), has_range = a.contains("range");
+  if (has_values == has_range) r.fail(P, a, "must have exactly one of \"values\" (a list) or \"range\"");
+  std::vector<std::string> out;
+  if (has_values) {
+    const json& v = a["values"];
+    if (!v.is_array() || v.empty()) r.fail(P + ".values", v, "must be a non-empty array");
+    for (const json& x : v) out.push_back(x.dump());
+    return out;
+  }
+  const json& g = a["range"];
+  if (!g.is_object()) r.fail(P + ".range", g, "must be an object {\"from\", \"to\", \"count\" or \"step\"}");
+  for (const auto& [key, v] : g.items())
+    if (key != "from" && key != "to" && key != "count" && key != "step")
+      r.fail(P + ".range." + key, v, "unknown key; allowed: from, to, count, step");
+  if (!g.contains("from") || !g.contains("to") || g.contains("count") == g.contains("step"))
+    r.fail(P + ".range", g, "must have \"from\", \"to\" and exactly one of \"count\" or \"step\"");
+  const double from = number(r, g["from"], P + ".range.from"), to = number(r, g["to"], P + ".range.to");
+  if (g.contains("count")) {
+    const json& c = g["count"];
+    if (!c.is_number_integer() || c.get<long long>() < 2 || c.get<long long>() > 10000)
+      r.fail(P + ".range.count", c, "must be an integer in [2, 10000]");
+    const long long n = c.get<long long>();
+    for (long long i = 0; i < n; ++i)
+      out.push_back(json(i == n - 1 ? to : from + (to - from) * double(i) / double(n - 1)).dump());
+    return out;
+  }
+  const double step = number(r, g["step"], P + ".range.step");
+  if (!(step > 0) || !(to > from) || (to - from) / step > 10000)
+    r.fail(P + ".range", g, "a step range needs from < to and 0 < step, at most 10000 steps");
+  const long long n = static_cast<long long>(std::floor((to - from) / step + 1e-9));
+  for (long long i = 0; i <= n; ++i) out.push_back(json(from + step * double(i)).dump());
+  return out;
+}
+
+SweepAxis read_axis(const Reader& r, const json& a, const std::string& P, const json& base) {
+  if (!a.is_object()) r.fail(P, a, "must be an object {\"pointer\", \"values\" or \"range\"}");
+  for (const auto& [key, v] : a.items())
+    if (key != "pointer" && key != "values" && key != "range")
+      r.fail(P + "." + key, v, "unknown key; allowed: pointer, values, range");
+  if (!a.contains("pointer") || !a["pointer"].is_string())
+    r.fail(P + ".pointer", a.value("pointer", json()),
+           "must be a JSON pointer string such as \"/material/nu\"");
+  SweepAxis axis;
+  axis.pointer = a["pointer"].get<std::string>();
+  json::json_pointer ptr;
+  try {
+    ptr = json::json_pointer(axis.pointer);
+  } catch (const json::exception&) {
+    r.fail(P + ".pointer", a["pointer"], "must be a JSON pointer (\"/key/key\", RFC 6901)");
+  }
+  if (ptr.empty())
+    r.fail(P + ".pointer", a["pointer"], "must name a key inside the scene, not the whole scene");
+  // A key the base scene lacks is allowed where its parent exists (the scene rules then say whether it may
+  // be there); a parent that does not exist is a misspelt pointer.
+  const json::json_pointer parent = ptr.parent_pointer();
+  if (!base.contains(ptr) && (!base.contains(parent) || !base[parent].is_object()))
+    r.fail(P + ".pointer", a["pointer"],
+           "names nothing in the base scene: " + (parent.empty() ? std::string("/") : parent.to_string()) +
+               " is not an object there");
+  for (const std::string& token : [&] {
+         std::vector<std::string> t;
+         for (json::json_pointer p = ptr; !p.empty(); p = p.parent_pointer()) t.insert(t.begin(), p.back());
+         return t;
+       }())
+    axis.column += (axis.column.empty() ? "" : ".") + token;
+  axis.values = read_values(r, a, P);
+  return axis;
+}
+
+}  // namespace
+
+Sweep load_sweep(const std::string& path) {
+  const Reader r{path};
+  const json spec = read_json(path, "sweep spec");
+  if (!spec.is_object()) r.fail("(top level)", spec, "must be an object");
+  static const std::set<std::string> keys{"name", "scene", "command", "options", "combine", "axes"};
+  for (const auto& [key, v] : spec.items())
+    if (!keys.count(key))
+      r.fail(key, v, "unknown key; allowed: name, scene, command, options, combine, axes");
+  Sweep s;
+  s.spec_path = path;
+  s.name = spec.value("name", fs::path(path).stem().string());
+  if (s.name.empty() || s.name.find_first_of("/\\") != std::string::npos)
+    r.fail("name", spec["name"], "must be a non-empty name without slashes");
+  if (!spec.contains("scene") || !spec["scene"].is_string())
+    r.fail("scene", spec.value("scene", json()),
+           "must be the base scene's file, relative to the spec's folder");
+  const fs::path spec_dir = fs::absolute(path).parent_path();
+  s.base_scene_path = fs::weakly_canonical(spec_dir / spec["scene"].get<std::string>()).string();
+  static const std::set<std::string> commands{"kfit", "green", "contact", "defect", "report"};
+  if (!spec.contains("command") || !spec["command"].is_string() ||
+      !commands.count(spec["command"].get<std::string>()))
+    r.fail("command", spec.value("command", json()), "must be one of contact, defect, green, kfit, report");
+  s.command = spec["command"].get<std::string>();
+  if (spec.contains("options")) s.options = read_options(r, spec["options"], s.command);
+  s.combine = spec.value("combine", json("grid")).is_string() ? spec.value("combine", "grid") : "";
+  if (s.combine != "grid" && s.combine != "zip")
+    r.fail("combine", spec["combine"], "must be \"grid\" or \"zip\"");
+
+  json base = read_json(s.base_scene_path, "base scene");
+  if (!base.is_object()) throw SceneError(s.base_scene_path + ": (top level) must be an object");
+  // Members live in another folder: an imported surface is named by its absolute path.
+  if (base.contains("geometry") && base["geometry"].is_object() && base["geometry"].contains("path") &&
+      base["geometry"]["path"].is_string()) {
+    const fs::path surface = base["geometry"]["path"].get<std::string>();
+    if (surface.is_relative())
+      base["geometry"]["path"] =
+          (fs::path(s.base_scene_path).parent_path() / surface).lexically_normal().string();
+  }
+  if (!base.contains("name")) base["name"] = fs::path(s.base_scene_path).stem().string();
+
+  const json& axes = spec.value("axes", json());
+  if (!axes.is_array() || axes.empty()) r.fail("axes", axes, "must be a non-empty array of axes");
+  std::set<std::string> pointers;
+  for (std::size_t i = 0; i < axes.size(); ++i) {
+    const std::string P = "axes[" + std::to_string(i) + "]";
+    s.axes.push_back(read_axis(r, axes[i], P, base));
+    if (!pointers.insert(s.axes.back().pointer).second)
+      r.fail(P + ".pointer", axes[i]["pointer"], "is already an axis; each key may vary along one axis only");
+  }
+
+  // The members: every combination (the last axis fastest), or the i-th value of every axis.
+  std::vector<std::vector<std::size_t>> picks;
+  if (s.combine == "zip") {
+    for (std::size_t i = 1; i < s.axes.size(); ++i)
+      if (s.axes[i].values.size() != s.axes[0].values.size())
+        r.fail("axes[" + std::to_string(i) + "]", axes[i],
+               "has " + std::to_string(s.axes[i].values.size()) + " values, axes[0] has " +
+                   std::to_string(s.axes[0].values.size()) + ": zipped axes need equal lengths");
+    for (std::size_t k = 0; k < s.axes[0].values.size(); ++k) picks.emplace_back(s.axes.size(), k);
+  } else {
+    double count = 1;
+    for (const auto& a : s.axes) count *= double(a.values.size());
+    if (count > kMaxMembers)
+      r.fail("axes", json(count),
+             "the grid has this many members; allowed at most " + std::to_string(kMaxMembers));
+    std::vector<std::size_t> at(s.axes.size(), 0);
+    for (std::size_t m = 0; m < std::size_t(count); ++m) {
+      picks.push_back(at);
+      for (std::size_t i = s.axes.size(); i-- > 0;) {
+        if (++at[i] < s.axes[i].values.size()) break;
+        at[i] = 0;
+      }
+    }
+  }
+  std::string options_text = s.command;
+  for (const auto& w : s.options) options_text += " " + w;
+  std::set<std::string> ids;
+  for (std::size_t m = 0; m < picks.size(); ++m) {
+    json scene = base;
+    SweepMember member;
+    std::string where;
+    for (std::size_t i = 0; i < s.axes.size(); ++i) {
+      const std::string& v = s.axes[i].values[picks[m][i]];
+      scene[json::json_pointer(s.axes[i].pointer)] = json::parse(v);
+      member.values.push_back(v);
+      where += (where.empty() ? "" : ", ") + s.axes[i].pointer + " = " + v;
+    }
+    member.scene_json = scene.dump(2) + "\n";
+    member.id = content_id(member.scene_json + options_text);
+    try {
+      member.scene = parse_scene(member.scene_json, s.base_scene_path);
+    } catch (const SceneError& e) {
+      throw SceneError(path + ": member " + std::to_string(m + 1) + " (" + where + "): " + e.what());
+    }
+    if (!ids.insert(member.id).second)
+      throw SceneError(path + ": member " + std::to_string(m + 1) + " (" + where +
+                       "): the same scene as an earlier member; every member must differ");
+    s.members.push_back(std::move(member));
+  }
+  return s;
+}
+
+}  // namespace skinfem
