@@ -3,9 +3,10 @@
 //
 //   $ skinfem sweep sweeps/k_vs_nu_and_punch.json --out out/k_sweep --cores 2
 //   sweep k_vs_nu_and_punch: 42 members of `skinfem kfit --path meridian` (grid 6 x 7), 0 already done;
-//   memory per job from the mesh estimate 1873-1873 MB
-//   ... (Snakemake's job log) ...
-//   gathered 42 members (42 ok, 0 failed) into out/k_sweep/results.csv, results.h5, plots/
+//   memory per job from the spec's mem_mb 256-256 MB
+//   ... (Snakemake's job log, on stderr) ...
+//   gathered 42 members (42 ok, 0 failed) into /abs/out/k_sweep: results.csv (66 columns), results.h5, 2
+//   plots
 //
 // The spec's format: scene/sweep.cpp. Writes DIR/scenes/<id>.json (one per member, named by a hash of its
 // content and only written when absent, so that an unchanged member is recognised), DIR/manifest.json (the
@@ -80,12 +81,17 @@ int run_sweep(const std::string& spec_path, const std::string& out_dir, int core
     // An existing member's scene is left alone (its name is its content), so its results stay up to date.
     if (!fs::exists(out_dir + "/" + scene_file)) write_text_atomic(out_dir + "/" + scene_file, m.scene_json);
     double dofs = 0;
-    const long mem = member_memory_mb(m.scene, dofs);
+    const long estimate = member_memory_mb(m.scene, dofs);
+    const long mem = sweep.mem_mb > 0 ? sweep.mem_mb : estimate;
     mem_lo = std::min(mem_lo, mem), mem_hi = std::max(mem_hi, mem);
     nlohmann::json values = nlohmann::json::array();
     for (const auto& v : m.values) values.push_back(nlohmann::json::parse(v));
-    manifest["members"].push_back(
-        {{"id", m.id}, {"scene", scene_file}, {"values", values}, {"mem_mb", mem}, {"estimated_dofs", dofs}});
+    manifest["members"].push_back({{"id", m.id},
+                                   {"scene", scene_file},
+                                   {"values", values},
+                                   {"mem_mb", mem},
+                                   {"estimated_mem_mb", estimate},
+                                   {"estimated_dofs", dofs}});
     done += fs::exists(out_dir + "/members/" + m.id + "/status.json") ? 1 : 0;
   }
   write_json(out_dir + "/manifest.json", manifest);
@@ -97,11 +103,10 @@ int run_sweep(const std::string& spec_path, const std::string& out_dir, int core
     shape += (shape.empty() ? "" : " x ") + std::to_string(a.values.size());
   std::string command = "skinfem " + sweep.command;
   for (const auto& w : sweep.options) command += " " + w;
-  std::printf(
-      "sweep %s: %zu members of `%s` (%s %s), %d already done; memory per job from the mesh "
-      "estimate %ld-%ld MB\n",
-      sweep.name.c_str(), sweep.members.size(), command.c_str(), sweep.combine.c_str(), shape.c_str(), done,
-      mem_lo, mem_hi);
+  const std::string memory = sweep.mem_mb > 0 ? "the spec's mem_mb" : "the mesh estimate";
+  std::printf("sweep %s: %zu member%s of `%s` (%s %s), %d already done; memory per job from %s %ld-%ld MB\n",
+              sweep.name.c_str(), sweep.members.size(), sweep.members.size() == 1 ? "" : "s", command.c_str(),
+              sweep.combine.c_str(), shape.c_str(), done, memory.c_str(), mem_lo, mem_hi);
 
   std::vector<std::string> argv{"snakemake", "--snakefile",        sweep_workflow(), "--directory",
                                 out_dir,     "--rerun-incomplete", "--keep-going"};

@@ -4,6 +4,7 @@
 //    "command": "kfit",                      kfit, green, contact, defect or report
 //    "options": {"path": "meridian"},        optional; the command's options (below)
 //    "combine": "grid",                      optional; grid (default) or zip
+//    "mem_mb": 512,                          optional; each job's memory, MB (default: the mesh estimate)
 //    "axes": [{"pointer": "/material/nu", "values": [0.45, 0.5]},
 //             {"pointer": "/calibration/punch_diameter", "range": {"from": 0.25, "to": 1.0, "count": 4}}]}
 // A range is {"from", "to", "count" >= 2} (evenly spaced, both ends in) or {"from", "to", "step" > 0}.
@@ -210,10 +211,10 @@ Sweep load_sweep(const std::string& path) {
   const Reader r{path};
   const json spec = read_json(path, "sweep spec");
   if (!spec.is_object()) r.fail("(top level)", spec, "must be an object");
-  static const std::set<std::string> keys{"name", "scene", "command", "options", "combine", "axes"};
+  static const std::set<std::string> keys{"name", "scene", "command", "options", "combine", "mem_mb", "axes"};
   for (const auto& [key, v] : spec.items())
     if (!keys.count(key))
-      r.fail(key, v, "unknown key; allowed: name, scene, command, options, combine, axes");
+      r.fail(key, v, "unknown key; allowed: name, scene, command, options, combine, mem_mb, axes");
   Sweep s;
   s.spec_path = path;
   s.name = spec.value("name", fs::path(path).stem().string());
@@ -233,6 +234,13 @@ Sweep load_sweep(const std::string& path) {
   s.combine = spec.value("combine", json("grid")).is_string() ? spec.value("combine", "grid") : "";
   if (s.combine != "grid" && s.combine != "zip")
     r.fail("combine", spec["combine"], "must be \"grid\" or \"zip\"");
+
+  if (spec.contains("mem_mb")) {
+    const json& m = spec["mem_mb"];
+    if (!m.is_number_integer() || m.get<long long>() < 1 || m.get<long long>() > 100000000)
+      r.fail("mem_mb", m, "must be an integer number of MB in [1, 1e8]");
+    s.mem_mb = m.get<long>();
+  }
 
   json base = read_json(s.base_scene_path, "base scene");
   if (!base.is_object()) throw SceneError(s.base_scene_path + ": (top level) must be an object");

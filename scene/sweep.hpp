@@ -30,6 +30,7 @@ struct Sweep {
   std::string command;               // kfit, green, contact, defect or report
   std::vector<std::string> options;  // the command's options as command-line words
   std::string combine;               // grid (every combination, the last axis fastest) or zip
+  long mem_mb = 0;                   // memory each job declares, MB; 0: skinfem's mesh estimate
   std::vector<SweepAxis> axes;
   std::vector<SweepMember> members;
 };

@@ -191,13 +191,15 @@ def plot(manifest, rows, numbers, plotted, plots_dir):
             for others, points in groups.items():
                 points = sorted((x, f[key]) for x, f in points if key in f and math.isfinite(f[key]))
                 if points:
-                    label = ", ".join("%s %s" % o for o in others) or None
+                    label = ", ".join("%s %s" % (o[0].rsplit(".", 1)[-1], o[1]) for o in others) or None
                     panel.plot([p[0] for p in points], [p[1] for p in points], "o-", ms=3, label=label)
+            if manifest["command"] == "kfit" and "paper_k" in numbers[0]:
+                panel.axhline(numbers[0]["paper_k"], color="k", ls="--", lw=0.8, label="the paper's k")
             panel.set_xlabel(axis_column(axis))
             panel.set_title(key)
             panel.grid(alpha=0.3)
-        if len(groups) > 1 and len(groups) <= 10:
-            panels[0][-1].legend(fontsize=7)
+        if len(groups) <= 10:
+            panels[0][-1].legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1))
         fig.suptitle("%s: skinfem %s" % (manifest["name"], manifest["command"]), fontsize=9)
         fig.tight_layout()
         path = os.path.join(plots_dir, axis_column(axis) + ".png")
