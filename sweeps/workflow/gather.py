@@ -28,11 +28,10 @@ UNITS = {"E": "MPa", "force": "N"}
 # What each command's plots show (keys of its summary file); the table holds every number.
 PLOTTED = {
     "kfit": ["k_central", "k_lsq_line"],
-    "green": [],
-    "contact": [],
-    "defect": [],
-    "report": [],
+    "contact": ["contact_radius_mm", "p0_kPa", "indentation_um"],
 }
+# Otherwise (green, defect, report: their results are per sensor, in results.h5): the cost.
+COST = ["dofs", "wall_total_s"]
 
 
 def axis_column(axis):
@@ -155,19 +154,35 @@ def gather(manifest, directory):
             out = os.path.join(directory, "members", m["id"], "out")
             for name in sorted(os.listdir(out)) if os.path.isdir(out) else []:
                 if name.endswith(".csv"):
-                    table = np.genfromtxt(os.path.join(out, name), delimiter=",", names=True, dtype=float)
-                    if table.dtype.names:
-                        for col in table.dtype.names:
-                            if np.all(np.isfinite(np.atleast_1d(table[col]))):
-                                g.create_dataset(name[:-4] + "/" + col, data=np.atleast_1d(table[col]))
+                    store_csv(g, name[:-4], os.path.join(out, name))
     os.replace(tmp, os.path.join(directory, "results.h5"))
 
-    plotted = [k for k in PLOTTED.get(manifest["command"], []) if k in columns]
-    plotted = plotted or [k for k in columns if not k.endswith(("_s", "_mb"))][:2]
+    plotted = [k for k in PLOTTED.get(manifest["command"], COST) if k in columns]
     written = plot(manifest, rows, numbers, plotted, os.path.join(directory, "plots")) if plotted else []
     failed = sum(1 for _, s, _ in rows if s["exit_code"] != 0)
-    print("gathered %d members (%d ok, %d failed) into %s: results.csv (%d columns), results.h5, %d plots"
-          % (len(rows), len(rows) - failed, failed, os.path.abspath(directory), len(header), len(written)))
+    plural = lambda n: "" if n == 1 else "s"
+    print("gathered %d member%s (%d ok, %d failed) into %s: results.csv (%d columns), results.h5, %d plot%s"
+          % (len(rows), plural(len(rows)), len(rows) - failed, failed, os.path.abspath(directory),
+             len(header), len(written), plural(len(written))))
+
+
+def store_csv(group, name, path):
+    """A CSV output's columns as datasets name/<column>: numbers as float arrays, text (green's component
+    names) as strings."""
+    import h5py
+    import numpy as np
+
+    with open(path, newline="") as f:
+        table = list(csv.reader(f))
+    if len(table) < 2:
+        return
+    for j, column in enumerate(table[0]):
+        cells = [row[j] for row in table[1:] if j < len(row)]
+        try:
+            group.create_dataset(name + "/" + column, data=np.array([float(c) for c in cells]))
+        except ValueError:
+            group.create_dataset(name + "/" + column, data=np.array(cells, dtype=object),
+                                 dtype=h5py.string_dtype())
 
 
 def plot(manifest, rows, numbers, plotted, plots_dir):
@@ -198,7 +213,7 @@ def plot(manifest, rows, numbers, plotted, plots_dir):
             panel.set_xlabel(axis_column(axis))
             panel.set_title(key)
             panel.grid(alpha=0.3)
-        if len(groups) <= 10:
+        if len(groups) <= 10 and panels[0][-1].get_legend_handles_labels()[1]:
             panels[0][-1].legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1))
         fig.suptitle("%s: skinfem %s" % (manifest["name"], manifest["command"]), fontsize=9)
         fig.tight_layout()

@@ -284,25 +284,26 @@ bad ridges_mesh_coarse 'd["geometry"]["ridges"] = {"period": 0.5, "height": 0.05
 bad ridges_period_tiny 'd["geometry"]["ridges"] = {"period": 1e-6, "height": 0.05, "center": [0, 0], "radius": 1, "h": 0.2}' 'geometry.ridges.h = 0.2: must be a number in \(0, period/3' mesh
 
 # Sweep specs (skinfem sweep): refused before anything is written or run.
-sweep_spec() {  # NAME JSON: a spec over the base scene, written to $tmp/NAME.json
+bad_spec() {  # NAME SPEC_JSON EXPECT: a spec over the base scene through `skinfem sweep`
   printf '%s' "$2" >"$tmp/$1.json"
+  check "$1" "$3" "$skinfem" sweep "$tmp/$1.json" --out "$tmp/out"
 }
-sweep_spec sweep_unknown_pointer '{"scene": "base.json", "command": "kfit", "axes": [{"pointer": "/materail/nu", "values": [0.4]}]}'
-check sweep_unknown_pointer 'axes\[0\].pointer = "/materail/nu": names nothing in the base scene: /materail is not an object there' "$skinfem" sweep "$tmp/sweep_unknown_pointer.json" --out "$tmp/out"
-sweep_spec sweep_empty_axis '{"scene": "base.json", "command": "kfit", "axes": [{"pointer": "/material/nu", "values": []}]}'
-check sweep_empty_axis 'axes\[0\].values = \[\]: must be a non-empty array' "$skinfem" sweep "$tmp/sweep_empty_axis.json" --out "$tmp/out"
-sweep_spec sweep_zip_lengths '{"scene": "base.json", "command": "kfit", "combine": "zip", "axes": [{"pointer": "/material/nu", "values": [0.4, 0.5]}, {"pointer": "/geometry/h", "values": [2, 3, 4]}]}'
-check sweep_zip_lengths 'axes\[1\] = .*has 3 values, axes\[0\] has 2: zipped axes need equal lengths' "$skinfem" sweep "$tmp/sweep_zip_lengths.json" --out "$tmp/out"
-sweep_spec sweep_member_refused '{"scene": "base.json", "command": "kfit", "axes": [{"pointer": "/material/nu", "values": [0.4, 0.7]}]}'
-check sweep_member_refused 'sweep_member_refused.json: member 2 \(/material/nu = 0.7\): .*material.nu = 0.7: must be a number in \[0, 0.5\]' "$skinfem" sweep "$tmp/sweep_member_refused.json" --out "$tmp/out"
-sweep_spec sweep_unknown_key '{"scene": "base.json", "command": "kfit", "axes": [{"pointer": "/material/colour", "values": [1]}]}'
-check sweep_unknown_key 'member 1 \(/material/colour = 1\): .*material.colour: unknown key' "$skinfem" sweep "$tmp/sweep_unknown_key.json" --out "$tmp/out"
-sweep_spec sweep_option '{"scene": "base.json", "command": "kfit", "options": {"friction": "none"}, "axes": [{"pointer": "/material/nu", "values": [0.4]}]}'
-check sweep_option 'options.friction = "none": not an option of kfit; allowed: load, max_dofs, path' "$skinfem" sweep "$tmp/sweep_option.json" --out "$tmp/out"
-sweep_spec sweep_command '{"scene": "base.json", "command": "mesh", "axes": [{"pointer": "/material/nu", "values": [0.4]}]}'
-check sweep_command 'command = "mesh": must be one of contact, defect, green, kfit, report' "$skinfem" sweep "$tmp/sweep_command.json" --out "$tmp/out"
-sweep_spec sweep_range '{"scene": "base.json", "command": "kfit", "axes": [{"pointer": "/material/nu", "range": {"from": 0.3, "to": 0.5, "count": 1}}]}'
-check sweep_range 'axes\[0\].range.count = 1: must be an integer in \[2, 10000\]' "$skinfem" sweep "$tmp/sweep_range.json" --out "$tmp/out"
+bad_spec sweep_unknown_pointer '{"scene": "base.json", "command": "kfit", "axes": [{"pointer": "/materail/nu", "values": [0.4]}]}' \
+  'axes\[0\].pointer = "/materail/nu": names nothing in the base scene: /materail is not an object there'
+bad_spec sweep_empty_axis '{"scene": "base.json", "command": "kfit", "axes": [{"pointer": "/material/nu", "values": []}]}' \
+  'axes\[0\].values = \[\]: must be a non-empty array'
+bad_spec sweep_zip_lengths '{"scene": "base.json", "command": "kfit", "combine": "zip", "axes": [{"pointer": "/material/nu", "values": [0.4, 0.5]}, {"pointer": "/geometry/h", "values": [2, 3, 4]}]}' \
+  'axes\[1\] = .*has 3 values, axes\[0\] has 2: zipped axes need equal lengths'
+bad_spec sweep_member_refused '{"scene": "base.json", "command": "kfit", "axes": [{"pointer": "/material/nu", "values": [0.4, 0.7]}]}' \
+  'sweep_member_refused.json: member 2 \(/material/nu = 0.7\): .*material.nu = 0.7: must be a number in \[0, 0.5\]'
+bad_spec sweep_unknown_key '{"scene": "base.json", "command": "kfit", "axes": [{"pointer": "/material/colour", "values": [1]}]}' \
+  'member 1 \(/material/colour = 1\): .*material.colour: unknown key'
+bad_spec sweep_option '{"scene": "base.json", "command": "kfit", "options": {"friction": "none"}, "axes": [{"pointer": "/material/nu", "values": [0.4]}]}' \
+  'options.friction = "none": not an option of kfit; allowed: load, max_dofs, path'
+bad_spec sweep_command '{"scene": "base.json", "command": "mesh", "axes": [{"pointer": "/material/nu", "values": [0.4]}]}' \
+  'command = "mesh": must be one of contact, defect, green, kfit, report'
+bad_spec sweep_range '{"scene": "base.json", "command": "kfit", "axes": [{"pointer": "/material/nu", "range": {"from": 0.3, "to": 0.5, "count": 1}}]}' \
+  'axes\[0\].range.count = 1: must be an integer in \[2, 10000\]'
 
 echo "$passed passed, $fail failed"
 [ $fail -eq 0 ]

@@ -24,7 +24,7 @@ fail() { echo "FAIL: $*"; exit 1; }
 statuses() { find D/members -name status.json 2>/dev/null | sort; }
 
 # 1. Killed (SIGTERM to its process group, as a scheduler or a closed terminal does) after the first member.
-setsid "$skinfem" sweep spec.json --out D --cores 1 >run1.log 2>&1 &
+setsid "$skinfem" sweep spec.json --out D --cores 2 >run1.log 2>&1 &
 pid=$!
 # Snakemake's "1 of 6 steps" line: the first member is done and registered (a status written but not yet
 # registered is removed as incomplete by the shutdown).
