@@ -327,20 +327,6 @@ json parse_json(const std::string& text, const Reader& r) {
 std::string off_footprint(const Geometry& g, const Vec2& p, double rad, const std::string& rad_name);
 json point(const Vec2& p);
 
-constexpr const char* kNameRule =
-    "a file name of 1 to 100 characters: letters, digits, space and . _ - + ( ), not starting with '.', '-' "
-    "or a space";
-// The name becomes the report's folder (out/<name>) and appears in commands people paste into a shell: one
-// path component that cannot climb out (no separator, not "." or ".."), hide, pose as an option or carry a
-// quote, NUL or control character (a JSON string may hold "\u0000").
-bool is_path_component(const std::string& s) {
-  if (s.empty() || s.size() > 100 || s[0] == '.' || s[0] == '-' || s[0] == ' ') return false;
-  return std::all_of(s.begin(), s.end(), [](char c) {
-    // strchr finds the terminator too: NUL must be refused before it is looked up.
-    return std::isalnum(static_cast<unsigned char>(c)) || (c != '\0' && std::strchr(" ._-+()", c));
-  });
-}
-
 // Ridges on a cap or flat layer (scene.hpp's Ridges); `thickness` is the layer's h (the apex's for a cap).
 Ridges read_ridges(const Reader& r, const json& j, const std::string& P, const Geometry& geo,
                    double thickness) {
@@ -1072,6 +1058,20 @@ void check_hole_meshes(const Reader& r, const Scene& scene) {
 }
 
 }  // namespace
+
+const char* const kNameRule =
+    "a file name of 1 to 100 characters: letters, digits, space and . _ - + ( ), not starting with '.', '-' "
+    "or a space";
+// The name becomes the report's folder (out/<name>) and appears in commands people paste into a shell: one
+// path component that cannot climb out (no separator, not "." or ".."), hide, pose as an option or carry a
+// quote, NUL or control character (a JSON string may hold "\u0000").
+bool is_path_component(const std::string& s) {
+  if (s.empty() || s.size() > 100 || s[0] == '.' || s[0] == '-' || s[0] == ' ') return false;
+  return std::all_of(s.begin(), s.end(), [](char c) {
+    // strchr finds the terminator too: NUL must be refused before it is looked up.
+    return std::isalnum(static_cast<unsigned char>(c)) || (c != '\0' && std::strchr(" ._-+()", c));
+  });
+}
 
 Scene parse_scene(const std::string& json_text, const std::string& source_path) {
   const Reader r(source_path.empty() ? std::string("<scene>") : source_path);

@@ -23,6 +23,11 @@ Scene parse_scene(const std::string& json_text, const std::string& source_path);
 // The placement rules of punches and patches (on the skin with mesh.h_min to spare, apart, above the mesh
 // generator's tolerance) for a scene changed in code, e.g. its mesh sizes scaled by a study; `what` names
 // the change in the message. Throws SceneError like load_scene.
+// A scene's or a sweep's "name", which becomes a folder (out/<name>): one path component that cannot climb
+// out, hide, pose as an option or carry a quote or control character. kNameRule says what is allowed.
+bool is_path_component(const std::string& s);
+extern const char* const kNameRule;
+
 void check_load_placement(const Scene& scene, const std::string& what);
 
 }  // namespace skinfem

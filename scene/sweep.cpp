@@ -217,9 +217,13 @@ Sweep load_sweep(const std::string& path) {
       r.fail(key, v, "unknown key; allowed: name, scene, command, options, combine, mem_mb, axes");
   Sweep s;
   s.spec_path = path;
-  s.name = spec.value("name", fs::path(path).stem().string());
-  if (s.name.empty() || s.name.find_first_of("/\\") != std::string::npos)
-    r.fail("name", spec["name"], "must be a non-empty name without slashes");
+  s.name = spec.contains("name") && spec["name"].is_string() ? spec["name"].get<std::string>()
+                                                             : fs::path(path).stem().string();
+  // The name becomes the default output folder, out/<name>.
+  if (!is_path_component(s.name) || (spec.contains("name") && !spec["name"].is_string()))
+    r.fail(
+        "name", spec.value("name", json(s.name)),
+        std::string("must be ") + kNameRule + (spec.contains("name") ? "" : " (taken from the file name)"));
   if (!spec.contains("scene") || !spec["scene"].is_string())
     r.fail("scene", spec.value("scene", json()),
            "must be the base scene's file, relative to the spec's folder");

@@ -302,6 +302,8 @@ bad_spec sweep_option '{"scene": "base.json", "command": "kfit", "options": {"fr
   'options.friction = "none": not an option of kfit; allowed: load, max_dofs, path'
 bad_spec sweep_command '{"scene": "base.json", "command": "mesh", "axes": [{"pointer": "/material/nu", "values": [0.4]}]}' \
   'command = "mesh": must be one of contact, defect, green, kfit, report'
+bad_spec sweep_name_climbs '{"name": "..", "scene": "base.json", "command": "kfit", "axes": [{"pointer": "/material/nu", "values": [0.4]}]}' \
+  'name = "..": must be a file name of 1 to 100 characters'
 bad_spec sweep_range '{"scene": "base.json", "command": "kfit", "axes": [{"pointer": "/material/nu", "range": {"from": 0.3, "to": 0.5, "count": 1}}]}' \
   'axes\[0\].range.count = 1: must be an integer in \[2, 10000\]'
 

@@ -138,5 +138,9 @@ TEST(Sweep, BadSpecsAreRefusedInOneLine) {
               {"pointer": "/material/E", "range": {"from": 1, "to": 2, "count": 200}}]})")
           .find("allowed at most 10000"),
       std::string::npos);
+  EXPECT_NE(refused("name", R"({"name": "../up", "scene": "skins/base.json", "command": "kfit",
+              "axes": [{"pointer": "/material/nu", "values": [0.5]}]})")
+                .find("name = \"../up\": must be a file name"),
+            std::string::npos);
   EXPECT_NE(refused("no_scene", R"({"command": "kfit", "axes": []})").find("scene"), std::string::npos);
 }
