@@ -3,10 +3,10 @@
 //
 //   $ skinfem sweep sweeps/k_vs_nu_and_punch.json --out out/k_sweep --cores 2
 //   sweep k_vs_nu_and_punch: 42 members of `skinfem kfit --path meridian` (grid 6 x 7), 0 already done;
-//   memory per job from the spec's mem_mb 256-256 MB
+//   memory per job from the spec's mem_mb 256 MB
 //   ... (Snakemake's job log, on stderr) ...
-//   gathered 42 members (42 ok, 0 failed) into /abs/out/k_sweep: results.csv (66 columns), results.h5, 2
-//   plots
+//   gathered 42 members (42 ok, 0 failed) into /abs/out/k_sweep: results.csv (66 columns), results.h5,
+//   2 plots
 //
 // The spec's format: scene/sweep.cpp. Writes DIR/scenes/<id>.json (one per member, named by a hash of its
 // content and only written when absent, so that an unchanged member is recognised), DIR/manifest.json (the
@@ -14,14 +14,10 @@
 // into DIR/members/<id>/ (the command's own files in out/, status.json with its exit code, error line and
 // time), gathered into DIR/results.csv, results.h5 and plots/ (sweeps/workflow/gather.py). A re-run runs
 // only members without a status (new, changed or interrupted). --dry-run writes and does not run.
-#include <sys/stat.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "app/commands.hpp"
 #include "app/common.hpp"
@@ -43,10 +39,7 @@ long member_memory_mb(const Scene& scene, double& dofs) {
 }
 
 std::string summary_file(const std::string& command) {
-  return command == "kfit"     ? "kfit.json"
-         : command == "green"  ? "summary.json"
-         : command == "report" ? "report.json"
-                               : "summary.json";
+  return command == "kfit" ? "kfit.json" : command == "report" ? "report.json" : "summary.json";
 }
 
 }  // namespace
@@ -103,10 +96,11 @@ int run_sweep(const std::string& spec_path, const std::string& out_dir, int core
     shape += (shape.empty() ? "" : " x ") + std::to_string(a.values.size());
   std::string command = "skinfem " + sweep.command;
   for (const auto& w : sweep.options) command += " " + w;
-  const std::string memory = sweep.mem_mb > 0 ? "the spec's mem_mb" : "the mesh estimate";
-  std::printf("sweep %s: %zu member%s of `%s` (%s %s), %d already done; memory per job from %s %ld-%ld MB\n",
+  const std::string memory = (sweep.mem_mb > 0 ? "the spec's mem_mb " : "the mesh estimate ") +
+                             std::to_string(mem_lo) + (mem_hi > mem_lo ? "-" + std::to_string(mem_hi) : "");
+  std::printf("sweep %s: %zu member%s of `%s` (%s %s), %d already done; memory per job from %s MB\n",
               sweep.name.c_str(), sweep.members.size(), sweep.members.size() == 1 ? "" : "s", command.c_str(),
-              sweep.combine.c_str(), shape.c_str(), done, memory.c_str(), mem_lo, mem_hi);
+              sweep.combine.c_str(), shape.c_str(), done, memory.c_str());
 
   std::vector<std::string> argv{"snakemake", "--snakefile",        sweep_workflow(), "--directory",
                                 out_dir,     "--rerun-incomplete", "--keep-going"};
@@ -130,11 +124,12 @@ int run_sweep(const std::string& spec_path, const std::string& out_dir, int core
   progress("running: " + line);
   const int rc = run_child(argv);
   if (rc != 0) {
-    std::fprintf(
-        stderr, "skinfem: sweep: Snakemake %s; the members' errors are in %s/members/*/status.json\n",
+    const std::string what =
         rc < 0 ? "could not start or was killed (is Debian's snakemake installed? scripts/setup installs it)"
-               : ("exited with code " + std::to_string(rc)).c_str(),
-        out_dir.c_str());
+               : "exited with code " + std::to_string(rc);
+    std::fprintf(stderr,
+                 "skinfem: sweep: Snakemake %s; the members' errors are in %s/members/*/status.json\n",
+                 what.c_str(), out_dir.c_str());
     return 1;
   }
   return 0;

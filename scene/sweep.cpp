@@ -195,12 +195,8 @@ SweepAxis read_axis(const Reader& r, const json& a, const std::string& P, const 
     r.fail(P + ".pointer", a["pointer"],
            "names nothing in the base scene: " + (parent.empty() ? std::string("/") : parent.to_string()) +
                " is not an object there");
-  for (const std::string& token : [&] {
-         std::vector<std::string> t;
-         for (json::json_pointer p = ptr; !p.empty(); p = p.parent_pointer()) t.insert(t.begin(), p.back());
-         return t;
-       }())
-    axis.column += (axis.column.empty() ? "" : ".") + token;
+  for (json::json_pointer p = ptr; !p.empty(); p = p.parent_pointer())
+    axis.column = p.back() + (axis.column.empty() ? "" : "." + axis.column);
   axis.values = read_values(r, a, P);
   return axis;
 }
@@ -235,9 +231,9 @@ Sweep load_sweep(const std::string& path) {
     r.fail("command", spec.value("command", json()), "must be one of contact, defect, green, kfit, report");
   s.command = spec["command"].get<std::string>();
   if (spec.contains("options")) s.options = read_options(r, spec["options"], s.command);
-  s.combine = spec.value("combine", json("grid")).is_string() ? spec.value("combine", "grid") : "";
-  if (s.combine != "grid" && s.combine != "zip")
-    r.fail("combine", spec["combine"], "must be \"grid\" or \"zip\"");
+  const json combine = spec.value("combine", json("grid"));
+  if (combine != "grid" && combine != "zip") r.fail("combine", combine, "must be \"grid\" or \"zip\"");
+  s.combine = combine.get<std::string>();
 
   if (spec.contains("mem_mb")) {
     const json& m = spec["mem_mb"];
