@@ -2,7 +2,8 @@
 # skinfem sweep on Snakemake (issue 31): a 2 x 2 kfit sweep is killed after its first member and resumed with
 # 2 cores; only the missing members run again, a third sweep runs none, and the gathered table equals every
 # member's own kfit.json. A member that fails at run time does not stop the others and its error is in the
-# table. Bad specs are in tests/app/bad_input.sh.
+# table. The same sweep through a Snakemake profile (a stand-in cluster) gives the same table. Bad specs are in
+# tests/app/bad_input.sh.
 set -euo pipefail
 skinfem=$(realpath "$1")
 tmp=$(mktemp -d)
@@ -109,4 +110,19 @@ JSON
 "$skinfem" sweep zip.json --out Z --dry-run >zip.log
 grep -q "3 members of \`skinfem green\` (zip 3 x 3), 0 already done" zip.log || fail "zip: $(cat zip.log)"
 [ "$(ls Z/scenes | wc -l)" -eq 3 ] && [ ! -e Z/members ] || fail "zip: the dry run ran something"
+# 7. The cluster route without a cluster: the same sweep through a Snakemake profile whose submit command is
+# bash (each job script runs where it is submitted) gives the same table as the local run.
+mkdir profile
+printf 'cluster: "bash"\njobs: 2\nlatency-wait: 5\nkeep-going: true\nrerun-incomplete: true\n' >profile/config.yaml
+"$skinfem" sweep spec.json --out P --profile profile >profile.log 2>&1 || fail "profile: $(tail -3 profile.log)"
+/usr/bin/python3 - <<'PY' || exit 1
+import csv
+local = {r["id"]: r for r in csv.DictReader(open("D/results.csv"))}
+cluster = {r["id"]: r for r in csv.DictReader(open("P/results.csv"))}
+assert local.keys() == cluster.keys(), (local.keys(), cluster.keys())
+for i, row in cluster.items():
+    for key in ("k_central", "k_lsq_line", "k_central_exact", "dofs"):
+        assert row[key] == local[i][key], (i, key, row[key], local[i][key])
+print("profile: the same 4 members and k as the local run")
+PY
 echo "sweep: kill after $n_first member(s), resume ran $ran, third run none; all checks passed"
