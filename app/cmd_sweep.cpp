@@ -44,9 +44,10 @@ std::string summary_file(const std::string& command) {
 
 }  // namespace
 
-int run_sweep(const std::string& spec_path, const std::string& out_dir, int cores, const std::string& profile,
+int run_sweep(const std::string& spec_path, const std::string& out, int cores, const std::string& profile,
               bool dry_run) {
   const Sweep sweep = load_sweep(spec_path);
+  const std::string out_dir = out.empty() ? "out/" + sweep.name : out;
   check_output_dir(out_dir);
   check_run_record(out_dir, "sweep");
   prepare_output_dir(out_dir + "/scenes");

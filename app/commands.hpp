@@ -26,7 +26,8 @@ int run_study(const Scene& scene, const std::string& out_dir, const std::vector<
 // per_period: mesh elements per ridge period on the pattern, one level each (at least 3).
 int run_ridge_study(const Scene& scene, const std::string& out_dir, std::vector<double> per_period);
 // A parameter sweep (scene/sweep.hpp) on Snakemake: `cores` locally, or through a Snakemake `profile` (a
-// cluster) when it is not empty; dry_run writes the members and the manifest only.
+// cluster) when it is not empty; dry_run writes the members and the manifest only. out_dir empty:
+// out/<sweep name>.
 int run_sweep(const std::string& spec_path, const std::string& out_dir, int cores, const std::string& profile,
               bool dry_run);
 int run_chain_study(const Scene& scene, const std::string& out_dir, const std::vector<double>& scales);

@@ -175,10 +175,9 @@ int main(int argc, char** argv) {
     }
     if ((report->parsed() || defect->parsed()) && !no_error_bars)
       skinfem::app::check_levels("--error-scales", error_scales, true);
-    if (sweep->parsed()) {
-      const std::string out = sweep->count("--out") ? out_dir : "out/" + skinfem::load_sweep(spec_path).name;
-      return skinfem::app::run_sweep(spec_path, out, cores, profile, dry_run);
-    }
+    if (sweep->parsed())
+      return skinfem::app::run_sweep(spec_path, sweep->count("--out") ? out_dir : "", cores, profile,
+                                     dry_run);
     skinfem::pipeline::g_max_dofs = max_dofs;
     const skinfem::Scene scene = skinfem::load_scene(scene_path);
     const std::string command = cli.get_subcommands().front()->get_name();

@@ -89,6 +89,8 @@
 #include <utility>
 #include <vector>
 
+#include "scene/json_text.hpp"
+
 namespace skinfem {
 namespace {
 
@@ -1136,15 +1138,21 @@ void check_load_placement(const Scene& scene, const std::string& what) {
   check_loads(Reader(scene.source_path + " (" + what + ")"), scene);
 }
 
-Scene load_scene(const std::string& path) {
+std::string read_text_file(const std::string& path, const std::string& what) {
   std::error_code ec;
-  if (fs::is_directory(path, ec)) throw SceneError(path + ": cannot read scene file: is a directory");
+  if (fs::is_directory(path, ec)) throw SceneError(path + ": cannot read " + what + ": is a directory");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(path + ": cannot read scene file: " + std::strerror(errno));
+  if (!in) throw SceneError(path + ": cannot read " + what + ": " + std::strerror(errno));
   std::ostringstream text;
   text << in.rdbuf();
-  if (in.bad()) throw SceneError(path + ": cannot read scene file: read error");
-  return parse_scene(text.str(), path);
+  if (in.bad()) throw SceneError(path + ": cannot read " + what + ": read error");
+  return text.str();
 }
+
+nlohmann::json parse_json_text(const std::string& text, const std::string& file) {
+  return parse_json(text, Reader(file));
+}
+
+Scene load_scene(const std::string& path) { return parse_scene(read_text_file(path, "scene file"), path); }
 
 }  // namespace skinfem

@@ -17,12 +17,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 
+#include "scene/json_text.hpp"
 #include "scene/load.hpp"
 
 namespace skinfem {
@@ -55,25 +54,15 @@ struct Reader {
   }
 };
 
-json read_json(const std::string& path, const std::string& what) {
-  std::ifstream in(path);
-  std::error_code ec;
-  if (!in || fs::is_directory(path, ec)) throw SceneError(path + ": cannot read " + what);
-  std::stringstream text;
-  text << in.rdbuf();
-  try {
-    return json::parse(text.str());
-  } catch (const json::parse_error& e) {
-    std::string msg = e.what();
-    for (char& c : msg)
-      if (c == '\n') c = ' ';
-    throw SceneError(path + ": " + what + " is not valid JSON (" + msg + ")");
-  }
-}
-
 double number(const Reader& r, const json& v, const std::string& field) {
   if (!v.is_number() || !std::isfinite(v.get<double>())) r.fail(field, v, "must be a finite number");
   return v.get<double>();
+}
+
+std::string joined(const std::set<std::string>& words) {
+  std::string list;
+  for (const auto& w : words) list += (list.empty() ? "" : ", ") + w;
+  return list;
 }
 
 std::string word(double v) {
@@ -99,20 +88,13 @@ std::vector<std::string> read_options(const Reader& r, const json& o, const std:
   for (const auto& [key, v] : o.items()) {
     const std::string field = "options." + key;
     const auto& ok = allowed.at(command);
-    if (!ok.count(key)) {
-      std::string list;
-      for (const auto& k : ok) list += (list.empty() ? "" : ", ") + k;
-      r.fail(field, v, "not an option of " + command + "; allowed: " + list);
-    }
+    if (!ok.count(key)) r.fail(field, v, "not an option of " + command + "; allowed: " + joined(ok));
     std::string flag = "--" + key;
     for (char& c : flag)
       if (c == '_') c = '-';
     if (choices.count(key)) {
-      if (!v.is_string() || !choices.at(key).count(v.get<std::string>())) {
-        std::string list;
-        for (const auto& k : choices.at(key)) list += (list.empty() ? "" : ", ") + k;
-        r.fail(field, v, "must be one of " + list);
-      }
+      if (!v.is_string() || !choices.at(key).count(v.get<std::string>()))
+        r.fail(field, v, "must be one of " + joined(choices.at(key)));
       words.insert(words.end(), {flag, v.get<std::string>()});
     } else if (key == "no_error_bars") {
       if (!v.is_boolean()) r.fail(field, v, "must be true or false");
@@ -205,7 +187,7 @@ SweepAxis read_axis(const Reader& r, const json& a, const std::string& P, const 
 
 Sweep load_sweep(const std::string& path) {
   const Reader r{path};
-  const json spec = read_json(path, "sweep spec");
+  const json spec = parse_json_text(read_text_file(path, "sweep spec"), path);
   if (!spec.is_object()) r.fail("(top level)", spec, "must be an object");
   static const std::set<std::string> keys{"name", "scene", "command", "options", "combine", "mem_mb", "axes"};
   for (const auto& [key, v] : spec.items())
@@ -242,7 +224,7 @@ Sweep load_sweep(const std::string& path) {
     s.mem_mb = m.get<long>();
   }
 
-  json base = read_json(s.base_scene_path, "base scene");
+  json base = parse_json_text(read_text_file(s.base_scene_path, "base scene"), s.base_scene_path);
   if (!base.is_object()) throw SceneError(s.base_scene_path + ": (top level) must be an object");
   // Members live in another folder: an imported surface is named by its absolute path.
   if (base.contains("geometry") && base["geometry"].is_object() && base["geometry"].contains("path") &&

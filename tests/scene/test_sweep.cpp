@@ -142,5 +142,21 @@ TEST(Sweep, BadSpecsAreRefusedInOneLine) {
               "axes": [{"pointer": "/material/nu", "values": [0.5]}]})")
                 .find("name = \"../up\": must be a file name"),
             std::string::npos);
+  // Read as a scene file is: a duplicate key in the spec or in its base scene is refused, not resolved.
+  EXPECT_NE(refused("dup_spec",
+                    head + R"("command": "green", "axes": [{"pointer": "/material/nu", "values": [0.5]}]})")
+                .find("command: duplicate key"),
+            std::string::npos);
+  const std::string dup = write_spec("dup_base", R"({"scene": "skins/dup.json", "command": "kfit",
+    "axes": [{"pointer": "/material/nu", "values": [0.5]}]})");
+  std::ofstream(fs::path(dup).parent_path() / "skins" / "dup.json")
+      << R"({"geometry": {"type": "flat", "h": 3.0, "h": 2.0, "half_width": 20.0}})";
+  try {
+    load_sweep(dup);
+    ADD_FAILURE() << "a base scene with a duplicate key was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("dup.json: geometry.h: duplicate key"), std::string::npos)
+        << e.what();
+  }
   EXPECT_NE(refused("no_scene", R"({"command": "kfit", "axes": []})").find("scene"), std::string::npos);
 }
