@@ -658,7 +658,15 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
   clock = Stopwatch();
   const std::string script = figures_script();
   progress("figures: " + script);
-  const int rc = run_child({"/usr/bin/python3", script, out_dir});
+  int stopped_by = 0;
+  const int rc = run_child({"/usr/bin/python3", script, out_dir}, &stopped_by);
+  if (stopped_by != 0) {
+    std::fprintf(stderr,
+                 "skinfem: report: stopped by signal %d (%s) while drawing the figures; report.json and "
+                 "index.html not written\n",
+                 stopped_by, strsignal(stopped_by));
+    return 128 + stopped_by;
+  }
   report["figures_exit_code"] = rc;
   wall["figures"] = clock.seconds();
 

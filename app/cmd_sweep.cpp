@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 
 #include "app/commands.hpp"
@@ -123,7 +124,19 @@ int run_sweep(const std::string& spec_path, const std::string& out, int cores, c
     return 0;
   }
   progress("running: " + line);
-  const int rc = run_child(argv);
+  int stopped_by = 0;
+  const int rc = run_child(argv, &stopped_by);
+  if (stopped_by != 0) {
+    int done_now = 0;
+    for (const SweepMember& m : sweep.members)
+      done_now += fs::exists(out_dir + "/members/" + m.id + "/status.json") ? 1 : 0;
+    std::fprintf(stderr,
+                 "skinfem: sweep: stopped by signal %d (%s) after Snakemake ended; %d of %zu members done, "
+                 "results not gathered; the same command resumes with the other %zu\n",
+                 stopped_by, strsignal(stopped_by), done_now, sweep.members.size(),
+                 sweep.members.size() - done_now);
+    return 128 + stopped_by;
+  }
   if (rc != 0) {
     const std::string what =
         rc < 0 ? "could not start or was killed (is Debian's snakemake installed? scripts/setup installs it)"

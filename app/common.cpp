@@ -1,5 +1,6 @@
 #include "app/common.hpp"
 
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -79,21 +80,57 @@ void write_json(const std::string& path, const nlohmann::json& j) {
   write_text_atomic(path, j.dump(2) + "\n");
 }
 
-int run_child(const std::vector<std::string>& argv) {
+namespace {
+volatile sig_atomic_t child_group = 0;
+volatile sig_atomic_t child_signal = 0;
+extern "C" void pass_to_child(int sig) {
+  child_signal = sig;
+  if (child_group > 0) kill(-child_group, sig);
+}
+}  // namespace
+
+int run_child(const std::vector<std::string>& argv, int* interrupted_by) {
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, STDERR_FILENO, STDOUT_FILENO);
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
+  posix_spawnattr_setpgroup(&attr, 0);
+  // Handlers first, with the signals held until the child's group is known, so that none is lost between.
+  struct sigaction pass = {}, saved[3];
+  pass.sa_handler = pass_to_child;
+  sigemptyset(&pass.sa_mask);
+  const int passed[3] = {SIGINT, SIGTERM, SIGHUP};
+  sigset_t held, previous;
+  sigemptyset(&held);
+  for (int s : passed) sigaddset(&held, s);
+  sigprocmask(SIG_BLOCK, &held, &previous);
+  child_signal = 0;
+  for (int i = 0; i < 3; ++i) sigaction(passed[i], &pass, &saved[i]);
   pid_t pid = 0;
-  const int err = posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
+  // The child starts with these signals at their defaults (exec resets handlers) and unblocked.
+  posix_spawnattr_setsigmask(&attr, &previous);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK);
+  const int err = posix_spawnp(&pid, args[0], &actions, &attr, args.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
-  if (err != 0) return -1;
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) return -1;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  posix_spawnattr_destroy(&attr);
+  child_group = err == 0 ? pid : 0;
+  sigprocmask(SIG_SETMASK, &previous, nullptr);
+  int status = 0, rc = -1;
+  if (err == 0) {
+    pid_t got;
+    while ((got = waitpid(pid, &status, 0)) < 0 && errno == EINTR) {
+    }
+    rc = got == pid && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  child_group = 0;
+  for (int i = 0; i < 3; ++i) sigaction(passed[i], &saved[i], nullptr);
+  if (interrupted_by) *interrupted_by = child_signal;
+  return rc;
 }
 
 void check_levels(const std::string& option, const std::vector<double>& levels, bool decreasing) {

@@ -31,7 +31,11 @@ void write_json(const std::string& path, const nlohmann::json& j);
 // Runs argv[0] (found on PATH unless it has a slash) with these arguments, no shell in between (nothing in
 // them is ever parsed as a command), its stdout sent to our stderr so that stdout stays the summary; waits
 // for it. Returns its exit code, or -1 when it could not start or was killed.
-int run_child(const std::vector<std::string>& argv);
+// The child runs in its own process group. SIGINT, SIGTERM or SIGHUP sent to us while it runs (a Ctrl-C, a
+// scheduler's stop, a closed terminal) is passed once to that whole group and we go on waiting: the child's
+// own shutdown (Snakemake removing its unfinished outputs) ends before we return, so a re-run started
+// after we exit never races it. *interrupted_by (when given) is that signal's number, or 0.
+int run_child(const std::vector<std::string>& argv, int* interrupted_by = nullptr);
 
 // Study levels given on the command line (--scales, --ridges, --error-scales): each finite, no two equal,
 // in the order the option states (coarse to fine); otherwise the finest level, the reference of every

@@ -36,7 +36,17 @@ for _ in $(seq 1 6000); do
   sleep 0.05
 done
 kill -TERM -- -$pid
-wait $pid || true
+rc=0
+wait $pid || rc=$?
+# skinfem passes the signal to Snakemake and returns only after Snakemake has ended (its members stopped,
+# their unfinished outputs removed): the statuses counted here are final, and the run resumes at once.
+[ "$rc" -eq 143 ] || fail "the killed sweep exited with $rc, want 143 (128 + SIGTERM): $(tail -3 run1.log)"
+grep -q "stopped by signal 15 .* members done, results not gathered; the same command resumes" run1.log ||
+  fail "the killed sweep did not say what it left: $(tail -2 run1.log)"
+# Snakemake and its jobs run in D (--directory): none may be left.
+for p in /proc/[0-9]*; do
+  [ "$(readlink "$p/cwd" 2>/dev/null)" != "$tmp/D" ] || fail "process ${p#/proc/} of the killed sweep still runs"
+done
 first=$(statuses)
 n_first=$(echo "$first" | wc -l)
 [ -n "$first" ] && [ "$n_first" -lt 4 ] || fail "after the kill $n_first of 4 members have a status (want 1 to 3)"
