@@ -66,10 +66,10 @@ void write_crosscheck(const validation::Crosscheck& x, const Sensors& sensors, c
           d << cases[c] << "," << x.signal_variants[v].name << "," << x.u[i] << "," << k + 1 << ","
             << 1e3 * x.signals[v][c](i, 2 * k) << "," << 1e3 * x.signals[v][c](i, 2 * k + 1) << "\n";
   p << "x_mm,p_hertz_halfspace_kPa,p_layer_exact_kPa,p_fe_frictionless_kPa,p_fe_coupled_kPa,q_fe_coupled_"
-       "kPa\n";
+       "kPa,p_meridian_frictionless_kPa\n";
   for (const auto& row : x.pressure_profile) {
     p << row[0];
-    for (int j = 1; j < 6; ++j) {
+    for (int j = 1; j < 7; ++j) {
       p << ",";
       if (std::isfinite(row[j])) p << 1e3 * row[j];
     }
@@ -579,10 +579,12 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
     wall["condense"] = contact->wall["condense"];
     clock = Stopwatch();
     double force = 0;  // the chosen mode's; the run is dropped here, its set-up released with `contact`
+    std::optional<contact::MeridianContactResult> meridian;  // frictionless, where the skin has one
     {
       const auto run = contact_stage(scene, contact, out_dir + "/contact", scene.contact->friction);
       report["contact"] = run.summary;
       force = run.result.result().force_N;
+      if (run.result.meridian_check) meridian = run.result.meridian_check->frictionless;
     }
     wall["contact"] = clock.seconds();
     if (scene.contact->sweep) {
@@ -592,7 +594,7 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
       wall["defect"] = clock.seconds();
       clock = Stopwatch();
       x = crosscheck_run(scene, *adjoints, *contact, *defect, scene.contact->force.value_or(force),
-                         headline.fe.k_lsq_line);
+                         headline.fe.k_lsq_line, meridian ? &*meridian : nullptr);
       write_crosscheck(*x, scene.sensors, out_dir + "/crosscheck");
       index.front = validation::front_sensor_answer(
           *x, validation::front_sensors(scene.sensors, contact_center(scene), scene.contact->direction),

@@ -190,6 +190,15 @@ Pass condense_pass(const MeridianContactSkin& skin, double zone_radius,
 }
 }  // namespace
 
+double MeridianContactResult::pressure_at(double radius) const {
+  const auto hi = std::upper_bound(r.begin(), r.end(), radius);
+  if (hi == r.begin()) return r.empty() ? 0.0 : lambda[0];
+  if (hi == r.end()) return radius == r.back() ? lambda[lambda.size() - 1] : 0.0;
+  const size_t j = hi - r.begin();
+  const double u = (radius - r[j - 1]) / (r[j] - r[j - 1]);
+  return (1 - u) * lambda[j - 1] + u * lambda[j];
+}
+
 ZoneTooSmall::ZoneTooSmall(double r)
     : std::runtime_error("the contact reaches the zone's last multiplier at r = " + std::to_string(r) +
                          " mm"),

@@ -70,6 +70,9 @@ struct MeridianContactResult {
   Eigen::VectorXd readings_per_ratio;
   double complementarity = 0, min_lambda = 0, min_gap = 0;
   int pivots = 0;
+  // The pressure at radius r (mm) as the multipliers' hats carry it: linear between neighbouring r_i, 0
+  // beyond the last; MPa.
+  double pressure_at(double r) const;
   int dofs = 0;         // mode 0's free unknowns (mode 1's added with a sliding direction)
   int multipliers = 0;  // the second pass's
   struct Cost {

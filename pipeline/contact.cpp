@@ -96,6 +96,7 @@ ContactRun contact_run(const Scene& scene, std::shared_ptr<const ContactSetup> s
     c.indentation_rel = results[FrictionMode::none].depth_mm / m.solved.depth_mm - 1;
     c.dofs = m.solved.dofs;
     c.seconds = check_clock.seconds();
+    c.frictionless = m.solved;
     run.meridian_check = c;
     wall["meridian_check"] = c.seconds;
   }

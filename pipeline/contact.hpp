@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "contact/meridian_contact.hpp"
 #include "contact/metrics.hpp"
 #include "fem/mixed_solver.hpp"
 #include "pipeline/contact_setup.hpp"
@@ -43,6 +44,7 @@ struct ContactRun {
     double readings_rel = 0, a_rel = 0, p0_rel = 0, indentation_rel = 0;
     int dofs = 0;
     double seconds = 0;
+    contact::MeridianContactResult frictionless;  // its pressure, edge resolved (the report's profile)
   };
   std::optional<MeridianCheck> meridian_check;
 

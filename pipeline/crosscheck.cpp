@@ -7,7 +7,7 @@ namespace skinfem::pipeline {
 
 validation::Crosscheck crosscheck_run(const Scene& scene, const AdjointSetup& adjoints,
                                       const ContactSetup& contact, const DefectRun& defect, double force_N,
-                                      double k_best) {
+                                      double k_best, const contact::MeridianContactResult* meridian) {
   progress("crosscheck: the paper's model against FE, one assumption at a time");
   validation::CrosscheckInput in;
   in.mesh = &contact.mesh();
@@ -26,6 +26,7 @@ validation::Crosscheck crosscheck_run(const Scene& scene, const AdjointSetup& ad
   in.sweeps = &defect.sweeps;
   in.frames = &defect.frames;
   in.sweep = *scene.contact->sweep;
+  in.meridian = meridian;
   return validation::crosscheck(in);
 }
 

@@ -11,10 +11,12 @@
 namespace skinfem::pipeline {
 
 // force_N: the indenter's force (the scene's when it prescribes one, else the contact's); k_best: the best
-// fit of k (kfit's k_lsq_line of sensor #1). Throws SceneError when a sensor or the contact centre has no
-// skin above it.
+// fit of k (kfit's k_lsq_line of sensor #1); meridian: the frictionless contact on the meridian when the
+// scene has one (ContactRun::meridian_check), for its edge-resolved pressure profile. Throws SceneError when
+// a sensor or the contact centre has no skin above it.
 validation::Crosscheck crosscheck_run(const Scene& scene, const AdjointSetup& adjoints,
                                       const ContactSetup& contact, const DefectRun& defect, double force_N,
-                                      double k_best);
+                                      double k_best,
+                                      const contact::MeridianContactResult* meridian = nullptr);
 
 }  // namespace skinfem::pipeline

@@ -19,7 +19,8 @@
 #   crosscheck/readings.csv  case,variant,sensor,x_mm,sigma_z_kPa,sigma_x_kPa; case in static, sliding.
 #   crosscheck/defect.csv    case,variant,u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa; case in static, sliding.
 #   crosscheck/pressure.csv  x_mm,p_hertz_halfspace_kPa,p_layer_exact_kPa,p_fe_frictionless_kPa,
-#                            p_fe_coupled_kPa,q_fe_coupled_kPa; an empty cell (not x_mm) = no value there.
+#                            p_fe_coupled_kPa,q_fe_coupled_kPa[,p_meridian_frictionless_kPa]; an empty cell
+#                            (not x_mm) = no value there.
 #   study/chain_study.csv    stage,level,dofs,seconds,error (error relative, > 0; seconds > 0). Optional.
 #   Sensors are numbered 1, 2, ...; extra columns are ignored.
 #
@@ -362,20 +363,30 @@ def fig_varsigma(d, comp):
 def pressure_profiles(d):
     cols = {"p_hertz_halfspace_kPa": ("p, Hertz on a half-space", "tab:gray", "--"),
             "p_layer_exact_kPa": ("p, Hertz on the bonded layer (exact)", "tab:red", "-."),
-            "p_fe_frictionless_kPa": ("p, FE frictionless", "tab:blue", "-"),
+            "p_meridian_frictionless_kPa": ("p, FE frictionless on the meridian (2D, cells graded to the edge)",
+                                            "tab:blue", "-"),
+            "p_fe_frictionless_kPa": ("p, FE frictionless in 3D (the hole sweep's mesh)",
+                                      "tab:cyan", "-"),
             "p_fe_coupled_kPa": ("p, FE with coupled friction", "k", "-"),
             "q_fe_coupled_kPa": ("q (tangential), FE with coupled friction", "k", ":")}
-    t = read_csv(os.path.join(d, "crosscheck/pressure.csv"), dict({"x_mm": number}, **{c: number_or_nan for c in cols}))
+    optional = ("p_meridian_frictionless_kPa",)
+    t = read_csv(os.path.join(d, "crosscheck/pressure.csv"),
+                 dict({"x_mm": number}, **{c: number_or_nan for c in cols if c not in optional}), optional)
     fig, ax = plt.subplots(figsize=(10, 6))
     o = np.argsort(t["x_mm"], kind="stable")
     for c, (label, color, ls) in cols.items():
+        if c not in t:
+            continue
         v = t[c][o]
         if np.isfinite(v).any():
-            ax.plot(t["x_mm"][o], v, ls=ls, color=color, lw=1.8, label=label)
+            ax.plot(t["x_mm"][o], v, ls=ls, color=color, lw=1.0 if c == "p_fe_frictionless_kPa" else 1.8,
+                    label=label)
     if not ax.lines:
         no_data(ax, "no values")
     else:
-        ax.legend()
+        # Headroom above the curves for the legend.
+        ax.set_ylim(top=1.5 * max(np.nanmax(line.get_ydata()) for line in ax.lines))
+        ax.legend(loc="upper left")
     ax.axhline(0, color="0.5", lw=0.8)
     ax.set_xlabel("x (mm), along y = 0")
     ax.set_ylabel("contact traction (kPa)")

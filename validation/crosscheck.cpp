@@ -184,7 +184,9 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
         hertz ? hertz->p0_MPa * std::sqrt(std::max(0.0, 1 - r * r / (hertz->a_mm * hertz->a_mm))) : nan;
     const double pl = layer ? layer->pressure_MPa(r) : nan;
     const double pc = fe_coupled.pressure(x, y);
-    out.pressure_profile.push_back({x, ph, pl, fe_none.pressure(x, y), pc, fe_coupled.tangential(x, y)});
+    const double pm =
+        in.meridian ? in.meridian->pressure_at(std::hypot(x - in.center[0], y - in.center[1])) : nan;
+    out.pressure_profile.push_back({x, ph, pl, fe_none.pressure(x, y), pc, fe_coupled.tangential(x, y), pm});
   }
   return out;
 }

@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "contact/hole_sweep.hpp"
+#include "contact/meridian_contact.hpp"
 #include "validation/paper_model.hpp"
 
 namespace skinfem::validation {
@@ -54,6 +55,9 @@ struct CrosscheckInput {
   const std::vector<contact::SweepResult>* sweeps = nullptr;
   const std::vector<std::vector<contact::ContactResult>>* frames = nullptr;
   HoleSweep sweep;
+  // The frictionless contact on the meridian about `center` (pipeline/meridian_contact.hpp), where the scene
+  // has it: its edge-resolved pressure is one more profile. Optional.
+  const contact::MeridianContactResult* meridian = nullptr;
 };
 
 struct Variant {
@@ -78,8 +82,8 @@ struct Crosscheck {
   // [variant][case][sensor][component z, x] against signals[0] (FE); variant 0 is all ones and zeros.
   std::vector<std::array<std::vector<std::array<SignalMetrics, 2>>, 2>> metrics;
   // Pressure profiles along y = center_y: x, Hertz half-space, exact layer, FE frictionless, FE coupled
-  // (and its traction μ p); NaN where a variant was skipped.
-  std::vector<std::array<double, 6>> pressure_profile;
+  // (and its traction μ p), FE frictionless on the meridian; NaN where a variant was skipped.
+  std::vector<std::array<double, 7>> pressure_profile;
 };
 
 Crosscheck crosscheck(const CrosscheckInput& in);
