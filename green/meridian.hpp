@@ -10,10 +10,12 @@
 // Method, vol. 1, axisymmetric stress analysis), U = 0 on the axis; mode 1 adds ε_θθ = (U + V)/r, γ_rθ = −U/r
 // + ∂_r V − V/r, γ_θz = ∂_z V − W/r, and the angle integrates to π instead of 2π.
 //
-// The reading by reciprocity, as green/fe_green.hpp in 3D: the base traction's point value at the axis is
-// t(0) = φ(0)ᵀ M⁻¹ R (R the base reactions, M the base trace's mass matrix, weight 2πr), i.e. J = w·R with
-// w = M⁻¹ e_axis; imposing the base displacement −w (along z) with no load gives, at each top node, the
-// reading per unit force there.
+// The reading by reciprocity, as green/fe_green.hpp in 3D: a reading of the base traction is J = w·R (R the
+// base reactions) with w = M⁻¹ b (M the base trace's mass matrix, weight 2πr): b_i = ∫_disc φ_i dA / (πa²)
+// for a disc mean; imposing the base displacement −w (along z) with no load gives, at each top node, the
+// reading per unit force there. The point value at the axis is the limit of disc means, extrapolated from
+// two small discs (a = h/40, h/20; meridian.cpp, disc_weights): the trace's own axis value, b = e_axis,
+// converges as a point value does, 20-40x less accurately.
 #pragma once
 
 #include <Eigen/Dense>
