@@ -85,6 +85,24 @@ SensorReading BaseTraction::reading_at(double x, double y) const {
   return {(*t)[2], -(*t)[0]};
 }
 
+std::vector<std::array<double, 3>> point_value_rule(double h) {
+  const double a1 = h / 40, a2 = h / 20, c1 = a2 * a2 / (a2 * a2 - a1 * a1), c2 = 1 - c1;
+  std::vector<std::array<double, 3>> rule;
+  for (const auto& p : uniform_disc_rule(a1, 12, 32)) rule.push_back({p[0], p[1], c1 * p[2]});
+  for (const auto& p : uniform_disc_rule(a2, 12, 32)) rule.push_back({p[0], p[1], c2 * p[2]});
+  return rule;
+}
+
+SensorReading BaseTraction::point_value(double x, double y, double thickness) const {
+  SensorReading r;
+  for (const auto& p : point_value_rule(thickness)) {
+    const SensorReading v = reading_at(x + p[0], y + p[1]);
+    r.sigma_z += p[2] * v.sigma_z;
+    r.sigma_x += p[2] * v.sigma_x;
+  }
+  return r;
+}
+
 SensorReading BaseTraction::disc_mean(double x, double y, double diameter) const {
   SensorReading r;
   for (const auto& p : uniform_disc_rule(0.5 * diameter, 12, 32)) {
@@ -115,7 +133,7 @@ Eigen::VectorXd ReadingFunctionals::operator()(double x, double y, double diamet
   // reading = Σ_q w_q N(x_q)ᵀ T, T = M⁻¹ R  ⇒  reading = (M⁻¹ Σ_q w_q N(x_q))ᵀ R.
   const auto& [mesh, index, mass] = *impl_;
   const auto pts = diameter > 0 ? uniform_disc_rule(0.5 * diameter, 12, 32)
-                                : std::vector<std::array<double, 3>>{{0.0, 0.0, 1.0}};  // the centre value
+                                : point_value_rule(meshed_thickness(mesh, x, y));
   Eigen::VectorXd w = Eigen::VectorXd::Zero(index.nodes.size());
   for (const auto& p : pts) {
     double s, t;

@@ -67,6 +67,10 @@ int PlanarFaceIndex::find(double x, double y, double& s, double& t) const {
 double skin_thickness(const Geometry& geometry, const TetMesh& mesh, double x, double y) {
   const SkinShape shape(geometry);
   if (shape.exact()) return shape.mean_top_z(x, y);
+  return meshed_thickness(mesh, x, y);
+}
+
+double meshed_thickness(const TetMesh& mesh, double x, double y) {
   const PlanarFaceIndex top(mesh, kTop);
   double s, t;
   const int f = top.find(x, y, s, t);

@@ -38,5 +38,7 @@ class PlanarFaceIndex {
 // height of the meshed top surface there (its quadratic faces), so imported skins get their own thickness.
 // Throws std::out_of_range, naming the point, when no skin lies above it.
 double skin_thickness(const Geometry& geometry, const TetMesh& mesh, double x, double y);
+// The height of the meshed top surface above (x, y), mm; throws as skin_thickness.
+double meshed_thickness(const TetMesh& mesh, double x, double y);
 
 }  // namespace skinfem

@@ -89,8 +89,8 @@ GreenSample direct_sample(const SmallLayer& l, int sensor, bool disc, const Load
   for (bool tangential : {false, true}) {
     const Eigen::Vector3d dir = tangential ? Eigen::Vector3d(1, 0, 0) : Eigen::Vector3d(0, 0, -1);
     const BaseTraction base(l.mesh, l.model.solve(load(dir), {}).reactions);
-    const SensorReading r =
-        disc ? base.disc_mean(p[0], p[1], l.scene.sensors.disc_diameter) : base.reading_at(p[0], p[1]);
+    const SensorReading r = disc ? base.disc_mean(p[0], p[1], l.scene.sensors.disc_diameter)
+                                 : base.point_value(p[0], p[1], meshed_thickness(l.mesh, p[0], p[1]));
     (tangential ? g.xz : g.zz) = r.sigma_z;
     (tangential ? g.xx : g.zx) = r.sigma_x;
   }

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "fem/face_index.hpp"
 #include "green/calibration.hpp"
 #include "mesh/build.hpp"
 #include "scene/load.hpp"
@@ -76,8 +77,9 @@ TEST(KRegression, AdjointGreenMapEqualsDirectSolves) {
         const LoadCaseResult r = model.solve(model.point_load(p[0] + off[0], p[1] + off[1], force), {});
         const BaseTraction base(mesh, r.reactions);
         for (bool disc : {false, true}) {
-          const SensorReading direct =
-              disc ? base.disc_mean(p[0], p[1], s.sensors.disc_diameter) : base.reading_at(p[0], p[1]);
+          const SensorReading direct = disc
+                                           ? base.disc_mean(p[0], p[1], s.sensors.disc_diameter)
+                                           : base.point_value(p[0], p[1], meshed_thickness(mesh, p[0], p[1]));
           const GreenSample g = fe.at(sensor, disc, off[0], off[1], LayerLoad::point, 0);
           const double scale = 3 / (2 * M_PI * 1.5 * 1.5);  // Boussinesq peak at this depth
           EXPECT_NEAR(tangential ? g.xz : g.zz, direct.sigma_z, 1e-9 * scale);
