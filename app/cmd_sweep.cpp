@@ -39,6 +39,14 @@ long member_memory_mb(const Scene& scene, double& dofs) {
   return e.known ? std::max(256L, std::lround(1024 * estimated_memory_gb(e.dofs))) : 4096L;
 }
 
+// Members with a status.json (finished, or refused with their error): what a re-run does not run again.
+int members_done(const Sweep& sweep, const std::string& out_dir) {
+  int done = 0;
+  for (const SweepMember& m : sweep.members)
+    done += fs::exists(out_dir + "/members/" + m.id + "/status.json");
+  return done;
+}
+
 std::string summary_file(const std::string& command) {
   return command == "kfit" ? "kfit.json" : command == "report" ? "report.json" : "summary.json";
 }
@@ -70,7 +78,6 @@ int run_sweep(const std::string& spec_path, const std::string& out, int cores, c
     manifest["axes"].push_back({{"pointer", a.pointer}, {"column", a.column}, {"values", values}});
   }
   long mem_lo = 1L << 40, mem_hi = 0;
-  int done = 0;
   for (const SweepMember& m : sweep.members) {
     const std::string scene_file = "scenes/" + m.id + ".json";
     // An existing member's scene is left alone (its name is its content), so its results stay up to date.
@@ -87,7 +94,6 @@ int run_sweep(const std::string& spec_path, const std::string& out, int cores, c
                                    {"mem_mb", mem},
                                    {"estimated_mem_mb", estimate},
                                    {"estimated_dofs", dofs}});
-    done += fs::exists(out_dir + "/members/" + m.id + "/status.json") ? 1 : 0;
   }
   write_json(out_dir + "/manifest.json", manifest);
   write_json(out_dir + "/run.json",
@@ -102,7 +108,7 @@ int run_sweep(const std::string& spec_path, const std::string& out, int cores, c
                              std::to_string(mem_lo) + (mem_hi > mem_lo ? "-" + std::to_string(mem_hi) : "");
   std::printf("sweep %s: %zu member%s of `%s` (%s %s), %d already done; memory per job from %s MB\n",
               sweep.name.c_str(), sweep.members.size(), sweep.members.size() == 1 ? "" : "s", command.c_str(),
-              sweep.combine.c_str(), shape.c_str(), done, memory.c_str());
+              sweep.combine.c_str(), shape.c_str(), members_done(sweep, out_dir), memory.c_str());
 
   std::vector<std::string> argv{"snakemake", "--snakefile",        sweep_workflow(), "--directory",
                                 out_dir,     "--rerun-incomplete", "--keep-going"};
@@ -127,9 +133,7 @@ int run_sweep(const std::string& spec_path, const std::string& out, int cores, c
   int stopped_by = 0;
   const int rc = run_child(argv, &stopped_by);
   if (stopped_by != 0) {
-    int done_now = 0;
-    for (const SweepMember& m : sweep.members)
-      done_now += fs::exists(out_dir + "/members/" + m.id + "/status.json") ? 1 : 0;
+    const int done_now = members_done(sweep, out_dir);
     std::fprintf(stderr,
                  "skinfem: sweep: stopped by signal %d (%s) after Snakemake ended; %d of %zu members done, "
                  "results not gathered; the same command resumes with the other %zu\n",

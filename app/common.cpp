@@ -98,7 +98,6 @@ int run_child(const std::vector<std::string>& argv, int* interrupted_by) {
   posix_spawn_file_actions_adddup2(&actions, STDERR_FILENO, STDOUT_FILENO);
   posix_spawnattr_t attr;
   posix_spawnattr_init(&attr);
-  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
   posix_spawnattr_setpgroup(&attr, 0);
   // Handlers first, with the signals held until the child's group is known, so that none is lost between.
   struct sigaction pass = {}, saved[3];

@@ -85,11 +85,16 @@ SensorReading BaseTraction::reading_at(double x, double y) const {
   return {(*t)[2], -(*t)[0]};
 }
 
+PointValueDiscs point_value_discs(double h) {
+  const double a1 = h / 40, a2 = 2 * a1, w1 = a2 * a2 / (a2 * a2 - a1 * a1);
+  return {a1, w1, a2, 1 - w1};
+}
+
 std::vector<std::array<double, 3>> point_value_rule(double h) {
-  const double a1 = kPointValueDiscOverH * h, a2 = 2 * a1, c1 = a2 * a2 / (a2 * a2 - a1 * a1), c2 = 1 - c1;
+  const PointValueDiscs d = point_value_discs(h);
   std::vector<std::array<double, 3>> rule;
-  for (const auto& p : uniform_disc_rule(a1, 12, 32)) rule.push_back({p[0], p[1], c1 * p[2]});
-  for (const auto& p : uniform_disc_rule(a2, 12, 32)) rule.push_back({p[0], p[1], c2 * p[2]});
+  for (const auto& p : uniform_disc_rule(d.a1, 12, 32)) rule.push_back({p[0], p[1], d.w1 * p[2]});
+  for (const auto& p : uniform_disc_rule(d.a2, 12, 32)) rule.push_back({p[0], p[1], d.w2 * p[2]});
   return rule;
 }
 

@@ -46,7 +46,10 @@ class BaseTraction {
 // a smooth trace's disc mean of radius a is t(0) + ∇²t(0) a²/8 + O(a⁴), so t(0) = (a2² m(a1) − a1² m(a2)) /
 // (a2² − a1²) + O(a1² a2²), with a1 = h/40, a2 = h/20 (green/meridian.cpp: the same on the meridian). The
 // traction's own value at a point, an L2 projection's, converges more slowly than its means.
-constexpr double kPointValueDiscOverH = 1.0 / 40;  // a1 / h; a2 = 2 a1
+struct PointValueDiscs {
+  double a1, w1, a2, w2;  // radii (mm) and weights: t(0) ≈ w1·m(a1) + w2·m(a2)
+};
+PointValueDiscs point_value_discs(double h);
 std::vector<std::array<double, 3>> point_value_rule(double h);
 
 // Weights w (3N vector) such that the disc-mean reading component of the traction field built from

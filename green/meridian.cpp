@@ -232,7 +232,7 @@ Eigen::VectorXd disc_mean_load(const std::vector<double>& r, double disc_radius)
 // was 20-40x further from the exact layer (kfit, flat layer: g_xx, g_zx 4.4e-3, 4.8e-3 of peak; g_zz 6.8e-4
 // at ν = 0.3). With a1 = h/40 and a2 = h/20 the O(a⁴) remainder is 3e-6 of k_central (it scales as (a/h)⁴:
 // 4.2e-5 at h/20 and h/10, 6.6e-4 at h/10 and h/5), below the disc means' discretization error. The same
-// discs as in 3D (fem/base_traction.hpp, point_value_rule).
+// discs and weights as in 3D (fem/base_traction.hpp, point_value_discs).
 
 Eigen::MatrixXd disc_weights(const MeridianMesh& m, double disc_radius) {
   const MeridianTrace trace(m, m.base, 2 * M_PI);
@@ -240,8 +240,8 @@ Eigen::MatrixXd disc_weights(const MeridianMesh& m, double disc_radius) {
   const int nb = static_cast<int>(r.size());
   const bool has_disc = disc_radius > 0;
   Eigen::MatrixXd b = Eigen::MatrixXd::Zero(nb, has_disc ? 2 : 1);
-  const double h = m.nodes(m.top.front(), 1), a1 = kPointValueDiscOverH * h, a2 = 2 * a1;
-  b.col(0) = (a2 * a2 * disc_mean_load(r, a1) - a1 * a1 * disc_mean_load(r, a2)) / (a2 * a2 - a1 * a1);
+  const PointValueDiscs d = point_value_discs(m.nodes(m.top.front(), 1));
+  b.col(0) = d.w1 * disc_mean_load(r, d.a1) + d.w2 * disc_mean_load(r, d.a2);
   if (has_disc) b.col(1) = disc_mean_load(r, disc_radius);
   return trace.solve_mass(b);
 }

@@ -5,6 +5,7 @@
 // checked by its own convergence, by its limit as the height goes to 0 (the disc), and against the 3D post.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -35,19 +36,14 @@ double punch_reading(const MeridianGreen& g, double x) { return punch_readings(g
 // The point map's largest error, all four components (zz, zx, xz, xx), on a polar grid of offsets to 12 mm
 // (both modes), each against its component's peak.
 std::array<double, 4> point_map_errors(const MeridianGreen& g, const green::LayerGreen& point) {
-  std::array<double, 4> err{}, peak{};
+  std::vector<green::GreenSample> fe, ex;
   for (double rho = 0; rho <= 12; rho += 0.1)
     for (int k = 0; k < 12; ++k) {
       const double x = rho * std::cos(2 * M_PI * k / 12 + 0.1), y = rho * std::sin(2 * M_PI * k / 12 + 0.1);
-      const green::GreenSample fe = g.at(x, y), ex = point.at(x, y);
-      for (size_t c = 0; c < 4; ++c) {
-        const auto comp = green::kComponents[c];
-        err[c] = std::max(err[c], std::abs(green::component(fe, comp) - green::component(ex, comp)));
-        peak[c] = std::max(peak[c], std::abs(green::component(ex, comp)));
-      }
+      fe.push_back(g.at(x, y));
+      ex.push_back(point.at(x, y));
     }
-  for (size_t c = 0; c < 4; ++c) err[c] /= peak[c];
-  return err;
+  return green::max_error_over_peak(fe, ex);
 }
 
 TEST(MeridianGreen, FlatLayerConvergesToTheExactLayer) {
@@ -67,18 +63,13 @@ TEST(MeridianGreen, FlatLayerConvergesToTheExactLayer) {
     for (double x : {1.0, 2.0, 4.0})
       err_offsets = std::max(err_offsets, std::abs(punch_reading(g, x) / punch.at(x, 0).zz - 1));
     // The disc reading's map against the exact disc mean (LayerGreen's sensor_radius), every component.
-    std::array<double, 4> derr{}, dpeak{};
+    std::vector<green::GreenSample> fe_disc, ex_disc;
     for (double x = -12; x <= 12; x += 0.1) {
-      const green::GreenSample fe = g.at(x, 0.3, true), ex = disc.at(x, 0.3);
-      for (size_t c = 0; c < 4; ++c) {
-        const auto comp = green::kComponents[c];
-        derr[c] = std::max(derr[c], std::abs(green::component(fe, comp) - green::component(ex, comp)));
-        dpeak[c] = std::max(dpeak[c], std::abs(green::component(ex, comp)));
-      }
+      fe_disc.push_back(g.at(x, 0.3, true));
+      ex_disc.push_back(disc.at(x, 0.3));
     }
-    double de = 0;
-    for (size_t c = 0; c < 4; ++c) de = std::max(de, derr[c] / dpeak[c]);
-    err_disc.push_back(de);
+    const std::array<double, 4> derr = green::max_error_over_peak(fe_disc, ex_disc);
+    err_disc.push_back(*std::max_element(derr.begin(), derr.end()));
     const std::array<double, 4> err = point_map_errors(g, point);
     std::printf("  map error / peak: zz %.2e, zx %.2e, xz %.2e, xx %.2e\n", err[0], err[1], err[2], err[3]);
     size.push_back(scale);
@@ -244,17 +235,12 @@ MeridianGreen post_green(const std::function<double(double)>& top, double radius
 // Largest difference over every component at the offsets, over each component's largest reference value.
 std::array<double, 4> map_difference(const MeridianGreen& g, const MeridianGreen& ref,
                                      const std::vector<double>& offsets) {
-  std::array<double, 4> diff{}, peak{};
+  std::vector<green::GreenSample> a, b;
   for (double x : offsets) {
-    const green::GreenSample a = punch_readings(g, x), b = punch_readings(ref, x);
-    for (size_t c = 0; c < 4; ++c) {
-      const auto comp = green::kComponents[c];
-      diff[c] = std::max(diff[c], std::abs(green::component(a, comp) - green::component(b, comp)));
-      peak[c] = std::max(peak[c], std::abs(green::component(b, comp)));
-    }
+    a.push_back(punch_readings(g, x));
+    b.push_back(punch_readings(ref, x));
   }
-  for (size_t c = 0; c < 4; ++c) diff[c] /= peak[c];
-  return diff;
+  return green::max_error_over_peak(a, b);
 }
 
 TEST(MeridianGreen, PostConvergesOnItsMeridian) {
