@@ -22,7 +22,7 @@ LoadMetrics load_metrics(const Scene& scene, const TetMesh& mesh, const LoadCase
   if (normal_force != 0) {
     const double h = skin_thickness(scene.geometry, mesh, m.centre[0], m.centre[1]);
     m.center_ratio =
-        base.reading_at(m.centre[0], m.centre[1]).sigma_z / (3 * normal_force / (2 * M_PI * h * h));
+        base.point_value(m.centre[0], m.centre[1], h).sigma_z / (3 * normal_force / (2 * M_PI * h * h));
   }
   return m;
 }

@@ -11,9 +11,9 @@ namespace skinfem {
 struct LoadMetrics {
   double force_balance_rel = 0;  // |∫ base traction + applied force| / |applied force|
   Vec2 centre{0, 0};             // the first punch's centre, else the first patch's
-  // Base traction below the centre over Boussinesq's 3F/(2πh²), h the skin's thickness there (its mesh for
-  // an imported skin); only for a
-  // normal load (a punch, or a patch along ±z).
+  // Base traction below the centre (a sensor's point value there, BaseTraction::point_value) over
+  // Boussinesq's 3F/(2πh²), h the skin's thickness there (its mesh for an imported skin); only for a normal
+  // load (a punch, or a patch along ±z).
   std::optional<double> center_ratio;
 };
 
