@@ -1,0 +1,63 @@
+#!/usr/bin/env python3
+"""The timing table scripts/test prints after ctest: each test's time against its budget in tests/README.md.
+
+Usage: scripts/test_times.py JUNIT_XML release|sanitize|studies WALL_S
+
+JUNIT_XML is ctest's --output-junit file. The budgets are the table under "## Time budget" in tests/README.md
+(columns: test, Release s, sanitizers s, budget Release s, budget sanitizers s; a dash where the test does not
+run in that pass; the studies run in Release), its line "every other test: …" for the tests it does not list,
+and its line "pass: …" for each pass's wall time. The table never fails the run: a test past its budget is named, so the next change sees it.
+"""
+import re
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+README = Path(__file__).resolve().parent.parent / "tests" / "README.md"
+
+
+def budgets(mode):
+    """(per-test budget, budget of any other test, budget of the pass's wall time), in s, from tests/README.md."""
+    col = 4 if mode == "sanitize" else 3
+    text = README.read_text()
+    section = text.split("## Time budget", 1)[1].split("\n## ", 1)[0]
+    per_test = {}
+    for line in section.splitlines():
+        cells = [c.strip().strip("`") for c in line.strip().strip("|").split("|")]
+        if len(cells) == 5 and re.fullmatch(r"[\d.]+", cells[col]):
+            per_test[cells[0]] = float(cells[col])
+    other = re.search(r"every other test: (\d+) s in Release and (\d+) s under the sanitizers", section)
+    total = re.search(r"pass: (\d+) s in Release, (\d+) s under the sanitizers and (\d+) s for the studies", section)
+    if not other or not total:
+        sys.exit("test_times.py: tests/README.md's \"## Time budget\" lacks its 'every other test' or 'pass' line")
+    i = {"release": 1, "sanitize": 2, "studies": 1}[mode]
+    return per_test, float(other.group(i)), float(total.group({"release": 1, "sanitize": 2, "studies": 3}[mode]))
+
+
+def main():
+    junit, mode, wall = sys.argv[1], sys.argv[2], float(sys.argv[3])
+    per_test, other, total = budgets(mode)
+    rows = []
+    for case in ET.parse(junit).getroot().iter("testcase"):
+        if case.get("status") == "notrun" or case.find("skipped") is not None:
+            continue
+        # A parameterized test's name carries its parameter after "  # GetParam() = …": the table names the test.
+        name, seconds = case.get("name").split("  #")[0].strip(), float(case.get("time", "0"))
+        rows.append((seconds, name, per_test.get(name, other)))
+    rows.sort(reverse=True)
+    over = [r for r in rows if r[0] > r[2]]
+    pass_name = {"release": "Release", "sanitize": "sanitizer", "studies": "studies"}[mode]
+    print(f"\nTest times, {pass_name} pass (budgets: tests/README.md, \"Time budget\"); the ten longest and any past "
+          "its budget:")
+    print(f"  {'test':<72} {'s':>7} {'budget s':>9}")
+    for rank, (seconds, name, budget) in enumerate(rows):
+        if rank < 10 or seconds > budget:
+            flag = "  past its budget" if seconds > budget else ""
+            print(f"  {name:<72} {seconds:7.1f} {budget:9.0f}{flag}")
+    pass_over = " (past it)" if wall > total else ""
+    print(f"  {len(rows)} tests, {sum(r[0] for r in rows):.0f} s in all; the pass took {wall:.0f} s of its "
+          f"{total:.0f} s budget{pass_over}" + (f"; {len(over)} test{'s' if len(over) > 1 else ''} past {'their' if len(over) > 1 else 'its'} budget" if over else "") + ".")
+
+
+if __name__ == "__main__":
+    main()

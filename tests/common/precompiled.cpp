@@ -1,0 +1,1 @@
+// Empty: this program only owns the suites' precompiled headers (tests/CMakeLists.txt).
