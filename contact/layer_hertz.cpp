@@ -65,7 +65,6 @@ struct LayerHertzSolution {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kGauss = 16;
 constexpr double kUMax = 24.0;
 constexpr double kMaxRatio = 100.0;  // largest a/h accepted
@@ -112,7 +111,7 @@ void wavenumber_nodes(double omega, double kap, double panel_scale, std::vector<
   double u0 = 0.0;
   while (u0 < kUMax) {
     double width = std::min(std::max(1.0, 0.5 * u0), 4.0);
-    if (omega > 0.0) width = std::min(width, 2.0 * kPi / omega);
+    if (omega > 0.0) width = std::min(width, 2.0 * M_PI / omega);
     width *= panel_scale;
     const double u1 = std::min(u0 + width, kUMax);
     for (int i = 0; i < kGauss; ++i) {
@@ -156,7 +155,7 @@ std::shared_ptr<LayerHertzSolution> solve_radius(double a, double R, double h, d
   const Eigen::Map<const Eigen::VectorXd> wf(s->wf.data(), m), w(s->w.data(), n), x(s->x.data(), n);
   const Eigen::MatrixXd k = C * wf.asDiagonal() * C.transpose();  // k(x_i, x_j)
   Eigen::MatrixXd A = lam * k * w.asDiagonal();
-  A.diagonal().array() += 0.5 * kPi;
+  A.diagonal().array() += 0.5 * M_PI;
   Eigen::MatrixXd rhs(n, 2);
   rhs.col(0).setOnes();
   rhs.col(1) = x.array().square().matrix();
@@ -171,7 +170,7 @@ std::shared_ptr<LayerHertzSolution> solve_radius(double a, double R, double h, d
     kg1 += c * P(j, 0);
     kg2 += c * P(j, 1);
   }
-  const double g1 = 2.0 / kPi * (1.0 - lam * kg1), g2 = 2.0 / kPi * (1.0 - lam * kg2);
+  const double g1 = 2.0 / M_PI * (1.0 - lam * kg1), g2 = 2.0 / M_PI * (1.0 - lam * kg2);
   s->d = g2 / g1;
   const Eigen::VectorXd gamma = s->d * G.col(0) - G.col(1);
   s->gamma.assign(gamma.data(), gamma.data() + n);
@@ -195,7 +194,7 @@ double pressure(const LayerHertzSolution& s, double r) {
     // γ'(x)/x = (2/π)[−2 + λ² ∫ f(u) u sin(λux)/x P(u) du]
     double acc = 0.0;
     for (std::size_t j = 0; j < m; ++j) acc += s.wf[j] * s.u[j] * std::sin(lam * s.u[j] * xx) * s.P[j];
-    const double dg_over_x = 2.0 / kPi * (-2.0 + lam * lam * acc / xx);
+    const double dg_over_x = 2.0 / M_PI * (-2.0 + lam * lam * acc / xx);
     sum -= s.wv[i] * dg_over_x;
   }
   return s.Estar * s.a / (2.0 * s.R) * Y * sum;
@@ -223,7 +222,7 @@ double deflection(const LayerHertzSolution& s, double r) {
   }
   // θ panels of width ≤ 1.5/(λρ) (Ŵ is analytic for |Im x| < 2/λ) and ≤ (π/2 − θ_a)/2.
   static const GaussRule1d g = gauss_legendre01(kGauss);
-  const double span = 0.5 * kPi - th_a;
+  const double span = 0.5 * M_PI - th_a;
   const int panels =
       static_cast<int>(std::ceil(std::max(2.0, span * lam * rho / 1.5) / std::min(1.0, s.panel_scale)));
   double integral = 0.0;
@@ -237,7 +236,7 @@ double deflection(const LayerHertzSolution& s, double r) {
     }
   }
   out += lam * integral;
-  return 2.0 / kPi * s.a * s.a / s.R * out;
+  return 2.0 / M_PI * s.a * s.a / s.R * out;
 }
 
 LayerHertzResult make_result(std::shared_ptr<const LayerHertzSolution> s) {
@@ -246,7 +245,7 @@ LayerHertzResult make_result(std::shared_ptr<const LayerHertzSolution> s) {
   r.delta_mm = s->d * s->a * s->a / s->R;
   double I = 0.0;
   for (std::size_t i = 0; i < s->x.size(); ++i) I += s->w[i] * s->gamma[i];
-  r.force_N = kPi * s->Estar * s->a * s->a * s->a / s->R * I;
+  r.force_N = M_PI * s->Estar * s->a * s->a * s->a / s->R * I;
   r.nodes = static_cast<int>(s->x.size());
   r.p0_MPa = pressure(*s, 0.0);
   r.solution = std::move(s);
@@ -324,7 +323,7 @@ HertzHalfspace hertz_halfspace(double force_N, double R_mm, double E_MPa, double
   r.force_N = force_N;
   r.a_mm = std::cbrt(3.0 * force_N * R_mm / (4.0 * Estar));
   r.delta_mm = r.a_mm * r.a_mm / R_mm;
-  r.p0_MPa = 3.0 * force_N / (2.0 * kPi * r.a_mm * r.a_mm);
+  r.p0_MPa = 3.0 * force_N / (2.0 * M_PI * r.a_mm * r.a_mm);
   return r;
 }
 
@@ -365,7 +364,7 @@ LayerHertzResult layer_hertz_force(double force_N, double R_mm, double h_mm, dou
   // upper bounds at ν = 0.5: the base stiffens the layer, and the edge boundary layer stiffens it beyond the
   // lubrication limit); d ln F / d ln a is 3 (thick) to 6 (thin).
   const double a_hertz = hertz_halfspace(force_N, R_mm, E_MPa, nu).a_mm;
-  const double a_lub = std::pow(96.0 * R_mm * h_mm * h_mm * h_mm * force_N / (kPi * E_MPa), 1.0 / 6.0);
+  const double a_lub = std::pow(96.0 * R_mm * h_mm * h_mm * h_mm * force_N / (M_PI * E_MPa), 1.0 / 6.0);
   return solve_for("layer_hertz_force", force_N, std::min(a_hertz, a_lub), a_hertz < a_lub ? 3.0 : 6.0, R_mm,
                    h_mm, E_MPa, nu, quadrature, [](const LayerHertzResult& r) { return r.force_N; });
 }

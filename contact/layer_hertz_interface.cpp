@@ -35,13 +35,11 @@ namespace skinfem::contact {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 struct Radius {
   double d = 0, force = 0, p0 = 0;
 };
 
-std::string show(double v) {
+std::string show_number(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.6g", v);
   return buf;
@@ -49,8 +47,8 @@ std::string show(double v) {
 
 void check(const char* who, const char* name, double v) {
   if (!(std::isfinite(v) && v > 0))
-    throw std::invalid_argument(std::string(who) + ": " + name + " must be finite and > 0 (got " + show(v) +
-                                ")");
+    throw std::invalid_argument(std::string(who) + ": " + name + " must be finite and > 0 (got " +
+                                show_number(v) + ")");
 }
 
 void check_all(const char* who, double R, double h, double E, double nu, double K, int terms) {
@@ -59,7 +57,7 @@ void check_all(const char* who, double R, double h, double E, double nu, double 
   check(who, "E_MPa", E);
   check(who, "K", K);
   if (!(nu >= 0 && nu <= 0.5))
-    throw std::invalid_argument(std::string(who) + ": nu must be in [0, 0.5] (got " + show(nu) + ")");
+    throw std::invalid_argument(std::string(who) + ": nu must be in [0, 0.5] (got " + show_number(nu) + ")");
   if (terms < 2 || terms > 2000)
     throw std::invalid_argument(std::string(who) + ": terms must be in [2, 2000] (got " +
                                 std::to_string(terms) + ")");
@@ -72,7 +70,7 @@ Radius solve_radius(double a, double R, double h, double E, double nu, double K,
   static const GaussRule1d g16 = gauss_legendre01(16);
   std::vector<double> u, wf;
   for (double u0 = 0; u0 < 24.0;) {
-    const double u1 = std::min(24.0, u0 + std::min(1.0, kPi / std::max(lam, 1e-12)));
+    const double u1 = std::min(24.0, u0 + std::min(1.0, M_PI / std::max(lam, 1e-12)));
     for (int i = 0; i < 16; ++i) {
       const double ui = u0 + (u1 - u0) * g16.x[i];
       u.push_back(ui);
@@ -86,23 +84,23 @@ Radius solve_radius(double a, double R, double h, double E, double nu, double K,
   Eigen::MatrixXd C(m, P),
       S(N, P);  // Q_n(u_j) = (π/2) Σ_i w_i cos(λu_j cos φ_i) sin nφ_i sin φ_i, n = 2k + 1
   for (int i = 0; i < P; ++i) {
-    const double phi = 0.5 * kPi * gp.x[i];
-    for (int j = 0; j < m; ++j) C(j, i) = 0.5 * kPi * gp.w[i] * std::cos(lam * u[j] * std::cos(phi));
+    const double phi = 0.5 * M_PI * gp.x[i];
+    for (int j = 0; j < m; ++j) C(j, i) = 0.5 * M_PI * gp.w[i] * std::cos(lam * u[j] * std::cos(phi));
     for (int k = 0; k < N; ++k) S(k, i) = std::sin((2 * k + 1) * phi) * std::sin(phi);
   }
   const Eigen::MatrixXd Q = C * S.transpose();
   Eigen::MatrixXd X(N, m);  // wf_i cos(λ u_i x_j) at the collocation points
   for (int j = 0; j < N; ++j)
-    for (int i = 0; i < m; ++i) X(j, i) = wf[i] * std::cos(lam * u[i] * std::cos((j + 0.5) * 0.5 * kPi / N));
+    for (int i = 0; i < m; ++i) X(j, i) = wf[i] * std::cos(lam * u[i] * std::cos((j + 0.5) * 0.5 * M_PI / N));
   const Eigen::MatrixXd L = X * Q;  // L_n(x_j)
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(N + 1, N + 1);
   Eigen::VectorXd b = Eigen::VectorXd::Zero(N + 1);
   for (int j = 0; j < N; ++j) {
-    const double th = (j + 0.5) * 0.5 * kPi / N, x = std::cos(th);
+    const double th = (j + 0.5) * 0.5 * M_PI / N, x = std::cos(th);
     for (int k = 0; k < N; ++k) {
       const int n = 2 * k + 1;
       const double s = std::sin(n * th);
-      A(j, k) = 0.5 * kPi * s + lam * L(j, k) + beta * kPi * n * s / std::sin(th);
+      A(j, k) = 0.5 * M_PI * s + lam * L(j, k) + beta * M_PI * n * s / std::sin(th);
     }
     A(j, N) = -1.0;
     b[j] = -x * x;
@@ -112,10 +110,10 @@ Radius solve_radius(double a, double R, double h, double E, double nu, double K,
   Radius out;
   out.d = c[N];
   const double G = Estar * a * a / (2 * R);
-  out.force = 0.5 * kPi * kPi * a * G * c[0];
+  out.force = 0.5 * M_PI * M_PI * a * G * c[0];
   double s = 0;
   for (int k = 0; k < N; ++k) s += (k % 2 ? -1.0 : 1.0) * (2 * k + 1) * c[k];
-  out.p0 = 0.5 * kPi * G / a * s;
+  out.p0 = 0.5 * M_PI * G / a * s;
   return out;
 }
 

@@ -6,8 +6,6 @@
 namespace skinfem::green {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // Johnson's frame (K. L. Johnson, Contact Mechanics, CUP 1985, ch. 3) has z pointing INTO the solid (z =
 // depth). Our frame is z-up. Going from one to the other is the reflection Q = diag(1, 1, −1), σ' = Q σ Qᵀ:
 // only the xz and yz components change sign.
@@ -43,7 +41,7 @@ Eigen::Matrix3d boussinesq_stress(double x, double y, double depth, double nu) {
   const double rho3 = rho * rho * rho;
   const double rho5 = rho3 * rho * rho;
   const double rz = rho + z;
-  const double c = 1.0 / (2.0 * kPi);
+  const double c = 1.0 / (2.0 * M_PI);
   const double s_theta = -c * a * (1.0 / (rho * rz) - z / rho3);
   const double d = c * (a * (2.0 * rho + z) / (rho3 * rz * rz) - 3.0 * z / rho5);
   Eigen::Matrix3d s;
@@ -76,7 +74,7 @@ Eigen::Matrix3d cerruti_stress(double x, double y, double depth, double nu) {
   const double rho5 = rho3 * rho2;
   const double rz = rho + z;
   const double f = a / (rz * rz);
-  const double c = 1.0 / (2.0 * kPi);
+  const double c = 1.0 / (2.0 * M_PI);
   Eigen::Matrix3d s;
   s(0, 0) = -c * x / rho3 * (3.0 * x * x / rho2 - f * (rho2 - y * y - 2.0 * rho * y * y / rz));
   s(1, 1) = -c * x / rho3 * (3.0 * y * y / rho2 - f * (3.0 * rho2 - x * x - 2.0 * rho * x * x / rz));
@@ -113,7 +111,7 @@ GreenSample halfspace_green(double x, double y, double h) {
   if (!(h > 0.0)) throw std::invalid_argument("halfspace_green: h must be > 0");
   const double rho2 = x * x + y * y + h * h;
   const double rho = std::sqrt(rho2);
-  const double q = 3.0 / (2.0 * kPi * rho2 * rho2 * rho);  // 3/(2πρ⁵)
+  const double q = 3.0 / (2.0 * M_PI * rho2 * rho2 * rho);  // 3/(2πρ⁵)
   return GreenSample{q * h * h * h, -q * x * h * h, -q * x * h * h, q * x * x * h};
 }
 

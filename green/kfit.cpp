@@ -8,7 +8,6 @@
 namespace skinfem::green {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kMin = 0.5, kMax = 4.0;
 
 }  // namespace
@@ -88,7 +87,7 @@ KFit fit_k_line(const std::vector<double>& x, const std::vector<double>& g, doub
 
 double k_central(double g_zz_at_zero, double h) {
   if (!(h > 0.0)) throw std::invalid_argument("k_central: h must be > 0");
-  return g_zz_at_zero / (3.0 / (2.0 * kPi * h * h));
+  return g_zz_at_zero / (3.0 / (2.0 * M_PI * h * h));
 }
 
 }  // namespace skinfem::green

@@ -33,7 +33,6 @@
 namespace skinfem::green {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kGauss = 16;
 
 // Bessel functions of the first kind. glibc's POSIX j0/j1 (declared by <cmath> under g++, which defines
@@ -151,7 +150,7 @@ std::vector<double> LayerGreen::panel_nodes(double r, double depth, std::vector<
   double s0 = 0.0;
   while (s0 < s_max) {
     double w = std::min(std::max(1.0 / h_, 0.5 * s0), 4.0 / depth);
-    if (r + a_ + b_ > 0.0) w = std::min(w, 2.0 * kPi / (r + a_ + b_));
+    if (r + a_ + b_ > 0.0) w = std::min(w, 2.0 * M_PI / (r + a_ + b_));
     w *= quad_.panel_scale;
     const double s1 = std::min(s0 + w, s_max);
     for (int i = 0; i < kGauss; ++i) {
@@ -177,7 +176,7 @@ LayerGreen::NodeSet LayerGreen::build(double r_cover, double depth, bool closed_
   for (std::size_t i = 0; i < m; ++i) {
     const double s = n.s[i];
     const LayerKernels k = closed_form ? base_kernels(s * h_, nu_) : depth_kernels(s, h_, h_ - depth, nu_);
-    const double f = w[i] * s / (2.0 * kPi) * load_profile(s);
+    const double f = w[i] * s / (2.0 * M_PI) * load_profile(s);
     n.c_zz[i] = f * k.nzz;
     n.c_zx[i] = f * k.nxz;
     n.c_xz[i] = -f * k.tzz;

@@ -32,7 +32,7 @@ namespace fs = std::filesystem;
 
 constexpr std::size_t kMaxMembers = 10000;
 
-std::string show(const json& v) {
+std::string show_value(const json& v) {
   std::string s = v.dump();
   return s.size() > 60 ? s.substr(0, 57) + "..." : s;
 }
@@ -47,14 +47,14 @@ std::string content_id(const std::string& text) {
   return std::string(buf, 12);
 }
 
-struct Reader {
+struct SpecReader {
   std::string file;
   [[noreturn]] void fail(const std::string& field, const json& v, const std::string& allowed) const {
-    throw SceneError(file + ": " + field + " = " + show(v) + ": " + allowed);
+    throw SceneError(file + ": " + field + " = " + show_value(v) + ": " + allowed);
   }
 };
 
-double number(const Reader& r, const json& v, const std::string& field) {
+double number(const SpecReader& r, const json& v, const std::string& field) {
   if (!v.is_number() || !std::isfinite(v.get<double>())) r.fail(field, v, "must be a finite number");
   return v.get<double>();
 }
@@ -72,7 +72,7 @@ std::string word(double v) {
 }
 
 // The command's options as command-line words, each checked against what the command accepts.
-std::vector<std::string> read_options(const Reader& r, const json& o, const std::string& command) {
+std::vector<std::string> read_options(const SpecReader& r, const json& o, const std::string& command) {
   static const std::map<std::string, std::set<std::string>> choices{
       {"path", {"auto", "3d", "meridian"}},
       {"load", {"punch", "point"}},
@@ -117,7 +117,7 @@ std::vector<std::string> read_options(const Reader& r, const json& o, const std:
   return words;
 }
 
-std::vector<std::string> read_values(const Reader& r, const json& a, const std::string& P) {
+std::vector<std::string> read_values(const SpecReader& r, const json& a, const std::string& P) {
   const bool has_values = a.contains("values"), has_range = a.contains("range");
   if (has_values == has_range) r.fail(P, a, "must have exactly one of \"values\" (a list) or \"range\"");
   std::vector<std::string> out;
@@ -152,7 +152,7 @@ std::vector<std::string> read_values(const Reader& r, const json& a, const std::
   return out;
 }
 
-SweepAxis read_axis(const Reader& r, const json& a, const std::string& P, const json& base) {
+SweepAxis read_axis(const SpecReader& r, const json& a, const std::string& P, const json& base) {
   if (!a.is_object()) r.fail(P, a, "must be an object {\"pointer\", \"values\" or \"range\"}");
   for (const auto& [key, v] : a.items())
     if (key != "pointer" && key != "values" && key != "range")
@@ -186,7 +186,7 @@ SweepAxis read_axis(const Reader& r, const json& a, const std::string& P, const 
 }  // namespace
 
 Sweep load_sweep(const std::string& path) {
-  const Reader r{path};
+  const SpecReader r{path};
   const json spec = parse_json_text(read_text_file(path, "sweep spec"), path);
   if (!spec.is_object()) r.fail("(top level)", spec, "must be an object");
   static const std::set<std::string> keys{"name", "scene", "command", "options", "combine", "mem_mb", "axes"};

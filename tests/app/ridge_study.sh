@@ -7,8 +7,8 @@
 #   effect (ridged against the same mesh with 2 % ridges) is the same on every level's mesh;
 # - with ridges 10 nm high, ridged and control solves on the same mesh agree to 1e-5 in k while the mesh's own
 #   error against the exact layer is far larger: the same-mesh difference cancels the discretization error.
-# Under the sanitizers (second argument --one-study) the 10 nm study is left out: the same code on a second
-# scene, 115 s there.
+# With --one-study (the default suites, both passes) the 10 nm study is left out: the same code on a second
+# scene; app.ridge_study.both, a study (tests/README.md), runs it.
 set -u
 skinfem=$1
 one_study=${2:-}
