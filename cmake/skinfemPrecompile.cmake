@@ -16,9 +16,9 @@ set(skinfem_pch_std <algorithm> <array> <cmath> <cstdio> <functional> <map> <mem
 set(skinfem_pch_eigen <Eigen/Dense> <Eigen/Sparse>)
 set(skinfem_pch_json <nlohmann/json.hpp>)
 
-# skinfem_precompile(target [headers...]): the standard headers and those given, precompiled for target; its
+# skinfem_fast_compile(target [headers...]): the standard headers and those given, precompiled for target; its
 # sources compiled in unity batches.
-function(skinfem_precompile target)
+function(skinfem_fast_compile target)
   if(SKINFEM_UNITY)
     set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 8)
     # In a batch each source is an included file, so GCC takes a class of an anonymous namespace held by a

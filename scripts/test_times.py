@@ -6,7 +6,8 @@ Usage: scripts/test_times.py JUNIT_XML release|sanitize|studies WALL_S
 JUNIT_XML is ctest's --output-junit file. The budgets are the table under "## Time budget" in tests/README.md
 (columns: test, Release s, sanitizers s, budget Release s, budget sanitizers s; a dash where the test does not
 run in that pass; the studies run in Release), its line "every other test: …" for the tests it does not list,
-and its line "pass: …" for each pass's wall time. The table never fails the run: a test past its budget is named, so the next change sees it.
+and its line "pass: …" for each pass's wall time. The table never fails the run: a test past its budget is
+named, so the next change sees it.
 """
 import re
 import sys
@@ -16,9 +17,14 @@ from pathlib import Path
 README = Path(__file__).resolve().parent.parent / "tests" / "README.md"
 
 
+# Per mode: the budget table's column, and the group of the "every other test" and "pass" lines.
+COLUMNS = {"release": (3, 1, 1), "sanitize": (4, 2, 2), "studies": (3, 1, 3)}
+PASS_NAMES = {"release": "Release", "sanitize": "sanitizer", "studies": "studies"}
+
+
 def budgets(mode):
     """(per-test budget, budget of any other test, budget of the pass's wall time), in s, from tests/README.md."""
-    col = 4 if mode == "sanitize" else 3
+    col, other_group, pass_group = COLUMNS[mode]
     text = README.read_text()
     section = text.split("## Time budget", 1)[1].split("\n## ", 1)[0]
     per_test = {}
@@ -30,8 +36,7 @@ def budgets(mode):
     total = re.search(r"pass: (\d+) s in Release, (\d+) s under the sanitizers and (\d+) s for the studies", section)
     if not other or not total:
         sys.exit("test_times.py: tests/README.md's \"## Time budget\" lacks its 'every other test' or 'pass' line")
-    i = {"release": 1, "sanitize": 2, "studies": 1}[mode]
-    return per_test, float(other.group(i)), float(total.group({"release": 1, "sanitize": 2, "studies": 3}[mode]))
+    return per_test, float(other.group(other_group)), float(total.group(pass_group))
 
 
 def main():
@@ -46,17 +51,22 @@ def main():
         rows.append((seconds, name, per_test.get(name, other)))
     rows.sort(reverse=True)
     over = [r for r in rows if r[0] > r[2]]
-    pass_name = {"release": "Release", "sanitize": "sanitizer", "studies": "studies"}[mode]
-    print(f"\nTest times, {pass_name} pass (budgets: tests/README.md, \"Time budget\"); the ten longest and any past "
+    print(f"\nTest times, {PASS_NAMES[mode]} pass (budgets: tests/README.md, \"Time budget\"); the ten longest and any past "
           "its budget:")
     print(f"  {'test':<72} {'s':>7} {'budget s':>9}")
     for rank, (seconds, name, budget) in enumerate(rows):
         if rank < 10 or seconds > budget:
             flag = "  past its budget" if seconds > budget else ""
             print(f"  {name:<72} {seconds:7.1f} {budget:9.0f}{flag}")
-    pass_over = " (past it)" if wall > total else ""
-    print(f"  {len(rows)} tests, {sum(r[0] for r in rows):.0f} s in all; the pass took {wall:.0f} s of its "
-          f"{total:.0f} s budget{pass_over}" + (f"; {len(over)} test{'s' if len(over) > 1 else ''} past {'their' if len(over) > 1 else 'its'} budget" if over else "") + ".")
+    summary = (f"  {len(rows)} tests, {sum(r[0] for r in rows):.0f} s in all; "
+               f"the pass took {wall:.0f} s of its {total:.0f} s budget")
+    if wall > total:
+        summary += " (past it)"
+    if len(over) == 1:
+        summary += "; 1 test past its budget"
+    elif over:
+        summary += f"; {len(over)} tests past their budget"
+    print(summary + ".")
 
 
 if __name__ == "__main__":

@@ -42,7 +42,7 @@ grep -q -- "--snakefile $(realpath "$prefix/share/skinfem/workflow/Snakefile") "
   { echo "install.sh: the installed skinfem sweep runs another workflow: $(tail -1 "$work/sweep.txt")" >&2; exit 1; }
 if [ "$python" = ON ]; then
   "$prefix/bin/skinfem" kfit "$scene" --out "$work/kfit" >/dev/null 2>&1
-  PYTHONPATH=$prefix LD_PRELOAD=${SKINFEM_PYTHON_PRELOAD:-} /usr/bin/python3 - "$scene" "$work/kfit/kfit.json" <<'PY'
+  PYTHONPATH=$prefix /usr/bin/python3 - "$scene" "$work/kfit/kfit.json" <<'PY'
 import json, math, sys
 import skinfem
 fit = skinfem.kfit(skinfem.scene(sys.argv[1])).to_dict()
