@@ -44,7 +44,10 @@ int run_solve(const Scene& scene, const std::string& out_dir, SolverKind solver)
   const Eigen::Vector3d applied(r.applied_force_N[0], r.applied_force_N[1], r.applied_force_N[2]);
   const double balance = run.metrics.force_balance_rel;
   nlohmann::json summary;
-  if (run.metrics.center_ratio) summary["center_ratio"] = *run.metrics.center_ratio;
+  if (run.metrics.center_ratio)
+    summary["center_ratio"] = *run.metrics.center_ratio;
+  else
+    summary["center_ratio_unavailable"] = center_ratio_unavailable(scene);
   summary["scene"] = scene_json(scene);
   summary["dofs"] = run.model->solver().free_dofs();
   summary["nodes"] = mesh.num_nodes();
@@ -67,7 +70,7 @@ int run_solve(const Scene& scene, const std::string& out_dir, SolverKind solver)
       scene.name.c_str(), run.model->solver().free_dofs(), to_string(solver), wall["mesh"].get<double>(),
       wall["assemble"].get<double>(), wall["factor"].get<double>(), wall["solve"].get<double>(),
       peak_rss_mb());
-  std::printf("  residual %.1e, applied force (%.4g, %.4g, %.4g) N, base balance %.1e", r.solution.residual,
+  std::printf("  residual %.1e, applied force (%.4g, %.4g, %.4g) N, force balance %.1e", r.solution.residual,
               applied[0], applied[1], applied[2], balance);
   if (run.metrics.center_ratio) std::printf(", center_ratio %.5f", *run.metrics.center_ratio);
   std::printf("\n  wrote %s/fields.vtu, sensors.csv, summary.json\n", out_dir.c_str());

@@ -41,6 +41,10 @@ struct LoadCaseResult {
   double applied_force_N[3] = {0, 0, 0};  // total external force on the skin (punch + patches)
 };
 
+// Where a traction patch's edge cuts top faces, they are split down to pieces of this fraction of its radius
+// (ElasticModel::patch_load).
+inline constexpr double kPatchEdgeResolution = 1e-3;
+
 class ElasticModel {
  public:
   // punches: their nodes become constrained (u_z); pass the scene's punches (may be empty).
@@ -61,7 +65,8 @@ class ElasticModel {
   LoadCaseResult solve(const Eigen::VectorXd& f, const std::vector<Punch>& punches) const;
 
   // Load vector of a uniform traction patch on the top surface: total force `force` along `direction`,
-  // spread evenly over the disc (exact disc quadrature: the patch edge cuts faces).
+  // spread evenly over the disc (per unit area of its projection on the base plane), integrated face by face
+  // (mesh/surface_quadrature.hpp, face_quadrature_in_disc).
   Eigen::VectorXd patch_load(const TractionPatch& patch) const;
   // Load vector of a point force at the top-surface point above (x, y): f = N(x) F. Throws off the top.
   Eigen::VectorXd point_load(double x, double y, const Eigen::Vector3d& force) const;

@@ -33,4 +33,13 @@ const std::array<TrianglePoint, 7>& triangle_rule_degree5();
 // 7-point degree-5 rule (Dunavant) mapped onto face f.
 std::vector<FacePoint> face_quadrature(const TetMesh& mesh, int f);
 
+// The same rule on the part of face f whose projection on (x, y) lies in the disc |(x, y) − centre| ≤
+// radius (mm): where the disc's edge crosses the face, its parameter triangle is split into four, again and
+// again, down to pieces of min_size (mm, across their projection), whose points then count when inside. A
+// load spread over a disc is then integrated exactly on every face inside it (degree 5 on a flat face), so a
+// uniform pressure on a flat layer is the hydrostatic state's load to round-off away from the disc's edge,
+// which a rule over the disc (points dropped into whatever face holds them) is not.
+std::vector<FacePoint> face_quadrature_in_disc(const TetMesh& mesh, int f, const Eigen::Vector2d& centre,
+                                               double radius, double min_size);
+
 }  // namespace skinfem

@@ -33,6 +33,8 @@ StudyResult refinement_study(const Scene& base_scene, const std::vector<double>&
                              const std::function<void(const std::string&)>& progress) {
   if (base_scene.loads.punches.empty() && base_scene.loads.patches.empty())
     throw std::invalid_argument("refinement study needs a load in the scene");
+  if (const std::string why = center_ratio_unavailable(base_scene); !why.empty())
+    throw std::invalid_argument("refinement study: no center_ratio to converge: " + why);
   StudyResult out;
   for (double scale : scales) {
     const Scene scene = scaled_scene(base_scene, scale);
@@ -68,7 +70,6 @@ StudyResult refinement_study(const Scene& base_scene, const std::vector<double>&
       level.solvers.push_back(timing);
 
       const LoadMetrics metrics = load_metrics(scene, mesh, r, BaseTraction(mesh, r.reactions));
-      if (!metrics.center_ratio) throw std::invalid_argument("refinement study needs a normal load");
       level.force_balance_rel = metrics.force_balance_rel;
       level.center_ratio = *metrics.center_ratio;
     }

@@ -75,7 +75,7 @@ TEST(ElasticModel, BaseTractionBalancesTheAppliedForce) {
   // divergence), so Σ_d (A u + Bᵀp)_d = 0 per component; at the free DOFs that sum equals the load
   // up to the solver residual, hence Σ reactions = −Σ loads to ~1e-15 relative (direct LDLᵀ). The
   // mass-matrix spreading keeps the integral: ∫ t = Σ_i t_i ∫ φ_i = 1ᵀ M T = 1ᵀ R, since Σ φ_i = 1.
-  // The patch quadrature weights sum to 1 exactly (Gauss on ∫₀¹ 2ρ dρ) and Σ N_k = 1 on each face, so
+  // The patch's density is its force over the sum of its quadrature weights and Σ N_k = 1 on each face, so
   // the load vector carries the requested force to round-off too.
   const ElasticModel& model = model_without_punch();
   const TetMesh& m = layer();

@@ -15,6 +15,7 @@
 #include "green/fe_green.hpp"
 #include "mesh/build.hpp"
 #include "mesh/quality.hpp"
+#include "mesh/surface_quadrature.hpp"
 #include "scene/load.hpp"
 
 namespace skinfem {
@@ -163,6 +164,37 @@ TEST(PostSensor, BaseAndPostsBalanceTheLoad) {
   EXPECT_NEAR(read.z(), on_posts.z(), 1e-12 * on_posts.norm());
   EXPECT_GT(on_posts.norm(), 1e-3 * applied.norm());           // the post is not a zero-force no-op
   EXPECT_GT(std::abs(on_feet_z.z()), 1e-3 * on_posts.norm());  // and the foot's share is not negligible
+}
+
+TEST(PostSensor, UniformPressureIsReadExactly) {
+  // Reference: the hydrostatic state (issue 57, item 2). A uniform pressure q on the whole top of a layer
+  // whose base and sides are held has the exact solution u = 0, p = q: it meets every boundary condition and
+  // lies in the P2–P1 space, and on curved (isoparametric) elements Bᵀ1 is integrated exactly (cof(J)·∇φ is
+  // of degree 3, the rule of degree 5). So the discrete solution is that state when the load vector is the
+  // consistent one, and each post, whose top carries q and whose wall carries a pressure with no net force,
+  // reads σ_z = q·A/(πr²), A its meshed cross-section, and σ_x = 0. A is the area inside the P2 circle of its
+  // rim, which falls short of πr² by 8e-4 with 8 arcs (the post's mesh, 0.6 of its radius, gives more): the
+  // bound on σ_z. A rule over the disc that dropped points into whatever faces held them read 1.1 % above q
+  // at a post 1 mm from a 20 mm patch's centre.
+  const TetMesh& m = post_mesh();
+  const Scene s = post_scene();
+  const ElasticModel model(m, s.material, SideCondition::fixed, std::vector<Punch>{});
+  const double q = 0.01;  // MPa
+  const double top_area = 4 * kHalfWidth * kHalfWidth;
+  // The disc covers the square top; patch_load spreads the force over the part on the top.
+  const TractionPatch patch{{0, 0}, 3 * kHalfWidth, {0, 0, -1}, q * top_area};
+  const LoadCaseResult res = model.solve(model.patch_load(patch), {});
+  double u_max = 0;
+  for (int i = 0; i < res.solution.u.size(); ++i) u_max = std::max(u_max, std::abs(res.solution.u[i]));
+  EXPECT_LT(u_max, 1e-9 * q * kH / (s.material.E / 3));  // the hydrostatic state, at round-off
+  const SensorReadings readings(m, reading_sites(s.sensors));
+  for (int k = 0; k < readings.size(); ++k) {
+    const SensorReading v = readings.read(k, res.reactions);
+    std::printf("post %d under %.3g MPa: sigma_z / q - 1 = %.2e, sigma_x / q = %.1e; max |u| %.1e mm\n",
+                k + 1, q, v.sigma_z / q - 1, v.sigma_x / q, u_max);
+    EXPECT_NEAR(v.sigma_z, q, 8e-4 * q);
+    EXPECT_NEAR(v.sigma_x, 0, 1e-9 * q);
+  }
 }
 
 TEST(PostSensor, AdjointReadingIsTheForwardOne) {
