@@ -271,7 +271,7 @@ std::vector<std::pair<std::string, std::string>> figure_captions(const std::stri
        "1.48 ± 0.01, and the FE k per mesh scale." +
            on},
       {"post_design",
-       "A post against a disc at the skin's axis (meridian solves): gain and half width of g_zz over the "
+       "A post against a disc at the skin's axis (meridian solves): ∫ g dA and half width of g_zz over the "
        "post's height and diameter." +
            on},
       {"pareto", "Cost against accuracy of each stage over the error-bar levels (labels: DOFs)." + on}};
@@ -370,11 +370,10 @@ void write_index(const std::string& dir, const Scene& scene, const IndexInput& i
     << " (<a href=\"kfit/k_sweep.csv\">kfit/k_sweep.csv</a>)</p>\n";
   if (const pipeline::PostDesign* p = in.post) {
     h << "<h2>What a post changes: the paper's sensor against a disc</h2><p>" << html_escape(in.post_answer)
-      << " A post reads the force on it over its cross-section; the gain is the reading under a unit uniform "
-         "pressure (g_zz) or shear (g_xx) on the whole top, 1 for a base traction on an unbounded "
-         "layer.</p>\n"
+      << " A post reads the force on it over its cross-section.</p>\n"
          "<table><tr><th>sensor</th><th>diameter mm</th><th>height mm</th><th>g_zz peak /mm²</th><th>half "
-         "width mm</th><th>gain</th><th>g_xx peak /mm²</th><th>at mm</th><th>half width mm</th><th>gain</th>"
+         "width mm</th><th>∫ g_zz dA</th><th>g_xx peak /mm²</th><th>at mm</th><th>half width mm</th><th>∫ "
+         "g_xx dA</th>"
          "<th>mesh change %</th></tr>\n";
     const auto row = [&h](const std::string& name, const pipeline::SensorDesign& d) {
       h << "<tr><td style=\"text-align:left\">" << name << "</td><td>" << fmt("%g", d.diameter) << "</td><td>"
@@ -388,7 +387,7 @@ void write_index(const std::string& dir, const Scene& scene, const IndexInput& i
     row("disc", p->disc);
     row("post", p->post);
     h << "</table>\n<p>Design sweep (mesh scale " << fmt("%g", p->sweep_scale)
-      << "; height 0 is the disc): gain of g_zz, and its half width in mm.</p><table><tr><th>diameter "
+      << "; height 0 is the disc): ∫ g_zz dA, and its half width in mm.</p><table><tr><th>diameter "
          "mm</th>";
     std::vector<double> heights;
     for (const auto& d : p->sweep)
@@ -438,7 +437,11 @@ void write_index(const std::string& dir, const Scene& scene, const IndexInput& i
          "(hover or open a row for the sentence). Detection: "
       << fmt("%.0f", b.base.noise.k) << " standard deviations of a " << b.base.noise.passages
       << "-passage mean, " << fmt("%.3f", 1e3 * b.base.noise.threshold(0)) << " kPa (ςz) and "
-      << fmt("%.3f", 1e3 * b.base.noise.threshold(1)) << " kPa (ςx)."
+      << fmt("%.3f", 1e3 * b.base.noise.threshold(1)) << " kPa (ςx). F2: every back sensor's ratio within ["
+      << fmt("%.2g", b.base.rules.match_lo) << ", " << fmt("%.2g", b.base.rules.match_hi)
+      << "]; F3, the paper's asymmetry: the front's largest ratio at least "
+      << fmt("%.2g", b.base.rules.front_min) << " and at least " << fmt("%.2g", b.base.rules.front_over_back)
+      << " times the back's largest."
       << (b.base.reading_scale.size() ? scale_sentence(b.base.reading_scale) : "")
       << "</p>\n<table><tr><th>hypothesis</th><th>τ0 kPa</th><th>K MPa/mm</th><th>back "
          "z</th><th>back "

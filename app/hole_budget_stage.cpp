@@ -27,6 +27,7 @@ StageOutput<HoleBudget> hole_budget_stage(const Scene& scene, const ContactSetup
                   {"threshold_x_kPa", 1e3 * base.noise.threshold(1)}};
   out["rules"] = {{"match_band", {base.rules.match_lo, base.rules.match_hi}},
                   {"front_min_ratio", base.rules.front_min},
+                  {"front_over_back_ratio", base.rules.front_over_back},
                   {"antisymmetric_lobe", base.rules.antisym},
                   {"comparable_maximum", base.rules.comparable},
                   {"dip", base.rules.dip}};

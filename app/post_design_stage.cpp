@@ -76,18 +76,21 @@ StageOutput<pipeline::PostDesign> post_design_stage(const Scene& scene, const st
       " mm wide and " + fmt("%.3g", post.height) +
       " mm high against the disc of its diameter: g_zz peaks at " + fmt("%.4g", post.zz.peak) + " against " +
       fmt("%.4g", disc.zz.peak) + " /mm² (" + fmt("%.2f", post.zz.peak / disc.zz.peak) + "×), half width " +
-      fmt("%.3g", post.zz.half_width) + " against " + fmt("%.3g", disc.zz.half_width) +
-      " mm, gain (its integral) " + fmt("%.3g", post.zz.integral) + " against " +
-      fmt("%.3g", disc.zz.integral) + "; g_xx peaks at " + fmt("%.4g", post.xx.peak) + " against " +
-      fmt("%.4g", disc.xx.peak) + " /mm² (" + fmt("%.2f", post.xx.peak / disc.xx.peak) + "×), half width " +
-      fmt("%.3g", post.xx.half_width) + " against " + fmt("%.3g", disc.xx.half_width) + " mm, gain " +
-      fmt("%.3g", post.xx.integral) + " against " + fmt("%.3g", disc.xx.integral) +
-      " (largest change from the mesh twice as coarse: " +
+      fmt("%.3g", post.zz.half_width) + " against " + fmt("%.3g", disc.zz.half_width) + " mm, ∫ g_zz dA " +
+      fmt("%.3g", post.zz.integral) + " against " + fmt("%.3g", disc.zz.integral) + "; g_xx peaks at " +
+      fmt("%.4g", post.xx.peak) + " against " + fmt("%.4g", disc.xx.peak) + " /mm² (" +
+      fmt("%.2f", post.xx.peak / disc.xx.peak) + "×), half width " + fmt("%.3g", post.xx.half_width) +
+      " against " + fmt("%.3g", disc.xx.half_width) + " mm, ∫ g_xx dA " + fmt("%.3g", post.xx.integral) +
+      " against " + fmt("%.3g", disc.xx.integral) + " (largest change from the mesh twice as coarse: " +
       fmt("%.2g", 100 * std::max({post.peak_change, post.half_width_change, post.integral_change})) +
       " %). Over the sweep (heights " + fmt("%g", t_lo) + "–" + fmt("%g", t_hi) + " mm, diameters " +
-      fmt("%g", d_lo) + "–" + fmt("%g", d_hi) + " mm) the gain of g_zz runs " + fmt("%.3g", gain_lo) + "–" +
+      fmt("%g", d_lo) + "–" + fmt("%g", d_hi) + " mm) ∫ g_zz dA runs " + fmt("%.3g", gain_lo) + "–" +
       fmt("%.3g", gain_hi) + " and its half width " + fmt("%.3g", width_lo) + "–" + fmt("%.3g", width_hi) +
-      " mm (mesh change up to " + fmt("%.2g", 100 * change) + " %).";
+      " mm (mesh change up to " + fmt("%.2g", 100 * change) +
+      " %). The integrals are the readings under a uniform vertical load (or shear) per unit base area over "
+      "the "
+      "whole top, on a curved top not a pressure; under a uniform pressure a post reads it exactly "
+      "(hydrostatic).";
   nlohmann::json j = {{"skin", p.skin},
                       {"post", design_json(post)},
                       {"disc", design_json(disc)},

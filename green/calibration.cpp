@@ -34,8 +34,10 @@ ScanProfile scan_profile(const SensorGreen& g, LayerLoad load, double radius, do
   return p;
 }
 
-KReport fit_profile(const std::vector<double>& x, const std::vector<GreenSample>& g, double h, Gain gain) {
+KReport fit_profile(const std::vector<double>& x, const std::vector<GreenSample>& g, double h,
+                    ChannelGains gains) {
   KReport r;
+  r.gains = gains;
   size_t zero = x.size();
   for (size_t i = 0; i < x.size(); ++i)
     if (std::abs(x[i]) < 1e-12) zero = i;
@@ -47,11 +49,10 @@ KReport fit_profile(const std::vector<double>& x, const std::vector<GreenSample>
     std::vector<double> v;
     for (size_t i = 0; i < x.size(); ++i)
       if (std::abs(x[i]) <= 3 * h + 1e-12) v.push_back(component(g[i], kComponents[c]));
-    r.components[c] = fit_k_line(xs, v, h, kComponents[c], gain);
+    r.components[c] = fit_k_line(xs, v, h, kComponents[c], gains.of(kComponents[c]));
   }
   r.k_lsq_line = r.components[0].k;
-  r.gain = r.components[0].gain;
-  r.k_central = k_central(g[zero].zz, h) / r.gain;
+  r.k_central = k_central(g[zero].zz, h) / r.components[0].gain;
   return r;
 }
 

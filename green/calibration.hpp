@@ -36,17 +36,34 @@ inline ScanProfile scan_profile(const FeGreen& fe, int sensor, LayerLoad load, d
                       load, radius, half_width, spacing);
 }
 
-struct KReport {
-  double k_central = 0;              // g_zz(0) / (gain · 3/(2πh²)), point value at the base
-  double k_lsq_line = 0;             // least squares of gain·g_k to g_zz on |x| ≤ 3h, uniform weight in x
-  double gain = 1;                   // of g_zz: 1, or fitted with k_lsq_line (Gain::fitted)
-  std::array<KFit, 4> components{};  // best k, gain and rms residual / peak per component (zz, zx, xz, xx)
+// A sensor's gain per reading: its reading under a uniform unit load on the unbounded flat layer of its
+// thickness, σ_z under a pressure (z) and σ_x under a shear (x), which the rescaled model of its Green
+// tensor must reproduce: g_ab ≈ gain_b·k·g_half,ab(√k x) (b the reading: zz and xz read σ_z, zx and xx σ_x).
+// A base-traction reading (a disc) has both 1 by equilibrium. So has a post's σ_z in an incompressible skin:
+// a uniform pressure on a bonded layer at ν = 0.5 is hydrostatic (u = 0, p = q), which a rigid post anywhere
+// in it does not disturb, and its top reads q. Its σ_x gain is a rigid post's stress concentration in simple
+// shear, above 1 (pipeline/sensor_greens.hpp, sensor_gains). `fitted`: no gain is known, each component's is
+// fitted with its k (a post on membrane springs).
+struct ChannelGains {
+  double z = 1, x = 1;
+  bool fitted = false;
+  std::optional<double> of(GreenComponent c) const {
+    if (fitted) return std::nullopt;
+    return c == GreenComponent::zz || c == GreenComponent::xz ? z : x;
+  }
 };
 
-// k fits of a profile of point values along x (offset 0 must be present) for thickness h. With
-// Gain::fitted (post sensors) every fit has its own gain, and k_central divides by g_zz's.
+struct KReport {
+  double k_central = 0;   // g_zz(0) / (gains.z · 3/(2πh²)), point value at the base
+  double k_lsq_line = 0;  // least squares of gains.z·g_k to g_zz on |x| ≤ 3h, uniform weight in x
+  ChannelGains gains;     // the model's, as given
+  std::array<KFit, 4> components{};  // best k and rms residual / peak per component (zz, zx, xz, xx)
+};
+
+// k fits of a profile of point values along x (offset 0 must be present) for thickness h, each component's
+// model at its reading's gain.
 KReport fit_profile(const std::vector<double>& x, const std::vector<GreenSample>& g, double h,
-                    Gain gain = Gain::fixed);
+                    ChannelGains gains = {});
 
 // The exact flat-layer reference on the same offsets: point values, or (disc_diameter > 0) the mean over
 // the sensor disc (LayerGreen's sensor_radius: exact, no rule over the disc).

@@ -6,22 +6,17 @@
 #include <string>
 
 namespace skinfem::green {
-namespace {
-
-constexpr double kMin = 0.5, kMax = 4.0;
-
-}  // namespace
-
 KFit fit_k_line(const std::vector<double>& x, const std::vector<double>& g, double h,
-                GreenComponent component, Gain gain) {
+                GreenComponent component, std::optional<double> gain) {
   if (x.empty() || x.size() != g.size())
     throw std::invalid_argument("fit_k_line: need equally many x and g samples");
   if (!(h > 0.0)) throw std::invalid_argument("fit_k_line: h must be > 0");
+  if (gain && !(*gain > 0.0)) throw std::invalid_argument("fit_k_line: the gain must be > 0");
   double peak = 0.0;
   for (double v : g) peak = std::max(peak, std::fabs(v));
   if (!(peak > 0.0)) throw std::invalid_argument("fit_k_line: samples are all zero");
 
-  // The model at k and its gain: 1, or the amplitude c minimising Σ(c m_i − g_i)², c = Σ m g / Σ m².
+  // The model at k and its gain: as given, or the amplitude c minimising Σ(c m_i − g_i)², c = Σ m g / Σ m².
   std::vector<double> m(x.size());
   const auto gain_at = [&](double k) {
     double mg = 0.0, mm = 0.0;
@@ -30,7 +25,7 @@ KFit fit_k_line(const std::vector<double>& x, const std::vector<double>& g, doub
       mg += m[i] * g[i];
       mm += m[i] * m[i];
     }
-    if (gain == Gain::fixed) return 1.0;
+    if (gain) return *gain;
     return mm > 0 ? mg / mm : 0.0;
   };
   const auto cost = [&](double k) {
@@ -40,13 +35,13 @@ KFit fit_k_line(const std::vector<double>& x, const std::vector<double>& g, doub
     return sum;
   };
 
-  // Coarse scan: 141 points, logarithmic in k (spacing 1.5 %); the cost is smooth in k, so the global minimum
+  // Coarse scan: 281 points, logarithmic in k (spacing 1.5 %); the cost is smooth in k, so the global minimum
   // of the scan brackets the minimiser between its neighbours unless the cost has a second minimum within 1.5
   // % — not the case for these one-parameter families.
-  constexpr int n_scan = 141;
+  constexpr int n_scan = 281;
   std::vector<double> ks(n_scan), cs(n_scan);
   for (int i = 0; i < n_scan; ++i) {
-    ks[i] = kMin * std::pow(kMax / kMin, static_cast<double>(i) / (n_scan - 1));
+    ks[i] = kMinK * std::pow(kMaxK / kMinK, static_cast<double>(i) / (n_scan - 1));
     cs[i] = cost(ks[i]);
   }
   const int best = static_cast<int>(std::min_element(cs.begin(), cs.end()) - cs.begin());
@@ -54,7 +49,7 @@ KFit fit_k_line(const std::vector<double>& x, const std::vector<double>& g, doub
   if (best == 0 || best == n_scan - 1)
     throw std::domain_error("k fit: the least-squares minimum lies at the search bound k = " +
                             std::to_string(ks[best]).substr(0, 4) + " of [" +
-                            std::to_string(kMin).substr(0, 3) + ", " + std::to_string(kMax).substr(0, 3) +
+                            std::to_string(kMinK).substr(0, 4) + ", " + std::to_string(kMaxK).substr(0, 2) +
                             "]; the k-rescaled half-space does not fit this skin (h = " + std::to_string(h) +
                             " mm)");
   double lo = ks[std::max(best - 1, 0)], hi = ks[std::min(best + 1, n_scan - 1)];

@@ -32,7 +32,8 @@ ChainLevel chain_values(const Scene& s, const AdjointSetup& adj, const ContactSe
   const auto prof =
       green::scan_profile(*adj.fe, 0, green::LayerLoad::punch, 0.5 * s.calibration.punch_diameter,
                           scan_half_width(s, &adj.mesh, h, pos), s.calibration.spacing);
-  const green::KReport k = green::fit_profile(prof.offset_x, prof.point, h, kfit_gain(s));
+  const green::KReport k =
+      green::fit_profile(prof.offset_x, prof.point, h, sensor_gains(s.sensors, s.material.nu, h).gains);
   const double t_green = total_seconds(adj.wall) + clock.seconds();
   add("k_central", k.k_central, t_green);
   add("k_lsq_line", k.k_lsq_line, t_green);
@@ -125,6 +126,11 @@ void check_error_scales(const std::vector<double>& error_scales) {
       std::snprintf(buf, sizeof buf, "%g", e);
       throw SceneError(std::string("--error-scales: ") + buf +
                        ": the error levels are coarser than the scene, so each scale must be > 1");
+    } else if (e > kMaxErrorScale) {
+      std::snprintf(buf, sizeof buf, "%g", e);
+      throw SceneError(std::string("--error-scales: ") + buf + ": a level at more than " +
+                       std::to_string(static_cast<int>(kMaxErrorScale)) +
+                       " times every mesh size no longer resolves the scene, so its change is no error bar");
     }
 }
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <stdexcept>
 
 #include "green/kfit.hpp"
@@ -28,8 +29,7 @@ KfitResult kfit(const Scene& scene, const SensorGreens& greens, LayerLoad load) 
   const int ns = static_cast<int>(scene.sensors.positions.size());
   // On a cap solved in 3D, the first sensor on its axis is checked against the meridian path.
   const int axis = axis_sensor(scene, greens);
-  const green::Gain gain = kfit_gain(scene);
-  r.gain_fitted = gain == green::Gain::fitted;
+  std::map<double, SensorGains> gains_at;  // by thickness
   for (int s = 0; s < ns; ++s) {
     progress_step("kfit: calibration scans", s, ns, clock.seconds());
     KfitSensor k;
@@ -40,7 +40,10 @@ KfitResult kfit(const Scene& scene, const SensorGreens& greens, LayerLoad load) 
     const auto prof =
         green::scan_profile(greens.of(s), load, radius, greens.scan_half_width[s], scene.calibration.spacing);
     k.scan_half_width_mm = prof.offset_x.back();
-    k.fe = green::fit_profile(prof.offset_x, prof.point, h, gain);
+    // Sensors at the same thickness (a cap's mirror pairs) share their gains' meridian solves.
+    if (!gains_at.count(h)) gains_at[h] = sensor_gains(scene.sensors, scene.material.nu, h);
+    k.gains = gains_at[h];
+    k.fe = green::fit_profile(prof.offset_x, prof.point, h, k.gains.gains);
     if (greens.coarse_at) {
       // The k fits again at half the resolution (point values on the fit window |x| ≤ 3h): the change bounds
       // the error, the meridian converging at order ≥ 2 (tests/green/test_meridian).
@@ -49,7 +52,7 @@ KfitResult kfit(const Scene& scene, const SensorGreens& greens, LayerLoad load) 
       for (double x : prof.offset_x)
         if (std::abs(x) <= 3 * h + 1e-12)
           xs.push_back(x), coarse.push_back(greens.coarse_at(s, false, x, 0, load, radius));
-      const green::KReport ck = green::fit_profile(xs, coarse, h, gain);
+      const green::KReport ck = green::fit_profile(xs, coarse, h, k.gains.gains);
       k.k_central_change_from_half_resolution = k.fe.k_central / ck.k_central - 1;
       k.k_lsq_line_change_from_half_resolution = k.fe.k_lsq_line / ck.k_lsq_line - 1;
     }
@@ -58,8 +61,8 @@ KfitResult kfit(const Scene& scene, const SensorGreens& greens, LayerLoad load) 
     if (s == axis) r.meridian_check = k.meridian_check = meridian_check(scene, s, prof, load, radius, h);
     // A fit whose best thickness is its search bound has no answer: the sensor says why, kfit goes on.
     try {
-      if (r.gain_fitted) {
-        // A post's scan is not a layer's at gain 1: calibrate it as the paper did, scale and thickness.
+      if (r.post) {
+        // A post's scan is not a layer's: calibrate it as the paper did, scale and thickness.
         k.paper_calibration =
             green::paper_calibration(prof.offset_x, prof.point, h, scene.material.nu, load, radius);
       } else if (scene.geometry.kind == GeometryKind::cap) {
@@ -149,13 +152,11 @@ Eigen::VectorXd paper_reading_scale(const KfitResult& r) {
 }
 
 namespace {
-nlohmann::json components_json(const green::KReport& r, bool gain) {
+nlohmann::json components_json(const green::KReport& r) {
   nlohmann::json j;
-  for (size_t c = 0; c < 4; ++c) {
-    auto& jc = j[green::component_name(green::kComponents[c])] = {
+  for (size_t c = 0; c < 4; ++c)
+    j[green::component_name(green::kComponents[c])] = {
         {"k", r.components[c].k}, {"rms_residual_over_peak", r.components[c].rms_residual_over_peak}};
-    if (gain) jc["gain"] = r.components[c].gain;
-  }
   return j;
 }
 
@@ -173,8 +174,18 @@ nlohmann::json sensor_json(const KfitResult& r, const KfitSensor& k) {
                        {"scan_half_width_mm", k.scan_half_width_mm},
                        {"k_central", k.fe.k_central},
                        {"k_lsq_line", k.fe.k_lsq_line},
-                       {"components", components_json(k.fe, r.gain_fitted)}};
-  if (r.gain_fitted) js["gain"] = k.fe.gain;
+                       {"components", components_json(k.fe)}};
+  if (r.post && k.gains.gains.fitted) {
+    for (size_t c = 0; c < 4; ++c)
+      js["gains"]["fitted_" + std::string(green::component_name(green::kComponents[c]))] =
+          k.fe.components[c].gain;
+  } else if (r.post) {
+    js["gains"] = {{"sigma_z", k.gains.gains.z},
+                   {"sigma_x", k.gains.gains.x},
+                   {"change_from_half_resolution", k.gains.change},
+                   {"dofs", k.gains.dofs},
+                   {"seconds", k.gains.seconds}};
+  }
   if (k.k_central_change_from_half_resolution) {
     js["k_central_change_from_half_resolution"] = *k.k_central_change_from_half_resolution;
     js["k_lsq_line_change_from_half_resolution"] = *k.k_lsq_line_change_from_half_resolution;
@@ -200,7 +211,7 @@ nlohmann::json sensor_json(const KfitResult& r, const KfitSensor& k) {
     js["peak_point_exact_per_mm2"] = per_component(k.peak_point_exact_per_mm2);
     js["k_central_exact"] = k.exact->k_central;
     js["k_lsq_line_exact"] = k.exact->k_lsq_line;
-    js["components_exact"] = components_json(*k.exact, false);
+    js["components_exact"] = components_json(*k.exact);
     js[r.ridged ? "disc_vs_smooth_max_diff_over_peak"
        : r.post ? "post_vs_exact_disc_max_diff_over_peak"
                 : "fe_vs_exact_max_err_over_peak"] = per_component(k.disc_max_diff_over_peak);
@@ -225,14 +236,17 @@ nlohmann::json kfit_json(const KfitResult& r) {
       {"k_central", "g_zz at zero offset (point value at the base, no sensor averaging) / (3/(2*pi*h^2))"},
       {"k_lsq_line",
        "least-squares fit of k*g_half(sqrt(k)x, 0) to g_zz along y = 0, |x| <= 3h, uniform weight"}};
-  if (r.gain_fitted) {
-    summary["definitions"]["k_central"] = "g_zz at zero offset / (gain * 3/(2*pi*h^2))";
+  if (r.post) {
+    summary["definitions"]["k_central"] = "g_zz at zero offset / (gain of zz * 3/(2*pi*h^2))";
     summary["definitions"]["k_lsq_line"] =
-        "least-squares fit of gain*k*g_half(sqrt(k)x, 0) to g_zz along y = 0, |x| <= 3h, uniform weight, "
-        "gain fitted too";
-    summary["definitions"]["gain"] =
-        "the fitted model's integral over the surface (a post concentrates the stress; a base-traction "
-        "reading has gain 1 by equilibrium)";
+        "least-squares fit of gain*k*g_half(sqrt(k)x, 0) to g_zz along y = 0, |x| <= 3h, uniform weight";
+    summary["definitions"]["gains"] =
+        "the post's readings under a uniform unit pressure (sigma_z) and shear (sigma_x) on the unbounded "
+        "flat "
+        "layer of its thickness, the post held: the model's integral for zz, xz (sigma_z) and zx, xx "
+        "(sigma_x). sigma_z is 1 at nu = 0.5 (the layer is hydrostatic and the post reads the pressure); "
+        "sigma_x is the integral of g_xx on the meridian. A post on springs has none computed yet: each "
+        "component's gain is fitted with its k (fitted_zz, ...)";
     summary["definitions"]["paper_calibration"] =
         "the paper's calibration of the scan: the exact bonded layer's base stress under the same load, "
         "thickness and scale_z fitted to g_zz, scale_x to g_zx at that thickness; a reading / its scale is "

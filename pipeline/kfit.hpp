@@ -25,6 +25,7 @@ struct KfitSensor {
   double h_mm = 0;            // skin thickness above it
   double scan_half_width_mm = 0;
   green::KReport fe;  // from the computed Green tensor
+  SensorGains gains;  // the model's (posts: computed on the meridian; discs: 1)
   std::array<double, 4> peak_point_per_mm2{};
   // Meridian path only: relative change of k from the same fit at half the resolution (bounds its error).
   std::optional<double> k_central_change_from_half_resolution, k_lsq_line_change_from_half_resolution;
@@ -44,7 +45,6 @@ struct KfitResult {
   double nu = 0;
   bool flat = false, ridged = false;
   bool post = false;  // post sensors: the exact layer's readings are a disc's, what the post differs from
-  bool gain_fitted = false;  // post sensors: the model's gain is fitted with k (green::Gain)
   std::vector<KfitSensor> sensors;
   std::optional<MeridianCheck> meridian_check;  // as in its sensor
   std::string path, path_model;                 // of the Green tensors
@@ -60,11 +60,6 @@ struct KfitResult {
   std::optional<std::array<double, 3>> k_central_exact_by_load_model;
   std::string explanation;
 };
-
-// Post sensors fit a gain with k (green::Gain); disc readings hold it at 1.
-inline green::Gain kfit_gain(const Scene& scene) {
-  return scene.sensors.model == SensorModel::post ? green::Gain::fitted : green::Gain::fixed;
-}
 
 // load: point or punch (the calibration punch of the scene).
 KfitResult kfit(const Scene& scene, const SensorGreens& greens, green::LayerLoad load);

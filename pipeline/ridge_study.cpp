@@ -33,7 +33,8 @@ Solved solve_scan(const Scene& scene, std::shared_ptr<Skin> skin, double h, cons
   const double radius = 0.5 * scene.calibration.punch_diameter;
   s.profile = green::scan_profile(*setup->fe, 0, green::LayerLoad::punch, radius,
                                   scan_half_width(scene, &setup->mesh, h, sensor), scene.calibration.spacing);
-  s.k = green::fit_profile(s.profile.offset_x, s.profile.point, h, kfit_gain(scene));
+  s.k = green::fit_profile(s.profile.offset_x, s.profile.point, h,
+                           sensor_gains(scene.sensors, scene.material.nu, h).gains);
   s.wall = setup->wall;
   return s;
 }

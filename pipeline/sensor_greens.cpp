@@ -1,5 +1,6 @@
 #include "pipeline/sensor_greens.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -134,6 +135,35 @@ MeridianMesh MeridianSkin::mesh(const ReadingSite& site, double scale) const {
                      : meridian_mesh(top, radius, sizes);
 }
 
+SensorGains sensor_gains(const Sensors& sensors, double nu, double h, double scale) {
+  SensorGains g;
+  if (sensors.model != SensorModel::post) return g;
+  if (!sensors.post.support.rigid()) {
+    g.gains.fitted = true;
+    return g;
+  }
+  Stopwatch clock;
+  const ReadingSite post{{0, 0}, sensors.post.diameter, sensors.post.height};
+  const auto at = [&](double s) {
+    const MeridianSizes sizes = MeridianSizes::for_thickness(h, s);
+    // The rim's cells at their default (green/meridian.hpp), or finer on a post too short or thin for it,
+    // down to a sixteenth of the default: a post shorter than that reads as the disc it tends to.
+    const double rim_default = 7.5 * sizes.axis_cell * sizes.axis_cell / h;
+    const double rim =
+        std::clamp(std::min(post.post_height, 0.5 * post.diameter) / 16, rim_default / 16, rim_default);
+    const MeridianMesh mesh = meridian_mesh([h](double) { return h; }, kUnboundedRadiusOverH * h, sizes,
+                                            MeridianPost{0.5 * post.diameter, post.post_height, rim});
+    const MeridianGreen m(mesh, nu, SideCondition::free, post);
+    if (s == scale) g.dofs = m.dofs();
+    return green::ChannelGains{nu == 0.5 ? 1.0 : m.shape_zz().integral, m.shape_xx().integral};
+  };
+  g.gains = at(scale);
+  const green::ChannelGains coarse = at(2 * scale);
+  g.change = std::max(std::abs(coarse.z / g.gains.z - 1), std::abs(coarse.x / g.gains.x - 1));
+  g.seconds = clock.seconds();
+  return g;
+}
+
 SensorGreens meridian_sensor_greens(const Scene& scene) {
   if (const std::string why = meridian_unavailable(scene); !why.empty())
     throw SceneError(scene.source_path + ": the meridian (axisymmetric) path does not apply: " + why +
@@ -205,8 +235,9 @@ MeridianCheck meridian_check(const Scene& scene, int sensor, const green::ScanPr
   Stopwatch clock;
   const SensorGreens m = meridian_sensor_greens(with_sensor(scene, sensor));
   const auto mp = green::scan_profile(m.of(0), load, radius, prof.offset_x.back(), scene.calibration.spacing);
-  const green::KReport k3 = green::fit_profile(prof.offset_x, prof.point, h, kfit_gain(scene));
-  const green::KReport mk = green::fit_profile(mp.offset_x, mp.point, h, kfit_gain(scene));
+  const green::ChannelGains gains = sensor_gains(scene.sensors, scene.material.nu, h).gains;
+  const green::KReport k3 = green::fit_profile(prof.offset_x, prof.point, h, gains);
+  const green::KReport mk = green::fit_profile(mp.offset_x, mp.point, h, gains);
   MeridianCheck c;
   c.sensor = sensor + 1;
   c.path_model = m.model;

@@ -83,6 +83,20 @@ struct MeridianSkin {
 };
 MeridianSkin meridian_skin(const Scene& scene);
 
+// A sensor's gains in the k model (green::ChannelGains) at skin thickness h: a disc's are 1 and 1 (by
+// equilibrium). A post's are its readings under a uniform unit pressure and shear on the unbounded flat layer
+// of thickness h, the post held: σ_z's is 1 at ν = 0.5 (hydrostatic, exact), else ∬ g_zz dA, and σ_x's
+// ∬ g_xx dA (MeridianGreen::Shape::integral), both on the meridian at MeridianSizes scale `scale`; `change`
+// is the larger relative change of the computed ones from the level at twice every size. A post on membrane
+// springs is given its held post's gains: the springs' transfer is not in the model.
+struct SensorGains {
+  green::ChannelGains gains;
+  double change = 0;
+  int dofs = 0;  // of the finer meridian, both modes
+  double seconds = 0;
+};
+SensorGains sensor_gains(const Sensors& sensors, double nu, double h, double scale = 1);
+
 // The Green tensors by `path`: the meridian's where asked, or where automatic and meridian_unavailable is
 // empty; else the 3D path's (with_path_reason), with the adjoint set-up it made in `adjoints`.
 SensorGreens green_path(const Scene& scene, GreenPath path);

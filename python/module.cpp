@@ -8,6 +8,8 @@
 #include <pybind11/stl.h>
 
 #include <array>
+#include <cmath>
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,6 +37,15 @@ namespace py = pybind11;
 using namespace skinfem;
 
 namespace {
+
+// An argument outside its range: one line naming it, its value and what is allowed, raised as
+// skinfem.SceneError (a ValueError), as the scene reader does for a file.
+void require(bool ok, const char* name, double value, const std::string& allowed) {
+  if (ok) return;
+  char v[32];
+  std::snprintf(v, sizeof v, "%g", value);
+  throw SceneError(std::string(name) + " = " + v + ": " + allowed);
+}
 
 py::array_t<double> per_component(const std::array<double, 4>& v) {
   py::array_t<double> a(4);
@@ -138,6 +149,10 @@ PYBIND11_MODULE(_skinfem, m) {
         });
       },
       py::arg("callback"), "Progress lines of long stages go to callback(message); None: silent (default).");
+  // The sink holds a Python callable: release it while the interpreter lives (atexit runs before
+  // finalization), not in a static destructor after it, which would wait for the GIL forever.
+  py::module_::import("atexit").attr("register")(
+      py::cpp_function([]() { pipeline::set_progress_sink(nullptr); }));
 
   py::class_<Scene>(m, "Scene", "A validated scene (mm, N, MPa); build one with skinfem.scene(...).")
       .def_readonly("name", &Scene::name)
@@ -155,13 +170,25 @@ PYBIND11_MODULE(_skinfem, m) {
                                return a;
                              })
       .def_property_readonly("has_contact", [](const Scene& s) { return s.contact.has_value(); })
-      .def("scaled", &scaled_scene, py::arg("s"), py::arg("cap_holes") = false,
-           "The scene with every mesh size scaled by s (the family every study's levels come from).")
+      .def(
+          "scaled",
+          [](const Scene& scene, double s, bool cap_holes) {
+            require(std::isfinite(s) && s > 0, "s", s, "must be a finite mesh scale > 0");
+            return scaled_scene(scene, s, cap_holes);
+          },
+          py::arg("s"), py::arg("cap_holes") = false,
+          "The scene with every mesh size scaled by s (the family every study's levels come from).")
       .def("__repr__",
            [](const Scene& s) { return "<skinfem.Scene '" + s.name + "' from " + s.source_path + ">"; });
   m.def(
       "k_sweep",
       [](double h, double nu, double punch_diameter) {
+        require(std::isfinite(h) && h > 0 && h <= 100, "h", h, "must be a thickness in (0, 100] mm");
+        require(nu >= 0 && nu <= 0.5, "nu", nu, "must be a Poisson's ratio in [0, 0.5]");
+        require(std::isfinite(punch_diameter) && punch_diameter > 0 && punch_diameter <= 10 * h,
+                "punch_diameter", punch_diameter,
+                "must be a calibration punch in (0, 10 h] mm (wider, it no longer probes the layer's Green "
+                "tensor)");
         validation::KProtocol base;
         base.h = h, base.nu = nu, base.punch_diameter = punch_diameter;
         py::list rows;
@@ -195,7 +222,13 @@ PYBIND11_MODULE(_skinfem, m) {
           "peak_point_per_mm2",
           [](const pipeline::KfitSensor& k) { return per_component(k.peak_point_per_mm2); })
       .def_readonly("effective_thickness_mm", &pipeline::KfitSensor::effective_thickness_mm)
-      .def_property_readonly("gain", [](const pipeline::KfitSensor& k) { return k.fe.gain; })
+      .def_property_readonly("gains",
+                             [](const pipeline::KfitSensor& k) {
+                               py::dict d;  // per component: as given (sigma_z, sigma_x) or fitted
+                               for (int c = 0; c < 4; ++c)
+                                 d[green::component_name(green::kComponents[c])] = k.fe.components[c].gain;
+                               return d;
+                             })
       .def_property_readonly("paper_calibration",
                              [](const pipeline::KfitSensor& k) {
                                if (!k.paper_calibration) return py::object(py::none());
@@ -506,8 +539,16 @@ PYBIND11_MODULE(_skinfem, m) {
       "hertz_tractions",
       [](double force, double R, double E, double nu, std::array<double, 2> center, double ratio,
          double shear_kpa, double layer_h) {
-        if (!(force > 0)) throw SceneError("force_N: " + std::to_string(force) + " must be > 0");
-        if (!(R > 0)) throw SceneError("radius_mm: " + std::to_string(R) + " must be > 0");
+        require(std::isfinite(force) && force > 0, "force_N", force, "must be a finite force > 0");
+        require(std::isfinite(R) && R > 0, "radius_mm", R, "must be a finite radius > 0");
+        require(std::isfinite(E) && E > 0, "E_MPa", E, "must be a finite Young's modulus > 0");
+        require(nu >= 0 && nu <= 0.5, "nu", nu, "must be a Poisson's ratio in [0, 0.5]");
+        require(std::isfinite(center[0]) && std::isfinite(center[1]), "center_mm",
+                std::isfinite(center[0]) ? center[1] : center[0], "must be finite");
+        require(std::isfinite(ratio), "ratio", ratio, "must be finite");
+        require(std::isfinite(shear_kpa), "shear_kPa", shear_kpa, "must be finite");
+        require(layer_h == 0 || (std::isfinite(layer_h) && layer_h > 0), "layer_h_mm", layer_h,
+                "must be 0 (the half space) or a finite thickness > 0");
         if (layer_h > 0) {
           const contact::LayerHertzResult l = contact::layer_hertz_force(force, R, layer_h, E, nu);
           return PyTractions{validation::layer_hertz_tractions(l, center, ratio, 1e-3 * shear_kpa),

@@ -268,7 +268,9 @@ class Reader {
   std::string file_;
 };
 
-// Parses JSON text, rejecting duplicate keys (which nlohmann would silently resolve to the last one).
+// Parses JSON text, rejecting duplicate keys (which nlohmann would silently resolve to the last one) and
+// nesting deeper than kMaxJsonDepth.
+constexpr std::size_t kMaxJsonDepth = 32;
 json parse_json(const std::string& text, const Reader& r) {
   struct Frame {
     bool object;
@@ -290,6 +292,10 @@ json parse_json(const std::string& text, const Reader& r) {
     switch (event) {
       case json::parse_event_t::object_start:
       case json::parse_event_t::array_start:
+        // Each level keeps its path: an unbounded depth would cost memory as its square.
+        if (stack.size() >= kMaxJsonDepth)
+          r.fail(child_path(), "nested deeper than " + std::to_string(kMaxJsonDepth) +
+                                   " levels; a scene needs a few (untrusted or generated input?)");
         stack.push_back({event == json::parse_event_t::object_start, child_path(), {}, {}, 0});
         break;
       case json::parse_event_t::key: {

@@ -15,6 +15,10 @@ namespace skinfem {
 using Vec2 = std::array<double, 2>;
 using Vec3 = std::array<double, 3>;
 
+// The error bars' coarser levels (`--error-scales`, a sweep's error_scales) multiply every mesh size by a
+// scale in (1, kMaxErrorScale]: beyond it a level no longer resolves the scene and its change is no error.
+inline constexpr double kMaxErrorScale = 4;
+
 // Spherical or ellipsoidal cap bonded to z = 0, cut by the vertical cylinder of radius truncation_radius
 // about the apex axis. R and R_y are the top's radii of curvature at the apex along x and y (R_y = 0: R_y =
 // R, a sphere). The top is the ellipsoid with semi-axes a = sqrt(R c) (x), b = sqrt(R_y c) (y) and

@@ -100,10 +100,13 @@ std::vector<std::string> read_options(const SpecReader& r, const json& o, const 
       if (!v.is_boolean()) r.fail(field, v, "must be true or false");
       if (v.get<bool>()) words.push_back(flag);
     } else if (key == "error_scales") {
-      if (!v.is_array() || v.empty()) r.fail(field, v, "must be a non-empty array of mesh scales > 1");
+      const std::string allowed = "must be a non-empty array of mesh scales in (1, " +
+                                  std::to_string(static_cast<int>(kMaxErrorScale)) + "]";
+      if (!v.is_array() || v.empty()) r.fail(field, v, allowed);
       std::string list;
       for (const json& s : v) {
-        if (!(number(r, s, field) > 1)) r.fail(field, v, "must be a non-empty array of mesh scales > 1");
+        const double x = number(r, s, field);
+        if (!(x > 1 && x <= kMaxErrorScale)) r.fail(field, v, allowed);
         list += (list.empty() ? "" : ",") + word(s.get<double>());
       }
       words.insert(words.end(), {flag, list});

@@ -27,14 +27,16 @@
 # Outputs (DIR/figures/, 120 dpi), each written only if all its inputs exist:
 #   fig1_calibration.png     green.csv, kfit.json: g_disc vs offset for every sensor, 2×2 (zz, zx, xz, xx),
 #                            with the half-space Green tensor at sensor #1's depth h rescaled as
-#                            g_k(x) = k·g_half(√k·x) for k = paper_k (dashed) and k = k_lsq_line (dotted).
+#                            g_k(x) = c·k·g_half(√k·x) for k = paper_k (dashed) and the component's own
+#                            fitted k (dotted), c the reading's gain (kfit.json "gains": a post's; else 1).
 #   fig2_static_sliding.png  readings.csv: σ_z and σ_x vs sensor x, static and sliding, one line per variant.
 #   fig3_varsigma_z.png      defect.csv, readings.csv (sensor x): ς_z vs hole position u per sensor, one row
 #   fig4_varsigma_x.png      per case (sliding, then static): FE | paper_model | FE × s against the model for
 #                            sensors #5, #7, s = max|model| / max|FE| over all sensors of that row.
 #   pressure_profiles.png    pressure.csv: every column with a value vs x (q dotted).
 #   green_vs_halfspace.png   green.csv, kfit.json: sensor #1 g_zz, g_xx (disc) against the rescaled
-#                            half-space for both k (and the exact layer if given), and (model − FE) / FE peak.
+#                            half-space at the paper's k and at the component's own fitted k, times the
+#                            reading's gain (and the exact layer if given), and (model − FE) / FE peak.
 #   k_sweep.png              kfit/k_sweep.csv (parameter,value,k_central,k_lsq_line), kfit.json: the exact
 #                            layer's k as one protocol reading changes at a time, against the paper's k ± 0.01,
 #                            and the FE k per mesh scale (rows mesh_scale) when the report computed error bars.
@@ -182,7 +184,26 @@ def read_green(d):
 
 
 def read_kfit(d):
-    return read_json_numbers(os.path.join(d, "kfit/kfit.json"), ("h_mm", "k_lsq_line", "paper_k"))
+    """kfit.json's numbers, with the model's gain per reading (gain_z, gain_x: a post's computed gains, else 1)
+    and each component's own fitted k (k_zz, …; k_lsq_line where absent)."""
+    path = os.path.join(d, "kfit/kfit.json")
+    kf = read_json_numbers(path, ("h_mm", "k_lsq_line", "paper_k"))
+    with open(path) as f:
+        obj = json.load(f)
+    finite = lambda v, default: float(v) if isinstance(v, (int, float)) and math.isfinite(v) else default
+    gains = obj.get("gains", {}) if isinstance(obj.get("gains"), dict) else {}
+    for reading in ("z", "x"):
+        kf["gain_" + reading] = finite(gains.get("sigma_" + reading), 1.0)
+    components = obj.get("components", {}) if isinstance(obj.get("components"), dict) else {}
+    for c in COMPONENTS:
+        own = components.get(c, {})
+        kf["k_" + c] = finite(own.get("k") if isinstance(own, dict) else None, kf["k_lsq_line"])
+    return kf
+
+
+def gain_of(kf, c):
+    """The model's gain for component c: its reading's (zz, xz read σ_z; zx, xx σ_x)."""
+    return kf["gain_z" if c in ("zz", "xz") else "gain_x"]
 
 
 def read_readings(d):
@@ -225,8 +246,8 @@ def no_data(ax, message):
     ax.text(0.5, 0.5, message, transform=ax.transAxes, ha="center", va="center", color="0.4")
 
 
-def model_labels(kf):
-    return (f"half-space, k = paper_k = {kf['paper_k']:.3g}", f"half-space, k = k_lsq_line = {kf['k_lsq_line']:.4g}")
+def paper_label(kf):
+    return f"half-space, k = paper_k = {kf['paper_k']:.3g}"
 
 
 # ---- figures --------------------------------------------------------------------------------------------
@@ -234,14 +255,16 @@ def fig1_calibration(d):
     g, kf = read_green(d), read_kfit(d)
     sensors = sorted(set(g["sensor"].tolist()))
     x = np.linspace(g["offset_x_mm"].min(), g["offset_x_mm"].max(), 801)
-    lab_paper, lab_lsq = model_labels(kf)
+    lab_paper = paper_label(kf)
     fig, axes = plt.subplots(2, 2, figsize=(14, 9.5), sharex=True)
     for ax, c in zip(axes.flat, COMPONENTS):
         for s in sensors:
             ax.plot(*scan(g, s, c, "g_disc_per_mm2"), color=sensor_color(s), lw=1.3, label=f"FE sensor #{s}")
-        ax.plot(x, g_half(c, x, kf["h_mm"], kf["paper_k"]), "k--", lw=1.6, zorder=3, label=lab_paper)
-        ax.plot(x, g_half(c, x, kf["h_mm"], kf["k_lsq_line"]), "k:", lw=1.8, zorder=3, label=lab_lsq)
-        ax.set_title(f"g_{c}: {COMPONENT_TEXT[c]}")
+        gain, k = gain_of(kf, c), kf["k_" + c]
+        ax.plot(x, gain * g_half(c, x, kf["h_mm"], kf["paper_k"]), "k--", lw=1.6, zorder=3, label=lab_paper)
+        ax.plot(x, gain * g_half(c, x, kf["h_mm"], k), "k:", lw=1.8, zorder=3,
+                label="half-space, k fitted to the component (in its title)")
+        ax.set_title(f"g_{c}: {COMPONENT_TEXT[c]} (fitted k {k:.4g})")
         ax.set_ylabel(G_UNIT)
     for ax in axes[1]:
         ax.set_xlabel("offset x = load position − sensor position (mm)")
@@ -249,7 +272,7 @@ def fig1_calibration(d):
     fig.legend(handles, labels, loc="center right", title="FE: disc mean, solid")
     fig.suptitle("Calibration scans (paper fig. 1): FE Green tensor of every sensor along y = 0, against the\n"
                  f"rescaled half-space model at sensor #1's depth h = {kf['h_mm']:.3f} mm")
-    fig.tight_layout(rect=(0, 0, 0.8, 1))
+    fig.tight_layout(rect=(0, 0, 0.76, 1))
     return fig
 
 
@@ -397,7 +420,7 @@ def pressure_profiles(d):
 
 def green_vs_halfspace(d):
     g, kf = read_green(d), read_kfit(d)
-    lab_paper, lab_lsq = model_labels(kf)
+    lab_paper = paper_label(kf)
     fig, axes = plt.subplots(2, 2, figsize=(13, 8.5), sharex="col", gridspec_kw={"height_ratios": (2.2, 1)})
     for j, c in enumerate(("zz", "xx")):
         x, fe = scan(g, 1, c, "g_disc_per_mm2")
@@ -405,8 +428,10 @@ def green_vs_halfspace(d):
         if not len(x):
             no_data(top, f"no sensor #1 {c} rows")
             continue
-        models = [(lab_paper, g_half(c, x, kf["h_mm"], kf["paper_k"]), "--", "tab:red"),
-                  (lab_lsq, g_half(c, x, kf["h_mm"], kf["k_lsq_line"]), ":", "tab:blue")]
+        gain, k = gain_of(kf, c), kf["k_" + c]  # the gain: the model's integral, the reading of a uniform load
+        models = [(lab_paper, gain * g_half(c, x, kf["h_mm"], kf["paper_k"]), "--", "tab:red"),
+                  (f"half-space, k fitted to g_{c} = {k:.4g}", gain * g_half(c, x, kf["h_mm"], k), ":",
+                   "tab:blue")]
         if "g_exact_disc_per_mm2" in g:
             exact = scan(g, 1, c, "g_exact_disc_per_mm2")[1]
             if np.isfinite(exact).any():
@@ -423,7 +448,7 @@ def green_vs_halfspace(d):
         bottom.axhline(0, color="0.5", lw=0.8)
         bottom.set_ylabel("(model − FE) / FE peak (%)")
         bottom.set_xlabel("offset x = load position − sensor position (mm)")
-    fig.suptitle(f"FE Green tensor of sensor #1 against the rescaled half-space k·g_half(√k·x) at h = "
+    fig.suptitle(f"FE Green tensor of sensor #1 against the rescaled half-space c·k·g_half(√k·x) at h = "
                  f"{kf['h_mm']:.3f} mm")
     fig.tight_layout()
     return fig
@@ -552,9 +577,9 @@ def post_design(d):
                   "g_zz_half_width_mm": number, "g_zz_integral": number, "g_xx_half_width_mm": number,
                   "g_xx_integral": number})
     s = t["row"] == "sweep"
-    panels = [("g_zz_integral", "gain of g_zz (reading per unit uniform pressure)"),
+    panels = [("g_zz_integral", "∫ g_zz dA (uniform vertical load per base area)"),
               ("g_zz_half_width_mm", "half width of g_zz (mm)"),
-              ("g_xx_integral", "gain of g_xx (reading per unit uniform shear)"),
+              ("g_xx_integral", "∫ g_xx dA (uniform shear per base area)"),
               ("g_xx_half_width_mm", "half width of g_xx (mm)")]
     fig, axes = plt.subplots(2, 2, figsize=(11, 8), sharex=True)
     for ax, (column, label) in zip(axes.flat, panels):
@@ -568,7 +593,7 @@ def post_design(d):
     for ax in axes[1]:
         ax.set_xlabel("post height (mm; 0: the disc of that diameter)")
     axes[0][0].legend(fontsize=8)
-    fig.suptitle("Post sensor design at the skin's axis (meridian solves): gain and spatial resolution")
+    fig.suptitle("Post sensor design at the skin's axis (meridian solves): integral and spatial resolution")
     fig.tight_layout()
     return fig
 

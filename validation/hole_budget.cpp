@@ -142,19 +142,25 @@ std::vector<FactVerdict> judge_facts(const FactsInput& in) {
              format(" the match band [%.2g, %.2g]", R.match_lo, R.match_hi);
     out.push_back({"F2", detected && match, why});
   }
-  {  // F3
+  {  // F3: the front louder than the model and than the back, as the paper's asymmetry
     const auto rz = range(front, 0), rx = range(front, 1);
     const double top = front.empty() ? 0.0 : std::max(rz[1], rx[1]);
+    const double top_back = back.empty() ? 0.0 : std::max(range(back, 0)[1], range(back, 1)[1]);
+    const bool loud = top >= R.front_min, louder = top >= R.front_over_back * top_back;
     std::string why;
-    if (front.empty())
-      why = "no sensor lies ahead of the contact centre";
+    if (front.empty() || back.empty())
+      why = front.empty() ? "no sensor lies ahead of the contact centre"
+                          : "no sensor lies behind the contact centre to contrast the front with";
     else
       why = "the front sensors (" + names(front) + ") read " +
             format("%.2f-%.2f (z) and %.2f-%.2f (x) times the paper's model; the largest, ", rz[0], rz[1],
                    rx[0], rx[1]) +
-            format("%.2f, is", top) + (top >= R.front_min ? " at least " : " below ") +
-            format("%.2g (the paper: up to 4)", R.front_min);
-    out.push_back({"F3", top >= R.front_min, why});
+            format("%.2f, is", top) + (loud ? " at least " : " below ") +
+            format("%.2g (the paper: up to 4) and ", R.front_min) +
+            format("%.2f times the back sensors' largest, %.2f (", top / top_back, top_back) +
+            (louder ? "at least " : "below ") +
+            format("%.2g: the paper's back sensors match the model)", R.front_over_back);
+    out.push_back({"F3", !front.empty() && !back.empty() && loud && louder, why});
   }
   const std::vector<int> order = along(in);
   {  // F4

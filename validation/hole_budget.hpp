@@ -31,11 +31,13 @@ struct NoiseModel {
 };
 
 // The judgement's bands, stated once: "match" (F2) is an amplitude ratio FE/model in [match_lo, match_hi];
-// "up to 4×" (F3) is a front ratio of at least front_min; a profile is antisymmetric (F4) when its smaller
-// lobe reaches antisym of its larger; two maxima are comparable when the second reaches comparable of the
-// first with a dip of at least dip between them.
+// F3 is an asymmetry, the front sensors "up to 4×" the model while the back ones match it: the front's
+// largest ratio reaches front_min and front_over_back times the back's largest; a profile is antisymmetric
+// (F4) when its smaller lobe reaches antisym of its larger; two maxima are comparable when the second reaches
+// comparable of the first with a dip of at least dip between them.
 struct FactRules {
-  double match_lo = 0.5, match_hi = 2.0, front_min = 2.0, antisym = 0.5, comparable = 0.5, dip = 0.2;
+  double match_lo = 0.5, match_hi = 2.0, front_min = 2.0, front_over_back = 2.0, antisym = 0.5,
+         comparable = 0.5, dip = 0.2;
 };
 
 struct FactVerdict {

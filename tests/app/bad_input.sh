@@ -55,6 +55,9 @@ sed 's/"nu": 0.5/"nu": NaN/' "$tmp/base.json" >"$tmp/nan.json"
 check nan_literal 'nan.json: .*(syntax|parse|invalid)' "$skinfem" mesh "$tmp/nan.json" --out "$tmp/out"
 sed 's/"nu": 0.5/"nu": 0.5, "nu": 0.4/' "$tmp/base.json" >"$tmp/dupkey.json"
 check duplicate_key 'material.nu.*duplicate' "$skinfem" mesh "$tmp/dupkey.json" --out "$tmp/out"
+# 600 KB of nesting: refused at a depth limit, not by running out of memory (issue 57).
+/usr/bin/python3 -c 'import sys; n = 100000; sys.stdout.write("{\"geometry\": " + "[" * n + "]" * n + "}")' >"$tmp/deep.json"
+check deep_nesting 'deep.json: geometry(\[0\])+: nested deeper than 32 levels' "$skinfem" mesh "$tmp/deep.json" --out "$tmp/out"
 
 # Unknown keys at every level.
 bad unknown_top 'd["colour"] = 1' 'colour: unknown key'
@@ -222,6 +225,7 @@ check out_name_too_long '--out .*: a name in the path has 300 characters; allowe
 check out_owned_by_another '--out .*owned: holds the results of `skinfem mesh` \(run.json\); `skinfem solve` would mix' "$skinfem" solve "$tmp/base.json" --out "$tmp/owned"
 check study_ridges_coarse '--ridges: 2.000000: a level must give at least 3 mesh elements per ridge period' "$skinfem" study "$tmp/ridged.json" --ridges 2,3,4 --out "$tmp/out"
 check error_scales_equal '--error-scales: 2 then 2: levels must be distinct and decreasing' "$skinfem" report "$tmp/base.json" --error-scales 2,2 --out "$tmp/out"
+check error_scales_huge '--error-scales: 1e\+06: a level at more than 4 times every mesh size' "$skinfem" report "$tmp/base.json" --error-scales 1e6,2 --out "$tmp/out"
 
 # Physics the scene cannot mean.
 sphere='d["contact"] = {"indenter": {"type": "sphere", "R": 50, "center": [0, 0]}, "force": 0.1'

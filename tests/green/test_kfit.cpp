@@ -47,32 +47,36 @@ TEST(KFit, RecoversKnownK) {
     }
 }
 
-// A post's reading has a gain c ≠ 1 (green::Gain): samples c·k·g_half(√k x) give back both c and k. The
-// amplitude ck and the width k^−1/2 are independent features, so the pair is identified; with the gain held
-// at 1 the same samples fit a wrong k (amplitude and width disagree) with a residual far above round-off.
-TEST(KFit, FittedGainRecoversGainAndK) {
+// A post's σ_x reading has a gain c ≠ 1 (green/calibration.hpp's ChannelGains): samples c·k·g_half(√k x)
+// fitted at that gain give back k, and with the gain fitted too (posts on springs, whose gain is not
+// computed) both c and k: the amplitude ck and the width k^−1/2 are independent features. Held at gain 1 the
+// same samples fit a wrong k (amplitude and width disagree) with a residual far above round-off.
+TEST(KFit, TheModelAtTheSensorsGainRecoversK) {
   const std::vector<double> x = line(3.0 * kH, 121);
   for (double c0 : {1.3, 2.76, 30.0})
     for (double k0 : {1.0, 2.4})
       for (GreenComponent c : kAll) {
         std::vector<double> g;
         for (double xi : x) g.push_back(c0 * component(rescaled_green(xi, 0.0, kH, k0), c));
-        const KFit f = fit_k_line(x, g, kH, c, skinfem::green::Gain::fitted);
+        const KFit f = fit_k_line(x, g, kH, c, c0);
         EXPECT_NEAR(f.k, k0, 1e-6 * k0) << name(c) << " c0 " << c0;
-        EXPECT_NEAR(f.gain, c0, 1e-6 * c0) << name(c) << " c0 " << c0;
+        EXPECT_EQ(f.gain, c0);
         EXPECT_LT(f.rms_residual_over_peak, 1e-6) << name(c);
+        const KFit fitted = fit_k_line(x, g, kH, c, std::nullopt);
+        EXPECT_NEAR(fitted.k, k0, 1e-6 * k0) << name(c) << " c0 " << c0;
+        EXPECT_NEAR(fitted.gain, c0, 1e-6 * c0) << name(c) << " c0 " << c0;
         if (c0 == 1.3) {  // larger gains put the held fit's minimum beyond the search range
           const KFit held = fit_k_line(x, g, kH, c);
-          EXPECT_EQ(held.gain, 1.0);
           EXPECT_GT(held.rms_residual_over_peak, 1e-3) << name(c) << " c0 " << c0;
         }
       }
 }
 
 TEST(KFit, AMinimumBeyondTheSearchRangeIsAnErrorNotTheBound) {
-  // Samples of the rescaled model itself with k = 0.3 and 6: the least-squares minimum lies outside [0.5, 4].
+  // Samples of the rescaled model itself with k = 0.2 and 20: the least-squares minimum lies outside [kMinK,
+  // kMaxK].
   const std::vector<double> x = line(3.0 * kH, 121);
-  for (double k0 : {0.3, 6.0}) {
+  for (double k0 : {0.2, 20.0}) {
     std::vector<double> g;
     for (double xi : x) g.push_back(rescaled_green(xi, 0.0, kH, k0).zz);
     EXPECT_THROW(fit_k_line(x, g, kH, GreenComponent::zz), std::domain_error) << "k0 " << k0;

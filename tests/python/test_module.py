@@ -188,6 +188,30 @@ def test_progress_reaches_the_callback():
     assert any(line.startswith("kfit: calibration scans") for line in lines), lines
 
 
+def test_entry_points_refuse_arguments_out_of_range():
+    # Issue 57: scaled(nan) crashed in CGAL, scaled(-1) meshed for 87 s, a NaN or negative layer thickness
+    # became the half space, a 1e6 mm punch hung k_sweep. Each is one line naming the argument.
+    scene = skinfem.scene(FLAT)
+    for s in (float("nan"), -1.0, 0.0, float("inf")):
+        with pytest.raises(skinfem.SceneError, match=r"^s = .*: must be a finite mesh scale > 0$"):
+            scene.scaled(s)
+    for h in (float("nan"), -1.0):
+        with pytest.raises(skinfem.SceneError, match=r"^layer_h_mm = .*: must be 0 \(the half space\)"):
+            skinfem.hertz_tractions(1.0, 10.0, 3.0, layer_h_mm=h)
+    with pytest.raises(skinfem.SceneError, match=r"^nu = 0.7: must be a Poisson's ratio in \[0, 0.5\]$"):
+        skinfem.hertz_tractions(1.0, 10.0, 3.0, nu=0.7)
+    with pytest.raises(skinfem.SceneError, match=r"^punch_diameter = 1e\+06: must be a calibration punch"):
+        skinfem.k_sweep(h=3.04, nu=0.5, punch_diameter=1e6)
+    assert isinstance(skinfem.SceneError("x"), ValueError)
+
+
+def test_a_progress_callback_left_set_does_not_hang_the_exit():
+    # Issue 57: the sink's Python callable was released after finalization, waiting for the GIL forever.
+    r = subprocess.run([sys.executable, "-c", "import skinfem; skinfem.set_progress(print)"],
+                       capture_output=True, text=True, timeout=60, env=os.environ)
+    assert r.returncode == 0, r.stderr
+
+
 def test_readme_python_examples_run_as_written(tmp_path):
     """Every ```python block after a <!-- python-example --> marker in the README, run from the source tree."""
     with open(os.path.join(SRC, "README.md")) as f:
