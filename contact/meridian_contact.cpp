@@ -242,7 +242,7 @@ MeridianContactResult meridian_contact(const MeridianContactSkin& skin, double z
     } else {
       std::vector<double> radii, values;
       for (int i = 0; i < n; ++i)
-        if (s.lambda[i] > 0) radii.push_back(p.r[i]), values.push_back(s.lambda[i] * s.lambda[i]);
+        if (s.lambda[i] > 0) radii.push_back(p.r[i]), values.push_back(s.lambda[i]);
       out.contact_radius_mm = edge_fit_radius(radii, values, radii.empty() ? 0 : radii.back());
     }
     edge = out.contact_radius_mm;

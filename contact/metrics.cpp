@@ -85,32 +85,42 @@ ContactMetrics contact_metrics(const ContactSolver& solver, const TetMesh& m, co
       if ((xy(i) - Eigen::Vector2d(h.center[0], h.center[1])).norm() < h.diameter) return false;
     return true;
   };
-  std::vector<double> radii, values;
+  std::vector<double> radii, p;
   double r_max = 0;
   for (int i = 0; i < z.size(); ++i)
     if (fitted(i)) {
       radii.push_back((xy(i) - fc).norm());
-      values.push_back(linear_edge ? r.lambda[i] : r.lambda[i] * r.lambda[i]);
+      p.push_back(r.lambda[i]);
       r_max = std::max(r_max, radii.back());
     }
+  // A linear interface's edge zone, where its closure takes up the gap, shrinks as K grows (to a fraction
+  // p0/(Kδ) of the radius) and falls below the mesh: its edge takes the exponent that fits the pressure
+  // better, so a stiff interface's radius is the hard contact's.
+  EdgeFit fit = edge_fit(radii, p, 2);
+  if (linear_edge) {
+    const EdgeFit lin = edge_fit(radii, p, 1);
+    if (lin.radius > 0 && (!(fit.radius > 0) || lin.rms < fit.rms)) fit = lin;
+  }
   // Too few rows for the fit: the area-equivalent radius, or with holes (whose area it misses) the farthest
   // fitted vertex.
-  out.contact_radius_mm = edge_fit_radius(radii, values, holes.empty() ? out.equivalent_radius_mm : r_max);
+  out.contact_radius_mm = fit.radius > 0 ? fit.radius : holes.empty() ? out.equivalent_radius_mm : r_max;
   return out;
 }
 
-double edge_fit_radius(const std::vector<double>& radii, const std::vector<double>& values, double fallback) {
+EdgeFit edge_fit(const std::vector<double>& radii, const std::vector<double>& p, int q) {
   double r_max = 0;
   for (double r : radii) r_max = std::max(r_max, r);
   std::vector<Eigen::Vector3d> rows;
-  std::vector<double> rhs;
+  std::vector<double> rhs, p_rows;
   for (size_t i = 0; i < radii.size(); ++i)
     if (radii[i] >= 0.6 * r_max) {
       const double X = radii[i] * radii[i] / (r_max * r_max);  // scaled for conditioning
       rows.emplace_back(1.0, X, X * X);
-      rhs.push_back(values[i]);
+      rhs.push_back(q == 1 ? p[i] : p[i] * p[i]);
+      p_rows.push_back(p[i]);
     }
-  if (rows.size() < 6) return fallback;
+  EdgeFit fit;
+  if (rows.size() < 6) return fit;
   Eigen::MatrixXd A(rows.size(), 3);
   Eigen::VectorXd b(rows.size());
   for (size_t k = 0; k < rows.size(); ++k) A.row(k) = rows[k].transpose(), b[k] = rhs[k];
@@ -120,12 +130,27 @@ double edge_fit_radius(const std::vector<double>& radii, const std::vector<doubl
   if (std::abs(co[2]) > 1e-12 * std::abs(co[1])) {
     const double disc = co[1] * co[1] - 4 * co[2] * co[0];
     if (disc >= 0) {
-      const double q = -0.5 * (co[1] + std::copysign(std::sqrt(disc), co[1]));
-      const double X1 = q / co[2], X2 = co[0] / q;
+      const double qq = -0.5 * (co[1] + std::copysign(std::sqrt(disc), co[1]));
+      const double X1 = qq / co[2], X2 = co[0] / qq;
       X = std::abs(X1 - 1) < std::abs(X2 - 1) ? X1 : X2;
     }
   }
-  return X > 0 && std::isfinite(X) ? r_max * std::sqrt(X) : fallback;
+  if (!(X > 0) || !std::isfinite(X)) return fit;
+  fit.radius = r_max * std::sqrt(X);
+  // The residual in pressure, the same measure for either exponent.
+  double sum = 0;
+  for (size_t k = 0; k < rows.size(); ++k) {
+    const double v = rows[k].dot(co);
+    const double model = q == 1 ? v : std::sqrt(std::max(v, 0.0));
+    sum += (model - p_rows[k]) * (model - p_rows[k]);
+  }
+  fit.rms = std::sqrt(sum / rows.size());
+  return fit;
+}
+
+double edge_fit_radius(const std::vector<double>& radii, const std::vector<double>& p, double fallback) {
+  const EdgeFit fit = edge_fit(radii, p, 2);
+  return fit.radius > 0 ? fit.radius : fallback;
 }
 
 }  // namespace skinfem::contact

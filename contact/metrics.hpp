@@ -31,9 +31,15 @@ ContactMetrics contact_metrics(const ContactSolver& solver, const TetMesh& mesh,
                                const ContactResult& r, const Vec2& center,
                                const std::vector<Hole>& holes = {});
 
-// The edge of a contact from its outer pressures: values p^q (q = 2 for a hard contact's √(a − r) edge, 1
-// through a linear interface) at radii about its centre, fitted by α + βr² + γr⁴ over r ≥ 0.6 max r, and the
-// fit's root nearest the last radius; `fallback` with fewer than 6 such points or no positive root.
-double edge_fit_radius(const std::vector<double>& radii, const std::vector<double>& values, double fallback);
+// The edge of a contact from its outer pressures p (MPa) at radii (mm) about its centre: p^q (q = 2 for a
+// hard contact's √(a − r) edge, 1 through a linear interface) fitted by α + βr² + γr⁴ over r ≥ 0.6 max r,
+// the fit's root nearest the last radius, and the fit's rms residual in p. radius 0: fewer than 6 such
+// points or no positive root.
+struct EdgeFit {
+  double radius = 0, rms = 0;
+};
+EdgeFit edge_fit(const std::vector<double>& radii, const std::vector<double>& p, int q);
+// edge_fit's radius at q = 2, or `fallback`.
+double edge_fit_radius(const std::vector<double>& radii, const std::vector<double>& p, double fallback);
 
 }  // namespace skinfem::contact

@@ -33,7 +33,14 @@ std::string meridian_contact_unavailable(const Scene& scene, FrictionMode chosen
   const ContactLoad& c = *scene.contact;
   if (std::string why = not_of_revolution(g); !why.empty()) return why;
   if (scene.sensors.model == SensorModel::post) return "posts are read on the 3D contact path only";
-  if (!c.holes.empty()) return "the indenter's holes break its symmetry";
+  if (!c.holes.empty()) {
+    const Vec2 centre = contact_center(scene);
+    for (const Hole& h : c.holes)
+      if (std::hypot(h.center[0] - centre[0], h.center[1] - centre[1]) > 1e-9)
+        return "a hole off the contact's axis breaks its symmetry";
+    return "holes are on the 3D path only (a hole on the axis keeps the symmetry, but the meridian does not "
+           "model one yet)";
+  }
   if (c.interface.law == InterfaceLaw::exponential)
     return std::string("the ") + contact::to_string(c.interface.law) + " interface is on the 3D path only";
   if (c.law != FrictionLaw::coulomb)

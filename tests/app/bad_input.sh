@@ -270,7 +270,9 @@ check mu_beyond_uniqueness 'contact.friction.mu = 30: the coupled contact did no
 # The meridian contact path where it is not exact or not symmetric: coupled friction, a hole in the indenter.
 check meridian_coupled 'contact.friction.mu = 30\): its normal displacement varies as cos θ, so the contact zone is not a disc; use --path 3d' "$skinfem" contact "$tmp/mu30.json" --path meridian --out "$tmp/out"
 variant meridian_holes "$sphere, \"zone_radius\": 3, \"holes\": [{\"center\": [0.5, 0], \"diameter\": 0.5}]}"
-check meridian_holes "meridian \(axisymmetric\) contact path does not apply: the indenter's holes break its symmetry" "$skinfem" contact "$tmp/meridian_holes.json" --path meridian --out "$tmp/out"
+check meridian_holes "meridian \(axisymmetric\) contact path does not apply: a hole off the contact's axis breaks its symmetry" "$skinfem" contact "$tmp/meridian_holes.json" --path meridian --out "$tmp/out"
+variant meridian_axis_hole "$sphere, \"zone_radius\": 3, \"holes\": [{\"center\": [0, 0], \"diameter\": 0.5}]}"
+check meridian_axis_hole "contact path does not apply: holes are on the 3D path only \(a hole on the axis keeps the symmetry" "$skinfem" contact "$tmp/meridian_axis_hole.json" --path meridian --out "$tmp/out"
 # A hole shallower than the skin's rise into it: the solve assumes its bottom untouched.
 check hole_too_shallow 'contact.holes\[0\].depth = 1e-05: the skin rises [0-9.]+ um into the hole, past its bottom' "$skinfem" contact "$tmp/shallow_hole.json" --out "$tmp/out"
 check sweep_hole_too_shallow 'contact.sweep.hole_depth = 1e-05: the skin rises [0-9.]+ um into the hole, past its bottom' "$skinfem" defect "$tmp/shallow_sweep.json" --out "$tmp/out"

@@ -81,20 +81,26 @@ const ShippedLayer& shipped_layer() {
 const std::vector<Vec2> kOffsets = {{0.0, 0.0}, {1.0, 0.3}, {-2.0, 0.5}};
 
 // The four readings of `sensor` from direct solves: a load built by `load(direction)` for a normal
-// (0, 0, −1) and a tangential (1, 0, 0) force, read at the sensor's centre or over its disc.
+// (0, 0, −1) and a tangential (1, 0, 0) force, read at the sensor's centre ([0]) and over its disc ([1]).
 template <class LoadFn>
-GreenSample direct_sample(const SmallLayer& l, int sensor, bool disc, const LoadFn& load) {
+std::array<GreenSample, 2> direct_samples(const SmallLayer& l, int sensor, const LoadFn& load) {
   const auto& p = l.scene.sensors.positions[sensor];
-  GreenSample g;
+  std::array<GreenSample, 2> g;
   for (bool tangential : {false, true}) {
     const Eigen::Vector3d dir = tangential ? Eigen::Vector3d(1, 0, 0) : Eigen::Vector3d(0, 0, -1);
     const BaseTraction base(l.mesh, l.model.solve(load(dir), {}).reactions);
-    const SensorReading r = disc ? base.disc_mean(p[0], p[1], l.scene.sensors.disc_diameter)
-                                 : base.point_value(p[0], p[1], meshed_thickness(l.mesh, p[0], p[1]));
-    (tangential ? g.xz : g.zz) = r.sigma_z;
-    (tangential ? g.xx : g.zx) = r.sigma_x;
+    for (int disc = 0; disc < 2; ++disc) {
+      const SensorReading r = disc ? base.disc_mean(p[0], p[1], l.scene.sensors.disc_diameter)
+                                   : base.point_value(p[0], p[1], meshed_thickness(l.mesh, p[0], p[1]));
+      (tangential ? g[disc].xz : g[disc].zz) = r.sigma_z;
+      (tangential ? g[disc].xx : g[disc].zx) = r.sigma_x;
+    }
   }
   return g;
+}
+template <class LoadFn>
+GreenSample direct_sample(const SmallLayer& l, int sensor, bool disc, const LoadFn& load) {
+  return direct_samples(l, sensor, load)[disc];
 }
 
 // The readings of `sensor` for a load spread by `rule` around (cx, cy), integrating the adjoint fields
@@ -118,22 +124,29 @@ GreenSample adjoint_quadrature(const SmallLayer& l, const PlanarFaceIndex& top, 
   return {-vz.z(), -vx.z(), vz.x(), vx.x()};  // a normal force is −e_z, a tangential one +e_x
 }
 
-// The readings of `sensor` for a uniform unit load on the disc of radius a about (cx, cy), integrating the
-// adjoint fields face by face over the part of each top face in the disc (face_quadrature_in_disc, the
-// rule ElasticModel::patch_load builds its load with).
-GreenSample adjoint_over_faces(const SmallLayer& l, int sensor, bool disc, double cx, double cy, double a) {
+// The points of the rule ElasticModel::patch_load builds its load with: face by face over the part of each
+// top face in the disc of radius a about (cx, cy) (face_quadrature_in_disc).
+std::vector<std::pair<int, FacePoint>> disc_points(const SmallLayer& l, double cx, double cy, double a) {
+  std::vector<std::pair<int, FacePoint>> out;
+  for (int f = 0; f < l.mesh.faces.rows(); ++f)
+    if (l.mesh.face_marker(f) == kTop)
+      for (const FacePoint& q : face_quadrature_in_disc(l.mesh, f, {cx, cy}, a, kPatchEdgeResolution * a))
+        out.emplace_back(f, q);
+  return out;
+}
+
+// The readings of `sensor` for a uniform unit load over those points, integrating the adjoint fields.
+GreenSample adjoint_over_faces(const SmallLayer& l, int sensor, bool disc,
+                               const std::vector<std::pair<int, FacePoint>>& points) {
   const Eigen::VectorXd& yz = l.fe.adjoint(sensor, 'z', disc);
   const Eigen::VectorXd& yx = l.fe.adjoint(sensor, 'x', disc);
   Eigen::Vector3d vz = Eigen::Vector3d::Zero(), vx = Eigen::Vector3d::Zero();
   double area = 0;
-  for (int f = 0; f < l.mesh.faces.rows(); ++f) {
-    if (l.mesh.face_marker(f) != kTop) continue;
-    for (const FacePoint& q : face_quadrature_in_disc(l.mesh, f, {cx, cy}, a, kPatchEdgeResolution * a)) {
-      area += q.weight_xy;
-      for (int k = 0; k < 6; ++k) {
-        vz += q.weight_xy * q.N[k] * yz.segment<3>(3 * l.mesh.faces(f, k));
-        vx += q.weight_xy * q.N[k] * yx.segment<3>(3 * l.mesh.faces(f, k));
-      }
+  for (const auto& [f, q] : points) {
+    area += q.weight_xy;
+    for (int k = 0; k < 6; ++k) {
+      vz += q.weight_xy * q.N[k] * yz.segment<3>(3 * l.mesh.faces(f, k));
+      vx += q.weight_xy * q.N[k] * yx.segment<3>(3 * l.mesh.faces(f, k));
     }
   }
   vz /= area, vx /= area;
@@ -160,22 +173,30 @@ TEST(FeGreen, UniformPatchEqualsDirectPatchLoadToQuadratureAccuracy) {
   const double a = 0.25;
   const auto q12 = load_quadrature(LayerLoad::uniform, a, 12, 32);
   const auto q24 = load_quadrature(LayerLoad::uniform, a, 24, 64);
-  for (bool disc : {false, true}) {
-    std::vector<GreenSample> at, direct, faces, own12, own24;
-    for (int sensor = 0; sensor < 2; ++sensor)
-      for (const Vec2& off : kOffsets) {
-        const auto& p = l.scene.sensors.positions[sensor];
-        const double cx = p[0] + off[0], cy = p[1] + off[1];
-        at.push_back(l.fe.at(sensor, disc, off[0], off[1], LayerLoad::uniform, a));
-        direct.push_back(direct_sample(l, sensor, disc, [&](const Eigen::Vector3d& F) {
-          return l.model.patch_load(TractionPatch{{cx, cy}, 2 * a, {F.x(), F.y(), F.z()}, 1.0});
-        }));
-        faces.push_back(adjoint_over_faces(l, sensor, disc, cx, cy, a));
-        own12.push_back(adjoint_quadrature(l, top, sensor, disc, cx, cy, q12));
-        own24.push_back(adjoint_quadrature(l, top, sensor, disc, cx, cy, q24));
+  // Per reading (centre value, disc mean): the samples at every sensor and offset. Each offset's direct
+  // solves and face points serve both readings.
+  std::array<std::vector<GreenSample>, 2> at, direct, faces, own12, own24;
+  for (int sensor = 0; sensor < 2; ++sensor)
+    for (const Vec2& off : kOffsets) {
+      const auto& p = l.scene.sensors.positions[sensor];
+      const double cx = p[0] + off[0], cy = p[1] + off[1];
+      const auto both = direct_samples(l, sensor, [&](const Eigen::Vector3d& F) {
+        return l.model.patch_load(TractionPatch{{cx, cy}, 2 * a, {F.x(), F.y(), F.z()}, 1.0});
+      });
+      const auto points = disc_points(l, cx, cy, a);
+      for (int disc = 0; disc < 2; ++disc) {
+        at[disc].push_back(l.fe.at(sensor, disc, off[0], off[1], LayerLoad::uniform, a));
+        direct[disc].push_back(both[disc]);
+        faces[disc].push_back(adjoint_over_faces(l, sensor, disc, points));
+        own12[disc].push_back(adjoint_quadrature(l, top, sensor, disc, cx, cy, q12));
+        own24[disc].push_back(adjoint_quadrature(l, top, sensor, disc, cx, cy, q24));
       }
-    const auto exact_rule = max_error_over_peak(faces, direct), same_rule = max_error_over_peak(at, own12);
-    const auto gap = max_error_over_peak(at, direct), gap24 = max_error_over_peak(own24, direct);
+    }
+  for (int disc = 0; disc < 2; ++disc) {
+    const auto exact_rule = max_error_over_peak(faces[disc], direct[disc]),
+               same_rule = max_error_over_peak(at[disc], own12[disc]);
+    const auto gap = max_error_over_peak(at[disc], direct[disc]),
+               gap24 = max_error_over_peak(own24[disc], direct[disc]);
     for (size_t c = 0; c < 4; ++c) {
       const char* name = component_name(kComponents[c]);
       std::printf(
