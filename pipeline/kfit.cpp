@@ -242,11 +242,10 @@ nlohmann::json kfit_json(const KfitResult& r) {
         "least-squares fit of gain*k*g_half(sqrt(k)x, 0) to g_zz along y = 0, |x| <= 3h, uniform weight";
     summary["definitions"]["gains"] =
         "the post's readings under a uniform unit pressure (sigma_z) and shear (sigma_x) on the unbounded "
-        "flat "
-        "layer of its thickness, the post held: the model's integral for zz, xz (sigma_z) and zx, xx "
-        "(sigma_x). sigma_z is 1 at nu = 0.5 (the layer is hydrostatic and the post reads the pressure); "
-        "sigma_x is the integral of g_xx on the meridian. A post on springs has none computed yet: each "
-        "component's gain is fitted with its k (fitted_zz, ...)";
+        "flat layer of its thickness, the post held: the model's integral for zz, xz (sigma_z) and zx, xx "
+        "(sigma_x). sigma_z is 1 at nu = 0.5 (the layer is hydrostatic and the post reads the pressure), "
+        "else the integral of g_zz on the meridian; sigma_x is the integral of g_xx there. A post on springs "
+        "has none computed yet: each component's gain is fitted with its k (fitted_zz, ...)";
     summary["definitions"]["paper_calibration"] =
         "the paper's calibration of the scan: the exact bonded layer's base stress under the same load, "
         "thickness and scale_z fitted to g_zz, scale_x to g_zx at that thickness; a reading / its scale is "

@@ -1024,13 +1024,14 @@ TEST(SceneLoad, ContactErrors) {
                      "contact.sweep.hole_diameter = 0: must be a length in (0, 10000] mm");
   // The bulge model's range (issue 57): (ε/d)² ≤ 0.065 on the 3.04 mm cap, 1.5 mm holes (0.061) pass, a 2 mm
   // hole (0.108) is refused unless resolved.
-  EXPECT_NO_THROW(parse_scene(contact(kPlane + R"(, "sweep": {"from": [0, 0], "to": [1, 0], "hole_diameter": 1.5})"),
-                              kSource));
+  EXPECT_NO_THROW(parse_scene(
+      contact(kPlane + R"(, "sweep": {"from": [0, 0], "to": [1, 0], "hole_diameter": 1.5})"), kSource));
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "sweep": {"from": [0, 0], "to": [1, 0], "hole_diameter": 2})"),
                      "contact.sweep.hole_diameter = 2.0: the bulge hole model", "<= 0.065", "here 0.108",
                      R"(give "hole_model": "resolved")");
   EXPECT_NO_THROW(parse_scene(
-      contact(kPlane + R"(, "sweep": {"from": [0, 0], "to": [1, 0], "hole_diameter": 2, "hole_model": "resolved"})"),
+      contact(kPlane +
+              R"(, "sweep": {"from": [0, 0], "to": [1, 0], "hole_diameter": 2, "hole_model": "resolved"})"),
       kSource));
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "sweep": {"from": [0, 0], "to": [1, 0], "h": 0})"),
                      "contact.sweep.h = 0: must be a length in (0, 10000] mm");
