@@ -131,14 +131,20 @@ int run_sweep(const std::string& spec_path, const std::string& out, int cores, c
   }
   progress("running: " + line);
   int stopped_by = 0;
-  const int rc = run_child(argv, &stopped_by);
+  bool killed = false;
+  // Snakemake can deadlock in its own handler of the signal we pass on: 30 s after it, it is killed.
+  const int rc = run_child(argv, &stopped_by, 30, &killed);
   if (stopped_by != 0) {
+    // A killed Snakemake leaves its lock, which would refuse every re-run; its process is gone, so the lock
+    // holds nothing (its unfinished members are marked incomplete and run again).
+    if (killed) std::filesystem::remove_all(std::filesystem::path(out_dir) / ".snakemake" / "locks");
     const int done_now = members_done(sweep, out_dir);
     std::fprintf(stderr,
-                 "skinfem: sweep: stopped by signal %d (%s) after Snakemake ended; %d of %zu members done, "
+                 "skinfem: sweep: stopped by signal %d (%s) after Snakemake %s; %d of %zu members done, "
                  "results not gathered; the same command resumes with the other %zu\n",
-                 stopped_by, strsignal(stopped_by), done_now, sweep.members.size(),
-                 sweep.members.size() - done_now);
+                 stopped_by, strsignal(stopped_by),
+                 killed ? "was killed (it had not ended 30 s after the signal)" : "ended", done_now,
+                 sweep.members.size(), sweep.members.size() - done_now);
     return 128 + stopped_by;
   }
   if (rc != 0) {

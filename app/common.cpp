@@ -7,12 +7,14 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <climits>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 
 namespace skinfem::app {
@@ -89,7 +91,7 @@ extern "C" void pass_to_child(int sig) {
 }
 }  // namespace
 
-int run_child(const std::vector<std::string>& argv, int* interrupted_by) {
+int run_child(const std::vector<std::string>& argv, int* interrupted_by, double grace_s, bool* killed) {
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
@@ -120,9 +122,24 @@ int run_child(const std::vector<std::string>& argv, int* interrupted_by) {
   child_group = err == 0 ? pid : 0;
   sigprocmask(SIG_SETMASK, &previous, nullptr);
   int status = 0, rc = -1;
+  if (killed) *killed = false;
   if (err == 0) {
     pid_t got;
-    while ((got = waitpid(pid, &status, 0)) < 0 && errno == EINTR) {
+    // Polled (every 20 ms) once a signal has been passed, so that a child that does not end can be killed.
+    std::optional<std::chrono::steady_clock::time_point> signalled;
+    for (;;) {
+      got = waitpid(pid, &status, child_signal && grace_s > 0 ? WNOHANG : 0);
+      if (got == pid || (got < 0 && errno != EINTR)) break;
+      if (got == 0) {
+        if (!signalled) signalled = std::chrono::steady_clock::now();
+        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - *signalled).count() > grace_s) {
+          kill(-pid, SIGKILL);
+          if (killed) *killed = true;
+          grace_s = 0;  // and wait for it
+        } else {
+          usleep(20000);
+        }
+      }
     }
     rc = got == pid && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }

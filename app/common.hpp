@@ -34,8 +34,11 @@ void write_json(const std::string& path, const nlohmann::json& j);
 // The child runs in its own process group. SIGINT, SIGTERM or SIGHUP sent to us while it runs (a Ctrl-C, a
 // scheduler's stop, a closed terminal) is passed once to that whole group and we go on waiting: the child's
 // own shutdown (Snakemake removing its unfinished outputs) ends before we return, so a re-run started
-// after we exit never races it. *interrupted_by (when given) is that signal's number, or 0.
-int run_child(const std::vector<std::string>& argv, int* interrupted_by = nullptr);
+// after we exit never races it. *interrupted_by (when given) is that signal's number, or 0. A child whose
+// group has not ended `grace_s` seconds after the signal (> 0; Snakemake can deadlock in its own signal
+// handler) is killed with SIGKILL, and *killed (when given) says so.
+int run_child(const std::vector<std::string>& argv, int* interrupted_by = nullptr, double grace_s = 0,
+              bool* killed = nullptr);
 
 // Study levels given on the command line (--scales, --ridges, --error-scales): each finite, no two equal,
 // in the order the option states (coarse to fine); otherwise the finest level, the reference of every

@@ -121,6 +121,25 @@ JSON
 "$skinfem" sweep zip.json --out Z --dry-run >zip.log
 grep -q "3 members of \`skinfem green\` (zip 3 x 3), 0 already done" zip.log || fail "zip: $(cat zip.log)"
 [ "$(ls Z/scenes | wc -l)" -eq 3 ] && [ ! -e Z/members ] || fail "zip: the dry run ran something"
+# 6b. A Snakemake that does not end after the signal (it can deadlock in its own handler) is killed 30 s
+# later with its group, and its lock removed so that the same command resumes: a stand-in that ignores
+# SIGTERM, on PATH before Debian's, with a lock left in place.
+mkdir -p stuck/bin K/.snakemake/locks
+printf '#!/bin/bash\ntrap "" TERM INT HUP\nsleep 300\n' >stuck/bin/snakemake
+chmod +x stuck/bin/snakemake
+touch K/.snakemake/locks/0.input.lock
+PATH="$tmp/stuck/bin:$PATH" setsid "$skinfem" sweep spec.json --out K --cores 2 >stuck.log 2>&1 &
+pid=$!
+for _ in $(seq 1 200); do grep -q "running: snakemake" stuck.log && break; sleep 0.05; done
+sleep 0.5
+kill -TERM -- -$pid
+rc=0
+wait $pid || rc=$?
+[ "$rc" -eq 143 ] || fail "the stuck sweep exited with $rc, want 143: $(tail -2 stuck.log)"
+grep -q "after Snakemake was killed (it had not ended 30 s after the signal)" stuck.log ||
+  fail "the stuck sweep did not say it killed Snakemake: $(tail -1 stuck.log)"
+[ ! -e K/.snakemake/locks ] || fail "the killed Snakemake's lock was left"
+! pgrep -f "$tmp/stuck/bin/snakemake" >/dev/null || fail "the stuck Snakemake still runs"
 # 7. The cluster route without a cluster (with --profile; Release only: it is Snakemake's route, not our C++,
 # and its polling makes it 30 s): the same sweep through a Snakemake profile whose submit command is bash
 # (each job script runs where it is submitted) gives the same table as the local run.
