@@ -34,14 +34,11 @@ LoadMetrics load_metrics(const Scene& scene, const TetMesh& mesh, const LoadCase
   Eigen::Vector3d support = Eigen::Vector3d::Zero();
   for (int n = 0; n < mesh.num_nodes(); ++n) support += r.reactions.segment<3>(3 * n);
   m.force_balance_rel = (support + applied).norm() / applied.norm();
-  double normal_force = 0;
-  if (!scene.loads.punches.empty()) {
-    m.centre = scene.loads.punches[0].center;
-    normal_force = r.punches[0].force_N;
-  } else if (!scene.loads.patches.empty()) {
-    m.centre = scene.loads.patches[0].center;
-    if (std::abs(scene.loads.patches[0].direction[2]) > 0.99) normal_force = scene.loads.patches[0].force;
-  }
+  const auto [centre, normal] = first_load(scene);
+  m.centre = centre;
+  const double normal_force = !normal                        ? 0.0
+                              : !scene.loads.punches.empty() ? r.punches[0].force_N
+                                                             : scene.loads.patches[0].force;
   if (normal_force != 0 && center_ratio_unavailable(scene).empty()) {
     const double h = skin_thickness(scene.geometry, mesh, m.centre[0], m.centre[1]);
     m.center_ratio =
