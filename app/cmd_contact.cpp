@@ -95,11 +95,15 @@ StageOutput<ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const 
   const auto& shift = run.coupling_shift;
   write_json(out_dir + "/summary.json", summary);
 
+  char p0[64];
+  std::snprintf(p0, sizeof p0, m.p0_in_hole ? "p0 - (the first-touch point is in a hole)" : "p0 = %.2f kPa",
+                1e3 * m.p0_MPa);
   std::printf(
-      "contact %s (%s): %.4f N normal, %.4f N tangential; a = %.4f mm, p0 = %.2f kPa, indentation %.3f um\n",
+      "contact %s (%s): %.4f N normal, %.4f N tangential; a = %.4f mm (area-equivalent %.4f mm), %s, "
+      "indentation %.3f um\n",
       scene.name.c_str(), contact::to_string(chosen), r.force_N, r.tangential_force_N, m.contact_radius_mm,
-      1e3 * m.p0_MPa, 1e3 * r.depth_mm);
-  if (interface.law == InterfaceLaw::linear)
+      m.equivalent_radius_mm, p0, 1e3 * r.depth_mm);
+  if (interface.law == InterfaceLaw::linear && !m.p0_in_hole)
     std::printf("  linear interface: K = %.4g MPa/mm, it closes by %.3g um under p0\n", interface.K,
                 1e3 * m.p0_MPa / interface.K);
   if (interface.law == InterfaceLaw::exponential)

@@ -6,26 +6,34 @@
 namespace skinfem::contact {
 
 namespace {
-// Mean position of the outer edge of the contact: active vertices sharing a top face with an inactive one
-// that lies outside every hole (a hole's own rim is not the contact's edge).
-Eigen::Vector2d outer_edge_center(const MortarZone& z, const TetMesh& m, const std::vector<char>& touching,
-                                  const std::vector<Hole>& holes, const Eigen::Vector2d& fallback) {
+// The inactive vertices outside the contact: those reached from the zone's rim through inactive
+// neighbours. The others are enclosed by it (holes, and the rims a hole lifts off), so they are neither
+// the contact's edge nor outside its outer boundary.
+std::vector<char> outside_contact(const MortarZone& z, const TetMesh& m, const std::vector<char>& touching) {
   std::vector<int> index(m.num_nodes(), -1);
   for (int i = 0; i < z.size(); ++i) index[z.vertices[i]] = i;
-  const std::vector<char> in_hole = excluded_by_holes(z, m, holes);
-  std::vector<char> edge(z.size(), 0);
+  std::vector<std::vector<int>> next(z.size());
+  std::vector<char> outside(z.size(), 0);
+  std::vector<int> queue;
   for (const int f : z.faces)
-    for (int a = 0; a < 3; ++a)
+    for (int a = 0; a < 3; ++a) {
+      const int i = index[m.faces(f, a)];
+      if (i < 0 || touching[i]) continue;
       for (int b = 0; b < 3; ++b) {
-        const int i = index[m.faces(f, a)], j = index[m.faces(f, b)];
-        if (i >= 0 && j >= 0 && touching[i] && !touching[j] && !in_hole[j]) edge[i] = 1;
+        const int j = index[m.faces(f, b)];
+        if (j < 0 && !outside[i]) outside[i] = 1, queue.push_back(i);  // on the zone's rim
+        if (j >= 0 && j != i && !touching[j]) next[i].push_back(j);
       }
-  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
-  int n = 0;
-  for (int i = 0; i < z.size(); ++i)
-    if (edge[i]) sum += Eigen::Vector2d(m.nodes(z.vertices[i], 0), m.nodes(z.vertices[i], 1)), ++n;
-  return n >= 3 ? Eigen::Vector2d(sum / n) : fallback;
+    }
+  while (!queue.empty()) {
+    const int i = queue.back();
+    queue.pop_back();
+    for (const int j : next[i])
+      if (!outside[j]) outside[j] = 1, queue.push_back(j);
+  }
+  return outside;
 }
+
 }  // namespace
 
 ContactMetrics contact_metrics(const ContactSolver& solver, const TetMesh& m, const PlanarFaceIndex& top,
@@ -57,14 +65,22 @@ ContactMetrics contact_metrics(const ContactSolver& solver, const TetMesh& m, co
     out.back_edge_mm = std::min(out.back_edge_mm, ahead);
   }
   if (F <= 0) return out;
+  const std::vector<char> outside = outside_contact(z, m, touching);
+  double enclosed = 0;
+  Eigen::Vector2d enclosed_moment = Eigen::Vector2d::Zero();
+  for (int i = 0; i < z.size(); ++i)
+    if (!outside[i]) enclosed += z.area[i], enclosed_moment += z.area[i] * xy(i);
   const Eigen::Vector2d pc = moment / F;
   out.pressure_centroid = {pc.x(), pc.y()};
   out.zone_centroid = {zone_moment.x() / area, zone_moment.y() / area};
-  out.equivalent_radius_mm = std::sqrt(area / M_PI);
+  out.equivalent_radius_mm = std::sqrt(enclosed / M_PI);
   out.front_back_peak_ratio = peak_back > 0 ? peak_front / peak_back : 0.0;
 
+  for (const Hole& h : holes)
+    if (std::hypot(center[0] - h.center[0], center[1] - h.center[1]) < 0.5 * h.diameter)
+      out.p0_in_hole = true;
   double s, tt;
-  if (const int f = top.find(center[0], center[1], s, tt); f >= 0) {
+  if (const int f = top.find(center[0], center[1], s, tt); !out.p0_in_hole && f >= 0) {
     const double psi[3] = {1 - s - tt, s, tt};
     for (int a = 0; a < 3; ++a)
       for (int i = 0; i < z.size(); ++i)
@@ -75,7 +91,9 @@ ContactMetrics contact_metrics(const ContactSolver& solver, const TetMesh& m, co
   // hard contact's pressure vanishes like √(a − r) (q = 2); through a linear interface the closure p/K
   // takes up the gap at the edge, so p vanishes like a − r (q = 1; contact/layer_hertz_interface.hpp).
   const bool linear_edge = solver.load().interface.law == InterfaceLaw::linear;
-  const Eigen::Vector2d fc = holes.empty() ? pc : outer_edge_center(z, m, touching, holes, pc);
+  // With holes the pressure centroid leaves the centre (the holes carry nothing): the fit is made about
+  // the centroid of the area inside the outer boundary, holes included.
+  const Eigen::Vector2d fc = holes.empty() ? pc : Eigen::Vector2d(enclosed_moment / enclosed);
   // An exponential interface has no edge, only a tail: fit the loaded part (λ ≥ 5 % of the peak, the
   // asperities closed to within u0 ln 20 of the mean plane) and extrapolate it to its hard-contact edge.
   const double floor = solver.load().interface.law == InterfaceLaw::exponential ? 0.05 * out.p_max_MPa : 0.0;
@@ -86,12 +104,10 @@ ContactMetrics contact_metrics(const ContactSolver& solver, const TetMesh& m, co
     return true;
   };
   std::vector<double> radii, p;
-  double r_max = 0;
   for (int i = 0; i < z.size(); ++i)
     if (fitted(i)) {
       radii.push_back((xy(i) - fc).norm());
       p.push_back(r.lambda[i]);
-      r_max = std::max(r_max, radii.back());
     }
   // A linear interface's edge zone, where its closure takes up the gap, shrinks as K grows (to a fraction
   // p0/(Kδ) of the radius) and falls below the mesh: its edge takes the exponent that fits the pressure
@@ -101,9 +117,8 @@ ContactMetrics contact_metrics(const ContactSolver& solver, const TetMesh& m, co
     const EdgeFit lin = edge_fit(radii, p, 1);
     if (lin.radius > 0 && (!(fit.radius > 0) || lin.rms < fit.rms)) fit = lin;
   }
-  // Too few rows for the fit: the area-equivalent radius, or with holes (whose area it misses) the farthest
-  // fitted vertex.
-  out.contact_radius_mm = fit.radius > 0 ? fit.radius : holes.empty() ? out.equivalent_radius_mm : r_max;
+  // Too few rows for the fit: the area-equivalent radius.
+  out.contact_radius_mm = fit.radius > 0 ? fit.radius : out.equivalent_radius_mm;
   return out;
 }
 

@@ -12,8 +12,11 @@ struct ContactMetrics {
   // following the square-root vanishing of any smooth contact at its edge. Through an exponential interface
   // (no edge, a tail) the fit covers λ ≥ 5 % of the peak: the loaded part's hard-contact edge.
   double contact_radius_mm = 0;
-  double equivalent_radius_mm = 0;  // sqrt(Σ_active ∫ψ_i / π): mesh-resolution estimate of the same
-  double p0_MPa = 0;                // pressure at the first-touch point (P1 interpolation)
+  // sqrt(A/π), A = Σ ∫ψ_i over the vertices inside the outer boundary (active, or inactive but enclosed:
+  // holes and their lifted rims): a mesh-resolution estimate of the same radius.
+  double equivalent_radius_mm = 0;
+  double p0_MPa = 0;        // pressure at the first-touch point (P1 interpolation); 0 when p0_in_hole
+  bool p0_in_hole = false;  // the first-touch point lies in a hole: the indenter is absent there
   double p_max_MPa = 0;
   Vec2 pressure_centroid{0, 0};  // ∫p x dA / ∫p dA, mm
   Vec2 zone_centroid{0, 0};      // centroid of the active vertices' hats, mm
@@ -24,9 +27,11 @@ struct ContactMetrics {
 };
 
 // mesh, top: the mesh of solver.zone() (the whole one under a mirror view). holes: where the indenter is
-// absent (r solved with them). With holes the contact radius is the outer boundary's: the edge fit is made
-// about the mean of the outer edge's vertices (active, next to an inactive one outside every hole) and
-// leaves out the vertices within a hole diameter of a hole's centre, whose pressure the rim reloads.
+// absent (r solved with them). With holes the contact radius is the outer boundary's (the boundary between
+// the contact and the inactive vertices connected to the zone's rim, so that a hole's own rim, lifted or
+// not, is never taken for the edge): the edge fit is made about the centroid of the area that boundary
+// encloses and leaves out the vertices within a hole diameter of a hole's centre, whose pressure the rim
+// reloads.
 ContactMetrics contact_metrics(const ContactSolver& solver, const TetMesh& mesh, const PlanarFaceIndex& top,
                                const ContactResult& r, const Vec2& center,
                                const std::vector<Hole>& holes = {});

@@ -14,6 +14,11 @@ namespace skinfem::pipeline {
 namespace {
 using contact::ContactResult;
 
+// null where the first-touch point lies in a hole (a 0 there would read as a measured pressure).
+nlohmann::json p0_json(const contact::ContactMetrics& m) {
+  return m.p0_in_hole ? nlohmann::json() : nlohmann::json(1e3 * m.p0_MPa);
+}
+
 nlohmann::json metrics_json(const contact::ContactMetrics& m, const ContactResult& r) {
   return {{"friction", contact::to_string(r.mode)},
           {"ratio", r.ratio},
@@ -23,7 +28,7 @@ nlohmann::json metrics_json(const contact::ContactMetrics& m, const ContactResul
           {"indentation_um", 1e3 * r.depth_mm},
           {"contact_radius_mm", m.contact_radius_mm},
           {"equivalent_radius_mm", m.equivalent_radius_mm},
-          {"p0_kPa", 1e3 * m.p0_MPa},
+          {"p0_kPa", p0_json(m)},
           {"p_max_kPa", 1e3 * m.p_max_MPa},
           {"pressure_centroid_mm", {m.pressure_centroid[0], m.pressure_centroid[1]}},
           {"zone_centroid_mm", {m.zone_centroid[0], m.zone_centroid[1]}},
@@ -185,7 +190,8 @@ nlohmann::json contact_json(const Scene& scene, const ContactRun& run) {
     summary["interface_p_ref_kPa"] = 1e3 * interface.p_ref;
   }
   summary["indenter"] = scene.contact->indenter == IndenterKind::plane ? "plane" : "sphere";
-  summary["p0_kPa"] = 1e3 * m.p0_MPa;
+  summary["p0_kPa"] = p0_json(m);
+  if (m.p0_in_hole) summary["p0_note"] = "the first-touch point lies in a hole: no pressure there";
   summary["max_penetration_um"] = 1e3 * run.max_penetration_mm;
   summary["pressure_centroid_x_mm"] = m.pressure_centroid[0];
   summary["readings_condensed_vs_reactions_rel"] = run.readings_condensed_vs_reactions_rel;

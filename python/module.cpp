@@ -293,7 +293,11 @@ PYBIND11_MODULE(_skinfem, m) {
                              [](const pipeline::ContactRun& r) { return 1e3 * r.result().depth_mm; })
       .def_property_readonly("contact_radius_mm",
                              [](const pipeline::ContactRun& r) { return r.metric().contact_radius_mm; })
-      .def_property_readonly("p0_kPa", [](const pipeline::ContactRun& r) { return 1e3 * r.metric().p0_MPa; })
+      .def_property_readonly("p0_kPa",
+                             [](const pipeline::ContactRun& r) -> std::optional<double> {
+                               if (r.metric().p0_in_hole) return std::nullopt;  // no indenter there
+                               return 1e3 * r.metric().p0_MPa;
+                             })
       .def_property_readonly("max_penetration_um",
                              [](const pipeline::ContactRun& r) { return 1e3 * r.max_penetration_mm; })
       .def_property_readonly(

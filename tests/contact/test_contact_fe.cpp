@@ -188,25 +188,37 @@ TEST(ContactFe, HoleOutsideTheContactChangesNothing) {
   EXPECT_EQ(r.active, base.active);
 }
 
-// With a hole inside the contact, the contact radius is the outer boundary's. Reference: the same contact
-// without the hole. Under force control the hole's load moves to the rest of the contact, which can only
-// grow; removing 9–15 % of the area grows it by at most a few % (a ∝ F^(1/3) in Hertz's limit: ≤ 5 %).
-// The p²-fit about the pressure centroid had given 0.925 mm against 1.328 mm without the hole.
+// With holes inside the contact, the contact radius is the outer boundary's, and that edge hardly moves.
+// Under force control the holes' load moves to the rest of the contact: the indentation δ grows and the
+// edge with it, locally a² ∝ δ, so Δa/a ≈ Δδ/(2δ) (0.1–0.6 % here). The tolerance is the edge fit's
+// resolution at this mesh: moving its band from 0.6 to 0.7 of the largest radius moves the hole-free radius
+// by 1 % (contact.h 0.5). Before: the p²-fit about the pressure centroid gave 0.925 mm against 1.328 mm; the
+// fit about the outer edge's mean vertex, with a hole's lifted rim taken for that edge, 2.018 mm against
+// 2.486 mm for a 1 mm hole 1 mm off the centre (issue 57). The area-equivalent radius counts the holes'
+// area inside the outer boundary, so it cannot fall below the hole-free one; p0 is not read in a hole.
 TEST(ContactFe, ContactRadiusWithHolesIsTheOuterBoundarys) {
   Fixture& f = layer();
   const ContactResult base = f.solver->solve(FrictionMode::none);
-  const double a0 = contact_metrics(*f.solver, f.mesh, *f.top, base, {0, 0}).contact_radius_mm;
+  const ContactMetrics m0 = contact_metrics(*f.solver, f.mesh, *f.top, base, {0, 0});
   for (const std::vector<Hole>& holes :
        {std::vector<Hole>{{{1.0, 0}, 1.5}}, std::vector<Hole>{{{1.0, 0}, 1.2}, {{1.5, 0.5}, 1.2}},
-        std::vector<Hole>{{{-0.8, 0.9}, 1.0}}}) {
+        std::vector<Hole>{{{-0.8, 0.9}, 1.0}}, std::vector<Hole>{{{0, 0}, 1.0}},
+        std::vector<Hole>{{{1.0, 0}, 1.0}}}) {
     const ContactResult r =
         f.solver->solve(FrictionMode::none, excluded_by_holes(f.condensed->zone, f.mesh, holes));
-    const double a = contact_metrics(*f.solver, f.mesh, *f.top, r, {0, 0}, holes).contact_radius_mm;
-    const double old = contact_metrics(*f.solver, f.mesh, *f.top, r, {0, 0}).contact_radius_mm;
-    EXPECT_GE(a / a0, 0.99) << holes.size() << " hole(s) at " << holes[0].center[0] << ": " << a << " vs "
-                            << a0 << " (holes ignored: " << old << ")";
-    EXPECT_LE(a / a0, 1.05) << holes.size() << " hole(s) at " << holes[0].center[0] << ": " << a << " vs "
-                            << a0;
+    const ContactMetrics m = contact_metrics(*f.solver, f.mesh, *f.top, r, {0, 0}, holes);
+    const double expected = 0.5 * (r.depth_mm / base.depth_mm - 1);
+    char where[96];
+    std::snprintf(where, sizeof where, "%zu hole(s), the first at (%g, %g) mm", holes.size(),
+                  holes[0].center[0], holes[0].center[1]);
+    std::printf("%s: a %.4f mm (%+.2f %%, expected %+.2f %%), area-equivalent %.4f mm (%.4f without)\n",
+                where, m.contact_radius_mm, 100 * (m.contact_radius_mm / m0.contact_radius_mm - 1),
+                100 * expected, m.equivalent_radius_mm, m0.equivalent_radius_mm);
+    EXPECT_NEAR(m.contact_radius_mm / m0.contact_radius_mm - 1, expected, 0.01) << where;
+    EXPECT_GE(m.equivalent_radius_mm, m0.equivalent_radius_mm) << where;
+    const bool covers_center = std::hypot(holes[0].center[0], holes[0].center[1]) < 0.5 * holes[0].diameter;
+    EXPECT_EQ(m.p0_in_hole, covers_center) << where;
+    EXPECT_EQ(m.p0_MPa > 0, !covers_center) << where;
   }
 }
 
