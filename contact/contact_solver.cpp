@@ -159,6 +159,28 @@ double ContactSolver::shear(FrictionMode mode) const {
   return tau0();
 }
 
+// The coupled contact under a shear strength: the shear's normal displacements lift the edge it acts on, so
+// the set it acts on has no fixed point (or none between touching and lifting). Named by the scene field
+// that sets the shear, with its size against the contact's mean pressure.
+SceneError ContactSolver::no_consistent_set(FrictionMode mode, const LcpSolution& s) const {
+  double force = 0, area = 0;
+  for (int i : s.active) force += s.lambda[i] * c_.zone.area[i], area += c_.zone.area[i];
+  char buf[600];
+  const double tau = shear(mode), mean = area > 0 ? force / area : 0;
+  char field[96];
+  if (load_.tau0)
+    std::snprintf(field, sizeof field, "contact.friction.tau0 = %g", *load_.tau0);
+  else
+    std::snprintf(field, sizeof field, "contact.friction.mu = %g (tau0 from_force)", load_.mu);
+  std::snprintf(
+      buf, sizeof buf,
+      "%s: the %s contact has no consistent contact set: its shear %.3g kPa, %.3g times the contact's "
+      "mean pressure %.3g kPa, lifts the edge it acts on in the linear coupled model; give a smaller "
+      "shear strength, or friction mode \"uncoupled\"",
+      field, to_string(mode), 1e3 * tau, mean > 0 ? tau / mean : 0.0, 1e3 * mean);
+  return SceneError(buf);
+}
+
 double ContactSolver::tau0() const {
   if (load_.tau0) return *load_.tau0;
   if (!tau0_) {
@@ -292,10 +314,7 @@ ContactResult ContactSolver::solve(FrictionMode mode, const std::vector<char>& e
     constexpr int kMaxRounds = 50, kBisections = 50;
     std::vector<std::vector<int>> seen{s.active};
     for (int round = 0; acting && !holed; ++round) {
-      if (round == kMaxRounds)
-        throw std::runtime_error("contact: the set the shear strength acts on did not settle after " +
-                                 std::to_string(kMaxRounds) + " re-solves (friction." + to_string(mode) +
-                                 ", tau = " + std::to_string(out.tau) + " MPa)");
+      if (round == kMaxRounds) throw no_consistent_set(mode, s);
       LcpSolution next = solve_with(s.active);
       const bool settled = free_part(next.active) == free_part(s.active);
       if (settled) {
@@ -331,10 +350,7 @@ ContactResult ContactSolver::solve(FrictionMode mode, const std::vector<char>& e
         return solve_with(next.active);
       };
       LcpSolution lo = at(0.0);
-      if (!touches(lo) || touches(at(1.0)))
-        throw std::runtime_error(
-            "contact: the shear strength's edge multipliers cycle without a crossing (friction." +
-            std::string(to_string(mode)) + ")");
+      if (!touches(lo) || touches(at(1.0))) throw no_consistent_set(mode, s);
       double wlo = 0, whi = 1;
       for (int b = 0; b < kBisections && whi - wlo > 1e-12; ++b) {
         const double w = 0.5 * (wlo + whi);
@@ -372,7 +388,8 @@ ContactResult ContactSolver::solve(FrictionMode mode, const HoleCut& cut,
   const Eigen::VectorXd& area = cp.area;
   const Eigen::VectorXd& q = cp.gap0;
   // Each row and column scaled by 1 / (share of the hat outside the hole): the same complementarity problem
-  // in the multipliers' force per unit remaining hat, so a nearly covered hat keeps a well-scaled row.
+  // in the multipliers' force per unit remaining hat, so a nearly covered hat keeps a well-scaled row (its
+  // unscaled principal systems are singular to round-off: "not a P-matrix").
   constexpr double kGone = 1e-9;
   const bool exponential = load_.interface.law == InterfaceLaw::exponential;
   // Share of each hat outside the hole (exactly 1 where the hole does not reach).
@@ -382,7 +399,7 @@ ContactResult ContactSolver::solve(FrictionMode mode, const HoleCut& cut,
   for (int i = 0; i < n; ++i) {
     if (outside[i] < kGone)
       ex[i] = 1;
-    else if (!exponential)
+    else
       scale[i] = 1 / outside[i];
   }
   Eigen::VectorXd m = area;
@@ -400,9 +417,13 @@ ContactResult ContactSolver::solve(FrictionMode mode, const HoleCut& cut,
   std::vector<char> dirty(n, 0);
   for (int a = 0; a < t; ++a) {
     if (load_.interface.law == InterfaceLaw::linear) M2(T[a], T[a]) += area[T[a]] / load_.interface.K;
+    dirty[T[a]] = 1;
+  }
+  // The exponential law is solved unscaled (its λ is a pressure), from the scaled hard contact.
+  const Eigen::MatrixXd M2_unscaled = exponential ? M2 : Eigen::MatrixXd();
+  for (int a = 0; a < t; ++a) {
     M2.row(T[a]) *= scale[T[a]];
     M2.col(T[a]) *= scale[T[a]];
-    dirty[T[a]] = 1;
   }
   // A product with C_zt, C_zt_rows (whole hats' traction on the cut rows) or S as cut, from the patch.
   const auto zt_times = [&](const Eigen::VectorXd& x, bool whole_hats) {
@@ -427,17 +448,16 @@ ContactResult ContactSolver::solve(FrictionMode mode, const HoleCut& cut,
     for (int i = 0; i < zone().size(); ++i) out.shear[i] = shear_solved[solved_index(i)];
     if (mode != FrictionMode::uncoupled) q2 += zt_times(shear_solved, true);
   }
-  q2 = q2.cwiseProduct(scale);
-  const Eigen::VectorXd m2 = m.cwiseProduct(scale);
   const double share = mirror_ ? 0.5 : 1.0;
   const double value = load_.force ? share * *load_.force : *load_.depth;
-  LcpSolution s = base.solve_changed(M2, q2, m2, dirty, load_.force.has_value(), value, ex, solved_set(warm));
-  if (exponential)
-    s = solve_exponential(M2, q2, m2, {load_.interface.u0, load_.interface.p_ref}, load_.force.has_value(),
-                          value, ex, s);
+  LcpSolution s = base.solve_changed(M2, q2.cwiseProduct(scale), m.cwiseProduct(scale), dirty,
+                                     load_.force.has_value(), value, ex, solved_set(warm));
   // Back to multipliers (nodal pressures of the cut hats) and unscaled gaps.
   s.lambda = s.lambda.cwiseProduct(scale);
   s.gap = s.gap.cwiseQuotient(scale);
+  if (exponential)
+    s = solve_exponential(M2_unscaled, q2, m, {load_.interface.u0, load_.interface.p_ref},
+                          load_.force.has_value(), value, ex, s);
   Eigen::VectorXd gap = s.gap;
   if (mode == FrictionMode::uncoupled) {
     if (out.ratio != 0) gap += out.ratio * zt_times(s.lambda, false);

@@ -147,6 +147,7 @@ class ContactSolver {
   Eigen::VectorXd solved_lambda(const Eigen::VectorXd& lambda) const;
 
  private:
+  SceneError no_consistent_set(FrictionMode mode, const LcpSolution& s) const;
   ContactLcp& lcp(double ratio) const;
   // C_zz with the interface's closure: the LCP matrix without friction.
   Eigen::MatrixXd frictionless_matrix() const;

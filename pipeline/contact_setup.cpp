@@ -140,17 +140,42 @@ std::string condensation_said(const ContactSetup& setup) {
   return said;
 }
 
+constexpr double kZoneTailFraction = 1e-3;
+
 void check_zone(const Scene& scene, const ContactSetup& s, const contact::ContactResult& r) {
   const auto& z = s.solver->zone();
   const Vec2 c = contact_center(scene);
+  const auto distance = [&](int i) {
+    return std::hypot(s.mesh().nodes(z.vertices[i], 0) - c[0], s.mesh().nodes(z.vertices[i], 1) - c[1]);
+  };
+  // The outermost ring of multipliers lies within one element of the zone's edge.
+  const double ring = s.zone_radius - s.zone_h;
+  if (scene.contact->interface.law == InterfaceLaw::exponential) {
+    // An exponential interface touches everywhere: its tail is cut at the zone's edge whatever the radius.
+    // What the cut leaves out is bounded by what the outer ring carries, the tail decaying outward.
+    double total = 0, outer = 0;
+    for (int i = 0; i < z.size(); ++i) {
+      const double f = std::max(0.0, r.lambda[i]) * z.area[i];
+      total += f;
+      if (distance(i) > ring) outer += f;
+    }
+    if (total > 0 && outer > kZoneTailFraction * total) {
+      char buf[400];
+      std::snprintf(
+          buf, sizeof buf,
+          "%s: contact.zone_radius = %g: the exponential interface carries %.2g of the force in the "
+          "zone's outer element ring (friction %s; allowed %.0e): its tail is cut short there; give a "
+          "larger contact.zone_radius",
+          scene.source_path.c_str(), s.zone_radius, outer / total, contact::to_string(r.mode),
+          kZoneTailFraction);
+      throw SceneError(buf);
+    }
+    return;
+  }
   double reach = 0;
-  // The active set: λ > 0 in a hard or linear contact, λ ≥ 1e-6 of its peak through an exponential one.
-  for (int i : r.active)
-    reach = std::max(
-        reach, std::hypot(s.mesh().nodes(z.vertices[i], 0) - c[0], s.mesh().nodes(z.vertices[i], 1) - c[1]));
-  // The outermost ring of multipliers lies within one element of the zone's edge: contact reaching it may be
-  // cut short by the zone.
-  if (reach > s.zone_radius - s.zone_h)
+  for (int i : r.active) reach = std::max(reach, distance(i));
+  // Contact reaching the outer ring may be cut short by the zone.
+  if (reach > ring)
     throw SceneError(scene.source_path + ": contact.zone_radius = " + std::to_string(s.zone_radius) +
                      ": the contact (friction " + contact::to_string(r.mode) + ") reaches " +
                      std::to_string(reach) +

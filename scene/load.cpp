@@ -991,6 +991,17 @@ ContactLoad read_contact(const Reader& r, const json& c, const Geometry& geo) {
   return out;
 }
 
+// A shear strength above the skin's shear modulus G strains the surface by more than τ0/G = 1: no linear,
+// small-strain model answers there (in the coupled contact the shear then lifts the very edge it acts on).
+void check_shear_strength(const Reader& r, const json& j, const Scene& scene) {
+  const std::optional<double>& tau0 = scene.contact->tau0;
+  const double G = scene.material.E / (2 * (1 + scene.material.nu));
+  if (tau0 && *tau0 > G)
+    r.fail("contact.friction.tau0", j["friction"]["tau0"],
+           "must be at most the skin's shear modulus G = E / (2 (1 + nu)) = " + fmt(G) +
+               " MPa: beyond it the surface strains by more than tau0 / G = 1, outside linear elasticity");
+}
+
 // The candidate contact zone must stay one skin thickness inside the footprint: the truncated side is an
 // artificial boundary (free or clamped), and contact within about h of it would feel it. Not checked on an
 // imported surface (footprint and thickness unknown before the file is read).
@@ -1153,6 +1164,7 @@ Scene parse_scene(const std::string& json_text, const std::string& source_path) 
     check_contact_extent(r, *contact, scene);
     check_contact_zone(r, *contact, scene);
     check_hole_meshes(r, scene);
+    check_shear_strength(r, *contact, scene);
   }
   return scene;
 }

@@ -183,6 +183,22 @@ TEST(FrictionLaw, LawsSuperposeWhereThePressureIgnoresTheTraction) {
 }
 
 // "from_force": τ0 = μF/A over the frictionless contact, so the uncoupled sliding shear totals μF.
+// A shear strength far above the contact's pressure lifts, in the coupled linear model, the edge it acts on:
+// no contact set is consistent. The solve says so naming the scene's field (issue 57: an internal line).
+TEST(FrictionLaw, AShearStrengthThatLiftsItsOwnEdgeIsRefusedByName) {
+  Fixture& f = layer();
+  const ContactSolver solver(*f.condensed, load(FrictionLaw::shear_strength, 0.5));
+  try {
+    solver.solve(FrictionMode::coupled);
+    FAIL() << "tau0 = 0.5 MPa solved";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("contact.friction.tau0 = 0.5: the coupled contact has no consistent "
+                                         "contact set"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(FrictionLaw, ShearStrengthFromTheForceTotalsMuF) {
   Fixture& f = layer();
   const ContactSolver solver(*f.condensed, load(FrictionLaw::shear_strength, std::nullopt));

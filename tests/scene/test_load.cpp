@@ -959,6 +959,10 @@ TEST(SceneLoad, ContactErrors) {
   EXPECT_SCENE_ERROR(contact(kPlane + R"(, "friction": {"law": "shear_strength", "tau0": -0.1})"),
                      "contact.friction.tau0 = -0.1: must be a shear strength in [0, 1e6] MPa");
   EXPECT_SCENE_ERROR(
+      contact(kPlane + R"(, "friction": {"law": "shear_strength", "tau0": 2})"),
+      "contact.friction.tau0 = 2: must be at most the skin's shear modulus G = E / (2 (1 + nu)) "
+      "= 1 MPa");
+  EXPECT_SCENE_ERROR(
       contact(kPlane + R"(, "friction": {"law": "mixed", "tau0": "auto"})"),
       R"(contact.friction.tau0 = "auto": must be a shear strength in [0, 1e6] MPa, or "from_force")");
   EXPECT_SCENE_ERROR(
