@@ -118,7 +118,16 @@ std::vector<std::string> variant_names(const std::vector<validation::Variant>& v
 struct PyKernel {
   validation::GreenKernel g;
   std::string what;
+  int sensors = -1;  // the sensors it is built for (one per thickness, or the FE maps'); -1: any
 };
+
+// A kernel built for some sensors applied to another scene's would read past its tables.
+void require_kernel_fits(const PyKernel& g, const Scene& scene) {
+  const int n = static_cast<int>(reading_sites(scene.sensors).size());
+  if (g.sensors >= 0 && g.sensors != n)
+    throw SceneError("kernel: built for " + std::to_string(g.sensors) + " sensor(s) (" + g.what +
+                     "), the scene '" + scene.name + "' has " + std::to_string(n));
+}
 
 // Its traction ingredient.
 struct PyTractions {
@@ -510,11 +519,13 @@ PYBIND11_MODULE(_skinfem, m) {
   m.def(
       "halfspace_kernel",
       [](std::vector<double> thickness, double k) {
-        if (!(k > 0)) throw SceneError("k: " + std::to_string(k) + " must be > 0");
+        require(std::isfinite(k) && k > 0, "k", k, "must be a finite rescaling factor > 0");
+        if (thickness.empty()) throw SceneError("thickness_mm = []: must hold one thickness per sensor");
         for (double h : thickness)
-          if (!(h > 0)) throw SceneError("thickness_mm: " + std::to_string(h) + " must be > 0");
+          require(std::isfinite(h) && h > 0, "thickness_mm", h, "must be finite thicknesses > 0 (mm)");
+        const int n = static_cast<int>(thickness.size());
         return PyKernel{validation::rescaled_halfspace_kernel(std::move(thickness), k),
-                        "half-space Green tensor rescaled by k = " + std::to_string(k)};
+                        "half-space Green tensor rescaled by k = " + std::to_string(k), n};
       },
       py::arg("thickness_mm"), py::arg("k") = 1.0,
       "k g_half(sqrt(k) offset) at each sensor's depth (thickness_mm per sensor); k = 1 is "
@@ -522,7 +533,11 @@ PYBIND11_MODULE(_skinfem, m) {
   m.def(
       "layer_kernel",
       [](double h, double nu, double reach) {
-        if (!(h > 0)) throw SceneError("h_mm: " + std::to_string(h) + " must be > 0");
+        require(std::isfinite(h) && h > 0 && h <= 100, "h_mm", h, "must be a thickness in (0, 100] mm");
+        require(nu >= 0 && nu <= 0.5, "nu", nu, "must be a Poisson's ratio in [0, 0.5]");
+        // Tabulated every 0.01 mm up to reach, one Hankel transform each.
+        require(std::isfinite(reach) && reach > 0 && reach <= 100, "reach_mm", reach,
+                "must be the largest offset tabulated, in (0, 100] mm");
         return PyKernel{validation::layer_exact_kernel(h, nu, reach),
                         "exact bonded layer h = " + std::to_string(h) + " mm"};
       },
@@ -533,7 +548,8 @@ PYBIND11_MODULE(_skinfem, m) {
       [](const pipeline::SensorGreens& g) {
         return PyKernel{
             [&g](int s, double ox, double oy) { return g.at(s, true, ox, oy, green::LayerLoad::point, 0); },
-            "FE Green maps (" + g.path + " path), sensor-disc readings"};
+            "FE Green maps (" + g.path + " path), sensor-disc readings",
+            static_cast<int>(g.thickness.size())};
       },
       py::arg("greens"), py::keep_alive<0, 1>(), "The FE maps of `greens` (disc readings) as a kernel.");
   py::class_<PyTractions>(m, "Tractions", "Interfacial tractions p_z, p_x (validation/paper_model.hpp).")
@@ -570,6 +586,7 @@ PYBIND11_MODULE(_skinfem, m) {
   m.def(
       "convolve",
       [](const PyTractions& t, const PyKernel& g, const Scene& scene) {
+        require_kernel_fits(g, scene);
         const Eigen::VectorXd v = validation::convolve(t.t, g.g, scene.sensors);
         return kpa(v, {v.size() / 2, 2});
       },
@@ -579,6 +596,11 @@ PYBIND11_MODULE(_skinfem, m) {
       "first_order_hole",
       [](const PyTractions& t, const PyKernel& g, const Scene& scene,
          const std::vector<std::array<double, 2>>& centers, double area) {
+        require_kernel_fits(g, scene);
+        require(std::isfinite(area) && area > 0, "hole_area_mm2", area, "must be a finite area > 0");
+        for (const auto& c : centers)
+          require(std::isfinite(c[0]) && std::isfinite(c[1]), "centers_mm", std::isfinite(c[0]) ? c[1] : c[0],
+                  "must be finite positions (mm)");
         return kpa_by_sensor(validation::first_order_hole(t.t, g.g, scene.sensors, centers, area));
       },
       py::arg("tractions"), py::arg("kernel"), py::arg("scene"), py::arg("centers_mm"),

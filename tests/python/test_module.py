@@ -205,6 +205,32 @@ def test_entry_points_refuse_arguments_out_of_range():
     assert isinstance(skinfem.SceneError("x"), ValueError)
 
 
+def test_the_papers_model_refuses_what_it_cannot_compute():
+    # Issue 57: a kernel for fewer sensors than the scene's surfaced as vector::_M_range_check, a negative or
+    # NaN reach as max_size(), a NaN hole area or centre as NaN readings. Each is one line naming the argument.
+    scene = skinfem.scene(FLAT)
+    t = skinfem.hertz_tractions(0.8, 129.7, 3.0)
+    with pytest.raises(skinfem.SceneError, match=r"^thickness_mm = \[\]: must hold one thickness per sensor$"):
+        skinfem.halfspace_kernel([], 1.5)
+    too_few = skinfem.halfspace_kernel([3.04] * (len(scene.sensor_positions_mm) + 1), 1.5)
+    with pytest.raises(skinfem.SceneError, match=r"^kernel: built for \d+ sensor\(s\) .*, the scene 'flat_layer' has"):
+        skinfem.convolve(t, too_few, scene)
+    for k in (float("nan"), float("inf"), 0.0):
+        with pytest.raises(skinfem.SceneError, match=r"^k = .*: must be a finite rescaling factor > 0$"):
+            skinfem.halfspace_kernel([3.04], k)
+    for reach in (-1.0, float("nan"), 1e6):
+        with pytest.raises(skinfem.SceneError, match=r"^reach_mm = .*: must be the largest offset tabulated"):
+            skinfem.layer_kernel(3.04, 0.5, reach)
+    with pytest.raises(skinfem.SceneError, match=r"^nu = nan: must be a Poisson's ratio"):
+        skinfem.layer_kernel(3.04, float("nan"))
+    fits = skinfem.halfspace_kernel([3.04] * len(scene.sensor_positions_mm), 1.5)
+    for area in (float("nan"), -1.0):
+        with pytest.raises(skinfem.SceneError, match=r"^hole_area_mm2 = .*: must be a finite area > 0$"):
+            skinfem.first_order_hole(t, fits, scene, [[0.0, 0.0]], area)
+    with pytest.raises(skinfem.SceneError, match=r"^centers_mm = nan: must be finite positions"):
+        skinfem.first_order_hole(t, fits, scene, [[float("nan"), 0.0]], 0.2)
+
+
 def test_a_progress_callback_left_set_does_not_hang_the_exit():
     # Issue 57: the sink's Python callable was released after finalization, waiting for the GIL forever.
     r = subprocess.run([sys.executable, "-c", "import skinfem; skinfem.set_progress(print)"],
