@@ -4,6 +4,8 @@
 // the workflow engine (Snakemake, sweeps/workflow/). The format is documented in sweep.cpp's header.
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -18,7 +20,7 @@ struct SweepAxis {
 };
 
 struct SweepMember {
-  std::string id;                   // 12 hex digits hashing the scene text, the command and its options
+  std::string id;  // 12 hex digits hashing the scene text, the files it names, the command and its options
   std::vector<std::string> values;  // one per axis, compact JSON text
   std::string scene_json;           // the member's scene (a relative geometry.path made absolute)
   Scene scene;                      // the same, validated
@@ -40,5 +42,9 @@ struct Sweep {
 // base scene, an empty axis, zipped axes of unequal length, or a member the scene rules refuse (that
 // member's scene error, prefixed with its values).
 Sweep load_sweep(const std::string& path);
+
+// f(0), ..., f(n - 1) on up to hardware_concurrency() threads (at most 8), for the members' independent
+// work; rethrows the exception of the lowest index that threw, as a loop in one thread would.
+void for_each_index(std::size_t n, const std::function<void(std::size_t)>& f);
 
 }  // namespace skinfem
