@@ -90,6 +90,39 @@ double SizingField::in_volume(double x, double y, double z) const {
   return at(x, y, shape_ ? std::max(0.0, shape_->top_z(x, y) - z) : 0.0);
 }
 
+void SizingField::in_column(double x, double y, const double* z, int n, double* out) const {
+  const double top = shape_ ? shape_->top_z(x, y) : 0.0;
+  double through = h_max_;
+  for (const auto& r : through_)
+    through = std::min(
+        through, r.h + (growth_ - 1.0) *
+                           std::hypot(std::max(0.0, distance_to_segment(x, y, r.a, r.b) - r.radius), 0.0));
+  // A region's size at depth is at least its size at the top (hypot(d, depth) >= d): one that already loses
+  // to the through regions there loses at every depth and is skipped (the margin covers hypot's rounding).
+  struct Near {
+    double h, d;
+  };
+  std::vector<Near> near_top, near_base;
+  const auto near = [&](const std::vector<RegionOfInterest>& list, std::vector<Near>& out) {
+    for (const auto& r : list) {
+      const double d = std::max(0.0, distance_to_segment(x, y, r.a, r.b) - r.radius);
+      if (r.h + (growth_ - 1.0) * d <= through * (1 + 1e-12)) out.push_back({r.h, d});
+    }
+  };
+  near(top_, near_top);
+  if (!base_.empty()) near(base_, near_base);
+  for (int k = 0; k < n; ++k) {
+    const double depth = shape_ ? std::max(0.0, top - z[k]) : 0.0;
+    double size = through;
+    for (const Near& r : near_top) size = std::min(size, r.h + (growth_ - 1.0) * std::hypot(r.d, depth));
+    if (!base_.empty()) {
+      const double height = std::max(0.0, top - depth - post_height_);
+      for (const Near& r : near_base) size = std::min(size, r.h + (growth_ - 1.0) * std::hypot(r.d, height));
+    }
+    out[k] = size;
+  }
+}
+
 Scene scaled_scene(const Scene& base, double s, bool cap_holes) {
   Scene scene = base;
   scene.mesh.sensor_h = sensor_mesh_size(base) * s;
