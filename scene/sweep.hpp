@@ -39,8 +39,8 @@ struct Sweep {
 
 // Reads the spec at `path` and builds every member. Throws SceneError, one line naming the spec, the field,
 // the value and what is allowed, on any problem: the spec's own fields, a pointer that names nothing in the
-// base scene, an empty axis, zipped axes of unequal length, or a member the scene rules refuse (that
-// member's scene error, prefixed with its values).
+// base scene, an empty axis, an axis inside another, zipped axes of unequal length, more than 10000
+// members, or a member the scene rules refuse (that member's scene error, prefixed with its values).
 Sweep load_sweep(const std::string& path);
 
 // f(0), ..., f(n - 1) on up to hardware_concurrency() threads (at most 8), for the members' independent

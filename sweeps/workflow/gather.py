@@ -85,10 +85,11 @@ def signal_name(number):
         return "unknown"
 
 
-# Out of memory is the machine's state, not the member's: MUMPS's INFOG(1) = -9 (its work array too small)
-# or -13 (an allocation failed), fem/mumps_ldlt.cpp's refusal of a factorization larger than the memory
-# then available, or an allocation that failed elsewhere. Such a member runs again on the next sweep.
-OUT_OF_MEMORY = re.compile(r"INFOG\(1\) = -(9|13)\b|GB available; coarsen the mesh|std::bad_alloc")
+# Out of memory is the machine's state (and the other jobs'), not the member's: MUMPS's INFOG(1) = -9 (its
+# work array too small) or -13 (an allocation failed), a refusal of a factorization or mesh larger than the
+# memory then available (fem/mumps_ldlt.cpp, pipeline/resources.cpp: "... GB available; coarsen ..."), or an
+# allocation that failed elsewhere. Such a member runs again on the next sweep; --max-dofs refusals do not.
+OUT_OF_MEMORY = re.compile(r"INFOG\(1\) = -(9|13)\b|GB available; coarsen |std::bad_alloc")
 
 
 def out_of_memory(error):
