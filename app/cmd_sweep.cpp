@@ -13,16 +13,28 @@
 // members, their parameters and memory estimates), then runs sweeps/workflow/Snakefile in DIR: each member
 // into DIR/members/<id>/ (the command's own files in out/, status.json with its exit code, error line and
 // time), gathered into DIR/results.csv, results.h5 and plots/ (sweeps/workflow/gather.py). A re-run runs
-// only members without a status (new, changed or interrupted). --dry-run writes and does not run.
+// only members without a status (new, changed or interrupted) and those whose status says "retry" (killed
+// by a signal or out of memory). --dry-run writes and does not run.
+// One sweep per DIR: an exclusive flock on DIR/.skinfem-sweep.lock, held from before the first write to the
+// end and inherited by Snakemake; a second sweep into DIR is refused in one line and writes nothing. Holding
+// it, a Snakemake lock left in DIR/.snakemake/locks can only be stale and is removed. Snakemake gets SIGTERM
+// if skinfem is killed outright (SIGKILL), instead of running on without it.
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "mesh/size_estimate.hpp"
+#include "pipeline/green.hpp"
 #include "pipeline/resources.hpp"
 
 namespace skinfem::app {
@@ -39,12 +51,48 @@ long member_memory_mb(const Scene& scene, double& dofs) {
   return e.known ? std::max(256L, std::lround(1024 * estimated_memory_gb(e.dofs))) : 4096L;
 }
 
-// Members with a status.json (finished, or refused with their error): what a re-run does not run again.
+// A member's status, if it has one: finished, refused with its error, or to run again ("retry": killed by a
+// signal or out of memory, sweeps/workflow/gather.py).
+enum class Status { none, done, retry };
+Status member_status(const std::string& out_dir, const SweepMember& m) {
+  std::ifstream in(out_dir + "/members/" + m.id + "/status.json");
+  if (!in) return Status::none;
+  const nlohmann::json status = nlohmann::json::parse(in, nullptr, false);
+  return status.is_object() && status.value("retry", false) == true ? Status::retry : Status::done;
+}
+
+// Members with a status that stands (not to retry): what a re-run does not run again.
 int members_done(const Sweep& sweep, const std::string& out_dir) {
   int done = 0;
-  for (const SweepMember& m : sweep.members)
-    done += fs::exists(out_dir + "/members/" + m.id + "/status.json");
+  for (const SweepMember& m : sweep.members) done += member_status(out_dir, m) == Status::done;
   return done;
+}
+
+// "member 3 (/material/nu = 0.45, ...)": how load_sweep names a member in its errors.
+std::string member_label(const Sweep& sweep, std::size_t i) {
+  std::string where;
+  for (std::size_t a = 0; a < sweep.axes.size(); ++a)
+    where += (where.empty() ? "" : ", ") + sweep.axes[a].pointer + " = " + sweep.members[i].values[a];
+  return "member " + std::to_string(i + 1) + " (" + where + ")";
+}
+
+// An exclusive lock on DIR/.skinfem-sweep.lock, taken before anything is written in DIR and held until we
+// end: a second sweep into DIR would rewrite the manifest under the first, which would then gather the
+// second's table. The descriptor is left open across exec, so a Snakemake that outlives us holds it too.
+void lock_sweep_dir(const std::string& dir) {
+  const std::string path = dir + "/.skinfem-sweep.lock";
+  const int fd = ::open(path.c_str(), O_RDWR | O_CREAT, 0644);
+  if (fd < 0)
+    throw std::runtime_error("--out " + dir + ": cannot create " + path + " (" + std::strerror(errno) + ")");
+  if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    const int e = errno;
+    ::close(fd);
+    if (e == EWOULDBLOCK)
+      throw std::runtime_error("--out " + dir +
+                               ": another skinfem sweep is running there (it holds .skinfem-sweep.lock); "
+                               "wait for it to end, or give another directory");
+    throw std::runtime_error("--out " + dir + ": cannot lock " + path + " (" + std::strerror(e) + ")");
+  }
 }
 
 std::string summary_file(const std::string& command) {
@@ -59,6 +107,22 @@ int run_sweep(const std::string& spec_path, const std::string& out, int cores, c
   const std::string out_dir = out.empty() ? "out/" + sweep.name : out;
   check_output_dir(out_dir);
   check_run_record(out_dir, "sweep");
+
+  // Every member's kernel grid as `skinfem green --grid` would check it, before anything is written.
+  const auto grid = std::find(sweep.options.begin(), sweep.options.end(), "--grid");
+  if (grid != sweep.options.end() && grid + 1 != sweep.options.end())
+    for (std::size_t i = 0; i < sweep.members.size(); ++i) try {
+        pipeline::check_kernel_grid(sweep.members[i].scene, std::stod(*(grid + 1)));
+      } catch (const SceneError& e) {
+        throw SceneError(spec_path + ": " + member_label(sweep, i) + ": " + e.what());
+      }
+  std::vector<long> estimates(sweep.members.size());
+  std::vector<double> dofs(sweep.members.size());
+  for_each_index(sweep.members.size(),
+                 [&](std::size_t i) { estimates[i] = member_memory_mb(sweep.members[i].scene, dofs[i]); });
+
+  prepare_output_dir(out_dir);
+  lock_sweep_dir(out_dir);
   prepare_output_dir(out_dir + "/scenes");
 
   nlohmann::json manifest;
@@ -77,27 +141,37 @@ int run_sweep(const std::string& spec_path, const std::string& out, int cores, c
     for (const auto& v : a.values) values.push_back(nlohmann::json::parse(v));
     manifest["axes"].push_back({{"pointer", a.pointer}, {"column", a.column}, {"values", values}});
   }
+  // An existing member's scene is left alone (its name is its content), so its results stay up to date.
+  for_each_index(sweep.members.size(), [&](std::size_t i) {
+    const std::string scene_file = out_dir + "/scenes/" + sweep.members[i].id + ".json";
+    if (!fs::exists(scene_file)) write_text_atomic(scene_file, sweep.members[i].scene_json);
+  });
   long mem_lo = 1L << 40, mem_hi = 0;
-  for (const SweepMember& m : sweep.members) {
-    const std::string scene_file = "scenes/" + m.id + ".json";
-    // An existing member's scene is left alone (its name is its content), so its results stay up to date.
-    if (!fs::exists(out_dir + "/" + scene_file)) write_text_atomic(out_dir + "/" + scene_file, m.scene_json);
-    double dofs = 0;
-    const long estimate = member_memory_mb(m.scene, dofs);
-    const long mem = sweep.mem_mb > 0 ? sweep.mem_mb : estimate;
+  for (std::size_t i = 0; i < sweep.members.size(); ++i) {
+    const SweepMember& m = sweep.members[i];
+    const long mem = sweep.mem_mb > 0 ? sweep.mem_mb : estimates[i];
     mem_lo = std::min(mem_lo, mem), mem_hi = std::max(mem_hi, mem);
     nlohmann::json values = nlohmann::json::array();
     for (const auto& v : m.values) values.push_back(nlohmann::json::parse(v));
     manifest["members"].push_back({{"id", m.id},
-                                   {"scene", scene_file},
+                                   {"scene", "scenes/" + m.id + ".json"},
                                    {"values", values},
                                    {"mem_mb", mem},
-                                   {"estimated_mem_mb", estimate},
-                                   {"estimated_dofs", dofs}});
+                                   {"estimated_mem_mb", estimates[i]},
+                                   {"estimated_dofs", dofs[i]}});
   }
   write_json(out_dir + "/manifest.json", manifest);
   write_json(out_dir + "/run.json",
              {{"command", "sweep"}, {"spec", manifest["spec"]}, {"skinfem", SKINFEM_VERSION}});
+
+  // Members killed by a signal or out of memory run again: their status goes before Snakemake starts (not in
+  // a dry run, which changes no member).
+  int done = 0, retry = 0;
+  for (const SweepMember& m : sweep.members) {
+    const Status st = member_status(out_dir, m);
+    done += st == Status::done, retry += st == Status::retry;
+    if (st == Status::retry && !dry_run) fs::remove(out_dir + "/members/" + m.id + "/status.json");
+  }
 
   std::string shape;
   for (const SweepAxis& a : sweep.axes)
@@ -106,9 +180,10 @@ int run_sweep(const std::string& spec_path, const std::string& out, int cores, c
   for (const auto& w : sweep.options) command += " " + w;
   const std::string memory = (sweep.mem_mb > 0 ? "the spec's mem_mb " : "the mesh estimate ") +
                              std::to_string(mem_lo) + (mem_hi > mem_lo ? "-" + std::to_string(mem_hi) : "");
-  std::printf("sweep %s: %zu member%s of `%s` (%s %s), %d already done; memory per job from %s MB\n",
+  const std::string retrying = retry > 0 ? ", " + std::to_string(retry) + " to retry" : "";
+  std::printf("sweep %s: %zu member%s of `%s` (%s %s), %d already done%s; memory per job from %s MB\n",
               sweep.name.c_str(), sweep.members.size(), sweep.members.size() == 1 ? "" : "s", command.c_str(),
-              sweep.combine.c_str(), shape.c_str(), members_done(sweep, out_dir), memory.c_str());
+              sweep.combine.c_str(), shape.c_str(), done, retrying.c_str(), memory.c_str());
 
   std::vector<std::string> argv{"snakemake", "--snakefile",        sweep_workflow(), "--directory",
                                 out_dir,     "--rerun-incomplete", "--keep-going"};
@@ -129,11 +204,20 @@ int run_sweep(const std::string& spec_path, const std::string& out, int cores, c
                 sweep.members.size(), line.c_str());
     return 0;
   }
+  // Our lock proves that no other sweep, nor a Snakemake one started, runs in DIR: a Snakemake lock there
+  // is left by one that was killed, and would refuse this run.
+  const fs::path snakemake_locks = fs::path(out_dir) / ".snakemake" / "locks";
+  if (fs::exists(snakemake_locks, ec) && !fs::is_empty(snakemake_locks, ec)) {
+    fs::remove_all(snakemake_locks, ec);
+    progress("removed " + snakemake_locks.string() +
+             ", left by a Snakemake that did not end cleanly (no other sweep runs in " + out_dir + ")");
+  }
   progress("running: " + line);
   int stopped_by = 0;
   bool killed = false;
-  // Snakemake can deadlock in its own handler of the signal we pass on: 30 s after it, it is killed.
-  const int rc = run_child(argv, &stopped_by, 30, &killed);
+  // Snakemake can deadlock in its own handler of the signal we pass on: 30 s after it, it is killed. If we
+  // are killed outright, it gets SIGTERM (and shuts its members down) rather than running on.
+  const int rc = run_child(argv, &stopped_by, 30, &killed, true);
   if (stopped_by != 0) {
     // A killed Snakemake leaves its lock, which would refuse every re-run; its process is gone, so the lock
     // holds nothing (its unfinished members are marked incomplete and run again).

@@ -1,7 +1,8 @@
 #include "app/common.hpp"
 
+#include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -91,20 +92,17 @@ extern "C" void pass_to_child(int sig) {
 }
 }  // namespace
 
-int run_child(const std::vector<std::string>& argv, int* interrupted_by, double grace_s, bool* killed) {
+int run_child(const std::vector<std::string>& argv, int* interrupted_by, double grace_s, bool* killed,
+              bool end_with_us) {
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, STDERR_FILENO, STDOUT_FILENO);
-  posix_spawnattr_t attr;
-  posix_spawnattr_init(&attr);
-  posix_spawnattr_setpgroup(&attr, 0);
   // Handlers first, with the signals held until the child's group is known, so that none is lost between.
-  struct sigaction pass = {}, saved[3];
+  struct sigaction pass = {}, saved[3], fallback = {};
   pass.sa_handler = pass_to_child;
   sigemptyset(&pass.sa_mask);
+  fallback.sa_handler = SIG_DFL;
+  sigemptyset(&fallback.sa_mask);
   const int passed[3] = {SIGINT, SIGTERM, SIGHUP};
   sigset_t held, previous;
   sigemptyset(&held);
@@ -112,13 +110,44 @@ int run_child(const std::vector<std::string>& argv, int* interrupted_by, double 
   sigprocmask(SIG_BLOCK, &held, &previous);
   child_signal = 0;
   for (int i = 0; i < 3; ++i) sigaction(passed[i], &pass, &saved[i]);
-  pid_t pid = 0;
-  // The child starts with these signals at their defaults (exec resets handlers) and unblocked.
-  posix_spawnattr_setsigmask(&attr, &previous);
-  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK);
-  const int err = posix_spawnp(&pid, args[0], &actions, &attr, args.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  posix_spawnattr_destroy(&attr);
+  // fork and exec, not posix_spawn, which cannot set the parent-death signal. exec's errno comes back on a
+  // close-on-exec pipe: its end closes unread when exec succeeds.
+  int report[2];
+  int err = pipe2(report, O_CLOEXEC) == 0 ? 0 : errno;
+  const pid_t parent = getpid();
+  pid_t pid = err != 0 ? -1 : fork();
+  if (pid == 0) {
+    // The child: only async-signal-safe calls until exec.
+    setpgid(0, 0);
+    // A parent killed outright (SIGKILL: no handler runs) would otherwise leave the child running, e.g. a
+    // Snakemake that goes on with the members and keeps its lock.
+    if (end_with_us && (prctl(PR_SET_PDEATHSIG, SIGTERM) != 0 || getppid() != parent)) _exit(128 + SIGTERM);
+    dup2(STDERR_FILENO, STDOUT_FILENO);
+    // Defaults before unblocking: a signal arriving before exec must act on the child, not run our handler.
+    for (int s : passed) sigaction(s, &fallback, nullptr);
+    sigprocmask(SIG_SETMASK, &previous, nullptr);
+    execvp(args[0], args.data());
+    const int e = errno;
+    [[maybe_unused]] const ssize_t sent = write(report[1], &e, sizeof e);
+    _exit(127);
+  }
+  if (pid < 0 && err == 0) {
+    err = errno;
+    close(report[0]), close(report[1]);
+  }
+  if (pid > 0) {
+    setpgid(pid, pid);  // as the child does: the group exists before any signal is passed to it
+    close(report[1]);
+    int e = 0;
+    ssize_t got;
+    while ((got = read(report[0], &e, sizeof e)) < 0 && errno == EINTR) {
+    }
+    close(report[0]);
+    if (got == static_cast<ssize_t>(sizeof e)) {
+      err = e;
+      waitpid(pid, nullptr, 0);
+    }
+  }
   child_group = err == 0 ? pid : 0;
   sigprocmask(SIG_SETMASK, &previous, nullptr);
   int status = 0, rc = -1;

@@ -36,9 +36,11 @@ void write_json(const std::string& path, const nlohmann::json& j);
 // own shutdown (Snakemake removing its unfinished outputs) ends before we return, so a re-run started
 // after we exit never races it. *interrupted_by (when given) is that signal's number, or 0. A child whose
 // group has not ended `grace_s` seconds after the signal (> 0; Snakemake can deadlock in its own signal
-// handler) is killed with SIGKILL, and *killed (when given) says so.
+// handler) is killed with SIGKILL, and *killed (when given) says so. end_with_us: the child gets SIGTERM
+// when we end without passing it a signal (killed by SIGKILL), so that it does not outlive us.
+// Our open file descriptors without close-on-exec are inherited (the sweep's lock on its folder).
 int run_child(const std::vector<std::string>& argv, int* interrupted_by = nullptr, double grace_s = 0,
-              bool* killed = nullptr);
+              bool* killed = nullptr, bool end_with_us = false);
 
 // Study levels given on the command line (--scales, --ridges, --error-scales): each finite, no two equal,
 // in the order the option states (coarse to fine); otherwise the finest level, the reference of every

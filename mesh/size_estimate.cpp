@@ -42,11 +42,15 @@ struct Integrator {
   double column(double x, double y) const {
     const double t = thickness(x, y), skin = t - bottom(x, y);
     if (!(t > 0) || !(skin > 0)) return 0;
+    std::array<double, kDepthIntervals> z, h;
+    for (int k = 0; k < kDepthIntervals; ++k)
+      z[k] = t - 0.5 * (skin * depth_fraction(k) + skin * depth_fraction(k + 1));
+    size.in_column(x, y, z.data(), kDepthIntervals, h.data());
     double sum = 0;
     for (int k = 0; k < kDepthIntervals; ++k) {
-      const double d0 = skin * depth_fraction(k), d1 = skin * depth_fraction(k + 1), z = t - 0.5 * (d0 + d1);
-      const double h = std::min(size.in_volume(x, y, z), kThinCap * t);
-      sum += kTetsPerCube / (h * h * h) * (d1 - d0);
+      const double d0 = skin * depth_fraction(k), d1 = skin * depth_fraction(k + 1);
+      const double hk = std::min(h[k], kThinCap * t);
+      sum += kTetsPerCube / (hk * hk * hk) * (d1 - d0);
     }
     return sum;
   }
@@ -54,14 +58,24 @@ struct Integrator {
   double min_size(double x, double y) const {
     const double t = thickness(x, y);
     if (!(t > 0)) return 0;
-    double m = size.h_max();
+    std::array<double, kDepthIntervals> z, h;
     for (int k = 0; k < kDepthIntervals; ++k)
-      m = std::min(m, size.in_volume(x, y, t * (1 - 0.5 * (depth_fraction(k) + depth_fraction(k + 1)))));
+      z[k] = t * (1 - 0.5 * (depth_fraction(k) + depth_fraction(k + 1)));
+    size.in_column(x, y, z.data(), kDepthIntervals, h.data());
+    double m = size.h_max();
+    for (int k = 0; k < kDepthIntervals; ++k) m = std::min(m, h[k]);
     return std::min(m, kThinCap * t);
   }
   // Interval k of the column spans depths t·[f(k), f(k+1)]: geometric growth by kDepthRatio from the top.
+  // Tabulated once: the estimate asks for them millions of times.
   static double depth_fraction(int k) {
-    return (std::pow(kDepthRatio, k) - 1) / (std::pow(kDepthRatio, kDepthIntervals) - 1);
+    static const std::array<double, kDepthIntervals + 1> f = [] {
+      std::array<double, kDepthIntervals + 1> out{};
+      for (int i = 0; i <= kDepthIntervals; ++i)
+        out[i] = (std::pow(kDepthRatio, i) - 1) / (std::pow(kDepthRatio, kDepthIntervals) - 1);
+      return out;
+    }();
+    return f[k];
   }
 
   // Adaptive midpoint rule on the square cell of centre (x, y) and half-side r: split while the sizes at

@@ -90,6 +90,53 @@ double SizingField::in_volume(double x, double y, double z) const {
   return at(x, y, shape_ ? std::max(0.0, shape_->top_z(x, y) - z) : 0.0);
 }
 
+void SizingField::in_column(double x, double y, const double* z, int n, double* out) const {
+  const double top = shape_ ? shape_->top_z(x, y) : 0.0;
+  // A region is first bounded from below with sqrt (within 1e-15 of hypot; the margin 1e-12 covers it): far
+  // regions, most of them in most columns, cannot lower the size and cost no hypot.
+  const auto lower_bound = [&](const RegionOfInterest& r) {
+    const double ex = r.b[0] - r.a[0], ey = r.b[1] - r.a[1], len2 = ex * ex + ey * ey;
+    const double t = std::clamp(len2 > 0 ? ((x - r.a[0]) * ex + (y - r.a[1]) * ey) / len2 : 0.0, 0.0, 1.0);
+    const double px = x - r.a[0] - t * ex, py = y - r.a[1] - t * ey;
+    return r.h + (growth_ - 1.0) * std::max(0.0, std::sqrt(px * px + py * py) * (1 - 1e-12) - r.radius);
+  };
+  double through = h_max_;
+  // hypot(d, 0) is |d| exactly (C, Annex F), so at() and this give the same through sizes.
+  for (const auto& r : through_)
+    if (!(lower_bound(r) > through * (1 + 1e-12)))
+      through = std::min(
+          through, r.h + (growth_ - 1.0) * std::max(0.0, distance_to_segment(x, y, r.a, r.b) - r.radius));
+  // A region's size at depth is at least its size at the top, `least` (hypot(d, depth) >= d): regions are
+  // taken in the order of `least`, and the rest skipped once it exceeds the size found, which they cannot
+  // then lower (the margin covers hypot's rounding). One that loses to the through regions is dropped.
+  struct Near {
+    double least, h, d;
+    bool base;
+  };
+  std::vector<Near> near;
+  const auto add = [&](const std::vector<RegionOfInterest>& list, bool base) {
+    for (const auto& r : list) {
+      if (lower_bound(r) > through * (1 + 1e-12)) continue;
+      const double d = std::max(0.0, distance_to_segment(x, y, r.a, r.b) - r.radius);
+      const double least = r.h + (growth_ - 1.0) * d;
+      if (least <= through * (1 + 1e-12)) near.push_back({least, r.h, d, base});
+    }
+  };
+  add(top_, false);
+  if (!base_.empty()) add(base_, true);
+  std::sort(near.begin(), near.end(), [](const Near& p, const Near& q) { return p.least < q.least; });
+  for (int k = 0; k < n; ++k) {
+    const double depth = shape_ ? std::max(0.0, top - z[k]) : 0.0;
+    const double height = std::max(0.0, top - depth - post_height_);
+    double size = through;
+    for (const Near& r : near) {
+      if (r.least > size * (1 + 1e-12)) break;
+      size = std::min(size, r.h + (growth_ - 1.0) * std::hypot(r.d, r.base ? height : depth));
+    }
+    out[k] = size;
+  }
+}
+
 Scene scaled_scene(const Scene& base, double s, bool cap_holes) {
   Scene scene = base;
   scene.mesh.sensor_h = sensor_mesh_size(base) * s;

@@ -52,6 +52,9 @@ class SizingField {
   double operator()(double x, double y) const { return at(x, y, 0.0); }  // on the top surface, mm
   double on_base(double x, double y) const;                              // on the base z = 0, mm
   double in_volume(double x, double y, double z) const;                  // at a point of the skin, mm
+  // in_volume(x, y, z[k]) for k < n into out[k], bit for bit, with the horizontal distances computed once
+  // for the column: the mesh size estimate samples each column at 24 depths.
+  void in_column(double x, double y, const double* z, int n, double* out) const;
   double h_max() const { return h_max_; }
   bool graded_in_depth() const { return shape_.has_value() && (!top_.empty() || !base_.empty()); }
 

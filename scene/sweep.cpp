@@ -7,19 +7,32 @@
 //    "mem_mb": 512,                          optional; each job's memory, MB (default: the mesh estimate)
 //    "axes": [{"pointer": "/material/nu", "values": [0.45, 0.5]},
 //             {"pointer": "/calibration/punch_diameter", "range": {"from": 0.25, "to": 1.0, "count": 4}}]}
-// A range is {"from", "to", "count" >= 2} (evenly spaced, both ends in) or {"from", "to", "step" > 0}.
-// Options, by command: path (kfit, green, contact: auto, 3d, meridian), load (kfit: punch, point), grid
-// (green: spacing > 0, mm), friction (contact: scene, none, static, uncoupled, coupled), error_scales and
-// no_error_bars (defect, report), max_dofs (every command).
+// A range is {"from", "to", "count" >= 2} (evenly spaced, both ends in) or {"from", "to", "step" > 0} (from,
+// from + step, ... up to `to`, never past it; a last value within 1e-9 step of `to` is `to`). No axis may lie
+// inside another (/sensors/positions and /sensors/positions/0/0). Grid or zip, at most 10000 members. A
+// relative geometry.path, in the base scene or as an axis value, names a file beside the base scene; a
+// member's id hashes that file's bytes too, so editing it runs the member again.
+// Options, by command, accepted as the command line accepts them: path (kfit, green, contact: auto, 3d,
+// meridian), load (kfit: punch, point), grid (green: spacing > 0, mm; each member's kernel grid within
+// green's point limits, app/cmd_sweep.cpp), friction (contact: scene, none, static, uncoupled, coupled),
+// error_scales (defect, report: at least two scales in (1, 4], strictly decreasing; not checked with
+// no_error_bars, which ignores them) and no_error_bars, max_dofs (every command).
 #include "scene/sweep.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <thread>
 
 #include "scene/json_text.hpp"
 #include "scene/load.hpp"
@@ -45,6 +58,24 @@ std::string content_id(const std::string& text) {
   char buf[17];
   std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
   return std::string(buf, 12);
+}
+
+// A relative geometry.path made absolute against `dir`, the base scene's folder: members live in another
+// folder, and a relative axis value names a file beside the base scene as the base's own path does.
+void absolute_surface(json& scene, const fs::path& dir) {
+  if (!scene.contains("geometry") || !scene["geometry"].is_object()) return;
+  json& g = scene["geometry"];
+  if (!g.contains("path") || !g["path"].is_string()) return;
+  const fs::path surface = g["path"].get<std::string>();
+  if (surface.is_relative()) g["path"] = (dir / surface).lexically_normal().string();
+}
+
+// The FNV-1a digest of a file's bytes ("" when it cannot be read: the scene rules then refuse the member).
+std::string file_digest(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "";
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return content_id(bytes);
 }
 
 struct SpecReader {
@@ -100,15 +131,23 @@ std::vector<std::string> read_options(const SpecReader& r, const json& o, const 
       if (!v.is_boolean()) r.fail(field, v, "must be true or false");
       if (v.get<bool>()) words.push_back(flag);
     } else if (key == "error_scales") {
-      const std::string allowed = "must be a non-empty array of mesh scales in (1, " +
-                                  std::to_string(static_cast<int>(kMaxErrorScale)) + "]";
+      // As `--error-scales` on the command line: at least two levels, each in (1, kMaxErrorScale], coarse
+      // to fine (strictly decreasing, so no level twice); unchecked with no_error_bars, which ignores them.
+      const std::string allowed = "must be an array of at least two mesh scales in (1, " +
+                                  std::to_string(static_cast<int>(kMaxErrorScale)) +
+                                  "], strictly decreasing (coarse to fine)";
       if (!v.is_array() || v.empty()) r.fail(field, v, allowed);
+      const bool unchecked = o.contains("no_error_bars") && o["no_error_bars"] == true;
       std::string list;
+      double previous = 0;
       for (const json& s : v) {
         const double x = number(r, s, field);
-        if (!(x > 1 && x <= kMaxErrorScale)) r.fail(field, v, allowed);
+        if (!unchecked && (!(x > 1 && x <= kMaxErrorScale) || (!list.empty() && !(x < previous))))
+          r.fail(field, v, allowed);
+        previous = x;
         list += (list.empty() ? "" : ",") + word(s.get<double>());
       }
+      if (!unchecked && v.size() < 2) r.fail(field, v, allowed);
       words.insert(words.end(), {flag, list});
     } else {  // grid (> 0) or max_dofs (>= 0)
       const double x = number(r, v, field);
@@ -151,7 +190,13 @@ std::vector<std::string> read_values(const SpecReader& r, const json& a, const s
   if (!(step > 0) || !(to > from) || (to - from) / step > 10000)
     r.fail(P + ".range", g, "a step range needs from < to and 0 < step, at most 10000 steps");
   const long long n = static_cast<long long>(std::floor((to - from) / step + 1e-9));
-  for (long long i = 0; i <= n; ++i) out.push_back(json(from + step * double(i)).dump());
+  for (long long i = 0; i <= n; ++i) {
+    // from + i·step rounds: 0.1 + 2 × 0.1 is 0.30000000000000004, past `to`, a value the user never asked
+    // for. A last value that close to `to` (either side) is `to` itself.
+    double v = from + step * double(i);
+    if (i == n && (v > to || to - v <= 1e-9 * step)) v = to;
+    out.push_back(json(v).dump());
+  }
   return out;
 }
 
@@ -187,6 +232,36 @@ SweepAxis read_axis(const SpecReader& r, const json& a, const std::string& P, co
 }
 
 }  // namespace
+
+void for_each_index(std::size_t n, const std::function<void(std::size_t)>& f) {
+  const std::size_t threads =
+      std::min<std::size_t>({n, 8, std::max(1u, std::thread::hardware_concurrency())});
+  std::atomic<std::size_t> next{0};
+  std::mutex mutex;
+  std::size_t failed = n;  // the lowest index that threw
+  std::exception_ptr error;
+  const auto work = [&] {
+    for (;;) {
+      const std::size_t i = next++;
+      {
+        // Indices are taken in order, so every index below a failed one has been taken and finishes.
+        const std::lock_guard<std::mutex> lock(mutex);
+        if (i >= n || i > failed) return;
+      }
+      try {
+        f(i);
+      } catch (...) {
+        const std::lock_guard<std::mutex> lock(mutex);
+        if (i < failed) failed = i, error = std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+}
 
 Sweep load_sweep(const std::string& path) {
   const SpecReader r{path};
@@ -229,14 +304,8 @@ Sweep load_sweep(const std::string& path) {
 
   json base = parse_json_text(read_text_file(s.base_scene_path, "base scene"), s.base_scene_path);
   if (!base.is_object()) throw SceneError(s.base_scene_path + ": (top level) must be an object");
-  // Members live in another folder: an imported surface is named by its absolute path.
-  if (base.contains("geometry") && base["geometry"].is_object() && base["geometry"].contains("path") &&
-      base["geometry"]["path"].is_string()) {
-    const fs::path surface = base["geometry"]["path"].get<std::string>();
-    if (surface.is_relative())
-      base["geometry"]["path"] =
-          (fs::path(s.base_scene_path).parent_path() / surface).lexically_normal().string();
-  }
+  const fs::path base_dir = fs::path(s.base_scene_path).parent_path();
+  absolute_surface(base, base_dir);
   if (!base.contains("name")) base["name"] = fs::path(s.base_scene_path).stem().string();
 
   const json& axes = spec.value("axes", json());
@@ -247,6 +316,17 @@ Sweep load_sweep(const std::string& path) {
     s.axes.push_back(read_axis(r, axes[i], P, base));
     if (!pointers.insert(s.axes.back().pointer).second)
       r.fail(P + ".pointer", axes[i]["pointer"], "is already an axis; each key may vary along one axis only");
+    // An axis inside another's value would be overwritten by it, or overwrite part of it, and the table
+    // would show a value that never ran.
+    for (std::size_t j = 0; j < i; ++j) {
+      const std::string &a = s.axes[j].pointer, &b = s.axes[i].pointer;
+      const bool b_in_a = b.size() > a.size() && b.compare(0, a.size(), a) == 0 && b[a.size()] == '/';
+      const bool a_in_b = a.size() > b.size() && a.compare(0, b.size(), b) == 0 && a[b.size()] == '/';
+      if (b_in_a || a_in_b)
+        r.fail(P + ".pointer", axes[i]["pointer"],
+               std::string(b_in_a ? "lies inside" : "contains") + " axes[" + std::to_string(j) +
+                   "].pointer " + a + "; one axis may not vary a key inside another's");
+    }
   }
 
   // The members: every combination (the last axis fastest), or the i-th value of every axis.
@@ -257,6 +337,9 @@ Sweep load_sweep(const std::string& path) {
         r.fail("axes[" + std::to_string(i) + "]", axes[i],
                "has " + std::to_string(s.axes[i].values.size()) + " values, axes[0] has " +
                    std::to_string(s.axes[0].values.size()) + ": zipped axes need equal lengths");
+    if (s.axes[0].values.size() > kMaxMembers)
+      r.fail("axes", json(s.axes[0].values.size()),
+             "the zipped axes have this many members; allowed at most " + std::to_string(kMaxMembers));
     for (std::size_t k = 0; k < s.axes[0].values.size(); ++k) picks.emplace_back(s.axes.size(), k);
   } else {
     double count = 1;
@@ -275,28 +358,52 @@ Sweep load_sweep(const std::string& path) {
   }
   std::string options_text = s.command;
   for (const auto& w : s.options) options_text += " " + w;
-  std::set<std::string> ids;
-  for (std::size_t m = 0; m < picks.size(); ++m) {
+  std::vector<json::json_pointer> where_ptr;
+  std::vector<std::vector<json>> value_json(s.axes.size());
+  for (std::size_t i = 0; i < s.axes.size(); ++i) {
+    where_ptr.emplace_back(s.axes[i].pointer);
+    for (const auto& v : s.axes[i].values) value_json[i].push_back(json::parse(v));
+  }
+  const auto where = [&](std::size_t m) {
+    std::string w;
+    for (std::size_t i = 0; i < s.axes.size(); ++i)
+      w += (w.empty() ? "" : ", ") + s.axes[i].pointer + " = " + s.axes[i].values[picks[m][i]];
+    return path + ": member " + std::to_string(m + 1) + " (" + w + "): ";
+  };
+  // Each member's scene is built and validated on its own (20-40 ms each with the scene rules): in parallel,
+  // each into its own slot, so the order and the error reported (the first member's) are as in one thread.
+  s.members.resize(picks.size());
+  for_each_index(picks.size(), [&](std::size_t m) {
     json scene = base;
-    SweepMember member;
-    std::string where;
+    SweepMember& member = s.members[m];
     for (std::size_t i = 0; i < s.axes.size(); ++i) {
-      const std::string& v = s.axes[i].values[picks[m][i]];
-      scene[json::json_pointer(s.axes[i].pointer)] = json::parse(v);
-      member.values.push_back(v);
-      where += (where.empty() ? "" : ", ") + s.axes[i].pointer + " = " + v;
+      scene[where_ptr[i]] = value_json[i][picks[m][i]];
+      member.values.push_back(s.axes[i].values[picks[m][i]]);
     }
+    absolute_surface(scene, base_dir);
     member.scene_json = scene.dump(2) + "\n";
-    member.id = content_id(member.scene_json + options_text);
     try {
       member.scene = parse_scene(member.scene_json, s.base_scene_path);
     } catch (const SceneError& e) {
-      throw SceneError(path + ": member " + std::to_string(m + 1) + " (" + where + "): " + e.what());
+      throw SceneError(where(m) + e.what());
     }
+  });
+  // The id also hashes the files the scene names (an imported surface), so that editing one runs the members
+  // again; a scene that names none keeps the id of its text alone.
+  std::map<std::string, std::string> digests;
+  std::set<std::string> ids;
+  for (std::size_t m = 0; m < s.members.size(); ++m) {
+    SweepMember& member = s.members[m];
+    std::string files;
+    if (member.scene.geometry.kind == GeometryKind::surface) {
+      const std::string& file = member.scene.geometry.surface.path;
+      auto it = digests.find(file);
+      if (it == digests.end()) it = digests.emplace(file, file_digest(file)).first;
+      files = "\nfile " + file + " " + it->second;
+    }
+    member.id = content_id(member.scene_json + options_text + files);
     if (!ids.insert(member.id).second)
-      throw SceneError(path + ": member " + std::to_string(m + 1) + " (" + where +
-                       "): the same scene as an earlier member; every member must differ");
-    s.members.push_back(std::move(member));
+      throw SceneError(where(m) + "the same scene as an earlier member; every member must differ");
   }
   return s;
 }

@@ -4,6 +4,8 @@
 // the workflow engine (Snakemake, sweeps/workflow/). The format is documented in sweep.cpp's header.
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -18,7 +20,7 @@ struct SweepAxis {
 };
 
 struct SweepMember {
-  std::string id;                   // 12 hex digits hashing the scene text, the command and its options
+  std::string id;  // 12 hex digits hashing the scene text, the files it names, the command and its options
   std::vector<std::string> values;  // one per axis, compact JSON text
   std::string scene_json;           // the member's scene (a relative geometry.path made absolute)
   Scene scene;                      // the same, validated
@@ -37,8 +39,12 @@ struct Sweep {
 
 // Reads the spec at `path` and builds every member. Throws SceneError, one line naming the spec, the field,
 // the value and what is allowed, on any problem: the spec's own fields, a pointer that names nothing in the
-// base scene, an empty axis, zipped axes of unequal length, or a member the scene rules refuse (that
-// member's scene error, prefixed with its values).
+// base scene, an empty axis, an axis inside another, zipped axes of unequal length, more than 10000
+// members, or a member the scene rules refuse (that member's scene error, prefixed with its values).
 Sweep load_sweep(const std::string& path);
+
+// f(0), ..., f(n - 1) on up to hardware_concurrency() threads (at most 8), for the members' independent
+// work; rethrows the exception of the lowest index that threw, as a loop in one thread would.
+void for_each_index(std::size_t n, const std::function<void(std::size_t)>& f);
 
 }  // namespace skinfem

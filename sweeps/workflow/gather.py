@@ -3,7 +3,8 @@ folder (where manifest.json is):
   gather.py member ID THREADS STATUS_PATH    one member
   gather.py gather                           the tables and plots
 
-run_member: one member's skinfem run, its status (exit code, error line, time) in members/<id>/status.json.
+run_member: one member's skinfem run, its status (exit code, error line, time, and whether the next sweep
+runs it again: killed by a signal or out of memory) in members/<id>/status.json.
 gather: results.csv (one row per member: its id, the axes' values, its status, every number of its summary
 file flattened as dotted keys), results.h5 (per member: its parameters as attributes, every numeric array of
 its summary file and every column of its CSV outputs) and plots/<axis>.png (the headline numbers against each
@@ -14,7 +15,9 @@ import datetime
 import json
 import math
 import os
+import re
 import shutil
+import signal
 import subprocess
 import sys
 import time
@@ -61,16 +64,36 @@ def run_member(manifest, member_id, threads, status_path):
     with open(log_path, "w") as log:
         rc = subprocess.call(argv, stdout=log, stderr=subprocess.STDOUT, env=env)
     wall = time.monotonic() - t0
-    if rc < 0:
-        raise RuntimeError("member %s: skinfem was killed by signal %d; it runs again on the next sweep"
-                           % (member_id, -rc))
     error = ""
-    if rc != 0:
+    if rc < 0:
+        # Completed, not failed, so that the gather still runs and shows it; "retry" runs it again on the
+        # next sweep (a kill is no verdict on the member).
+        error = "killed by signal %d (%s)" % (-rc, signal_name(-rc))
+    elif rc != 0:
         with open(log_path) as log:
             lines = [l.strip() for l in log if l.startswith("skinfem:")]
         error = lines[-1] if lines else "exit code %d, no error line (see %s)" % (rc, log_path)
     write_json_atomic(status_path, {"id": member_id, "exit_code": rc, "error": error, "wall_s": wall,
-                                    "started_utc": started, "argv": argv})
+                                    "started_utc": started, "argv": argv,
+                                    "retry": rc < 0 or out_of_memory(error)})
+
+
+def signal_name(number):
+    try:
+        return signal.Signals(number).name
+    except ValueError:
+        return "unknown"
+
+
+# Out of memory is the machine's state (and the other jobs'), not the member's: MUMPS's INFOG(1) = -9 (its
+# work array too small) or -13 (an allocation failed), a refusal of a factorization or mesh larger than the
+# memory then available (fem/mumps_ldlt.cpp, pipeline/resources.cpp: "... GB available; coarsen ..."), or an
+# allocation that failed elsewhere. Such a member runs again on the next sweep; --max-dofs refusals do not.
+OUT_OF_MEMORY = re.compile(r"INFOG\(1\) = -(9|13)\b|GB available; coarsen |std::bad_alloc")
+
+
+def out_of_memory(error):
+    return bool(OUT_OF_MEMORY.search(error))
 
 
 def flatten(value, prefix=""):

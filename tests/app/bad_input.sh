@@ -312,6 +312,10 @@ bad_spec sweep_name_climbs '{"name": "..", "scene": "base.json", "command": "kfi
   'name = "..": must be a file name of 1 to 100 characters'
 bad_spec sweep_range '{"scene": "base.json", "command": "kfit", "axes": [{"pointer": "/material/nu", "range": {"from": 0.3, "to": 0.5, "count": 1}}]}' \
   'axes\[0\].range.count = 1: must be an integer in \[2, 10000\]'
+bad_spec sweep_nested_axes '{"scene": "base.json", "command": "kfit", "axes": [{"pointer": "/sensors/positions", "values": [[[0, 0]]]}, {"pointer": "/sensors/positions/0/0", "values": [0.5]}]}' \
+  'axes\[1\].pointer = "/sensors/positions/0/0": lies inside axes\[0\].pointer /sensors/positions'
+bad_spec sweep_error_scales '{"scene": "base.json", "command": "report", "options": {"error_scales": [1.41, 2]}, "axes": [{"pointer": "/material/nu", "values": [0.4]}]}' \
+  'options.error_scales = \[1.41,2\]: must be an array of at least two mesh scales in \(1, 4\], strictly decreasing'
 
 echo "$passed passed, $fail failed"
 [ $fail -eq 0 ]

@@ -140,6 +140,91 @@ grep -q "after Snakemake was killed (it had not ended 30 s after the signal)" st
   fail "the stuck sweep did not say it killed Snakemake: $(tail -1 stuck.log)"
 [ ! -e K/.snakemake/locks ] || fail "the killed Snakemake's lock was left"
 ! pgrep -f "$tmp/stuck/bin/snakemake" >/dev/null || fail "the stuck Snakemake still runs"
+# 6c. options.grid as `skinfem green --grid` checks it: a kernel grid past green's point limit is refused
+# for the member, in one line, before anything is written.
+cat >grid.json <<'JSON'
+{"scene": "base.json", "command": "green", "options": {"grid": 0.01},
+ "axes": [{"pointer": "/material/nu", "values": [0.45, 0.5]}]}
+JSON
+rc=0
+"$skinfem" sweep grid.json --out G --dry-run >grid.log 2>&1 || rc=$?
+[ "$rc" -eq 2 ] && [ "$(wc -l <grid.log)" -eq 1 ] && [ ! -e G ] &&
+  grep -q "member 1 (/material/nu = 0.45): --grid = 0.01: the kernel grid .* allowed at most 1e6 points" grid.log ||
+  fail "a kernel grid past green's limit: rc $rc, $(cat grid.log)"
+# 6d. One sweep per folder, none outliving skinfem (stand-in Snakemakes): a second sweep into a folder where
+# one runs is refused in one line and writes nothing; a SIGKILLed skinfem's Snakemake gets SIGTERM and still
+# holds the folder's lock (it inherited it); Snakemake's lock left by a killed run is removed before the next.
+mkdir -p hold/bin L/.snakemake/locks
+touch L/.snakemake/locks/0.input.lock
+cat >hold/bin/snakemake <<'SH'
+#!/bin/bash
+while [ $# -gt 0 ]; do [ "$1" = --directory ] && dir=$2; shift; done
+if [ -e "$dir/.snakemake/locks" ]; then echo present; else echo absent; fi >"$HOLD.locks"
+trap 'if flock -n "$dir/.skinfem-sweep.lock" true; then echo free; else echo held; fi >"$HOLD.term"; kill $child; exit 143' TERM
+sleep 300 &
+child=$!
+wait
+SH
+chmod +x hold/bin/snakemake
+HOLD="$tmp/hold" PATH="$tmp/hold/bin:$PATH" "$skinfem" sweep spec.json --out L --cores 1 >hold.log 2>&1 &
+pid=$!
+for _ in $(seq 1 200); do [ -e hold.locks ] && break; sleep 0.05; done
+[ "$(cat hold.locks 2>/dev/null)" = absent ] || fail "Snakemake's stale lock was there when it started: $(cat hold.log)"
+grep -q "removed L/.snakemake/locks, left by a Snakemake that did not end cleanly" hold.log ||
+  fail "the stale lock's removal was not said: $(cat hold.log)"
+cp L/manifest.json manifest.before
+rc=0
+"$skinfem" sweep zip.json --out L --dry-run >second.log 2>&1 || rc=$?
+[ "$rc" -ne 0 ] && [ "$(wc -l <second.log)" -eq 1 ] &&
+  grep -q "^skinfem: --out L: another skinfem sweep is running there" second.log ||
+  fail "a second sweep into a running sweep's folder: rc $rc, $(cat second.log)"
+cmp -s L/manifest.json manifest.before || fail "the second sweep rewrote the running sweep's manifest"
+kill -KILL $pid
+{ wait $pid; } 2>/dev/null || true
+for _ in $(seq 1 100); do [ -e hold.term ] && break; sleep 0.05; done
+[ "$(cat hold.term 2>/dev/null)" = held ] ||
+  fail "after skinfem's SIGKILL, Snakemake got no SIGTERM or did not hold the lock ($(cat hold.term 2>/dev/null))"
+for _ in $(seq 1 100); do pgrep -f "$tmp/hold/bin/snakemake" >/dev/null || break; sleep 0.05; done
+"$skinfem" sweep spec.json --out L --dry-run >third.log 2>&1 || fail "the folder stayed locked: $(cat third.log)"
+# 6e. Members killed by a signal or out of memory (a stand-in skinfem in the manifest, on Debian's Snakemake):
+# their rows say so, the gather runs, and the next sweep runs them again; a member refused for its input
+# stays done.
+cat >oom.json <<'JSON'
+{"scene": "base.json", "command": "kfit", "options": {"path": "meridian"},
+ "axes": [{"pointer": "/material/nu", "values": [0.4, 0.45, 0.48, 0.5]}]}
+JSON
+cat >standin.sh <<'SH'
+#!/bin/bash
+mkdir -p "$4"
+if grep -q '"nu": 0.45' "$2"; then kill -KILL $$; fi
+if grep -q '"nu": 0.48' "$2"; then echo "skinfem: MUMPS job 2 failed: INFOG(1) = -9, INFOG(2) = 4312"; exit 1; fi
+if grep -q '"nu": 0.5' "$2"; then echo "skinfem: scene.json: material.nu = 0.5: refused"; exit 2; fi
+echo '{"k_central": 1.5, "k_lsq_line": 1.4}' >"$4/kfit.json"
+SH
+chmod +x standin.sh
+"$skinfem" sweep oom.json --out M --dry-run >oom1.log
+snakefile=$(sed -n 's/.* --snakefile \([^ ]*\) .*/\1/p' oom1.log)
+/usr/bin/python3 -c "
+import json; m = json.load(open('M/manifest.json')); m['skinfem'] = '$tmp/standin.sh'
+json.dump(m, open('M/manifest.json', 'w'))"
+(cd M && snakemake --snakefile "$snakefile" --cores 2 --keep-going >../oom2.log 2>&1) ||
+  fail "Snakemake failed on a killed member: $(tail -3 oom2.log)"
+/usr/bin/python3 - <<'PY' || exit 1
+import csv, json
+rows = {r["material.nu"]: r for r in csv.DictReader(open("M/results.csv"))}
+assert rows["0.45"]["exit_code"] == "-9" and rows["0.45"]["error"] == "killed by signal 9 (SIGKILL)", rows["0.45"]
+assert rows["0.48"]["exit_code"] == "1" and "INFOG(1) = -9" in rows["0.48"]["error"], rows["0.48"]
+assert rows["0.5"]["exit_code"] == "2" and rows["0.4"]["k_central"] == "1.5", rows
+retry = {r["material.nu"]: json.load(open("M/members/%s/status.json" % r["id"]))["retry"] for r in rows.values()}
+assert retry == {"0.4": False, "0.45": True, "0.48": True, "0.5": False}, retry
+print("killed and out-of-memory members: in the table, marked to retry")
+PY
+mkdir -p list/bin
+printf '#!/bin/bash\nls M/members/*/status.json >listed.txt\n' >list/bin/snakemake
+chmod +x list/bin/snakemake
+PATH="$tmp/list/bin:$PATH" "$skinfem" sweep oom.json --out M >oom3.log 2>&1 || fail "retry: $(tail -2 oom3.log)"
+grep -q "4 members .*, 2 already done, 2 to retry;" oom3.log || fail "retry: $(head -1 oom3.log)"
+[ "$(wc -l <listed.txt)" -eq 2 ] || fail "Snakemake started with $(wc -l <listed.txt) statuses, want the 2 not to retry"
 # 7. The cluster route without a cluster (with --profile; Release only: it is Snakemake's route, not our C++,
 # and its polling makes it 30 s): the same sweep through a Snakemake profile whose submit command is bash
 # (each job script runs where it is submitted) gives the same table as the local run.

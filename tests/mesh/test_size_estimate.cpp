@@ -10,6 +10,8 @@
 
 #include "mesh/build.hpp"
 #include "mesh/size_estimate.hpp"
+#include "mesh/sizing.hpp"
+#include "scene/load.hpp"
 
 namespace skinfem {
 namespace {
@@ -32,6 +34,22 @@ void expect_close(const Scene& s, const char* what) {
   const double actual = build_mesh(s).num_tets();
   EXPECT_GT(e.tets / actual, 0.6) << what << ": estimate " << e.tets << ", actual " << actual;
   EXPECT_LT(e.tets / actual, 1.6) << what << ": estimate " << e.tets << ", actual " << actual;
+}
+
+// The estimate samples sizes a column at a time (SizingField::in_column, which skips regions that cannot
+// win): the same values as in_volume point by point, bit for bit, on a scene with regions through the skin,
+// at its top (the contact zone) and at its base (the sensor discs, refine_sensors).
+TEST(SizeEstimate, AColumnsSizesAreThePointSizes) {
+  const Scene scene = load_scene(std::string(SKINFEM_SOURCE_DIR) + "/scenes/candelier2011.json");
+  const SizingField size(scene);
+  const double z[] = {0.0, 0.01, 0.3, 1.0, 2.5, 4.0, 10.0};
+  double column[7];
+  for (double x = -9.5; x <= 9.5; x += 0.73)
+    for (double y = -9.5; y <= 9.5; y += 0.61) {
+      size.in_column(x, y, z, 7, column);
+      for (int k = 0; k < 7; ++k)
+        ASSERT_EQ(column[k], size.in_volume(x, y, z[k])) << x << ", " << y << ", " << z[k];
+    }
 }
 
 TEST(SizeEstimate, ThickFlatLayer) { expect_close(layer(3.0, 0.3), "3 mm layer"); }

@@ -160,3 +160,114 @@ TEST(Sweep, BadSpecsAreRefusedInOneLine) {
   }
   EXPECT_NE(refused("no_scene", R"({"command": "kfit", "axes": []})").find("scene"), std::string::npos);
 }
+
+TEST(Sweep, AStepRangeEndsAtItsEndNeverBeyond) {
+  // from + i·step rounds (0.1 + 2 × 0.1 = 0.30000000000000004): the last value is `to` when that close to it.
+  const struct {
+    double from, to, step;
+    std::vector<double> want;
+  } ranges[] = {{0.1, 0.3, 0.1, {0.1, 0.2, 0.3}},
+                {0.7, 1.0, 0.1, {0.7, 0.8, 0.9, 1.0}},
+                {0.3, 0.9, 0.3, {0.3, 0.6, 0.9}},
+                {1.0, 2.05, 0.5, {1.0, 1.5, 2.0}}};
+  int k = 0;
+  for (const auto& g : ranges) {
+    char spec[256];
+    std::snprintf(spec, sizeof spec, R"({"scene": "skins/base.json", "command": "green",
+      "axes": [{"pointer": "/material/E", "range": {"from": %.17g, "to": %.17g, "step": %.17g}}]})",
+                  g.from, g.to, g.step);
+    const Sweep s = load_sweep(write_spec("step_" + std::to_string(k++), spec));
+    ASSERT_EQ(s.members.size(), g.want.size()) << spec;
+    for (std::size_t m = 0; m < g.want.size(); ++m) {
+      EXPECT_LE(s.members[m].scene.material.E, g.to) << spec;
+      EXPECT_NEAR(s.members[m].scene.material.E, g.want[m], 1e-12) << spec;
+    }
+    if (g.want.back() == g.to) {
+      EXPECT_EQ(s.members.back().scene.material.E, g.to) << spec;
+    }
+  }
+}
+
+TEST(Sweep, AMembersNameFollowsTheSurfaceItImports) {
+  const std::string spec = write_spec("surface_edit", R"({"scene": "skins/dome.json", "command": "kfit",
+    "axes": [{"pointer": "/material/nu", "values": [0.5]}]})");
+  const fs::path skins = fs::path(spec).parent_path() / "skins";
+  fs::copy_file(fs::path(SKINFEM_SOURCE_DIR) / "scenes" / "dome.stl", skins / "dome.stl",
+                fs::copy_options::overwrite_existing);
+  std::ofstream(skins / "dome.json") << R"({"geometry": {"type": "surface", "path": "dome.stl"},
+    "material": {"E": 3.0, "nu": 0.5}, "sensors": {"positions": [[0.0, 0.0]], "disc_diameter": 0.2},
+    "mesh": {"h_min": 0.6, "growth": 1.5, "h_max": 3.0}})";
+  const std::string before = load_sweep(spec).members[0].id;
+  EXPECT_EQ(load_sweep(spec).members[0].id, before);
+  std::ofstream(skins / "dome.stl", std::ios::app) << "\n";
+  EXPECT_NE(load_sweep(spec).members[0].id, before) << "an edited surface kept its member's name";
+}
+
+TEST(Sweep, ARelativeSurfaceOnAnAxisIsFoundFromTheMembersFolder) {
+  const std::string spec = write_spec("surface_axis", R"({"scene": "skins/dome.json", "command": "kfit",
+    "axes": [{"pointer": "/geometry/path", "values": ["dome.stl", "dome2.stl"]}]})");
+  const fs::path skins = fs::path(spec).parent_path() / "skins";
+  for (const char* name : {"dome.stl", "dome2.stl"})
+    fs::copy_file(fs::path(SKINFEM_SOURCE_DIR) / "scenes" / "dome.stl", skins / name,
+                  fs::copy_options::overwrite_existing);
+  std::ofstream(skins / "dome.json") << R"({"geometry": {"type": "surface", "path": "dome.stl"},
+    "material": {"E": 3.0, "nu": 0.5}, "sensors": {"positions": [[0.0, 0.0]], "disc_diameter": 0.2},
+    "mesh": {"h_min": 0.6, "growth": 1.5, "h_max": 3.0}})";
+  const Sweep s = load_sweep(spec);
+  ASSERT_EQ(s.members.size(), 2u);
+  for (int m = 0; m < 2; ++m) {
+    const std::string expected = (skins / (m == 0 ? "dome.stl" : "dome2.stl")).lexically_normal().string();
+    EXPECT_NE(s.members[m].scene_json.find("\"" + expected + "\""), std::string::npos)
+        << s.members[m].scene_json;
+    EXPECT_EQ(s.members[m].scene.geometry.surface.path, expected);
+  }
+}
+
+TEST(Sweep, OptionsAreCheckedAsTheCommandLineChecksThem) {
+  const std::string head =
+      R"({"scene": "skins/base.json", "command": "report", "axes": [{"pointer": "/material/nu", "values": [0.5]}], )";
+  // --error-scales: two levels at least, each in (1, 4], coarse to fine, none twice.
+  for (const char* bad : {"[2]", "[1.41, 2]", "[2, 2]", "[5, 2]", "[2, 1]"})
+    EXPECT_NE(refused(std::string("scales") + std::to_string(std::string(bad).size()) + bad[1],
+                      head + R"("options": {"error_scales": )" + bad + "}}")
+                  .find("options.error_scales = [" + std::string(bad).substr(1, 1)),
+              std::string::npos)
+        << bad;
+  EXPECT_EQ(
+      load_sweep(write_spec("scales_ok", head + R"("options": {"error_scales": [3, 2, 1.41]}})")).options,
+      (std::vector<std::string>{"--error-scales", "3,2,1.4099999999999999"}));
+  // With no_error_bars the command line does not look at them.
+  EXPECT_EQ(load_sweep(write_spec("scales_off",
+                                  head + R"("options": {"error_scales": [0.5], "no_error_bars": true}})"))
+                .options.size(),
+            3u);
+}
+
+TEST(Sweep, ZipHasTheGridsMemberCap) {
+  std::string values = "[";
+  for (int i = 0; i <= 10000; ++i) values += (i ? ", " : "") + std::to_string(1 + i);
+  EXPECT_NE(refused("zip_size", R"({"scene": "skins/base.json", "command": "green", "combine": "zip",
+    "axes": [{"pointer": "/material/E", "values": )" +
+                                    values + "]}]}")
+                .find("axes = 10001: the zipped axes have this many members; allowed at most 10000"),
+            std::string::npos);
+}
+
+TEST(Sweep, AnAxisInsideAnotherAxisIsRefused) {
+  const std::string head = R"({"scene": "skins/base.json", "command": "green", "axes": )";
+  EXPECT_NE(refused("nested", head + R"([{"pointer": "/sensors/positions", "values": [[[0, 0]], [[1, 0]]]},
+    {"pointer": "/sensors/positions/0/0", "values": [0.5]}]})")
+                .find("axes[1].pointer = \"/sensors/positions/0/0\": lies inside axes[0].pointer "
+                      "/sensors/positions"),
+            std::string::npos);
+  EXPECT_NE(refused("nested_up", head + R"([{"pointer": "/material/nu", "values": [0.5]},
+    {"pointer": "/sensors/positions/0", "values": [[0.5, 0]]},
+    {"pointer": "/sensors", "values": [{"positions": [[0, 0]], "disc_diameter": 0.2}]}]})")
+                .find("axes[2].pointer = \"/sensors\": contains axes[1].pointer /sensors/positions/0"),
+            std::string::npos);
+  // A key whose name merely starts like another's is no nesting.
+  EXPECT_EQ(load_sweep(write_spec("not_nested", head + R"([{"pointer": "/geometry/h", "values": [3.0]},
+    {"pointer": "/geometry/half_width", "values": [20.0]}]})"))
+                .members.size(),
+            1u);
+}
