@@ -224,6 +224,21 @@ std::vector<int> align_rim_off_cut(Footprint& base, const Footprint& top) {
 }
 }  // namespace
 
+namespace {
+// Whether a punch's outline crosses a post's, or nearly touches it (inside or out).
+bool outlines_cross(const std::vector<Circle>& punches, const std::vector<Circle>& posts,
+                    const SizingField& size) {
+  for (const Circle& p : posts)
+    for (const Circle& c : punches) {
+      const double d = std::hypot(c.centre[0] - p.centre[0], c.centre[1] - p.centre[1]);
+      // Circles this close (a tenth of the mesh size) leave CGAL's refinement slivers between them.
+      const double near = 0.1 * size(p.centre[0], p.centre[1]);
+      if (d < c.radius + p.radius + near && d > std::abs(c.radius - p.radius) - near) return true;
+    }
+  return false;
+}
+}  // namespace
+
 std::vector<Circle> post_circles(const Scene& scene) {
   std::vector<Circle> posts;
   if (scene.sensors.model == SensorModel::post)
@@ -393,9 +408,15 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
     for (int b : fp.boundary) rim.push_back({fp.points(b, 0), fp.points(b, 1)});
     return rim;
   };
+  // A punch's outline that crosses or nearly touches a post's cannot share one triangulation with it: the
+  // crossing points lie on neither circle, so the post's ring on the base is lost (and tangent circles
+  // leave CGAL slivers). Then each face gets its own, the top with the punches, the base with the posts.
+  const bool crossing = outlines_cross(circles, posts, size);
+  const bool own_faces = size.graded_in_depth() || crossing;
+  const std::vector<Circle>& base_outlines = crossing ? posts : outlines;
   // Posts are the base's: the top follows their outlines only when it lends the base its triangulation
   // (else each would stamp a small circle of faces, and of contact multipliers, on the top above it).
-  const std::vector<Circle>& top_outlines = size.graded_in_depth() ? circles : outlines;
+  const std::vector<Circle>& top_outlines = own_faces ? circles : outlines;
   Footprint top = face_footprint(shape, loop, top_size, top_outlines, half);
   std::optional<Footprint> own_base;
   // On a half with posts the base's cut is refined at the posts' ends; the top keeps its own cut points.
@@ -412,9 +433,11 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
         rim.push_back(p);
     return rim;
   };
-  for (int round = 0; size.graded_in_depth() && round < 4 && !own_base; ++round) {
+  // A crossing has no shared triangulation to fall back on: it is given more rounds to agree.
+  const int rounds = crossing ? 12 : 4;
+  for (int round = 0; own_faces && round < rounds && !own_base; ++round) {
     Footprint own = face_footprint(
-        shape, rim_of(top), [&](double x, double y) { return size.on_base(x, y); }, outlines, half);
+        shape, rim_of(top), [&](double x, double y) { return size.on_base(x, y); }, base_outlines, half);
     if (own_cuts ? !(base_of_top = align_rim_off_cut(own, top)).empty() : align_rim(own, top))
       own_base = std::move(own);
     else if (own_cuts)
@@ -422,6 +445,10 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
     else
       top = face_footprint(shape, rim_of(own), top_size, top_outlines, half);
   }
+  if (!own_base && crossing)
+    throw MeshError(
+        "a punch's outline crosses a post's and the base and top could not be given matching "
+        "rims; move the punch off the post's outline");
   if (!own_base && top_outlines.size() != outlines.size())
     top = face_footprint(shape, rim_of(top), top_size, outlines, half);
   const bool base_is_own = own_base.has_value();
