@@ -299,6 +299,7 @@ struct IndexInput {
   const validation::Crosscheck* x = nullptr;
   const pipeline::PostDesign* post = nullptr;  // what a post changes, when the skin has an axis
   std::string post_answer;
+  std::string left_out;  // what a --fast report left out; empty otherwise
 };
 
 void write_index(const std::string& dir, const Scene& scene, const IndexInput& in) {
@@ -317,6 +318,9 @@ void write_index(const std::string& dir, const Scene& scene, const IndexInput& i
     << in.dofs << " DOFs, one factorization for the chain"
     << (in.error_bars.empty() ? "" : " (and one per coarser level for the error bars)") << "; total "
     << fmt("%.1f", in.wall_total_s) << " s, peak memory " << fmt("%.0f", in.peak_rss_mb) << " MB.</p>\n";
+  if (!in.left_out.empty())
+    h << "<p><b>A fast report</b> (<code>--fast</code>): it leaves out the " << html_escape(in.left_out)
+      << ". Run <code>skinfem report</code> without it for them.</p>\n";
   if (!in.error_bars.empty()) {
     h << "<h2>Headline numbers and their discretization error</h2><table><tr><th>quantity</th><th>value</th>"
          "<th>error</th><th>unit</th><th>how the error is estimated</th></tr>\n";
@@ -542,7 +546,8 @@ void write_index(const std::string& dir, const Scene& scene, const IndexInput& i
 }
 }  // namespace
 
-int run_report(const Scene& scene, const std::string& out_dir, const std::vector<double>& error_scales) {
+int run_report(const Scene& scene, const std::string& out_dir, const std::vector<double>& error_scales,
+               bool fast) {
   pipeline::check_error_scales(error_scales);
   check_output_dir(out_dir);
   Stopwatch total;
@@ -604,12 +609,14 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
           scene.contact->direction);
       report["front_sensors"] = front_sensor_json(*index.front);
       wall["crosscheck"] = clock.seconds();
-      clock = Stopwatch();
-      auto budget = hole_budget_stage(scene, *contact, *x, out_dir + "/crosscheck",
-                                      pipeline::paper_reading_scale(kf.result));
-      report["hole_budget"] = std::move(budget.summary);
-      index.budget = std::move(budget.result);
-      wall["hole_budget"] = clock.seconds();
+      if (!fast) {
+        clock = Stopwatch();
+        auto budget = hole_budget_stage(scene, *contact, *x, out_dir + "/crosscheck",
+                                        pipeline::paper_reading_scale(kf.result));
+        report["hole_budget"] = std::move(budget.summary);
+        index.budget = std::move(budget.result);
+        wall["hole_budget"] = clock.seconds();
+      }
     }
   }
 
@@ -652,13 +659,22 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
   wall["k_sweep"] = clock.seconds();
 
   clock = Stopwatch();
-  auto post = post_design_stage(scene, out_dir + "/green");
-  report["post_design"] = post.summary;
-  if (post.summary.contains("answer")) {
-    index.post = &post.result;
-    index.post_answer = post.summary["answer"];
+  StageOutput<pipeline::PostDesign> post;
+  if (!fast) {
+    post = post_design_stage(scene, out_dir + "/green");
+    report["post_design"] = post.summary;
+    if (post.summary.contains("answer")) {
+      index.post = &post.result;
+      index.post_answer = post.summary["answer"];
+    }
+    wall["post_design"] = clock.seconds();
   }
-  wall["post_design"] = clock.seconds();
+  if (fast) {
+    index.left_out = "error bars (the coarser levels)";
+    if (scene.contact && scene.contact->sweep) index.left_out += ", the hole-signal budget of hypotheses";
+    index.left_out += " and the post design sweep";
+    report["fast"] = {{"left_out", index.left_out}};
+  }
 
   clock = Stopwatch();
   const std::string script = figures_script();
@@ -698,6 +714,14 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
   if (index.front) std::printf("  %s\n", index.front->answer.c_str());
   if (rc != 0)
     std::printf("  figures: scripts/figures.py exited with %d; index.html lists the figures written\n", rc);
+  if (!index.left_out.empty()) std::printf("  fast: left out the %s\n", index.left_out.c_str());
+  // Where the time went, longest first.
+  std::vector<std::pair<double, std::string>> stages;
+  for (const auto& [stage, t] : wall.items()) stages.push_back({t.get<double>(), stage});
+  std::sort(stages.rbegin(), stages.rend());
+  std::string line;
+  for (const auto& [t, stage] : stages) line += (line.empty() ? "" : ", ") + stage + " " + fmt("%.1f", t);
+  std::printf("  seconds per stage: %s\n", line.c_str());
   std::printf("  wrote %s/index.html, report.json\n", out_dir.c_str());
   return 0;
 }

@@ -21,7 +21,9 @@ int run_contact(const Scene& scene, const std::string& out_dir, const std::strin
 // error_scales: coarser mesh levels (every size × s, s > 1) for the error bars (defect: of the largest
 // sliding signal; report: of the headline numbers); empty: none.
 int run_defect(const Scene& scene, const std::string& out_dir, const std::vector<double>& error_scales);
-int run_report(const Scene& scene, const std::string& out_dir, const std::vector<double>& error_scales);
+// fast: without the error bars' levels, the hypothesis budget and the post design sweep.
+int run_report(const Scene& scene, const std::string& out_dir, const std::vector<double>& error_scales,
+               bool fast = false);
 int run_study(const Scene& scene, const std::string& out_dir, const std::vector<double>& scales);
 // per_period: mesh elements per ridge period on the pattern, one level each (at least 3).
 int run_ridge_study(const Scene& scene, const std::string& out_dir, std::vector<double> per_period);

@@ -116,7 +116,15 @@ int main(int argc, char** argv) {
                    "coarser levels (mesh sizes x s, s > 1) for the headline numbers' error bars")
       ->delimiter(',')
       ->capture_default_str();
-  report->add_flag("--no-error-bars", no_error_bars, "skip the coarser levels (no error bars)");
+  auto* no_bars =
+      report->add_flag("--no-error-bars", no_error_bars, "skip the coarser levels (no error bars)");
+  bool fast = false;
+  report
+      ->add_flag(
+          "--fast", fast,
+          "headline numbers and the paper's figures only: no error bars, no hypothesis budget, no post "
+          "design sweep (the page says what it left out)")
+      ->excludes(no_bars);
   defect
       ->add_option("--error-scales", error_scales,
                    "coarser levels (mesh sizes x s, s > 1) for the largest sliding signal's error bar")
@@ -173,7 +181,9 @@ int main(int argc, char** argv) {
           throw skinfem::SceneError("--ridges: " + std::to_string(l) +
                                     ": a level must give at least 3 mesh elements per ridge period");
     }
-    if ((report->parsed() || defect->parsed()) && !no_error_bars)
+    if (fast && report->count("--error-scales"))
+      throw skinfem::SceneError("--error-scales: --fast draws no error bars; give one or the other");
+    if ((report->parsed() || defect->parsed()) && !no_error_bars && !fast)
       skinfem::app::check_levels("--error-scales", error_scales, true);
     if (sweep->parsed())
       return skinfem::app::run_sweep(spec_path, sweep->count("--out") ? out_dir : "", cores, profile,
@@ -201,7 +211,8 @@ int main(int argc, char** argv) {
         return !ridge_levels.empty() ? skinfem::app::run_ridge_study(scene, out, ridge_levels)
                : chain               ? skinfem::app::run_chain_study(scene, out, scales)
                                      : skinfem::app::run_study(scene, out, scales);
-      return skinfem::app::run_report(scene, out, no_error_bars ? std::vector<double>{} : error_scales);
+      return skinfem::app::run_report(scene, out,
+                                      no_error_bars || fast ? std::vector<double>{} : error_scales, fast);
     };
     const int rc = run();
     if (rc == 0) skinfem::app::write_run_record(out, command, scene);

@@ -155,6 +155,31 @@ sys.exit(1 if bad else 0)
 PY
 # The page as a parser reads it: tables, links, figures and their captions, notation.
 /usr/bin/python3 "$(dirname "$0")/page_check.py" "$out" || fail=1
+# --fast leaves out the error bars, the hypothesis budget and the post design, and says so on the page, in
+# report.json and on the terminal; what it keeps (the headline numbers, the crosscheck) is the full report's.
+if "$skinfem" report "$tmp/scene.json" --fast --out "$tmp/fast" >"$tmp/fast_stdout" 2>"$tmp/stderr"; then
+  /usr/bin/python3 - "$out" "$tmp/fast" "$tmp/fast_stdout" <<'PY' || fail=1
+import json, os, sys
+full, fast = (json.load(open(os.path.join(d, "report.json"))) for d in sys.argv[1:3])
+html = open(os.path.join(sys.argv[2], "index.html"), encoding="utf-8").read()
+bad = []
+for key in ("error_bars", "hole_budget", "post_design", "chain_study"):
+    if key in fast: bad.append(f"--fast report.json has {key}")
+for f in ("crosscheck/hole_budget.csv", "green/post_design.csv", "study/chain_study.csv"):
+    if os.path.exists(os.path.join(sys.argv[2], f)): bad.append(f"--fast wrote {f}")
+left = fast.get("fast", {}).get("left_out", "")
+if "error bars" not in left or "budget" not in left: bad.append(f"report.json fast.left_out = {left!r}")
+if "A fast report" not in html or left not in html: bad.append("index.html does not say what --fast left out")
+if f"fast: left out the {left}" not in open(sys.argv[3]).read(): bad.append("the terminal does not say it")
+for key in ("k_central", "k_lsq_line"):
+    if fast["kfit"][key] != full["kfit"][key]: bad.append(f"kfit {key}: {fast['kfit'][key]} vs {full['kfit'][key]}")
+if fast["contact"]["contact_radius_mm"] != full["contact"]["contact_radius_mm"]: bad.append("contact radius differs")
+for b in bad: print("FAIL --fast:", b)
+sys.exit(1 if bad else 0)
+PY
+else
+  echo "FAIL report --fast:"; cat "$tmp/stderr"; fail=1
+fi
 # A long sweep writes at most 201 frames per case, both ends included, and defect.csv keeps every position:
 # 450 positions, stride ceil(449/200) = 3, frames 0, 3, ..., 447 and 449.
 /usr/bin/python3 - "$tmp/scene.json" "$tmp/long.json" <<'PY'
