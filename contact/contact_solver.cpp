@@ -381,10 +381,17 @@ ContactResult ContactSolver::solve(FrictionMode mode, const std::vector<char>& e
 
 ContactResult ContactSolver::solve(FrictionMode mode, const HoleCut& cut,
                                    const std::vector<int>& warm) const {
+  const ContactResult plain = started(mode);
+  return solve(mode, cut_problem(c_, cut, plain.ratio != 0 || plain.tau != 0), warm);
+}
+
+ContactResult ContactSolver::solve(FrictionMode mode, const CutProblem& cp,
+                                   const std::vector<int>& warm) const {
   const int n = c_.zone.size();
   ContactResult out = started(mode);
   const double acting = solved_ratio(mode);
-  const CutProblem cp = cut_problem(c_, cut, out.ratio != 0 || out.tau != 0);
+  if ((out.ratio != 0 || out.tau != 0) && cp.zt_rows.rows() != static_cast<int>(cp.rows.size()))
+    throw std::logic_error("ContactSolver: a frictional cut solve needs the cut problem's tangential part");
   const Eigen::VectorXd& area = cp.area;
   const Eigen::VectorXd& q = cp.gap0;
   // Each row and column scaled by 1 / (share of the hat outside the hole): the same complementarity problem

@@ -103,6 +103,9 @@ class ContactSolver {
   // less than 1e-9 of their hat outside the hole drop out (their rows have vanished with it). The result's
   // λ_i is hat i's force over its whole area (the nodal pressure times the share outside the hole).
   ContactResult solve(FrictionMode mode, const HoleCut& cut, const std::vector<int>& warm = {}) const;
+  // The same from the cut's problem (cut_problem(condensed(), cut, true)), which depends on the hole alone:
+  // sweeps of several laws or modes over the same positions share it (HoleCuts, hole_sweep.hpp).
+  ContactResult solve(FrictionMode mode, const CutProblem& cp, const std::vector<int>& warm = {}) const;
   // A small hole as a bulge (contact/hole_dimple.hpp): the hole-free problem with the dimple's gaps opened
   // on its contact set (solved on the stored reference, set_reference), the shear-strength part cut by
   // `covered`. Throws std::invalid_argument under an interface that is not hard.

@@ -21,9 +21,22 @@ Vec2 sweep_center(const HoleSweep& sweep, int i) {
           sweep.from[1] + s * (sweep.to[1] - sweep.from[1])};
 }
 
+HoleCuts hole_cuts(const CondensedContact& condensed, const HoleSweep& sweep) {
+  if (!condensed.path) throw std::invalid_argument("hole_cuts: the condensed skin has no hole path");
+  HoleCuts out;
+  for (int i = 0; i < sweep.positions; ++i)
+    out.at.push_back(cut_problem(
+        condensed,
+        hole_cut(*condensed.path, condensed.zone.size(), Hole{sweep_center(sweep, i), sweep.hole_diameter}),
+        true));
+  return out;
+}
+
 SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const HoleSweep& sweep,
                        FrictionMode mode, const HoleDimples* dimples,
-                       const std::function<void(int, const ContactResult&)>& frame) {
+                       const std::function<void(int, const ContactResult&)>& frame, const HoleCuts* cuts) {
+  if (cuts && static_cast<int>(cuts->at.size()) != sweep.positions)
+    throw std::invalid_argument("hole_sweep: the cuts are another sweep's");
   if (sweep.model == HoleModel::bulge && !dimples)
     throw std::invalid_argument("hole_sweep: a bulge sweep needs the hole's dimples");
   const auto start = std::chrono::steady_clock::now();
@@ -41,6 +54,8 @@ SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const H
     ContactResult r;
     if (sweep.model == HoleModel::bulge) {
       r = solver.solve(mode, (*dimples)(hole[0], out.baseline.lambda));
+    } else if (cuts) {
+      r = solver.solve(mode, cuts->at[i], warm);
     } else if (const auto& path = solver.condensed().path) {
       r = solver.solve(mode, hole_cut(*path, solver.condensed().zone.size(), hole[0]), warm);
     } else {

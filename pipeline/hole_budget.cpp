@@ -1,6 +1,7 @@
 #include "pipeline/hole_budget.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include "pipeline/progress.hpp"
 
@@ -37,6 +38,13 @@ HoleBudget hole_budget(const Scene& scene, const ContactSetup& setup, const vali
   std::vector<validation::Hypothesis> hypotheses = validation::friction_hypotheses(*scene.contact);
   for (auto& h : validation::interface_hypotheses(*scene.contact, out.mean_pressure_MPa))
     hypotheses.push_back(std::move(h));
+  // The interface hypotheses sweep resolved holes over the same positions: one set of cut problems for
+  // all of them and both modes.
+  std::optional<contact::HoleCuts> cuts;
+  if (setup.condensed->path) {
+    progress("hole budget: the resolved hole's cut problems");
+    cuts = contact::hole_cuts(*setup.condensed, *scene.contact->sweep);
+  }
   int best_met = -1;
   std::string best;
   for (const validation::Hypothesis& h : hypotheses) {
@@ -44,7 +52,7 @@ HoleBudget hole_budget(const Scene& scene, const ContactSetup& setup, const vali
     try {
       out.results.push_back(validation::run_hypothesis(h, *setup.condensed, setup.mirror.get(), setup.mesh(),
                                                        *setup.top, *scene.contact->sweep, scene.material,
-                                                       base));
+                                                       base, cuts ? &*cuts : nullptr));
     } catch (const std::runtime_error& e) {
       out.skipped.push_back({h, e.what()});
       continue;

@@ -258,7 +258,7 @@ std::vector<Hypothesis> interface_hypotheses(const ContactLoad& scene_load, doub
 HypothesisResult run_hypothesis(const Hypothesis& h, const contact::CondensedContact& condensed,
                                 const contact::MirrorView* mirror, const TetMesh& mesh,
                                 const PlanarFaceIndex& top, const HoleSweep& sweep, const Material& material,
-                                FactsInput base) {
+                                FactsInput base, const contact::HoleCuts* cuts) {
   const auto start = std::chrono::steady_clock::now();
   HypothesisResult out;
   out.hypothesis = h;
@@ -294,7 +294,9 @@ HypothesisResult run_hypothesis(const Hypothesis& h, const contact::CondensedCon
     hyp_sweep.model = HoleModel::resolved;
   }
   for (int c = 0; c < 2; ++c) {
-    out.signals[c] = contact::hole_sweep(solver, mesh, hyp_sweep, modes[c], &dimples).varsigma;
+    out.signals[c] = contact::hole_sweep(solver, mesh, hyp_sweep, modes[c], &dimples, {},
+                                         hyp_sweep.model == HoleModel::resolved ? cuts : nullptr)
+                         .varsigma;
     if (base.reading_scale.size()) out.signals[c] *= base.reading_scale.cwiseInverse().asDiagonal();
   }
   base.fe = out.signals;

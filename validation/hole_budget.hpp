@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "contact/contact_solver.hpp"
+#include "contact/hole_sweep.hpp"
 #include "fem/face_index.hpp"
 
 namespace skinfem::validation {
@@ -94,10 +95,11 @@ struct HypothesisResult {
 // (then `condensed` needs its hole path: std::runtime_error otherwise). mesh, top: the whole mesh and its top
 // index; material: the skin's (a bulge sweep's). Throws std::runtime_error when the contact reaches the
 // candidate zone's edge (a multiplier next to a face outside the zone is active): the zone would cut it, so
-// the hypothesis needs a larger contact.zone_radius.
+// the hypothesis needs a larger contact.zone_radius. cuts: the resolved sweep's cut problems
+// (contact::hole_cuts), shared by the hypotheses; none: computed per position.
 HypothesisResult run_hypothesis(const Hypothesis& h, const contact::CondensedContact& condensed,
                                 const contact::MirrorView* mirror, const TetMesh& mesh,
                                 const PlanarFaceIndex& top, const HoleSweep& sweep, const Material& material,
-                                FactsInput base);
+                                FactsInput base, const contact::HoleCuts* cuts = nullptr);
 
 }  // namespace skinfem::validation
