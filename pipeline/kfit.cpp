@@ -7,6 +7,7 @@
 
 #include "green/kfit.hpp"
 #include "pipeline/clock.hpp"
+#include "pipeline/parallel.hpp"
 #include "pipeline/progress.hpp"
 
 namespace skinfem::pipeline {
@@ -29,36 +30,29 @@ KfitResult kfit(const Scene& scene, const SensorGreens& greens, LayerLoad load) 
   const int ns = static_cast<int>(scene.sensors.positions.size());
   // On a cap solved in 3D, the first sensor on its axis is checked against the meridian path.
   const int axis = axis_sensor(scene, greens);
+  // Sensors at the same thickness (a cap's mirror pairs) share their gains' meridian solves, made first
+  // and in order (MUMPS).
   std::map<double, SensorGains> gains_at;  // by thickness
-  for (int s = 0; s < ns; ++s) {
-    progress_step("kfit: calibration scans", s, ns, clock.seconds());
-    KfitSensor k;
+  for (int s = 0; s < ns; ++s)
+    if (!gains_at.count(greens.thickness[s]))
+      gains_at[greens.thickness[s]] = sensor_gains(scene.sensors, scene.material.nu, greens.thickness[s]);
+  std::vector<KfitSensor> ks(ns);
+  std::vector<green::ScanProfile> profs(ns);
+  // One sensor's scan and fits: independent of the others' (the 3D maps are read only), so they run on the
+  // machine's cores; each sensor's numbers do not depend on the thread that computes them.
+  const auto scan = [&](int s) {
+    KfitSensor& k = ks[s];
     k.sensor = s + 1;
     k.x_mm = scene.sensors.positions[s][0];
     k.y_mm = scene.sensors.positions[s][1];
     const double h = k.h_mm = greens.thickness[s];
-    const auto prof =
+    const auto& prof = profs[s] =
         green::scan_profile(greens.of(s), load, radius, greens.scan_half_width[s], scene.calibration.spacing);
     k.scan_half_width_mm = prof.offset_x.back();
-    // Sensors at the same thickness (a cap's mirror pairs) share their gains' meridian solves.
-    if (!gains_at.count(h)) gains_at[h] = sensor_gains(scene.sensors, scene.material.nu, h);
-    k.gains = gains_at[h];
+    k.gains = gains_at.at(h);
     k.fe = green::fit_profile(prof.offset_x, prof.point, h, k.gains.gains);
-    if (greens.coarse_at) {
-      // The k fits again at half the resolution (point values on the fit window |x| ≤ 3h): the change bounds
-      // the error, the meridian converging at order ≥ 2 (tests/green/test_meridian).
-      std::vector<double> xs;
-      std::vector<green::GreenSample> coarse;
-      for (double x : prof.offset_x)
-        if (std::abs(x) <= 3 * h + 1e-12)
-          xs.push_back(x), coarse.push_back(greens.coarse_at(s, false, x, 0, load, radius));
-      const green::KReport ck = green::fit_profile(xs, coarse, h, k.gains.gains);
-      k.k_central_change_from_half_resolution = k.fe.k_central / ck.k_central - 1;
-      k.k_lsq_line_change_from_half_resolution = k.fe.k_lsq_line / ck.k_lsq_line - 1;
-    }
     for (size_t c = 0; c < 4; ++c)
       k.peak_point_per_mm2[c] = green::peak_abs(prof.point, green::kComponents[c]);
-    if (s == axis) r.meridian_check = k.meridian_check = meridian_check(scene, s, prof, load, radius, h);
     // A fit whose best thickness is its search bound has no answer: the sensor says why, kfit goes on.
     try {
       if (r.post) {
@@ -88,6 +82,27 @@ KfitResult kfit(const Scene& scene, const SensorGreens& greens, LayerLoad load) 
         k.peak_point_exact_per_mm2[c] = green::peak_abs(exact, green::kComponents[c]);
       }
     }
+  };
+  // The meridian path's maps are evaluated on one thread (its modes keep their own accounts).
+  run_indexed(ns, greens.path == "3d", scan,
+              [&](int done) { progress_step("kfit: calibration scans", done, ns, clock.seconds()); });
+  for (int s = 0; s < ns; ++s) {
+    KfitSensor& k = ks[s];
+    const auto& prof = profs[s];
+    const double h = k.h_mm;
+    if (greens.coarse_at) {
+      // The k fits again at half the resolution (point values on the fit window |x| ≤ 3h): the change bounds
+      // the error, the meridian converging at order ≥ 2 (tests/green/test_meridian).
+      std::vector<double> xs;
+      std::vector<green::GreenSample> coarse;
+      for (double x : prof.offset_x)
+        if (std::abs(x) <= 3 * h + 1e-12)
+          xs.push_back(x), coarse.push_back(greens.coarse_at(s, false, x, 0, load, radius));
+      const green::KReport ck = green::fit_profile(xs, coarse, h, k.gains.gains);
+      k.k_central_change_from_half_resolution = k.fe.k_central / ck.k_central - 1;
+      k.k_lsq_line_change_from_half_resolution = k.fe.k_lsq_line / ck.k_lsq_line - 1;
+    }
+    if (s == axis) r.meridian_check = k.meridian_check = meridian_check(scene, s, prof, load, radius, h);
     r.sensors.push_back(std::move(k));
   }
   r.wall["profiles"] = clock.seconds();
