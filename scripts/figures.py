@@ -518,13 +518,25 @@ def pareto(d):
     return fig
 
 
+_BUDGET_TABLES = {}
+
+
+def budget_tables(d):
+    """The hypotheses' signals and the paper's model, read once for every budget figure (3.6 MB of CSV on the
+    default scene; main() reads them before the workers fork, which then share them)."""
+    if d not in _BUDGET_TABLES:
+        _BUDGET_TABLES[d] = (
+            read_csv(os.path.join(d, "crosscheck/hole_budget_signals.csv"),
+                     {"hypothesis": text, "case": one_of(*CASES), "u_mm": number, "sensor": sensor_number,
+                      "varsigma_z_kPa": number, "varsigma_x_kPa": number}),
+            read_csv(os.path.join(d, "crosscheck/defect.csv"),
+                     {"case": one_of(*CASES), "variant": text, "u_mm": number, "sensor": sensor_number,
+                      "varsigma_z_kPa": number, "varsigma_x_kPa": number}))
+    return _BUDGET_TABLES[d]
+
+
 def fig_budget(d, hypothesis):
-    t = read_csv(os.path.join(d, "crosscheck/hole_budget_signals.csv"),
-                 {"hypothesis": text, "case": one_of(*CASES), "u_mm": number, "sensor": sensor_number,
-                  "varsigma_z_kPa": number, "varsigma_x_kPa": number})
-    m = read_csv(os.path.join(d, "crosscheck/defect.csv"),
-                 {"case": one_of(*CASES), "variant": text, "u_mm": number, "sensor": sensor_number,
-                  "varsigma_z_kPa": number, "varsigma_x_kPa": number})
+    t, m = budget_tables(d)
     sensors = sorted(set(t["sensor"].tolist()))
     fig, axes = plt.subplots(2, len(sensors), figsize=(2.3 * len(sensors) + 1, 5.4), squeeze=False, sharex=True)
     for row, comp in enumerate(("z", "x")):
@@ -641,6 +653,13 @@ def main(argv):
     except InputError as e:
         print(f"figures: error: {e}", file=sys.stderr)
         return 2
+    budget = [f for f in _FIGURES if f[0].startswith("budget_")]
+    if budget and all(os.path.isfile(os.path.join(d, f)) for f in budget[0][1]):
+        try:
+            budget_tables(d)
+        except InputError as e:
+            print(f"figures: error: {e}", file=sys.stderr)
+            return 2
     # Each figure is independent: drawn on the machine's cores in forked workers, reported in list order.
     workers = min(len(os.sched_getaffinity(0)), len(_FIGURES))
     if workers > 1:
