@@ -159,16 +159,18 @@ touch L/.snakemake/locks/0.input.lock
 cat >hold/bin/snakemake <<'SH'
 #!/bin/bash
 while [ $# -gt 0 ]; do [ "$1" = --directory ] && dir=$2; shift; done
-if [ -e "$dir/.snakemake/locks" ]; then echo present; else echo absent; fi >"$HOLD.locks"
-trap 'if flock -n "$dir/.skinfem-sweep.lock" true; then echo free; else echo held; fi >"$HOLD.term"; kill $child; exit 143' TERM
+# The handler first: the test kills skinfem as soon as it sees $HOLD.locks.
+trap 'if flock -n "$dir/.skinfem-sweep.lock" true; then echo free; else echo held; fi >"$HOLD.term.tmp"; mv "$HOLD.term.tmp" "$HOLD.term"; kill $child; exit 143' TERM
 sleep 300 &
 child=$!
+if [ -e "$dir/.snakemake/locks" ]; then echo present; else echo absent; fi >"$HOLD.locks.tmp"
+mv "$HOLD.locks.tmp" "$HOLD.locks"
 wait
 SH
 chmod +x hold/bin/snakemake
 HOLD="$tmp/hold" PATH="$tmp/hold/bin:$PATH" "$skinfem" sweep spec.json --out L --cores 1 >hold.log 2>&1 &
 pid=$!
-for _ in $(seq 1 200); do [ -e hold.locks ] && break; sleep 0.05; done
+for _ in $(seq 1 600); do [ -e hold.locks ] && break; sleep 0.05; done
 [ "$(cat hold.locks 2>/dev/null)" = absent ] || fail "Snakemake's stale lock was there when it started: $(cat hold.log)"
 grep -q "removed L/.snakemake/locks, left by a Snakemake that did not end cleanly" hold.log ||
   fail "the stale lock's removal was not said: $(cat hold.log)"
@@ -181,7 +183,8 @@ rc=0
 cmp -s L/manifest.json manifest.before || fail "the second sweep rewrote the running sweep's manifest"
 kill -KILL $pid
 { wait $pid; } 2>/dev/null || true
-for _ in $(seq 1 100); do [ -e hold.term ] && break; sleep 0.05; done
+# Up to 30 s: under the sanitizers, with another test on the second core, the handler can take seconds.
+for _ in $(seq 1 600); do [ -e hold.term ] && break; sleep 0.05; done
 [ "$(cat hold.term 2>/dev/null)" = held ] ||
   fail "after skinfem's SIGKILL, Snakemake got no SIGTERM or did not hold the lock ($(cat hold.term 2>/dev/null))"
 for _ in $(seq 1 100); do pgrep -f "$tmp/hold/bin/snakemake" >/dev/null || break; sleep 0.05; done
