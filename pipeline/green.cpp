@@ -9,6 +9,7 @@
 #include "mesh/shape.hpp"
 #include "mesh/surface.hpp"
 #include "pipeline/clock.hpp"
+#include "pipeline/parallel.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/scene_json.hpp"
 
@@ -116,23 +117,28 @@ GreenRun green_run(const Scene& scene, const SensorGreens& greens, const Adjoint
   clock = Stopwatch();
   const int ns = static_cast<int>(scene.sensors.positions.size());
   const int axis = axis_sensor(scene, greens);
-  for (int s = 0; s < ns; ++s) {
-    progress_step("green: calibration scans", s, ns, clock.seconds());
-    GreenScan scan;
-    scan.sensor = s + 1;
-    scan.h_mm = greens.thickness[s];
-    scan.profile = green::scan_profile(greens.of(s), LayerLoad::punch, radius, greens.scan_half_width[s],
-                                       scene.calibration.spacing);
-    if (run.flat) {
-      const green::LayerGreen layer(scan.h_mm, scene.material.nu, LayerLoad::punch, radius);
-      scan.exact_point = green::exact_profile(layer, scan.profile.offset_x);
-      scan.exact_disc = green::exact_profile(layer, scan.profile.offset_x, scene.sensors.disc_diameter);
-      scan.disc_max_diff_over_peak = green::max_error_over_peak(scan.profile.disc, scan.exact_disc);
-    }
-    if (s == axis)
-      run.meridian_check = meridian_check(scene, s, scan.profile, LayerLoad::punch, radius, scan.h_mm);
-    run.scans.push_back(std::move(scan));
-  }
+  // The scans are independent and read the 3D maps only: on the machine's cores (as kfit's).
+  std::vector<GreenScan> scans(ns);
+  run_indexed(
+      ns, greens.path == "3d",
+      [&](int s) {
+        GreenScan& scan = scans[s];
+        scan.sensor = s + 1;
+        scan.h_mm = greens.thickness[s];
+        scan.profile = green::scan_profile(greens.of(s), LayerLoad::punch, radius, greens.scan_half_width[s],
+                                           scene.calibration.spacing);
+        if (run.flat) {
+          const green::LayerGreen layer(scan.h_mm, scene.material.nu, LayerLoad::punch, radius);
+          scan.exact_point = green::exact_profile(layer, scan.profile.offset_x);
+          scan.exact_disc = green::exact_profile(layer, scan.profile.offset_x, scene.sensors.disc_diameter);
+          scan.disc_max_diff_over_peak = green::max_error_over_peak(scan.profile.disc, scan.exact_disc);
+        }
+      },
+      [&](int done) { progress_step("green: calibration scans", done, ns, clock.seconds()); });
+  if (axis >= 0 && axis < ns)
+    run.meridian_check =
+        meridian_check(scene, axis, scans[axis].profile, LayerLoad::punch, radius, scans[axis].h_mm);
+  run.scans = std::move(scans);
   run.wall["profiles"] = clock.seconds();
 
   // Maps: the 3D mesh's top (a half mesh's written whole, each node's value that of the node it mirrors: g
