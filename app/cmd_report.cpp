@@ -668,8 +668,7 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
       index.post_answer = post.summary["answer"];
     }
     wall["post_design"] = clock.seconds();
-  }
-  if (fast) {
+  } else {
     index.left_out = "error bars (the coarser levels)";
     if (scene.contact && scene.contact->sweep) index.left_out += ", the hole-signal budget of hypotheses";
     index.left_out += " and the post design sweep";

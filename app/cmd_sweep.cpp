@@ -36,6 +36,7 @@
 #include "mesh/size_estimate.hpp"
 #include "pipeline/green.hpp"
 #include "pipeline/resources.hpp"
+#include "scene/parallel.hpp"
 
 namespace skinfem::app {
 namespace {

@@ -9,9 +9,9 @@
 #include "mesh/shape.hpp"
 #include "mesh/surface.hpp"
 #include "pipeline/clock.hpp"
-#include "pipeline/parallel.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/scene_json.hpp"
+#include "scene/parallel.hpp"
 
 namespace skinfem::pipeline {
 
@@ -119,14 +119,14 @@ GreenRun green_run(const Scene& scene, const SensorGreens& greens, const Adjoint
   const int axis = axis_sensor(scene, greens);
   // The scans are independent and read the 3D maps only: on the machine's cores (as kfit's).
   std::vector<GreenScan> scans(ns);
-  run_indexed(
-      ns, greens.path == "3d",
-      [&](int s) {
+  for_each_index(
+      ns,
+      [&](std::size_t s) {
         GreenScan& scan = scans[s];
-        scan.sensor = s + 1;
+        scan.sensor = static_cast<int>(s) + 1;
         scan.h_mm = greens.thickness[s];
-        scan.profile = green::scan_profile(greens.of(s), LayerLoad::punch, radius, greens.scan_half_width[s],
-                                           scene.calibration.spacing);
+        scan.profile = green::scan_profile(greens.of(static_cast<int>(s)), LayerLoad::punch, radius,
+                                           greens.scan_half_width[s], scene.calibration.spacing);
         if (run.flat) {
           const green::LayerGreen layer(scan.h_mm, scene.material.nu, LayerLoad::punch, radius);
           scan.exact_point = green::exact_profile(layer, scan.profile.offset_x);
@@ -134,7 +134,10 @@ GreenRun green_run(const Scene& scene, const SensorGreens& greens, const Adjoint
           scan.disc_max_diff_over_peak = green::max_error_over_peak(scan.profile.disc, scan.exact_disc);
         }
       },
-      [&](int done) { progress_step("green: calibration scans", done, ns, clock.seconds()); });
+      greens.path == "3d",
+      [&](std::size_t done) {
+        progress_step("green: calibration scans", static_cast<int>(done), ns, clock.seconds());
+      });
   if (axis >= 0 && axis < ns)
     run.meridian_check =
         meridian_check(scene, axis, scans[axis].profile, LayerLoad::punch, radius, scans[axis].h_mm);

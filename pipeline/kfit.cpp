@@ -7,8 +7,8 @@
 
 #include "green/kfit.hpp"
 #include "pipeline/clock.hpp"
-#include "pipeline/parallel.hpp"
 #include "pipeline/progress.hpp"
+#include "scene/parallel.hpp"
 
 namespace skinfem::pipeline {
 
@@ -84,8 +84,11 @@ KfitResult kfit(const Scene& scene, const SensorGreens& greens, LayerLoad load) 
     }
   };
   // The meridian path's maps are evaluated on one thread (its modes keep their own accounts).
-  run_indexed(ns, greens.path == "3d", scan,
-              [&](int done) { progress_step("kfit: calibration scans", done, ns, clock.seconds()); });
+  for_each_index(
+      ns, [&](std::size_t s) { scan(static_cast<int>(s)); }, greens.path == "3d",
+      [&](std::size_t done) {
+        progress_step("kfit: calibration scans", static_cast<int>(done), ns, clock.seconds());
+      });
   for (int s = 0; s < ns; ++s) {
     KfitSensor& k = ks[s];
     const auto& prof = profs[s];

@@ -20,22 +20,19 @@
 #include "scene/sweep.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
-#include <mutex>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <thread>
 
 #include "scene/json_text.hpp"
 #include "scene/load.hpp"
+#include "scene/parallel.hpp"
 
 namespace skinfem {
 namespace {
@@ -232,36 +229,6 @@ SweepAxis read_axis(const SpecReader& r, const json& a, const std::string& P, co
 }
 
 }  // namespace
-
-void for_each_index(std::size_t n, const std::function<void(std::size_t)>& f) {
-  const std::size_t threads =
-      std::min<std::size_t>({n, 8, std::max(1u, std::thread::hardware_concurrency())});
-  std::atomic<std::size_t> next{0};
-  std::mutex mutex;
-  std::size_t failed = n;  // the lowest index that threw
-  std::exception_ptr error;
-  const auto work = [&] {
-    for (;;) {
-      const std::size_t i = next++;
-      {
-        // Indices are taken in order, so every index below a failed one has been taken and finishes.
-        const std::lock_guard<std::mutex> lock(mutex);
-        if (i >= n || i > failed) return;
-      }
-      try {
-        f(i);
-      } catch (...) {
-        const std::lock_guard<std::mutex> lock(mutex);
-        if (i < failed) failed = i, error = std::current_exception();
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
-}
 
 Sweep load_sweep(const std::string& path) {
   const SpecReader r{path};

@@ -5,7 +5,6 @@
 #pragma once
 
 #include <cstddef>
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -42,9 +41,5 @@ struct Sweep {
 // base scene, an empty axis, an axis inside another, zipped axes of unequal length, more than 10000
 // members, or a member the scene rules refuse (that member's scene error, prefixed with its values).
 Sweep load_sweep(const std::string& path);
-
-// f(0), ..., f(n - 1) on up to hardware_concurrency() threads (at most 8), for the members' independent
-// work; rethrows the exception of the lowest index that threw, as a loop in one thread would.
-void for_each_index(std::size_t n, const std::function<void(std::size_t)>& f);
 
 }  // namespace skinfem

@@ -24,6 +24,13 @@ cat >spec.json <<'JSON'
 JSON
 fail() { echo "FAIL: $*"; exit 1; }
 statuses() { find D/members -name status.json 2>/dev/null | sort; }
+# SIGTERM to a sweep's process group; it must exit with 128 + SIGTERM. terminate PID LOG WHAT
+terminate() {
+  kill -TERM -- -"$1"
+  local rc=0
+  wait "$1" || rc=$?
+  [ "$rc" -eq 143 ] || fail "$3 exited with $rc, want 143 (128 + SIGTERM): $(tail -3 "$2")"
+}
 
 # 1. Killed (SIGTERM to its process group, as a scheduler or a closed terminal does) after the first member.
 setsid "$skinfem" sweep spec.json --out D --cores 2 >run1.log 2>&1 &
@@ -35,12 +42,9 @@ for _ in $(seq 1 6000); do
   kill -0 $pid 2>/dev/null || fail "the sweep ended before its first member finished: $(tail -3 run1.log)"
   sleep 0.05
 done
-kill -TERM -- -$pid
-rc=0
-wait $pid || rc=$?
 # skinfem passes the signal to Snakemake and returns only after Snakemake has ended (its members stopped,
 # their unfinished outputs removed): the statuses counted here are final, and the run resumes at once.
-[ "$rc" -eq 143 ] || fail "the killed sweep exited with $rc, want 143 (128 + SIGTERM): $(tail -3 run1.log)"
+terminate $pid run1.log "the killed sweep"
 grep -q "stopped by signal 15 .* members done, results not gathered; the same command resumes" run1.log ||
   fail "the killed sweep did not say what it left: $(tail -2 run1.log)"
 # Snakemake and its jobs run in D (--directory): none may be left.
@@ -132,10 +136,7 @@ PATH="$tmp/stuck/bin:$PATH" setsid "$skinfem" sweep spec.json --out K --cores 2 
 pid=$!
 for _ in $(seq 1 200); do grep -q "running: snakemake" stuck.log && break; sleep 0.05; done
 sleep 0.5
-kill -TERM -- -$pid
-rc=0
-wait $pid || rc=$?
-[ "$rc" -eq 143 ] || fail "the stuck sweep exited with $rc, want 143: $(tail -2 stuck.log)"
+terminate $pid stuck.log "the stuck sweep"
 grep -q "after Snakemake was killed (it had not ended 30 s after the signal)" stuck.log ||
   fail "the stuck sweep did not say it killed Snakemake: $(tail -1 stuck.log)"
 [ ! -e K/.snakemake/locks ] || fail "the killed Snakemake's lock was left"

@@ -1,0 +1,21 @@
+// Independent work items on the machine's cores: a sweep's members, a calibration's sensors. The items must
+// share only read-only data and write their own slots, so that results do not depend on the threads.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+
+namespace skinfem {
+
+// Threads such work may use: the CPUs this process may run on, at most OMP_NUM_THREADS when that is set (a
+// sweep's member declares its threads that way).
+int worker_threads();
+
+// f(0), ..., f(n - 1) on up to worker_threads() threads when `parallel`, else in order on this one. After an
+// item throws, no item above it starts; the exception of the lowest index that threw is rethrown once every
+// thread has ended, as a loop in one thread would. done(k), if given, is called on this thread only, with k
+// items finished, before each item it takes and once at the end (progress lines).
+void for_each_index(std::size_t n, const std::function<void(std::size_t)>& f, bool parallel = true,
+                    const std::function<void(std::size_t)>& done = {});
+
+}  // namespace skinfem
