@@ -21,14 +21,21 @@ Vec2 sweep_center(const HoleSweep& sweep, int i) {
           sweep.from[1] + s * (sweep.to[1] - sweep.from[1])};
 }
 
-HoleCuts hole_cuts(const CondensedContact& condensed, const HoleSweep& sweep) {
+std::optional<HoleCuts> hole_cuts(const CondensedContact& condensed, const HoleSweep& sweep, double max_mb) {
   if (!condensed.path) throw std::invalid_argument("hole_cuts: the condensed skin has no hole path");
   HoleCuts out;
-  for (int i = 0; i < sweep.positions; ++i)
+  double bytes = 0;
+  for (int i = 0; i < sweep.positions; ++i) {
     out.at.push_back(cut_problem(
         condensed,
         hole_cut(*condensed.path, condensed.zone.size(), Hole{sweep_center(sweep, i), sweep.hole_diameter}),
         true));
+    const CutProblem& c = out.at.back();
+    for (const Eigen::MatrixXd* m : {&c.zz, &c.zt_rows, &c.zt_cols, &c.zt_whole, &c.sp, &c.st})
+      bytes += 8.0 * static_cast<double>(m->size());
+    bytes += 8.0 * static_cast<double>(c.gap0.size() + c.area.size()) + 4.0 * c.rows.size();
+    if (bytes > max_mb * 1024 * 1024) return std::nullopt;
+  }
   return out;
 }
 

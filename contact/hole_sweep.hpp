@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "contact/contact_solver.hpp"
@@ -31,11 +32,12 @@ Vec2 sweep_center(const HoleSweep& sweep, int i);
 
 // A resolved sweep's cut problems, one per position (with their tangential parts): they depend on the
 // condensed skin and the hole alone, so the sweeps of several friction laws, interfaces and modes over the
-// same positions share them (80 % of a resolved sweep's time on the default scene). About 0.4 MB each there.
+// same positions share them (80 % of a resolved sweep's time on the default scene). None (nullopt) when
+// they would hold more than max_mb (a long sweep): then each sweep computes its own, position by position.
 struct HoleCuts {
   std::vector<CutProblem> at;
 };
-HoleCuts hole_cuts(const CondensedContact& condensed, const HoleSweep& sweep);
+std::optional<HoleCuts> hole_cuts(const CondensedContact& condensed, const HoleSweep& sweep, double max_mb);
 
 // The hole per sweep.model: HoleModel::bulge through `dimples` (required then; contact/hole_dimple.hpp),
 // resolved by cutting the hats (needs solver.condensed().path, contact/hole_cut.hpp; without a path, by

@@ -39,11 +39,12 @@ HoleBudget hole_budget(const Scene& scene, const ContactSetup& setup, const vali
   for (auto& h : validation::interface_hypotheses(*scene.contact, out.mean_pressure_MPa))
     hypotheses.push_back(std::move(h));
   // The interface hypotheses sweep resolved holes over the same positions: one set of cut problems for
-  // all of them and both modes.
+  // all of them and both modes, where it fits in kMaxSharedCutsMb (the default scene's 201 take 80 MB).
+  constexpr double kMaxSharedCutsMb = 256;
   std::optional<contact::HoleCuts> cuts;
   if (setup.condensed->path) {
     progress("hole budget: the resolved hole's cut problems");
-    cuts = contact::hole_cuts(*setup.condensed, *scene.contact->sweep);
+    cuts = contact::hole_cuts(*setup.condensed, *scene.contact->sweep, kMaxSharedCutsMb);
   }
   int best_met = -1;
   std::string best;
