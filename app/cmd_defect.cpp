@@ -26,6 +26,7 @@
 #include "contact/pressure_map.hpp"
 #include "pipeline/contact_setup.hpp"
 #include "pipeline/defect.hpp"
+#include "scene/parallel.hpp"
 #include "validation/text.hpp"
 
 namespace skinfem::app {
@@ -47,18 +48,29 @@ DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> s
     if (f.is_regular_file() && f.path().extension() == ".vtp") std::filesystem::remove(f.path());
   std::ostringstream pvd;
   pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
-  // The frames pipeline::written_frame picks (the run may keep more); defect.csv keeps every position.
+  // The frames pipeline::written_frame picks (the run may keep more); defect.csv keeps every position. Each
+  // frame is its own file, written on the machine's cores (VTK's compression is most of the stage).
+  struct Frame {
+    size_t ci, k;
+    std::string file;
+  };
+  std::vector<Frame> written;
   for (size_t ci = 0; ci < run.cases.size(); ++ci)
     for (size_t k = 0; k < frames[ci].size(); ++k) {
       const int i = run.frame_positions[ci][k];
       if (!pipeline::written_frame(i, sweep.positions)) continue;
       char file[64];
       std::snprintf(file, sizeof file, "%s_%03d.vtp", run.cases[ci].c_str(), i);
+      written.push_back({ci, k, file});
       const Vec2& c = results[ci].centers[i];
-      contact::write_pressure_vtp(out_dir + "/frames/" + file, setup.mesh(), *setup.solver, frames[ci][k],
-                                  {Hole{c, sweep.hole_diameter, 0.0, sweep.hole_depth}});
       pvd << "<DataSet timestep=\"" << c[0] << "\" part=\"" << ci << "\" file=\"frames/" << file << "\"/>\n";
     }
+  for_each_index(written.size(), [&](size_t w) {
+    const Frame& f = written[w];
+    const Vec2& c = results[f.ci].centers[run.frame_positions[f.ci][f.k]];
+    contact::write_pressure_vtp(out_dir + "/frames/" + f.file, setup.mesh(), *setup.solver, frames[f.ci][f.k],
+                                {Hole{c, sweep.hole_diameter, 0.0, sweep.hole_depth}});
+  });
   pvd << "</Collection>\n</VTKFile>\n";
   std::ostringstream csv;
   csv.precision(10);

@@ -117,13 +117,22 @@ void BM_GreenScan(benchmark::State& st) {
 void BM_MeridianGreen(benchmark::State& st) {
   const double h = 3.04, s = st.range(0) / 100.0;
   int n = 0;
+  MeridianGreen::Cost cost;
+  double mesh_s = 0;
   for (auto _ : st) {
-    const MeridianGreen g(
-        meridian_mesh([&](double) { return h; }, 20 * h, MeridianSizes::for_thickness(h, s)), 0.5,
-        SideCondition::free, ReadingSite{{0, 0}, 0.2});
+    const auto t0 = std::chrono::steady_clock::now();
+    const MeridianMesh m =
+        meridian_mesh([&](double) { return h; }, 20 * h, MeridianSizes::for_thickness(h, s));
+    mesh_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const MeridianGreen g(m, 0.5, SideCondition::free, ReadingSite{{0, 0}, 0.2});
     n = g.dofs();
+    cost = g.cost();
   }
   st.counters["dofs"] = n;
+  st.counters["mesh_s"] = mesh_s;
+  st.counters["assemble_s"] = cost.assemble_s;
+  st.counters["factor_s"] = cost.factor_s;
+  st.counters["solve_s"] = cost.solve_s;
   st.SetLabel("meridian_flat x" + std::to_string(s).substr(0, 4));
 }
 // The exact layer's tensor (green/layer_exact.hpp) at scan offsets: what the crosscheck's exact kernels and

@@ -1,5 +1,7 @@
 // 2-D point location among boundary faces that form a graph over the (x, y) plane (the base, or the
-// top of a cap or flat layer): a uniform bucket grid over the faces' corner triangles.
+// top of a cap or flat layer): a uniform bucket grid over the faces' corner triangles, its cell sized by the
+// finer faces (a graded mesh's fine zone is where the loads are, so where most look-ups land), each face's
+// inverse Jacobian computed once.
 #pragma once
 
 #include <vector>
@@ -26,11 +28,15 @@ class PlanarFaceIndex {
 
  private:
   int bin(double v, double origin) const { return static_cast<int>((v - origin) / cell_); }
+  struct Corner {  // a face's first corner and the inverse of its (b − a, c − a) Jacobian
+    double ax, ay, i00, i01, i10, i11;
+  };
   const TetMesh& mesh_;
   std::vector<int> faces_;
+  std::vector<Corner> corners_;  // per entry of faces_
   double x0_ = 0, y0_ = 0, cell_ = 1;
   int nx_ = 1, ny_ = 1;
-  std::vector<std::vector<int>> buckets_;  // face indices
+  std::vector<std::vector<int>> buckets_;  // entries of faces_
 };
 
 // The skin's thickness above the base point (x, y), mm: the exact top for caps and flat layers (a ridged one:

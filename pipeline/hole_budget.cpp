@@ -3,13 +3,16 @@
 #include <algorithm>
 #include <optional>
 
+#include "pipeline/clock.hpp"
 #include "pipeline/progress.hpp"
+#include "scene/parallel.hpp"
 
 namespace skinfem::pipeline {
 
 HoleBudget hole_budget(const Scene& scene, const ContactSetup& setup, const validation::Crosscheck& x,
                        const Eigen::VectorXd& reading_scale) {
   HoleBudget out;
+  Stopwatch clock;
   int model = -1;
   for (size_t v = 0; v < x.signal_variants.size(); ++v)
     if (x.signal_variants[v].name == "paper_model") model = static_cast<int>(v);
@@ -46,18 +49,34 @@ HoleBudget hole_budget(const Scene& scene, const ContactSetup& setup, const vali
     progress("hole budget: the resolved hole's cut problems");
     cuts = contact::hole_cuts(*setup.condensed, *scene.contact->sweep, kMaxSharedCutsMb);
   }
+  // The hypotheses share only read-only data (the condensed skin, its cut problems): one per thread, each in
+  // its own slot, kept in the listed order.
+  std::vector<std::optional<validation::HypothesisResult>> runs(hypotheses.size());
+  std::vector<std::string> why(hypotheses.size());
+  for_each_index(
+      hypotheses.size(),
+      [&](std::size_t i) {
+        try {
+          runs[i] = validation::run_hypothesis(hypotheses[i], *setup.condensed, setup.mirror.get(),
+                                               setup.mesh(), *setup.top, *scene.contact->sweep,
+                                               scene.material, base, cuts ? &*cuts : nullptr);
+        } catch (const std::runtime_error& e) {
+          why[i] = e.what();
+        }
+      },
+      true,
+      [&](std::size_t done) {
+        progress_step("hole budget: hypotheses", static_cast<int>(done), static_cast<int>(hypotheses.size()),
+                      clock.seconds());
+      });
   int best_met = -1;
   std::string best;
-  for (const validation::Hypothesis& h : hypotheses) {
-    progress("hole budget: " + h.name);
-    try {
-      out.results.push_back(validation::run_hypothesis(h, *setup.condensed, setup.mirror.get(), setup.mesh(),
-                                                       *setup.top, *scene.contact->sweep, scene.material,
-                                                       base, cuts ? &*cuts : nullptr));
-    } catch (const std::runtime_error& e) {
-      out.skipped.push_back({h, e.what()});
+  for (size_t i = 0; i < hypotheses.size(); ++i) {
+    if (!runs[i]) {
+      out.skipped.push_back({hypotheses[i], why[i]});
       continue;
     }
+    out.results.push_back(std::move(*runs[i]));
     const validation::HypothesisResult& r = out.results.back();
     int met = 0;
     for (const auto& f : r.facts) met += f.met;
@@ -66,7 +85,7 @@ HoleBudget hole_budget(const Scene& scene, const ContactSetup& setup, const vali
       rough = std::max(rough, validation::roughness(r.signals[1].col(col)));
     out.facts_met.push_back(met);
     out.sliding_roughness.push_back(rough);
-    if (met > best_met) best_met = met, best = h.name;
+    if (met > best_met) best_met = met, best = hypotheses[i].name;
   }
   // The answer, from the verdicts.
   if (out.results.empty()) {

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fem/blas_threads.hpp"
 #include "pipeline/clock.hpp"
 #include "pipeline/sensor_greens.hpp"
+#include "scene/parallel.hpp"
 
 namespace skinfem::pipeline {
 
@@ -38,6 +40,25 @@ SensorDesign design(const MeridianSkin& skin, double nu, double diameter, double
       std::max(relative_change(d.zz.integral, czz.integral), relative_change(d.xx.integral, cxx.integral));
   return d;
 }
+// A design as the doubles a worker process hands back (scene/parallel.hpp), its DOFs last.
+constexpr std::size_t kDesignValues = 14;
+std::vector<double> to_values(const SensorDesign& d, int dofs) {
+  return {d.diameter,        d.height,
+          d.zz.peak,         d.zz.peak_at,
+          d.zz.half_width,   d.zz.integral,
+          d.xx.peak,         d.xx.peak_at,
+          d.xx.half_width,   d.xx.integral,
+          d.peak_change,     d.half_width_change,
+          d.integral_change, static_cast<double>(dofs)};
+}
+SensorDesign from_values(const std::vector<double>& v, int* dofs = nullptr) {
+  SensorDesign d;
+  d.diameter = v[0], d.height = v[1];
+  d.zz = {v[2], v[3], v[4], v[5]}, d.xx = {v[6], v[7], v[8], v[9]};
+  d.peak_change = v[10], d.half_width_change = v[11], d.integral_change = v[12];
+  if (dofs) *dofs = static_cast<int>(v[13]);
+  return d;
+}
 }  // namespace
 
 std::string post_design_unavailable(const Scene& scene) { return meridian_unavailable(on_axis(scene)); }
@@ -53,10 +74,24 @@ PostDesign post_design(const Scene& scene, const std::vector<double>& diameters,
   PostDesign p;
   p.skin = skin.model;
   p.sweep_scale = sweep_scale;
-  p.disc = design(skin, nu, d, 0, 1);
-  p.post = design(skin, nu, d, scene.sensors.post.height, 1, &p.dofs);
+  // Every design is independent: the disc, the post, then the sweep, on the machine's cores in separate
+  // processes (MUMPS instances are not shared between threads), each with one BLAS thread (the 2D fronts
+  // are too small for more; and the numbers then do not depend on how many processes ran).
+  struct Job {
+    double diameter, height, scale;
+  };
+  std::vector<Job> jobs = {{d, 0, 1}, {d, scene.sensors.post.height, 1}};
   for (double diameter : diameters)
-    for (double height : heights) p.sweep.push_back(design(skin, nu, diameter, height, sweep_scale));
+    for (double height : heights) jobs.push_back({diameter, height, sweep_scale});
+  const BlasThreads one(1);
+  const auto designs = map_in_processes(jobs.size(), kDesignValues, [&](std::size_t i) {
+    int dofs = 0;
+    const SensorDesign design_i = design(skin, nu, jobs[i].diameter, jobs[i].height, jobs[i].scale, &dofs);
+    return to_values(design_i, dofs);
+  });
+  p.disc = from_values(designs[0]);
+  p.post = from_values(designs[1], &p.dofs);
+  for (size_t i = 2; i < jobs.size(); ++i) p.sweep.push_back(from_values(designs[i]));
   p.seconds = clock.seconds();
   return p;
 }

@@ -1,12 +1,21 @@
 #include "scene/parallel.hpp"
 
 #include <sched.h>
+#include <signal.h>
+#include <sys/mman.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <mutex>
+#include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -55,6 +64,100 @@ void for_each_index(std::size_t n, const std::function<void(std::size_t)>& f, bo
   for (auto& t : pool) t.join();
   if (done) done(finished.load());
   if (error) std::rethrow_exception(error);
+}
+
+namespace {
+// What the children share with this process: the next index to take, then per item its status, its message
+// if it threw, and its doubles.
+struct Shared {
+  std::atomic<long> next;
+};
+constexpr std::size_t kMessage = 512;
+enum : int { kPending = 0, kDone = 1, kThrew = 2 };
+}  // namespace
+
+std::vector<std::vector<double>> map_in_processes(std::size_t n, std::size_t width,
+                                                  const std::function<std::vector<double>(std::size_t)>& f,
+                                                  const std::function<void()>& at_start) {
+  const std::size_t workers = std::min<std::size_t>(n, static_cast<std::size_t>(worker_threads()));
+  std::vector<std::vector<double>> out(n);
+  const auto here = [&] {
+    for (std::size_t i = 0; i < n; ++i) {
+      out[i] = f(i);
+      if (out[i].size() != width)
+        throw std::logic_error("map_in_processes: an item returned the wrong width");
+    }
+    return out;
+  };
+  if (workers <= 1) return here();
+  static_assert(std::atomic<long>::is_always_lock_free,
+                "a counter shared between processes must be lock-free");
+  const std::size_t status_at = sizeof(Shared), message_at = status_at + n * sizeof(int),
+                    values_at = (message_at + n * kMessage + 7) / 8 * 8,
+                    bytes = values_at + n * width * sizeof(double);
+  void* map = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+  if (map == MAP_FAILED) throw std::runtime_error("map_in_processes: cannot map shared memory");
+  char* base = static_cast<char*>(map);
+  auto* shared = new (base) Shared{{0}};
+  auto* status = reinterpret_cast<int*>(base + status_at);
+  char* messages = base + message_at;
+  auto* values = reinterpret_cast<double*>(base + values_at);
+  const pid_t parent = getpid();
+  std::vector<pid_t> children;
+  for (std::size_t w = 0; w < workers; ++w) {
+    const pid_t pid = fork();
+    if (pid < 0) break;  // the children started take every item
+    if (pid == 0) {
+      // A child: never outlives this process, never returns into the caller's stack, no exit handlers.
+      prctl(PR_SET_PDEATHSIG, SIGKILL);
+      if (getppid() != parent) _exit(1);
+      int rc = 0;
+      try {
+        if (at_start) at_start();
+        for (long i; (i = shared->next.fetch_add(1)) < static_cast<long>(n);) {
+          try {
+            const std::vector<double> v = f(static_cast<std::size_t>(i));
+            if (v.size() != width)
+              throw std::logic_error("map_in_processes: an item returned the wrong width");
+            std::memcpy(values + i * width, v.data(), width * sizeof(double));
+            status[i] = kDone;
+          } catch (const std::exception& e) {
+            std::strncpy(messages + i * kMessage, e.what(), kMessage - 1);
+            status[i] = kThrew;
+          }
+        }
+      } catch (...) {
+        rc = 1;
+      }
+      _exit(rc);
+    }
+    children.push_back(pid);
+  }
+  if (children.empty()) {  // no process could start: the work is done here
+    munmap(map, bytes);
+    return here();
+  }
+  std::string ended;
+  for (const pid_t pid : children) {
+    int st = 0;
+    while (waitpid(pid, &st, 0) < 0 && errno == EINTR) {
+    }
+    if (WIFSIGNALED(st) && ended.empty())
+      ended = "a worker process ended by signal " + std::to_string(WTERMSIG(st)) + " (" +
+              strsignal(WTERMSIG(st)) + ")";
+  }
+  std::string error;
+  for (std::size_t i = 0; i < n && error.empty(); ++i) {
+    if (status[i] == kThrew)
+      error = std::string(messages + i * kMessage);
+    else if (status[i] != kDone)
+      error = ended.empty() ? "a worker process ended before its item " + std::to_string(i) : ended;
+    else
+      out[i].assign(values + i * width, values + (i + 1) * width);
+  }
+  munmap(map, bytes);
+  if (!error.empty()) throw std::runtime_error(error);
+  return out;
 }
 
 }  // namespace skinfem

@@ -1,0 +1,87 @@
+// Work spread over threads and processes (scene/parallel.hpp): results in index order whoever computed them,
+// an item's failure reported as a loop in one thread would report it, and a worker process that dies named.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "scene/parallel.hpp"
+
+namespace skinfem {
+namespace {
+
+TEST(ForEachIndex, EveryIndexOnceAndTheLowestFailureRethrown) {
+  std::vector<std::atomic<int>> seen(100);
+  for_each_index(seen.size(), [&](std::size_t i) { ++seen[i]; });
+  for (const auto& s : seen) EXPECT_EQ(s.load(), 1);
+  try {
+    for_each_index(50, [](std::size_t i) {
+      if (i == 17 || i == 31) throw std::runtime_error("item " + std::to_string(i));
+    });
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "item 17");
+  }
+}
+
+TEST(MapInProcesses, ResultsInIndexOrderFromTheChildren) {
+  const pid_t here = getpid();
+  const auto out = map_in_processes(40, 3, [](std::size_t i) {
+    return std::vector<double>{static_cast<double>(i), 0.5 * static_cast<double>(i),
+                               static_cast<double>(getpid())};
+  });
+  ASSERT_EQ(out.size(), 40u);
+  std::set<double> pids;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    ASSERT_EQ(out[i].size(), 3u);
+    EXPECT_EQ(out[i][0], static_cast<double>(i));
+    EXPECT_EQ(out[i][1], 0.5 * static_cast<double>(i));
+    pids.insert(out[i][2]);
+  }
+  // With more than one worker the items ran in children, never here; with one, here.
+  if (worker_threads() > 1)
+    EXPECT_EQ(pids.count(static_cast<double>(here)), 0u);
+  else
+    EXPECT_EQ(pids, std::set<double>{static_cast<double>(here)});
+}
+
+TEST(MapInProcesses, TheLowestFailingItemsMessage) {
+  try {
+    map_in_processes(30, 1, [](std::size_t i) -> std::vector<double> {
+      if (i == 11 || i == 23) throw std::invalid_argument("design " + std::to_string(i) + " is not meshable");
+      return {1.0};
+    });
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "design 11 is not meshable");
+  }
+  try {
+    map_in_processes(4, 2, [](std::size_t) { return std::vector<double>{1.0}; });
+    FAIL() << "no exception";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("wrong width"), std::string::npos) << e.what();
+  }
+}
+
+TEST(MapInProcesses, AWorkerKilledIsNamed) {
+  if (worker_threads() < 2)
+    GTEST_SKIP() << "one CPU: the items run in this process, which must not be killed";
+  const pid_t here = getpid();
+  try {
+    map_in_processes(6, 1, [here](std::size_t i) {
+      if (i == 2 && getpid() != here) raise(SIGKILL);
+      return std::vector<double>{1.0};
+    });
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("signal 9"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace skinfem
