@@ -29,9 +29,9 @@
 
 namespace skinfem::app {
 
-nlohmann::json green_stage(const Scene& scene, const SensorGreens& greens, const AdjointSetup* setup,
-                           const std::string& out_dir, double grid_dx) {
-  const GreenRun run = green_run(scene, greens, setup, grid_dx);
+StageOutput<GreenRun> green_stage(const Scene& scene, const SensorGreens& greens, const AdjointSetup* setup,
+                                  const std::string& out_dir, double grid_dx) {
+  GreenRun run = green_run(scene, greens, setup, grid_dx);
   std::ostringstream csv;
   csv.precision(10);
   csv << "sensor,component,offset_x_mm,offset_y_mm,g_point_per_mm2,g_disc_per_mm2"
@@ -88,7 +88,7 @@ nlohmann::json green_stage(const Scene& scene, const SensorGreens& greens, const
   }
   std::printf("  wrote %s/green.csv, green_maps.vtp, %ssummary.json\n", out_dir.c_str(),
               run.grid ? "kernel.h5, kernel.vti, " : "");
-  return summary;
+  return {std::move(run), std::move(summary)};
 }
 
 int run_green(const Scene& scene, const std::string& out_dir, double grid_dx, GreenPath path) {

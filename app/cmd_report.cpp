@@ -571,8 +571,13 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
   wall["green_adjoints"] = adjoints->wall["adjoint_solves"];
   clock = Stopwatch();
   const SensorGreens greens = sensor_greens(scene, *adjoints);
-  report["green"] = green_stage(scene, greens, adjoints.get(), out_dir + "/green");
-  const auto kf = kfit_stage(scene, greens, out_dir + "/kfit", "punch");
+  std::optional<MeridianCheck> axis_check;  // the green stage's, which kfit would otherwise solve again
+  {
+    auto green = green_stage(scene, greens, adjoints.get(), out_dir + "/green");
+    report["green"] = std::move(green.summary);
+    axis_check = green.result.meridian_check;
+  }
+  const auto kf = kfit_stage(scene, greens, out_dir + "/kfit", "punch", axis_check ? &*axis_check : nullptr);
   report["kfit"] = kf.summary;
   const pipeline::KfitSensor& headline = kf.result.sensors.at(0);
   wall["green_kfit_profiles"] = clock.seconds();

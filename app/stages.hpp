@@ -13,6 +13,7 @@
 #include "pipeline/contact.hpp"
 #include "pipeline/contact_setup.hpp"
 #include "pipeline/defect.hpp"
+#include "pipeline/green.hpp"
 #include "pipeline/hole_budget.hpp"
 #include "pipeline/kfit.hpp"
 #include "pipeline/post_design.hpp"
@@ -25,15 +26,18 @@ nlohmann::json mesh_stage(const Scene& scene, const TetMesh& mesh, double mesh_s
                           const std::string& out_dir);
 // grid_dx > 0: also the kernel on that grid over the top (kernel.h5, kernel.vti; green/kernel_grid.hpp).
 // setup: the 3D path's adjoints (reciprocity check, maps on the mesh), or null for the meridian path.
-nlohmann::json green_stage(const Scene& scene, const SensorGreens& greens, const AdjointSetup* setup,
-                           const std::string& out_dir, double grid_dx = 0);
 template <class Result>
 struct StageOutput {
   Result result;
   nlohmann::json summary;  // as written
 };
+StageOutput<pipeline::GreenRun> green_stage(const Scene& scene, const SensorGreens& greens,
+                                            const AdjointSetup* setup, const std::string& out_dir,
+                                            double grid_dx = 0);
+// axis_check: pipeline::kfit's (green_stage's, reused).
 StageOutput<pipeline::KfitResult> kfit_stage(const Scene& scene, const SensorGreens& greens,
-                                             const std::string& out_dir, const std::string& load_name);
+                                             const std::string& out_dir, const std::string& load_name,
+                                             const MeridianCheck* axis_check = nullptr);
 // not_meridian: why the automatic path did not take the meridian (said and kept in summary.json).
 StageOutput<pipeline::ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const ContactSetup> setup,
                                                 const std::string& out_dir, FrictionMode chosen,

@@ -140,9 +140,9 @@ double rms_over_peak(const std::vector<double>& m, double s, const std::vector<d
 double effective_thickness(const std::vector<double>& x, const std::vector<double>& g_zz, double h0,
                            double nu, LayerLoad load, double radius) {
   auto misfit = [&](double h) {
-    const std::vector<GreenSample> m = layer_line(h, nu, load, radius, x);
+    const LayerGreen layer(h, nu, load, radius);
     double s = 0;
-    for (size_t i = 0; i < x.size(); ++i) s += std::pow(m[i].zz - g_zz[i], 2);
+    for (size_t i = 0; i < x.size(); ++i) s += std::pow(layer.zz_at(x[i], 0.0) - g_zz[i], 2);
     return s;
   };
   return best_thickness(misfit, 0.5 * h0, 1.5 * h0, h0, "effective thickness");

@@ -211,12 +211,32 @@ GreenSample LayerGreen::evaluate(const NodeSet& n, double x, double y) {
   return GreenSample{i_zz, c1 * i_zx, c1 * i_xz, i_xx0 + c2 * i_xx2};
 }
 
-GreenSample LayerGreen::at(double x, double y) const {
-  const double r = std::hypot(x, y);
+double LayerGreen::evaluate_zz(const NodeSet& n, double r) {
+  double i_zz = 0;
+  if (r == 0.0) {
+    for (double c : n.c_zz) i_zz += c;
+    return i_zz;
+  }
+  for (std::size_t i = 0; i < n.s.size(); ++i) i_zz += n.c_zz[i] * ::j0(n.s[i] * r);
+  return i_zz;
+}
+
+const LayerGreen::NodeSet& LayerGreen::nodes_for(double r, std::optional<NodeSet>& far) const {
   for (const NodeSet& n : levels_)
-    if (r <= n.r_cover) return evaluate(n, x, y);
+    if (r <= n.r_cover) return n;
   // Far field (r > 64h, where |g| is at roundoff, ≲ 1e-16 of the peak): nodes built on the fly.
-  return evaluate(build(r, h_, true), x, y);
+  return far.emplace(build(r, h_, true));
+}
+
+GreenSample LayerGreen::at(double x, double y) const {
+  std::optional<NodeSet> far;
+  return evaluate(nodes_for(std::hypot(x, y), far), x, y);
+}
+
+double LayerGreen::zz_at(double x, double y) const {
+  std::optional<NodeSet> far;
+  const double r = std::hypot(x, y);
+  return evaluate_zz(nodes_for(r, far), r);
 }
 
 GreenSample LayerGreen::at_depth(double x, double y, double depth) const {

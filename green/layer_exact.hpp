@@ -35,6 +35,7 @@
 // to roundoff level (≲ 1e-12 of g_zz(0)).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "green/halfspace.hpp"
@@ -73,6 +74,8 @@ class LayerGreen {
 
   /// Readings at the base for the load centred at offset (x, y) (force − sensor), per unit force, 1/mm².
   GreenSample at(double x, double y) const;
+  /// at(x, y).zz alone, bit for bit, at half the cost (J0 only): what a thickness fit on g_zz evaluates.
+  double zz_at(double x, double y) const;
   /// The same quantities on the plane at `depth` (0 < depth ≤ h) below the loaded top surface.
   GreenSample at_depth(double x, double y, double depth) const;
 
@@ -99,6 +102,8 @@ class LayerGreen {
   // selects base_kernels (only meaningful at depth = h) instead of depth_kernels.
   NodeSet build(double r_cover, double depth, bool closed_form) const;
   static GreenSample evaluate(const NodeSet& n, double x, double y);
+  static double evaluate_zz(const NodeSet& n, double r);
+  const NodeSet& nodes_for(double r, std::optional<NodeSet>& far) const;
 
   double h_, nu_;
   LayerLoad load_;

@@ -14,7 +14,8 @@ namespace skinfem::pipeline {
 
 using green::LayerLoad;
 
-KfitResult kfit(const Scene& scene, const SensorGreens& greens, LayerLoad load) {
+KfitResult kfit(const Scene& scene, const SensorGreens& greens, LayerLoad load,
+                const MeridianCheck* axis_check) {
   KfitResult r;
   r.load = load;
   r.punch_diameter_mm = load == LayerLoad::point ? 0.0 : scene.calibration.punch_diameter;
@@ -105,7 +106,11 @@ KfitResult kfit(const Scene& scene, const SensorGreens& greens, LayerLoad load) 
       k.k_central_change_from_half_resolution = k.fe.k_central / ck.k_central - 1;
       k.k_lsq_line_change_from_half_resolution = k.fe.k_lsq_line / ck.k_lsq_line - 1;
     }
-    if (s == axis) r.meridian_check = k.meridian_check = meridian_check(scene, s, prof, load, radius, h);
+    if (s == axis)
+      r.meridian_check = k.meridian_check =
+          axis_check && axis_check->sensor == s + 1 && load == LayerLoad::punch
+              ? *axis_check
+              : meridian_check(scene, s, prof, load, radius, h);
     r.sensors.push_back(std::move(k));
   }
   r.wall["profiles"] = clock.seconds();

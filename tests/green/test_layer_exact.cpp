@@ -319,6 +319,16 @@ TEST(LayerGreen, SensorDiscMeanEqualsTheMeanOverTheDiscByQuadrature) {
   }
 }
 
+// zz_at is at().zz computed alone (J0 only): the same sum in the same order, so equal bit for bit, on the
+// axis, across every node level and in the far field built on the fly.
+TEST(LayerGreen, ZzAloneIsTheFullSamplesZz) {
+  for (const LayerLoad load : {LayerLoad::point, LayerLoad::punch}) {
+    const LayerGreen g(3.04, 0.5, load, 0.25);
+    for (double x : {0.0, 0.01, 0.3, 1.7, 3.04, 9.0, 40.0, 150.0, 400.0})
+      for (double y : {0.0, 0.45, -2.0}) EXPECT_EQ(g.zz_at(x, y), g.at(x, y).zz) << x << ", " << y;
+  }
+}
+
 TEST(LayerGreen, RejectsBadArguments) {
   EXPECT_THROW(LayerGreen(0.0, 0.5), std::invalid_argument);
   EXPECT_THROW(LayerGreen(1.0, 0.6), std::invalid_argument);
