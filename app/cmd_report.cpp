@@ -17,6 +17,8 @@
 // case,variant,sensor,component,amplitude_ratio,peak_shift_mm,shape_error). Then figures/*.png
 // (scripts/figures.py, matplotlib) and DIR/report.json (the headline numbers with units, wall seconds per
 // stage, peak memory) and DIR/index.html (figures, tables, links to every VTK file).
+#include <signal.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -33,6 +35,7 @@
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "app/stages.hpp"
+#include "fem/blas_threads.hpp"
 #include "green/kfit.hpp"
 #include "mesh/mirror.hpp"
 #include "pipeline/crosscheck.hpp"
@@ -625,12 +628,20 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
     }
   }
 
+  // The figures whose inputs are final are drawn from here on, beside the stages still to come; those of
+  // the later stages (kfit/k_sweep.csv, study/chain_study.csv, green/post_design.csv) at the end.
+  const std::string script = figures_script(), late_figures = "k_sweep.png,pareto.png,post_design.png";
+  progress("figures: " + script + ", beside the stages to come");
+  const int early_figures =
+      start_background_child({"/usr/bin/python3", script, out_dir, "--except", late_figures});
+
   // Error bars: the chain's headline quantities on this mesh and on coarser ones (every mesh size scaled),
   // Richardson through the three finest. The coarse levels come after this level's memory is released.
   std::vector<validation::KSweepPoint> mesh_rows;
   std::vector<ChainLevel> levels;
   if (!error_scales.empty()) {
     clock = Stopwatch();
+    const BlasThreads one(1);
     levels.push_back(chain_values(scene, *adjoints, contact.get()));
     // The defect run holds the contact set-up too (its solver, its condensed blocks): without it, the
     // paper's skin with posts kept 1.65 GB resident through the levels and peaked there, 350 MB above its
@@ -681,10 +692,12 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
   }
 
   clock = Stopwatch();
-  const std::string script = figures_script();
-  progress("figures: " + script);
+  progress("figures: the last ones, and the end of the others");
   int stopped_by = 0;
-  const int rc = run_child({"/usr/bin/python3", script, out_dir}, &stopped_by);
+  const int rc_late = run_child({"/usr/bin/python3", script, out_dir, "--only", late_figures}, &stopped_by);
+  if (stopped_by != 0) kill(early_figures, stopped_by);
+  const int rc_early = wait_background_child(early_figures);
+  const int rc = rc_early != 0 ? rc_early : rc_late;
   if (stopped_by != 0) {
     std::fprintf(stderr,
                  "skinfem: report: stopped by signal %d (%s) while drawing the figures; report.json and "

@@ -178,6 +178,32 @@ int run_child(const std::vector<std::string>& argv, int* interrupted_by, double 
   return rc;
 }
 
+int start_background_child(const std::vector<std::string>& argv) {
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid == 0) {
+    // Only async-signal-safe calls until exec.
+    if (prctl(PR_SET_PDEATHSIG, SIGTERM) != 0 || getppid() != parent) _exit(128 + SIGTERM);
+    dup2(STDERR_FILENO, STDOUT_FILENO);
+    execvp(args[0], args.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+int wait_background_child(int pid) {
+  if (pid <= 0) return 127;
+  int status = 0;
+  pid_t got;
+  while ((got = waitpid(pid, &status, 0)) < 0 && errno == EINTR) {
+  }
+  if (got != pid) return 127;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
 void check_levels(const std::string& option, const std::vector<double>& levels, bool decreasing) {
   const auto show = [](double v) {
     char buf[32];

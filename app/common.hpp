@@ -42,6 +42,12 @@ void write_json(const std::string& path, const nlohmann::json& j);
 int run_child(const std::vector<std::string>& argv, int* interrupted_by = nullptr, double grace_s = 0,
               bool* killed = nullptr, bool end_with_us = false);
 
+// A child started in the background, its stdout sent to our stderr, in our process group (a terminal's
+// Ctrl-C reaches it as it reaches us), ended with SIGTERM when we end first. Returns its id, or -1 when it
+// could not start. wait_background_child: its exit code, or 128 + the signal that ended it (127: no exec).
+int start_background_child(const std::vector<std::string>& argv);
+int wait_background_child(int pid);
+
 // Study levels given on the command line (--scales, --ridges, --error-scales): each finite, no two equal,
 // in the order the option states (coarse to fine); otherwise the finest level, the reference of every
 // error, would be the wrong one. Throws SceneError naming the option and the offending value.

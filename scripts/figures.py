@@ -6,6 +6,11 @@
 #   ...
 #   figures: skipped pareto.png: missing study/chain_study.csv
 #   figures: 6 written, 1 skipped
+#   $ /usr/bin/python3 scripts/figures.py out/candelier2011 --except k_sweep.png,pareto.png
+#   $ /usr/bin/python3 scripts/figures.py out/candelier2011 --only k_sweep.png,pareto.png
+# --only NAMES / --except NAMES (comma-separated figure names): draw just those, or all but those, and delete
+# no other PNG: `skinfem report` draws the figures whose inputs are final while its later stages compute,
+# and the rest at its end.
 #
 # Needs only the standard library, numpy and matplotlib (Debian's /usr/bin/python3; Agg backend). No
 # randomness and no version string in the PNGs (savefig metadata Software=None): same inputs, same bytes.
@@ -47,8 +52,9 @@
 #   pareto.png               study/chain_study.csv (the report's error levels, or skinfem study --chain --out
 #                            DIR/study): error vs seconds (log-log), one series per stage, labelled by DOFs.
 # Each PNG is written to a hidden temporary name in DIR/figures and renamed into place. A figure whose inputs
-# are missing prints `figures: skipped <name>.png: missing <file>`. The PNGs above are deleted first,
-# so DIR/figures never keeps one from an earlier run that this run skipped or did not reach.
+# are missing prints `figures: skipped <name>.png: missing <file>`. The PNGs this run selects (all, without
+# --only or --except) are deleted first, so DIR/figures never keeps one from an earlier run that this run
+# skipped or did not reach.
 # Prints `figures: wrote figures/<name>.png` per figure and `figures: N written, M skipped`; exit 0.
 # Malformed input (unreadable, empty, missing column or key, wrong field count, bad or non-finite value, a
 # case/component outside the lists above): one line `figures: error: <file>: line N, column 'c': ...` on
@@ -641,16 +647,17 @@ def save(fig, path):
 
 
 def main(argv):
-    if len(argv) != 2 or not os.path.isdir(argv[1]):
-        print("usage: /usr/bin/python3 scripts/figures.py DIR  (DIR: a `skinfem report` output folder)",
-              file=sys.stderr)
+    usage = ("usage: /usr/bin/python3 scripts/figures.py DIR [--only NAMES | --except NAMES]  (DIR: a "
+             "`skinfem report` output folder; NAMES: comma-separated figure names, e.g. pareto.png)")
+    selection = None
+    if len(argv) == 4 and argv[2] in ("--only", "--except"):
+        selection = (argv[2], set(argv[3].split(",")))
+    if len(argv) not in (2, 4) or (len(argv) == 4 and not selection) or not os.path.isdir(argv[1]):
+        print(usage, file=sys.stderr)
         return 2
     d = argv[1]
     out = os.path.join(d, "figures")
     os.makedirs(out, exist_ok=True)
-    for name in os.listdir(out):  # figures/ then holds exactly what this run drew, nothing from an earlier one
-        if name.endswith(".png"):
-            os.remove(os.path.join(out, name))
     written = skipped = 0
     global _FIGURES, _DIR
     try:
@@ -658,6 +665,19 @@ def main(argv):
     except InputError as e:
         print(f"figures: error: {e}", file=sys.stderr)
         return 2
+    if selection:
+        known = {f[0] for f in FIGURES}
+        unknown = sorted(n for n in selection[1] if n not in known and not n.startswith("budget_"))
+        if unknown:
+            print(f"figures: error: {selection[0]} {','.join(unknown)}: not a figure (known: "
+                  f"{', '.join(sorted(known))}, budget_<hypothesis>.png)", file=sys.stderr)
+            return 2
+        keep = selection[0] == "--only"
+        _FIGURES = [f for f in _FIGURES if (f[0] in selection[1]) == keep]
+    chosen = {f[0] for f in _FIGURES}
+    for name in os.listdir(out):  # figures/ then holds exactly what this run drew, nothing from an earlier one
+        if name.endswith(".png") and (selection is None or name in chosen):
+            os.remove(os.path.join(out, name))
     budget = [f for f in _FIGURES if f[0].startswith("budget_")]
     if budget and all(os.path.isfile(os.path.join(d, f)) for f in budget[0][1]):
         try:
