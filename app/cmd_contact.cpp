@@ -66,8 +66,9 @@ void write_readings(const std::string& out_dir, const Scene& scene, FrictionMode
 
 StageOutput<ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const ContactSetup> shared,
                                       const std::string& out_dir, FrictionMode chosen,
-                                      const std::string& not_meridian) {
-  ContactRun run = contact_run(scene, std::move(shared), chosen);
+                                      const std::string& not_meridian,
+                                      const pipeline::MeridianContactRun* frictionless) {
+  ContactRun run = contact_run(scene, std::move(shared), chosen, frictionless);
   run.not_meridian = not_meridian;
   const ContactSetup& setup = *run.setup;
   const TetMesh& mesh = setup.mesh();

@@ -39,9 +39,11 @@ StageOutput<pipeline::KfitResult> kfit_stage(const Scene& scene, const SensorGre
                                              const std::string& out_dir, const std::string& load_name,
                                              const MeridianCheck* axis_check = nullptr);
 // not_meridian: why the automatic path did not take the meridian (said and kept in summary.json).
+// frictionless: pipeline::contact_run's.
 StageOutput<pipeline::ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const ContactSetup> setup,
                                                 const std::string& out_dir, FrictionMode chosen,
-                                                const std::string& not_meridian = "");
+                                                const std::string& not_meridian = "",
+                                                const pipeline::MeridianContactRun* frictionless = nullptr);
 
 // Both sweeps of `defect` (static, then coupled sliding), keeping the contact solutions `keep` says (the
 // written frames, or every position's); coarse: pipeline::largest_sliding_levels' levels for the largest

@@ -57,6 +57,8 @@ class ElasticModel {
   const TetMesh& mesh() const { return mesh_; }
   const MixedMatrices& matrices() const { return matrices_; }
   const MixedSolver& solver() const { return *solver_; }
+  // MixedSolver::release_factorization: for a model whose solves are done.
+  void release_factorization() { solver_->release_factorization(); }
   const Lame& lame() const { return lame_; }
   double assemble_seconds() const { return assemble_seconds_; }
 

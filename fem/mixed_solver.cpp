@@ -54,6 +54,7 @@ struct MixedSolver::Impl {
   double precond_scale = 1;
   // direct_ldlt
   std::unique_ptr<MumpsLdlt> ldlt;
+  double released_flops = 0;  // the factorization's, once released
   Eigen::MatrixXd coupling_products;
   std::optional<BorderChoice> border_choice;
 
@@ -223,7 +224,15 @@ const std::optional<MixedSolver::BorderChoice>& MixedSolver::border_choice() con
   return impl_->border_choice;
 }
 
-double MixedSolver::factor_flops() const { return impl_->ldlt ? impl_->ldlt->estimated_flops() : 0; }
+void MixedSolver::release_factorization() {
+  if (!impl_->ldlt) return;
+  impl_->released_flops = impl_->ldlt->estimated_flops();
+  impl_->ldlt.reset();
+}
+
+double MixedSolver::factor_flops() const {
+  return impl_->ldlt ? impl_->ldlt->estimated_flops() : impl_->released_flops;
+}
 
 int MixedSolver::free_dofs() const { return impl_->nf + impl_->np; }
 int MixedSolver::pinned_pressures() const { return impl_->pinned_pressures; }
@@ -272,6 +281,7 @@ MixedSolution MixedSolver::solve(const Eigen::VectorXd& f, const Eigen::VectorXd
     out.iterations = it;
     uf = s.chol.solve(bf - s.Bf.transpose() * p);
   } else {
+    if (!s.ldlt) throw SolverError("direct_ldlt solve after the factorization was released");
     Eigen::VectorXd b(s.nf + s.np);
     b << bf, s.sigma * g;
     const Eigen::VectorXd x = s.ldlt->solve(b);
@@ -315,6 +325,7 @@ Eigen::MatrixXd MixedSolver::solve_block(const Eigen::MatrixXd& F, const Eigen::
     if (residual) *residual = worst;
     return U;
   }
+  if (!s.ldlt) throw SolverError("direct_ldlt block solve after the factorization was released");
   // Lift the prescribed values as in solve(): b_f = f_f − A_fc u_c, g = −B_c u_c; rows of g scaled by σ.
   Eigen::MatrixXd b = Eigen::MatrixXd::Zero(s.nf + s.np, k);
   for (int j = 0; j < k; ++j)  // column by column: the blocks are column-major and large

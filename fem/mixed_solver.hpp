@@ -94,6 +94,9 @@ class MixedSolver {
   // the supports exert on the body, N.
   Eigen::VectorXd reactions(const MixedSolution& x, const Eigen::VectorXd& f) const;
 
+  // Frees the direct factorization (most of the solver's memory) once no more solves are coming: a caller
+  // done with its solves keeps the solver's counts and choices. Any solve after it throws SolverError.
+  void release_factorization();
   double factor_seconds() const { return factor_seconds_; }
   double factor_flops() const;  // the direct factorization's estimated flops (0 for schur_cg)
   int free_dofs() const;        // free displacement DOFs + pressure DOFs

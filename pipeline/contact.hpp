@@ -13,6 +13,7 @@
 #include "contact/metrics.hpp"
 #include "fem/mixed_solver.hpp"
 #include "pipeline/contact_setup.hpp"
+#include "pipeline/meridian_contact.hpp"
 
 namespace skinfem::pipeline {
 
@@ -54,8 +55,11 @@ struct ContactRun {
 
 // Throws SceneError, naming the command's need, when the scene has no contact section.
 void require_contact(const Scene& scene);
-// Throws SceneError when the scene has no contact.
-ContactRun contact_run(const Scene& scene, std::shared_ptr<const ContactSetup> setup, FrictionMode chosen);
+// Throws SceneError when the scene has no contact. frictionless: the meridian's frictionless run that checks
+// the 3D one (meridian_contact_run(scene, FrictionMode::none)), made beforehand (the report makes it before
+// the 3D factorization, whose memory it would otherwise add to); null: made here where the scene has one.
+ContactRun contact_run(const Scene& scene, std::shared_ptr<const ContactSetup> setup, FrictionMode chosen,
+                       const MeridianContactRun* frictionless = nullptr);
 // How the contact was solved: on the half (mirror symmetry) or whole, and why whole.
 std::string symmetry_used(const Scene& scene, const ContactSetup& setup);
 // summary.json of `skinfem contact`.

@@ -204,6 +204,28 @@ TEST(MixedSolver, BlockSolveEqualsColumnByColumnSolves) {
   }
 }
 
+// A released factorization refuses every later solve, loudly, and keeps what describes it.
+TEST(MixedSolver, AReleasedFactorizationRefusesToSolve) {
+  const Lame lame = Lame::from(3.0, 0.5);
+  const TetMesh m = box_mesh(1.5, 1.5, 0.6);
+  const MixedMatrices mm = assemble_mixed(m, lame);
+  std::vector<bool> fixed(3 * m.num_nodes(), false);
+  for (int i = 0; i < m.num_nodes(); ++i)
+    if (m.node_marker(i) & kBase) fixed[3 * i] = fixed[3 * i + 1] = fixed[3 * i + 2] = true;
+  MixedSolver solver(mm, lame, fixed, SolverKind::direct_ldlt);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * m.num_nodes());
+  for (int i = 0; i < m.num_nodes(); ++i)
+    if (m.node_marker(i) == kTop) f[3 * i + 2] = -1e-3;
+  EXPECT_GT(solver.solve(f).u.norm(), 0);
+  const double flops = solver.factor_flops();
+  const int dofs = solver.free_dofs();
+  solver.release_factorization();
+  EXPECT_THROW(solver.solve(f), SolverError);
+  EXPECT_THROW(solver.solve_block(Eigen::MatrixXd(f)), SolverError);
+  EXPECT_EQ(solver.factor_flops(), flops);
+  EXPECT_EQ(solver.free_dofs(), dofs);
+}
+
 // A factorization bordered by columns (loads and prescribed base values) gives their products from MUMPS's
 // Schur complement: each must equal the same product from a block solve of the unbordered system (a
 // second method), and the bordered factorization's own solves must be the unbordered ones.
