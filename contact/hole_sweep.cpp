@@ -6,6 +6,7 @@
 
 #include "contact/hole_cover.hpp"
 #include "contact/hole_cut.hpp"
+#include "scene/parallel.hpp"
 
 namespace skinfem::contact {
 
@@ -24,16 +25,26 @@ Vec2 sweep_center(const HoleSweep& sweep, int i) {
 std::optional<HoleCuts> hole_cuts(const CondensedContact& condensed, const HoleSweep& sweep, double max_mb) {
   if (!condensed.path) throw std::invalid_argument("hole_cuts: the condensed skin has no hole path");
   HoleCuts out;
+  out.at.resize(sweep.positions);
   double bytes = 0;
-  for (int i = 0; i < sweep.positions; ++i) {
-    out.at.push_back(cut_problem(
-        condensed,
-        hole_cut(*condensed.path, condensed.zone.size(), Hole{sweep_center(sweep, i), sweep.hole_diameter}),
-        true));
-    const CutProblem& c = out.at.back();
-    for (const Eigen::MatrixXd* m : {&c.zz, &c.zt_rows, &c.zt_cols, &c.zt_whole, &c.sp, &c.st})
-      bytes += 8.0 * static_cast<double>(m->size());
-    bytes += 8.0 * static_cast<double>(c.gap0.size() + c.area.size()) + 4.0 * c.rows.size();
+  // The positions are independent (each reads the condensed skin only): a chunk at a time on the machine's
+  // cores, the bound checked after each, so that at most one chunk is computed past it.
+  constexpr int kChunk = 16;
+  for (int first = 0; first < sweep.positions; first += kChunk) {
+    const int n = std::min(kChunk, sweep.positions - first);
+    for_each_index(n, [&](std::size_t k) {
+      const int i = first + static_cast<int>(k);
+      out.at[i] = cut_problem(
+          condensed,
+          hole_cut(*condensed.path, condensed.zone.size(), Hole{sweep_center(sweep, i), sweep.hole_diameter}),
+          true);
+    });
+    for (int i = first; i < first + n; ++i) {
+      const CutProblem& c = out.at[i];
+      for (const Eigen::MatrixXd* m : {&c.zz, &c.zt_rows, &c.zt_cols, &c.zt_whole, &c.sp, &c.st})
+        bytes += 8.0 * static_cast<double>(m->size());
+      bytes += 8.0 * static_cast<double>(c.gap0.size() + c.area.size()) + 4.0 * c.rows.size();
+    }
     if (bytes > max_mb * 1024 * 1024) return std::nullopt;
   }
   return out;

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "green/calibration.hpp"
+#include "scene/parallel.hpp"
 #include "validation/text.hpp"
 
 namespace skinfem::validation {
@@ -27,32 +28,42 @@ KSweepPoint evaluate(const KProtocol& p, const std::string& parameter, double va
 }  // namespace
 
 std::vector<KSweepPoint> k_sweep(const KProtocol& base, double spacing) {
-  std::vector<KSweepPoint> out;
+  struct Change {
+    KProtocol protocol;
+    const char* parameter;
+    double value;
+  };
+  std::vector<Change> changes;
   for (double nu : {0.30, 0.35, 0.40, 0.45, 0.48, 0.50}) {
     KProtocol p = base;
     p.nu = nu;
-    out.push_back(evaluate(p, "nu", nu, spacing));
+    changes.push_back({p, "nu", nu});
   }
   for (double d : {0.1, 0.25, 0.5, 0.75, 1.0, 1.25, 1.5}) {
     KProtocol p = base;
     p.punch_diameter = d;
-    out.push_back(evaluate(p, "punch_diameter_mm", d, spacing));
+    changes.push_back({p, "punch_diameter_mm", d});
   }
   for (int l = 0; l < 3; ++l) {
     KProtocol p = base;
     p.load = l == 0 ? green::LayerLoad::point : l == 1 ? green::LayerLoad::uniform : green::LayerLoad::punch;
-    out.push_back(evaluate(p, "load", l, spacing));
+    changes.push_back({p, "load", static_cast<double>(l)});
   }
   for (double d : {0.0, 0.2, 0.4, 0.6, 1.0}) {
     KProtocol p = base;
     p.disc_diameter = d;
-    out.push_back(evaluate(p, "disc_diameter_mm", d, spacing));
+    changes.push_back({p, "disc_diameter_mm", d});
   }
   for (double h : {2.5, 2.75, 3.04, 3.25, 3.5}) {
     KProtocol p = base;
     p.h = h;
-    out.push_back(evaluate(p, "h_mm", h, spacing));
+    changes.push_back({p, "h_mm", h});
   }
+  // Each point is the exact layer's own fit, independent of the others: on the machine's cores.
+  std::vector<KSweepPoint> out(changes.size());
+  for_each_index(changes.size(), [&](std::size_t i) {
+    out[i] = evaluate(changes[i].protocol, changes[i].parameter, changes[i].value, spacing);
+  });
   return out;
 }
 
@@ -141,9 +152,15 @@ KTargetAnswer k_target_answer(const KProtocol& base, const std::vector<KSweepPoi
         a.near.push_back({p.parameter, crit, p.value, k});
       }
     }
+  // The sweep's points of each parameter bracket its crossings; each root is found between them, the
+  // brackets on the machine's cores.
+  struct Bracket {
+    const char *param, *crit;
+    double va, vb, linear;
+  };
+  std::vector<Bracket> brackets;
   for (const char* param : {"nu", "punch_diameter_mm", "disc_diameter_mm", "h_mm"})
     for (const char* crit : {"k_central", "k_lsq_line"}) {
-      // The sweep's points of this parameter bracket each crossing; the root is found between them.
       std::vector<const KSweepPoint*> group;
       for (const auto& p : a.points)
         if (p.parameter == param) group.push_back(&p);
@@ -152,13 +169,20 @@ KTargetAnswer k_target_answer(const KProtocol& base, const std::vector<KSweepPoi
                      fb = criterion_of(*group[i], crit) - target;
         if (!(fa * fb < 0) && !(fa == 0)) continue;
         const double va = group[i - 1]->value, vb = group[i]->value;
-        const double linear = fa == 0 ? va : va + (vb - va) * fa / (fa - fb);
-        const double v = crossing_root(base, param, crit, target, va, vb);
-        cross += (cross.empty() ? "" : "; ") + std::string(crit) + " = " + fmt("%.2f", target) + " at " +
-                 param + " = " + fmt("%.4g", v);
-        a.crossings.push_back({param, crit, v, linear});
+        brackets.push_back({param, crit, va, vb, fa == 0 ? va : va + (vb - va) * fa / (fa - fb)});
       }
     }
+  std::vector<double> roots(brackets.size());
+  for_each_index(brackets.size(), [&](std::size_t i) {
+    const Bracket& b = brackets[i];
+    roots[i] = crossing_root(base, b.param, b.crit, target, b.va, b.vb);
+  });
+  for (size_t i = 0; i < brackets.size(); ++i) {
+    const Bracket& b = brackets[i];
+    cross += (cross.empty() ? "" : "; ") + std::string(b.crit) + " = " + fmt("%.2f", target) + " at " +
+             b.param + " = " + fmt("%.4g", roots[i]);
+    a.crossings.push_back({b.param, b.crit, roots[i], b.linear});
+  }
   a.answer = "Exact layer (h " + fmt("%.3g", base.h) + " mm) with one protocol reading changed at a time" +
              (extra.empty() ? std::string() : ", and the FE mesh scale") + ": " +
              (near.empty()
