@@ -35,7 +35,7 @@ using validation::fmt;
 
 DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> shared,
                        const std::string& out_dir, std::vector<pipeline::ChainLevel> coarse,
-                       pipeline::DefectFrames keep) {
+                       pipeline::DefectFrames keep, bool write_frames) {
   DefectRun run = defect_run(scene, std::move(shared), std::move(coarse), keep);
   const ContactSetup& setup = *run.setup;
   const HoleSweep& sweep = *scene.contact->sweep;
@@ -59,6 +59,7 @@ DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> s
     for (size_t k = 0; k < frames[ci].size(); ++k) {
       const int i = run.frame_positions[ci][k];
       if (!pipeline::written_frame(i, sweep.positions)) continue;
+      if (!write_frames) continue;
       char file[64];
       std::snprintf(file, sizeof file, "%s_%03d.vtp", run.cases[ci].c_str(), i);
       written.push_back({ci, k, file});
@@ -84,7 +85,13 @@ DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> s
             << 1e3 * res.varsigma(i, 2 * k) << "," << 1e3 * res.varsigma(i, 2 * k + 1) << "\n";
   }
   write_text_atomic(out_dir + "/defect.csv", csv.str());
-  write_text_atomic(out_dir + "/defect.pvd", pvd.str());
+  if (write_frames) {
+    write_text_atomic(out_dir + "/defect.pvd", pvd.str());
+  } else {                    // nothing of an earlier run's animation stays
+    std::error_code ignored;  // frames/ holds no .vtp now; a file of the user's there keeps it
+    std::filesystem::remove(out_dir + "/defect.pvd");
+    std::filesystem::remove(out_dir + "/frames", ignored);
+  }
   run.wall["write"] = clock.seconds();
   const nlohmann::json summary = defect_json(scene, run);
   const nlohmann::json& wall = run.wall;
@@ -121,7 +128,8 @@ DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> s
     if (b["asymptotic"].get<bool>()) std::printf(", observed order %.2f", b["observed_order"].get<double>());
     std::printf(")\n");
   }
-  std::printf("  wrote %s/defect.csv, defect.pvd (+ frames/), summary.json\n", out_dir.c_str());
+  std::printf("  wrote %s/defect.csv, %ssummary.json\n", out_dir.c_str(),
+              write_frames ? "defect.pvd (+ frames/), " : "");
   return run;
 }
 

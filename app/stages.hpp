@@ -47,10 +47,10 @@ StageOutput<pipeline::ContactRun> contact_stage(const Scene& scene, std::shared_
 
 // Both sweeps of `defect` (static, then coupled sliding), keeping the contact solutions `keep` says (the
 // written frames, or every position's); coarse: pipeline::largest_sliding_levels' levels for the largest
-// sliding signal's error bar (empty: none).
+// sliding signal's error bar (empty: none). write_frames false: no frames/ and no defect.pvd (report --fast).
 pipeline::DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> setup,
                                  const std::string& out_dir, std::vector<pipeline::ChainLevel> coarse,
-                                 pipeline::DefectFrames keep);
+                                 pipeline::DefectFrames keep, bool write_frames = true);
 
 // The hole-signal budget (app/hole_budget_stage.cpp): friction hypotheses against the paper's facts, judged
 // against the crosscheck's paper_model signals; writes its tables into out_dir (the crosscheck's).

@@ -155,8 +155,9 @@ sys.exit(1 if bad else 0)
 PY
 # The page as a parser reads it: tables, links, figures and their captions, notation.
 /usr/bin/python3 "$(dirname "$0")/page_check.py" "$out" || fail=1
-# --fast leaves out the error bars, the hypothesis budget and the post design, and says so on the page, in
-# report.json and on the terminal; what it keeps (the headline numbers, the crosscheck) is the full report's.
+# --fast leaves out the error bars, the hypothesis budget, the post design and the defect's VTK frames, and
+# says so on the page, in report.json and on the terminal; what it keeps (the headline numbers, the
+# crosscheck) is the full report's.
 if "$skinfem" report "$tmp/scene.json" --fast --out "$tmp/fast" >"$tmp/fast_stdout" 2>"$tmp/stderr"; then
   /usr/bin/python3 - "$out" "$tmp/fast" "$tmp/fast_stdout" <<'PY' || fail=1
 import json, os, sys
@@ -165,10 +166,11 @@ html = open(os.path.join(sys.argv[2], "index.html"), encoding="utf-8").read()
 bad = []
 for key in ("error_bars", "hole_budget", "post_design", "chain_study"):
     if key in fast: bad.append(f"--fast report.json has {key}")
-for f in ("crosscheck/hole_budget.csv", "green/post_design.csv", "study/chain_study.csv"):
+for f in ("crosscheck/hole_budget.csv", "green/post_design.csv", "study/chain_study.csv", "defect/defect.pvd",
+          "defect/frames"):
     if os.path.exists(os.path.join(sys.argv[2], f)): bad.append(f"--fast wrote {f}")
 left = fast.get("fast", {}).get("left_out", "")
-if "error bars" not in left or "budget" not in left: bad.append(f"report.json fast.left_out = {left!r}")
+if "error bars" not in left or "budget" not in left or "frames" not in left: bad.append(f"report.json fast.left_out = {left!r}")
 if "A fast report" not in html or left not in html: bad.append("index.html does not say what --fast left out")
 if f"fast: left out the {left}" not in open(sys.argv[3]).read(): bad.append("the terminal does not say it")
 for key in ("k_central", "k_lsq_line"):
