@@ -1,0 +1,402 @@
+// index.html: the report's page, from what its stages returned (app/report_page.hpp).
+#include "app/report_page.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <map>
+#include <ostream>
+#include <sstream>
+#include <utility>
+
+#include "app/common.hpp"
+#include "validation/text.hpp"
+
+namespace skinfem::app {
+
+using validation::fmt;
+
+namespace {
+// A value and its error, the value rounded to the error's second significant digit (no error: 6 digits).
+std::array<std::string, 2> rounded_to_error(double value, double error) {
+  if (!(error > 0)) return {fmt("%.6g", value), ""};
+  const int decimals = std::max(0, 1 - static_cast<int>(std::floor(std::log10(error))));
+  const std::string f = "%." + std::to_string(decimals) + "f";
+  return {fmt(f.c_str(), value), fmt(f.c_str(), error)};
+}
+
+// A word of the terminal's ASCII in the page's notation: um → µm, sigma[_]c → σc and varsigma[_]c → ςc
+// for a component c of x, y, z or none; any other word as it is.
+std::string page_word(const std::string& w) {
+  if (w == "um") return "µm";
+  for (const auto& [name, symbol] : {std::pair{"varsigma", "ς"}, std::pair{"sigma", "σ"}}) {
+    if (w.rfind(name, 0) != 0) continue;
+    std::string c = w.substr(std::strlen(name));
+    if (!c.empty() && c[0] == '_') c.erase(0, 1);
+    if (c.empty() || (c.size() == 1 && c[0] >= 'x' && c[0] <= 'z')) return symbol + c;
+  }
+  return w;
+}
+
+// Text for the page: escaped, and in the page's notation where the shared sentences write the terminal's
+// ASCII (±, µm, ς and σ with their component; words as a regular expression's \w+ delimits them).
+std::string html_escape(const std::string& s) {
+  std::string o;
+  for (char c : s) o += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
+  const auto word_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  std::string page;
+  for (size_t i = 0; i < o.size();) {
+    if (o.compare(i, 2, "+-") == 0) {
+      page += "±", i += 2;
+    } else if (!word_char(o[i])) {
+      page += o[i++];
+    } else {
+      size_t j = i;
+      while (j < o.size() && word_char(o[j])) ++j;
+      page += page_word(o.substr(i, j - i));
+      i = j;
+    }
+  }
+  return page;
+}
+
+// The figures in the paper's order (its figures 1-4 first), each with what it plots; a figure not listed
+// here keeps its file name as caption and comes last.
+std::vector<std::pair<std::string, std::string>> figure_captions(const std::string& scene,
+                                                                 const std::optional<HoleBudget>& budget) {
+  const std::string on = " Scene " + scene + ".";
+  std::vector<std::pair<std::string, std::string>> f{
+      {"fig1_calibration",
+       "Paper fig. 1: the calibration scans, each sensor's FE Green tensor along y = 0 (zz, zx, xz, xx), "
+       "against the half-space rescaled by the paper's k and by the fitted one." +
+           on},
+      {"fig2_static_sliding",
+       "Paper fig. 2: mean sensor stresses σz and σx under the plate, static and sliding; full FE and each "
+       "variant that swaps one assumption into it." +
+           on},
+      {"fig3_varsigma_z",
+       "Paper fig. 3: the hole signal ςz(u) of each sensor as the hole in the plate crosses the contact, "
+       "sliding then static: full FE, the paper's model, and FE rescaled to the model for #5 and #7." +
+           on},
+      {"fig4_varsigma_x", "Paper fig. 4: the hole signal ςx(u), as fig. 3." + on},
+      {"pressure_profiles",
+       "Contact pressure p along y = 0: Hertz on the half-space, the exact bonded layer, FE frictionless "
+       "and FE with coupled friction (its tangential traction q dotted)." +
+           on},
+      {"green_vs_halfspace",
+       "Sensor #1's FE Green tensor (g_zz, g_xx) against the half-space rescaled by both k, and the "
+       "difference over the FE peak." +
+           on},
+      {"k_sweep",
+       "k of the exact layer as one calibration-protocol reading changes at a time, against the paper's "
+       "1.48 ± 0.01, and the FE k per mesh scale." +
+           on},
+      {"post_design",
+       "A post against a disc at the skin's axis (meridian solves): ∫ g dA and half width of g_zz over the "
+       "post's height and diameter." +
+           on},
+      {"pareto", "Cost against accuracy of each stage over the error-bar levels (labels: DOFs)." + on}};
+  if (budget)
+    for (const validation::HypothesisResult& y : budget->results)
+      f.push_back({"budget_" + y.hypothesis.name,
+                   "The hole-signal budget under '" + y.hypothesis.name + "' (" + y.hypothesis.what +
+                       "): sliding ςz (top) and ςx (bottom) of full FE against the paper's model per sensor, "
+                       "titled with their amplitude ratio." +
+                       on});
+  return f;
+}
+
+// The page up to its first table: scene, units, size, time and memory, and what a fast report left out.
+void page_head(std::ostream& h, const Scene& scene, const IndexInput& in) {
+  h << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>skinfem report: "
+    << html_escape(scene.name)
+    << "</"
+       "title><style>body{font-family:sans-serif;max-width:1100px;margin:auto}table{border-collapse:collapse}"
+       "td,th{border:1px solid #bbb;padding:2px 6px;text-align:right}"
+       // A table wider than the page scrolls inside itself.
+       "table{display:block;max-width:100%;overflow-x:auto}td:not([style]){white-space:nowrap}"
+       "img{max-width:100%}"
+       "figure{margin:1em 0}figcaption{font-size:90%}</style></head><body>\n";
+  h << "<h1>skinfem report: " << html_escape(scene.name) << "</h1>\n<p>Units: mm, N, MPa (stresses in kPa). "
+    << in.dofs << " DOFs, one factorization for the chain"
+    << (in.error_bars.empty() ? "" : " (and one per coarser level for the error bars)") << "; total "
+    << fmt("%.1f", in.wall_total_s) << " s, peak memory " << fmt("%.0f", in.peak_rss_mb) << " MB.</p>\n";
+  if (!in.left_out.empty())
+    h << "<p><b>A fast report</b> (<code>--fast</code>): it leaves out the " << html_escape(in.left_out)
+      << ". Run <code>skinfem report</code> without it for them.</p>\n";
+}
+
+void headline_numbers(std::ostream& h, const IndexInput& in) {
+  if (!in.error_bars.empty()) {
+    h << "<h2>Headline numbers and their discretization error</h2><table><tr><th>quantity</th><th>value</th>"
+         "<th>error</th><th>unit</th><th>how the error is estimated</th></tr>\n";
+    for (const ErrorBar& e : in.error_bars) {
+      const auto [value, error] = rounded_to_error(e.value, e.error);
+      h << "<tr><td style=\"text-align:left\">" << html_escape(e.what) << "</td><td>" << value << "</td><td>"
+        << (error.empty() ? "" : "± " + error) << "</td><td>" << html_escape(e.unit)
+        << "</td><td style=\"text-align:left\">" << html_escape(e.method) << "</td></tr>\n";
+    }
+    h << "</table>\n";
+  }
+}
+
+void error_levels(std::ostream& h, const IndexInput& in) {
+  if (in.levels) {
+    const std::vector<ChainLevel>& levels = *in.levels;
+    std::vector<std::string> stages;
+    for (const auto& [stage, t] : levels.back().wall.items()) stages.push_back(stage);
+    // The quantities in name order, as chain_study.json lists them.
+    std::vector<size_t> order(levels.back().names.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(),
+              [&](size_t a, size_t b) { return levels.back().names[a] < levels.back().names[b]; });
+    h << "<h2>Speed against error: the levels behind the error bars</h2><table><tr><th>mesh scale</th>"
+         "<th>DOFs</th>";
+    for (const auto& st : stages) h << "<th>" << st << " s</th>";
+    h << "<th>peak MB</th>";
+    for (size_t i : order) h << "<th>" << levels.back().names[i] << "</th>";
+    h << "</tr>\n";
+    for (const ChainLevel& l : levels) {
+      h << "<tr><td>" << fmt("%g", l.scale) << "</td><td>" << l.dofs << "</td>";
+      for (const auto& st : stages)
+        h << "<td>" << (l.wall.contains(st) ? fmt("%.2f", l.wall[st].get<double>()) : "") << "</td>";
+      h << "<td>" << fmt("%.0f", l.peak_rss_mb) << "</td>";
+      for (size_t i : order) h << "<td>" << fmt("%.6g", l.value[i]) << "</td>";
+      h << "</tr>\n";
+    }
+    h << "<tr><td style=\"text-align:left\" colspan=\"2\">time &prop; DOFs<sup>e</sup>, e =</td>";
+    for (const auto& st : stages) {
+      const auto e = in.exponents.find(st);
+      h << "<td>" << (e != in.exponents.end() ? fmt("%.2f", e->second) : "") << "</td>";
+    }
+    h << "<td colspan=\"" << 1 + order.size() << "\"></td></tr></table><p>Values in mm and MPa. Peak memory "
+      << "per level: each coarser level's own; the scene's level (scale 1) is the report's up to its error "
+         "bars. Errors per level: <a href=\"study/chain_study.csv\">study/chain_study.csv</a>, Pareto "
+         "plot below.</p>\n";
+  }
+}
+
+void stage_times_and_k(std::ostream& h, const IndexInput& in) {
+  h << "<h2>Time per stage</h2><table><tr><th>stage</th><th>seconds</th></tr>\n";
+  for (const auto& [stage, sec] : in.wall->items())
+    h << "<tr><td style=\"text-align:left\">" << stage << "</td><td>" << fmt("%.2f", sec.get<double>())
+      << "</td></tr>\n";
+  h << "</table>\n";
+  h << "<h2>k</h2><p>" << html_escape(in.kfit_verdict) << "</p>\n<p>" << html_escape(in.k_paper_answer)
+    << " (<a href=\"kfit/k_sweep.csv\">kfit/k_sweep.csv</a>)</p>\n";
+}
+
+void post_design(std::ostream& h, const IndexInput& in) {
+  if (const pipeline::PostDesign* p = in.post) {
+    h << "<h2>What a post changes: the paper's sensor against a disc</h2><p>" << html_escape(in.post_answer)
+      << " A post reads the force on it over its cross-section.</p>\n"
+         "<table><tr><th>sensor</th><th>diameter mm</th><th>height mm</th><th>g_zz peak /mm²</th><th>half "
+         "width mm</th><th>∫ g_zz dA</th><th>g_xx peak /mm²</th><th>at mm</th><th>half width mm</th><th>∫ "
+         "g_xx dA</th>"
+         "<th>mesh change %</th></tr>\n";
+    const auto row = [&h](const std::string& name, const pipeline::SensorDesign& d) {
+      h << "<tr><td style=\"text-align:left\">" << name << "</td><td>" << fmt("%g", d.diameter) << "</td><td>"
+        << fmt("%g", d.height) << "</td><td>" << fmt("%.4g", d.zz.peak) << "</td><td>"
+        << fmt("%.3f", d.zz.half_width) << "</td><td>" << fmt("%.3f", d.zz.integral) << "</td><td>"
+        << fmt("%.4g", d.xx.peak) << "</td><td>" << fmt("%.2f", d.xx.peak_at) << "</td><td>"
+        << fmt("%.3f", d.xx.half_width) << "</td><td>" << fmt("%.3f", d.xx.integral) << "</td><td>"
+        << fmt("%.2g", 100 * std::max({d.peak_change, d.half_width_change, d.integral_change}))
+        << "</td></tr>\n";
+    };
+    row("disc", p->disc);
+    row("post", p->post);
+    h << "</table>\n<p>Design sweep (mesh scale " << fmt("%g", p->sweep_scale)
+      << "; height 0 is the disc): ∫ g_zz dA, and its half width in mm.</p><table><tr><th>diameter "
+         "mm</th>";
+    std::vector<double> heights;
+    for (const auto& d : p->sweep)
+      if (std::find(heights.begin(), heights.end(), d.height) == heights.end()) heights.push_back(d.height);
+    for (double t : heights) h << "<th>t = " << fmt("%g", t) << " mm</th>";
+    h << "</tr>\n";
+    for (size_t i = 0; i < p->sweep.size(); i += heights.size()) {
+      h << "<tr><td>" << fmt("%g", p->sweep[i].diameter) << "</td>";
+      for (size_t j = 0; j < heights.size(); ++j)
+        h << "<td>" << fmt("%.3f", p->sweep[i + j].zz.integral) << " / "
+          << fmt("%.3f", p->sweep[i + j].zz.half_width) << "</td>";
+      h << "</tr>\n";
+    }
+    h << "</table><p>Every design: <a href=\"green/post_design.csv\">green/post_design.csv</a>.</p>\n";
+  }
+}
+
+void front_sensors(std::ostream& h, const IndexInput& in) {
+  if (in.front)
+    h << "<h2>Does friction-pressure coupling explain the front sensors?</h2><p>"
+      << html_escape(in.front->answer) << "</p>\n";
+}
+
+void hole_budget(std::ostream& h, const Scene& scene, const IndexInput& in) {
+  if (in.budget && !in.budget->results.empty()) {
+    const HoleBudget& b = *in.budget;
+    const auto scale_sentence = [](const Eigen::VectorXd& s) {
+      const auto range = [&](int d) {
+        double lo = 1e300, hi = 0;
+        for (int k = d; k < s.size(); k += 2) lo = std::min(lo, s[k]), hi = std::max(hi, s[k]);
+        return fmt("%.3g", lo) + "–" + fmt("%.3g", hi);
+      };
+      return " Readings are in the paper's units: each sensor's FE reading over its scale from the paper's "
+             "calibration (kfit/kfit.json, paper_calibration), " +
+             range(0) + " for ςz and " + range(1) + " for ςx.";
+    };
+    const std::vector<int> front =
+        validation::front_sensors(scene.sensors, contact_center(scene), scene.contact->direction);
+    const auto range = [&](const std::vector<std::array<double, 2>>& ratios, int component, bool in_front) {
+      double lo = 1e300, hi = 0;
+      for (size_t k = 0; k < ratios.size(); ++k)
+        if ((std::find(front.begin(), front.end(), static_cast<int>(k)) != front.end()) == in_front)
+          lo = std::min(lo, ratios[k][component]), hi = std::max(hi, ratios[k][component]);
+      return hi > 0 ? fmt("%.2f", lo) + "–" + fmt("%.2f", hi) : std::string("–");
+    };
+    const auto sorted_facts = [](std::vector<validation::FactVerdict> facts) {
+      std::sort(facts.begin(), facts.end(), [](const auto& a, const auto& c) { return a.fact < c.fact; });
+      return facts;
+    };
+    h << "<h2>Why is a hole so loud? The hole-signal budget</h2><p>" << html_escape(b.answer)
+      << " Sliding amplitude of full FE over the paper's model per hypothesis; a fact is judged from the "
+         "numbers "
+         "(hover or open a row for the sentence). Detection: "
+      << fmt("%.0f", b.base.noise.k) << " standard deviations of a " << b.base.noise.passages
+      << "-passage mean, " << fmt("%.3f", 1e3 * b.base.noise.threshold(0)) << " kPa (ςz) and "
+      << fmt("%.3f", 1e3 * b.base.noise.threshold(1)) << " kPa (ςx). F2: every back sensor's ratio within ["
+      << fmt("%.2g", b.base.rules.match_lo) << ", " << fmt("%.2g", b.base.rules.match_hi)
+      << "]; F3, the paper's asymmetry: the front's largest ratio at least "
+      << fmt("%.2g", b.base.rules.front_min) << " and at least " << fmt("%.2g", b.base.rules.front_over_back)
+      << " times the back's largest."
+      << (b.base.reading_scale.size() ? scale_sentence(b.base.reading_scale) : "")
+      << "</p>\n<table><tr><th>hypothesis</th><th>τ0 kPa</th><th>K MPa/mm</th><th>back "
+         "z</th><th>back "
+         "x</th><th>front "
+         "z</th><th>front x</th><th>F1</th><th>F2</th><th>F3</th><th>F4</th><th>F5</th></tr>\n";
+    for (const validation::HypothesisResult& y : b.results) {
+      const auto& r = y.ratio[1];
+      const Interface& face = y.hypothesis.load.interface;
+      h << "<tr><td style=\"text-align:left\" title=\"" << html_escape(y.hypothesis.what) << "\">"
+        << y.hypothesis.name << "</td><td>" << fmt("%.1f", 1e3 * y.tau0_MPa) << "</td><td>"
+        << (face.law == InterfaceLaw::linear && face.K > 0 ? fmt("%.4g", face.K) : std::string("hard"))
+        << "</td><td>" << range(r, 0, false) << "</td><td>" << range(r, 1, false) << "</td><td>"
+        << range(r, 0, true) << "</td><td>" << range(r, 1, true) << "</td>";
+      for (const auto& f : sorted_facts(y.facts))
+        h << "<td title=\"" << html_escape(f.why) << "\">" << (f.met ? "yes" : "no") << "</td>";
+      h << "</tr>\n";
+    }
+    h << "</table>\n";
+    for (const validation::HypothesisResult& y : b.results) {
+      h << "<details><summary>" << y.hypothesis.name << ": " << html_escape(y.hypothesis.what)
+        << "</summary><ul>\n";
+      for (const auto& f : sorted_facts(y.facts))
+        h << "<li>" << f.fact << (f.met ? " met: " : " not met: ") << html_escape(f.why) << "</li>\n";
+      h << "</ul></details>\n";
+    }
+    h << "<p>Per sensor: <a href=\"crosscheck/hole_budget.csv\">crosscheck/hole_budget.csv</a>; signals: <a "
+         "href=\"crosscheck/hole_budget_signals.csv\">crosscheck/hole_budget_signals.csv</a>.</p>\n";
+  }
+}
+
+void crosscheck(std::ostream& h, const Scene& scene, const IndexInput& in) {
+  if (const validation::Crosscheck* x = in.x) {
+    const int ns = static_cast<int>(scene.sensors.positions.size());
+    h << "<h2>Mean sensor stresses (kPa), each variant swaps one assumption into full FE</h2>\n";
+    for (int c = 0; c < 2; ++c) {
+      h << "<h3>" << (c ? "sliding" : "static") << " (p_x = "
+        << (x->shear[c] != 0 ? fmt("%.3g kPa", 1e3 * x->shear[c]) + (x->ratio[c] != 0 ? " + " : "") : "")
+        << (x->ratio[c] != 0 || x->shear[c] == 0 ? fmt("%.3g p_z", x->ratio[c]) : "")
+        << ")</h3><table><tr><th>variant</th>";
+      for (int k = 0; k < ns; ++k) h << "<th>#" << k + 1 << " σz</th><th>σx</th>";
+      h << "</tr>\n";
+      for (size_t v = 0; v < x->readings.size(); ++v) {
+        h << "<tr><td style=\"text-align:left\" title=\"" << html_escape(x->reading_variants[v].what) << "\">"
+          << x->reading_variants[v].name << "</td>";
+        for (int k = 0; k < 2 * ns; ++k) h << "<td>" << fmt("%.2f", 1e3 * x->readings[v][c][k]) << "</td>";
+        h << "</tr>\n";
+      }
+      h << "</table>\n";
+    }
+    h << "<h2>Hole signals: amplitude of each variant over full FE (sliding), "
+         "attribution</h2>\n<table><tr><th>sensor</th>"
+         "<th>FE max|ςz| kPa</th>";
+    for (size_t v = 1; v < x->signals.size(); ++v) h << "<th>" << x->signal_variants[v].name << " z</th>";
+    h << "<th>FE max|ςx| kPa</th>";
+    for (size_t v = 1; v < x->signals.size(); ++v) h << "<th>" << x->signal_variants[v].name << " x</th>";
+    h << "</tr>\n";
+    for (int k = 0; k < ns; ++k) {
+      h << "<tr><td>#" << k + 1 << "</td>";
+      for (int b = 0; b < 2; ++b) {
+        h << "<td>" << fmt("%.4f", 1e3 * x->signals[0][1].col(2 * k + b).cwiseAbs().maxCoeff()) << "</td>";
+        for (size_t v = 1; v < x->signals.size(); ++v)
+          h << "<td>" << fmt("%.3g", x->metrics[v][1][k][b].amplitude_ratio) << "</td>";
+      }
+      h << "</tr>\n";
+    }
+    h << "</table><p>Variants:</p><ul>\n";
+    for (const auto& v : x->signal_variants)
+      h << "<li><b>" << v.name << "</b>: " << html_escape(v.what) << "</li>\n";
+    h << "</ul><p>Peak shifts and shape errors of every variant, case and sensor: <a "
+         "href=\"crosscheck/attribution.csv\">"
+         "crosscheck/attribution.csv</a>.</p>\n";
+  }
+}
+
+void figures(std::ostream& h, const std::string& dir, const Scene& scene, const IndexInput& in) {
+  h << "<h2>Figures</h2>\n";
+  std::vector<std::string> drawn;  // PNG stems, sorted: the directory's own order is the file system's
+  if (std::filesystem::is_directory(dir + "/figures"))
+    for (const auto& e : std::filesystem::directory_iterator(dir + "/figures"))
+      if (e.path().extension() == ".png") drawn.push_back(e.path().stem().string());
+  std::sort(drawn.begin(), drawn.end());
+  auto captions = figure_captions(scene.name, in.budget);
+  for (const std::string& stem : drawn)
+    if (std::none_of(captions.begin(), captions.end(), [&](const auto& c) { return c.first == stem; }))
+      captions.push_back({stem, stem});
+  int number = 0;
+  for (const auto& [stem, caption] : captions)
+    if (std::binary_search(drawn.begin(), drawn.end(), stem)) {
+      const std::string file = "figures/" + stem + ".png";
+      h << "<figure id=\"" << stem << "\"><a href=\"" << file << "\"><img src=\"" << file << "\" alt=\""
+        << html_escape(stem) << "\"></a><figcaption>Figure " << ++number << " (" << stem
+        << ".png, click for full size). " << html_escape(caption) << "</figcaption></figure>\n";
+    }
+}
+
+void files(std::ostream& h, const std::string& dir) {
+  h << "<h2>Files</h2><ul>\n";
+  for (const char* f :
+       {"mesh/mesh.vtu", "mesh/boundary.vtu", "green/green_maps.vtp", "green/green.csv", "kfit/kfit.json",
+        "contact/pressure.vtp", "contact/fields.vtu", "contact/modes.csv", "defect/defect.pvd",
+        "green/post_design.csv", "defect/defect.csv", "crosscheck/readings.csv", "crosscheck/defect.csv",
+        "crosscheck/pressure.csv", "crosscheck/attribution.csv", "crosscheck/hole_budget.csv",
+        "crosscheck/hole_budget_signals.csv", "study/chain_study.csv", "report.json"})
+    if (std::filesystem::exists(dir + "/" + f)) h << "<li><a href=\"" << f << "\">" << f << "</a></li>\n";
+  h << "</ul></body></html>\n";
+}
+
+}  // namespace
+
+// "value +- error" (the terminal's ASCII).
+std::string with_error(double value, double error) {
+  const auto [v, e] = rounded_to_error(value, error);
+  return e.empty() ? v : v + " +- " + e;
+}
+
+void write_index(const std::string& dir, const Scene& scene, const IndexInput& in) {
+  std::ostringstream h;
+  page_head(h, scene, in);
+  headline_numbers(h, in);
+  error_levels(h, in);
+  stage_times_and_k(h, in);
+  post_design(h, in);
+  front_sensors(h, in);
+  hole_budget(h, scene, in);
+  crosscheck(h, scene, in);
+  figures(h, dir, scene, in);
+  files(h, dir);
+  write_text_atomic(dir + "/index.html", h.str());
+}
+
+}  // namespace skinfem::app

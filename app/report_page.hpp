@@ -1,0 +1,52 @@
+// The report's page, DIR/index.html: its headline numbers with their error bars, the levels behind them,
+// the time per stage, k, the post design, the front-sensor answer, the hole budget, the crosscheck's tables,
+// the figures scripts/figures.py drew (in the paper's order, captioned) and links to every file written.
+#pragma once
+
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pipeline/chain_level.hpp"
+#include "pipeline/hole_budget.hpp"
+#include "pipeline/post_design.hpp"
+#include "scene/scene.hpp"
+#include "validation/crosscheck.hpp"
+
+namespace skinfem::app {
+
+using pipeline::ChainLevel;
+using pipeline::HoleBudget;
+
+// The chain's quantities with their error bars (pipeline/chain_level.hpp), in display units.
+struct ErrorBar {
+  std::string quantity, what, unit, method;
+  double value = 0, error = 0, relative_error = 0;
+};
+
+// What index.html shows, as the stages returned it.
+struct IndexInput {
+  int dofs = 0;
+  double wall_total_s = 0, peak_rss_mb = 0;
+  const nlohmann::json* wall = nullptr;  // the report's own seconds per stage
+  std::string kfit_verdict, k_paper_answer;
+  std::optional<validation::FrontSensorAnswer> front;
+  std::optional<HoleBudget> budget;
+  std::vector<ErrorBar> error_bars;                 // empty without error bars
+  const std::vector<ChainLevel>* levels = nullptr;  // the error bars' levels, coarse to fine
+  std::map<std::string, double> exponents;          // time ∝ DOFs^e per stage
+  const validation::Crosscheck* x = nullptr;
+  const pipeline::PostDesign* post = nullptr;  // what a post changes, when the skin has an axis
+  std::string post_answer;
+  std::string left_out;  // what a --fast report left out; empty otherwise
+};
+
+// Writes DIR/index.html (atomically).
+void write_index(const std::string& dir, const Scene& scene, const IndexInput& in);
+
+// "value +- error", the value rounded to the error's second significant digit (the terminal's ASCII).
+std::string with_error(double value, double error);
+
+}  // namespace skinfem::app
