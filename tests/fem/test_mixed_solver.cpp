@@ -86,6 +86,14 @@ PlaneWaves compressible_field(const Lame& lame) {
   return ex;
 }
 
+// Every DOF of the base's nodes held (the bonded base).
+std::vector<bool> base_held(const TetMesh& m) {
+  std::vector<bool> fixed(3 * m.num_nodes(), false);
+  for (int i = 0; i < m.num_nodes(); ++i)
+    if (m.node_marker(i) & kBase) fixed[3 * i] = fixed[3 * i + 1] = fixed[3 * i + 2] = true;
+  return fixed;
+}
+
 TEST(MixedSolver, PatchTestReproducesLinearDisplacementToRoundOff) {
   // u = G x + c with constant σ: P2–P1 contains it exactly, so the discrete solution equals it.
   for (double nu : {0.5, 0.3}) {
@@ -188,9 +196,7 @@ TEST(MixedSolver, BlockSolveEqualsColumnByColumnSolves) {
   const Lame lame = Lame::from(3.0, 0.5);
   const TetMesh m = box_mesh(1.5, 1.5, 0.6);
   const MixedMatrices mm = assemble_mixed(m, lame);
-  std::vector<bool> fixed(3 * m.num_nodes(), false);
-  for (int i = 0; i < m.num_nodes(); ++i)
-    if (m.node_marker(i) & kBase) fixed[3 * i] = fixed[3 * i + 1] = fixed[3 * i + 2] = true;
+  const std::vector<bool> fixed = base_held(m);
   const MixedSolver solver(mm, lame, fixed, SolverKind::direct_ldlt);
   Eigen::MatrixXd F = Eigen::MatrixXd::Zero(3 * m.num_nodes(), 40);  // 40 > one MUMPS block of 32
   int col = 0;
@@ -209,9 +215,7 @@ TEST(MixedSolver, AReleasedFactorizationRefusesToSolve) {
   const Lame lame = Lame::from(3.0, 0.5);
   const TetMesh m = box_mesh(1.5, 1.5, 0.6);
   const MixedMatrices mm = assemble_mixed(m, lame);
-  std::vector<bool> fixed(3 * m.num_nodes(), false);
-  for (int i = 0; i < m.num_nodes(); ++i)
-    if (m.node_marker(i) & kBase) fixed[3 * i] = fixed[3 * i + 1] = fixed[3 * i + 2] = true;
+  const std::vector<bool> fixed = base_held(m);
   MixedSolver solver(mm, lame, fixed, SolverKind::direct_ldlt);
   Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * m.num_nodes());
   for (int i = 0; i < m.num_nodes(); ++i)
@@ -279,9 +283,7 @@ TEST(MixedSolver, BorderedProductsEqualBlockSolves) {
 // does not hold there, so that case scales the prescribed values with 1/E too).
 TEST(MixedSolver, AnyYoungsModulusScalesTheSolutionExactly) {
   const TetMesh m = box_mesh(1.5, 1.5, 0.6);
-  std::vector<bool> fixed(3 * m.num_nodes(), false);
-  for (int i = 0; i < m.num_nodes(); ++i)
-    if (m.node_marker(i) & kBase) fixed[3 * i] = fixed[3 * i + 1] = fixed[3 * i + 2] = true;
+  const std::vector<bool> fixed = base_held(m);
   Eigen::MatrixXd F = Eigen::MatrixXd::Zero(3 * m.num_nodes(), 3);
   int col = 0;
   for (int i = 0; i < m.num_nodes() && col < F.cols(); ++i)
