@@ -77,8 +77,7 @@ enum : int { kPending = 0, kDone = 1, kThrew = 2 };
 }  // namespace
 
 std::vector<std::vector<double>> map_in_processes(std::size_t n, std::size_t width,
-                                                  const std::function<std::vector<double>(std::size_t)>& f,
-                                                  const std::function<void()>& at_start) {
+                                                  const std::function<std::vector<double>(std::size_t)>& f) {
   const std::size_t workers = std::min<std::size_t>(n, static_cast<std::size_t>(worker_threads()));
   std::vector<std::vector<double>> out(n);
   const auto here = [&] {
@@ -113,7 +112,6 @@ std::vector<std::vector<double>> map_in_processes(std::size_t n, std::size_t wid
       if (getppid() != parent) _exit(1);
       int rc = 0;
       try {
-        if (at_start) at_start();
         for (long i; (i = shared->next.fetch_add(1)) < static_cast<long>(n);) {
           try {
             const std::vector<double> v = f(static_cast<std::size_t>(i));

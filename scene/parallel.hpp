@@ -21,12 +21,11 @@ void for_each_index(std::size_t n, const std::function<void(std::size_t)>& f, bo
 
 // f(0), ..., f(n - 1), each returning `width` doubles, in up to worker_threads() forked child processes:
 // for work that is not safe side by side in one process (MUMPS instances share Fortran state; OpenBLAS's
-// thread pool). Results come back in index order, whichever child computed them. at_start() runs first in
-// each child (e.g. one BLAS thread per process). With one worker or one item, f runs here, in order, without
-// at_start. Throws std::runtime_error with the message of the lowest index that threw, or naming the signal
+// thread pool). Results come back in index order, whichever child computed them; a child inherits this
+// process's settings (fix the BLAS's threads before the call). With one worker or one item, f runs here, in
+// order. Throws std::runtime_error with the message of the lowest index that threw, or naming the signal
 // that ended a child; a child dies with this process.
 std::vector<std::vector<double>> map_in_processes(std::size_t n, std::size_t width,
-                                                  const std::function<std::vector<double>(std::size_t)>& f,
-                                                  const std::function<void()>& at_start = {});
+                                                  const std::function<std::vector<double>(std::size_t)>& f);
 
 }  // namespace skinfem
