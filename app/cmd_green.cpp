@@ -30,8 +30,9 @@
 namespace skinfem::app {
 
 StageOutput<GreenRun> green_stage(const Scene& scene, const SensorGreens& greens, const AdjointSetup* setup,
-                                  const std::string& out_dir, double grid_dx) {
-  GreenRun run = green_run(scene, greens, setup, grid_dx);
+                                  const std::string& out_dir, double grid_dx,
+                                  const pipeline::MeridianScan* axis_scan, std::string* lines) {
+  GreenRun run = green_run(scene, greens, setup, grid_dx, axis_scan);
   std::ostringstream csv;
   csv.precision(10);
   csv << "sensor,component,offset_x_mm,offset_y_mm,g_point_per_mm2,g_disc_per_mm2"
@@ -64,30 +65,30 @@ StageOutput<GreenRun> green_stage(const Scene& scene, const SensorGreens& greens
   }
   const nlohmann::json summary = green_json(scene, greens, run, grid_dx);
   write_json(out_dir + "/summary.json", summary);
-  std::printf(
+  say(lines,
       "green %s: %zu sensors × 4 components, %s path (%s): %d adjoint solves on %d DOFs; %.1f s (factor "
       "%.1f s), peak %.0f MB\n",
       scene.name.c_str(), scene.sensors.positions.size(), greens.path.c_str(), greens.model.c_str(),
       greens.adjoint_solves, greens.dofs, total_seconds(run.wall), run.wall["factor"].get<double>(),
       peak_rss_mb());
   if (run.reciprocity_rel)
-    std::printf("  reciprocity check (direct solve vs adjoint, sensor 1, offset 1 mm): %.1e relative\n",
-                *run.reciprocity_rel);
-  if (run.meridian_check) std::printf("  %s\n", meridian_check_line(*run.meridian_check).c_str());
+    say(lines, "  reciprocity check (direct solve vs adjoint, sensor 1, offset 1 mm): %.1e relative\n",
+        *run.reciprocity_rel);
+  if (run.meridian_check) say(lines, "  %s\n", meridian_check_line(*run.meridian_check).c_str());
   if (run.flat && !run.ridged && !run.post) {
     double worst = 0;
     for (const GreenScan& scan : run.scans)
       for (double e : *scan.disc_max_diff_over_peak) worst = std::max(worst, e);
-    std::printf("  disc readings against the exact layer: max |difference| / peak %.1e\n", worst);
+    say(lines, "  disc readings against the exact layer: max |difference| / peak %.1e\n", worst);
   }
   if (run.grid) {
     const green::KernelGrid& grid = *run.grid;
-    std::printf("  kernel grid: %zu × %zu points at %g mm over x [%g, %g], y [%g, %g] mm (%ld on the skin)\n",
-                grid.x.size(), grid.y.size(), grid_dx, grid.x.front(), grid.x.back(), grid.y.front(),
-                grid.y.back(), static_cast<long>(std::count(grid.on_skin.begin(), grid.on_skin.end(), 1)));
+    say(lines, "  kernel grid: %zu × %zu points at %g mm over x [%g, %g], y [%g, %g] mm (%ld on the skin)\n",
+        grid.x.size(), grid.y.size(), grid_dx, grid.x.front(), grid.x.back(), grid.y.front(), grid.y.back(),
+        static_cast<long>(std::count(grid.on_skin.begin(), grid.on_skin.end(), 1)));
   }
-  std::printf("  wrote %s/green.csv, green_maps.vtp, %ssummary.json\n", out_dir.c_str(),
-              run.grid ? "kernel.h5, kernel.vti, " : "");
+  say(lines, "  wrote %s/green.csv, green_maps.vtp, %ssummary.json\n", out_dir.c_str(),
+      run.grid ? "kernel.h5, kernel.vti, " : "");
   return {std::move(run), std::move(summary)};
 }
 

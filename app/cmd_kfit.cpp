@@ -26,7 +26,12 @@ using green::LayerLoad;
 
 StageOutput<KfitResult> kfit_stage(const Scene& scene, const SensorGreens& greens, const std::string& out_dir,
                                    const std::string& load_name, const MeridianCheck* axis_check) {
-  KfitResult r = kfit(scene, greens, load_name == "point" ? LayerLoad::point : LayerLoad::punch, axis_check);
+  return kfit_stage(
+      scene, kfit(scene, greens, load_name == "point" ? LayerLoad::point : LayerLoad::punch, axis_check),
+      out_dir);
+}
+
+StageOutput<KfitResult> kfit_stage(const Scene& scene, KfitResult r, const std::string& out_dir) {
   nlohmann::json summary = kfit_json(r);
   prepare_output_dir(out_dir);
   write_json(out_dir + "/kfit.json", summary);

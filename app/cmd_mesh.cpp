@@ -6,9 +6,11 @@
 // Writes DIR/mesh.vtu (quadratic tets, point data boundary_marker: 1 base, 2 top, 4 side, 16 the symmetry
 // cut, 32 a post sensor's wall and top, OR-ed),
 // DIR/boundary.vtu (the marked boundary faces) and DIR/summary.json (counts, quality, volume, wall_s).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <string>
 
 #include "app/commands.hpp"
 #include "app/common.hpp"
@@ -55,8 +57,8 @@ nlohmann::json quality_json(const MeshQuality& q, const Scene& scene) {
   return j;
 }
 
-nlohmann::json mesh_stage(const Scene& scene, const TetMesh& mesh, double mesh_s,
-                          const std::string& out_dir) {
+nlohmann::json mesh_stage(const Scene& scene, const TetMesh& mesh, double mesh_s, const std::string& out_dir,
+                          std::string* lines) {
   const MeshQuality q = assess_quality(mesh);
 
   prepare_output_dir(out_dir);
@@ -69,15 +71,15 @@ nlohmann::json mesh_stage(const Scene& scene, const TetMesh& mesh, double mesh_s
   summary["peak_rss_mb"] = peak_rss_mb();
   write_json(out_dir + "/summary.json", summary);
 
-  std::printf("mesh %s: %d nodes (%d vertices), %d tets; dihedral %.1f–%.1f°, max radius-edge %.2f, ",
-              scene.name.c_str(), q.nodes, q.vertices, q.elements, q.min_dihedral_deg, q.max_dihedral_deg,
-              q.max_radius_edge);
-  std::printf("min det J ratio %.3f; volume %.4f mm³", q.min_jacobian_ratio, q.volume_mm3);
+  say(lines, "mesh %s: %d nodes (%d vertices), %d tets; dihedral %.1f–%.1f°, max radius-edge %.2f, ",
+      scene.name.c_str(), q.nodes, q.vertices, q.elements, q.min_dihedral_deg, q.max_dihedral_deg,
+      q.max_radius_edge);
+  say(lines, "min det J ratio %.3f; volume %.4f mm³", q.min_jacobian_ratio, q.volume_mm3);
   if (const auto exact = exact_volume(scene))
-    std::printf(" (exact %.4f, rel. error %.1e)", *exact, q.volume_mm3 / *exact - 1);
+    say(lines, " (exact %.4f, rel. error %.1e)", *exact, q.volume_mm3 / *exact - 1);
   if (mesh.straightened > 0)
-    std::printf("; %d elements folded by their curved edges were given straight ones", mesh.straightened);
-  std::printf("; %.2f s\n  wrote %s/mesh.vtu, boundary.vtu, summary.json\n", mesh_s, out_dir.c_str());
+    say(lines, "; %d elements folded by their curved edges were given straight ones", mesh.straightened);
+  say(lines, "; %.2f s\n  wrote %s/mesh.vtu, boundary.vtu, summary.json\n", mesh_s, out_dir.c_str());
   return summary;
 }
 

@@ -2,8 +2,12 @@
 // convolution model checked against it assumption by assumption (validation/crosscheck.hpp).
 //
 //   $ skinfem report scenes/candelier2011.json
-//   report candelier2011: 101342 DOFs, one factorization for the chain and 2 coarser for the error bars;
-//   50.3 s, peak 1407 MB
+//   report candelier2011: 95898 DOFs, one factorization for the chain and 2 coarser for the error bars;
+//   25.9 s, peak 1185 MB
+//
+// The stages run in order on the main thread. Beside it, on threads: kfit's scans and fits, the k sweep and
+// the mesh's files (no MUMPS), and in a fast report the meridian checks (their MUMPS calls take turns with
+// the 3D ones). The figures are drawn by background processes as their inputs become final.
 //
 // A scene mirror-symmetric about y = 0, contact included (pipeline/symmetry.hpp), is solved on its half y ≥ 0
 // and every output is written for the whole skin (mesh.vtu, maps, pressure, fields).
@@ -25,6 +29,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <future>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -40,6 +45,7 @@
 #include "mesh/mirror.hpp"
 #include "pipeline/crosscheck.hpp"
 #include "pipeline/symmetry.hpp"
+#include "scene/parallel.hpp"
 #include "validation/crosscheck.hpp"
 #include "validation/k_sweep.hpp"
 #include "validation/text.hpp"
@@ -111,17 +117,21 @@ nlohmann::json front_sensor_json(const validation::FrontSensorAnswer& a) {
   return j;
 }
 
-// Which single change of the calibration protocol gives the paper's k (validation/k_sweep.hpp), with the
-// FE k of sensor #1 per mesh scale (mesh_rows) as one more axis; writes DIR/k_sweep.csv and its report.json
-// entry.
-validation::KTargetAnswer k_paper_answer(const Scene& scene, double h,
-                                         const std::vector<validation::KSweepPoint>& mesh_rows,
-                                         const std::string& dir, nlohmann::json& entry) {
+// The exact layer's k as each reading of the calibration protocol changes about the scene's (thickness h at
+// the headline sensor): which single change gives the paper's k (validation/k_sweep.hpp).
+validation::KTargetAnswer k_paper_sweep(const Scene& scene, double h) {
   validation::KProtocol base;
   base.h = h;
   base.nu = scene.material.nu;
   base.punch_diameter = scene.calibration.punch_diameter;
-  const validation::KTargetAnswer a = validation::k_target_answer(base, mesh_rows, green::kPaperK);
+  return validation::k_target_answer(base, green::kPaperK);
+}
+
+// The sweep with the FE k of sensor #1 per mesh scale (mesh_rows) as one more axis; writes DIR/k_sweep.csv
+// and its report.json entry.
+void write_k_paper_answer(validation::KTargetAnswer& a, const std::vector<validation::KSweepPoint>& mesh_rows,
+                          const std::string& dir, nlohmann::json& entry) {
+  validation::add_points(a, mesh_rows);
   std::ostringstream csv;
   csv.precision(10);
   csv << "parameter,value,k_central,k_lsq_line\n";
@@ -139,7 +149,6 @@ validation::KTargetAnswer k_paper_answer(const Scene& scene, double h,
                               {"linear_interpolation", c.interpolated}});
   j["answer"] = a.answer;
   entry = j;
-  return a;
 }
 
 std::vector<ErrorBar> error_bars(const std::vector<ChainError>& errors,
@@ -194,11 +203,32 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
   pipeline::check_error_scales(error_scales);
   check_output_dir(out_dir);
   Stopwatch total;
-  nlohmann::json report, wall;
+  nlohmann::json report, wall, beside = nlohmann::json::object();  // beside: stages on another thread
   // The meridian's frictionless contact, which checks the 3D one, is solved first: beside the 3D
-  // factorization its own would add 35 MB to the report's peak.
+  // factorization its own would add 35 MB to the report's peak. A fast report, 200 MB below the full one's,
+  // solves it on a thread from the start, with the green stage's meridian scan of the axis sensor where the
+  // scene alone says which and how far (their MUMPS calls take turns with the 3D ones).
   std::optional<pipeline::MeridianContactRun> meridian_check;
-  if (scene.contact && pipeline::meridian_contact_unavailable(scene, FrictionMode::none, false).empty())
+  const bool meridian_contact =
+      scene.contact && pipeline::meridian_contact_unavailable(scene, FrictionMode::none, false).empty();
+  struct MeridianChecks {
+    std::optional<pipeline::MeridianContactRun> contact;
+    std::optional<pipeline::MeridianScan> axis;
+  };
+  std::future<MeridianChecks> meridian_run;
+  double meridian_seconds = 0;
+  if (fast)
+    meridian_run = std::async(std::launch::async, [&scene, meridian_contact, &meridian_seconds] {
+      const Stopwatch own;
+      MeridianChecks m;
+      if (meridian_contact) m.contact = pipeline::meridian_contact_run(scene, FrictionMode::none);
+      if (const auto plan = pipeline::planned_axis_scan(scene))
+        m.axis = pipeline::meridian_scan(scene, plan->first, green::LayerLoad::punch,
+                                         0.5 * scene.calibration.punch_diameter, plan->second);
+      meridian_seconds = own.seconds();
+      return m;
+    });
+  else if (meridian_contact)
     meridian_check = pipeline::meridian_contact_run(scene, FrictionMode::none);
   // One factorization for every stage: with a contact, bordered by its condensation's columns where that is
   // cheaper (green and kfit solve on its interior block). The hole budget sweeps its interface hypotheses
@@ -209,30 +239,106 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
   wall = skin->wall;
   const int dofs = skin->model->solver().free_dofs();
   report["dofs"] = dofs;
-  // A half skin is shown, and its quality and volume checked, as the whole it stands for.
-  const bool half = is_half_y(skin->mesh);
-  const TetMesh mirrored = half ? mirror_half(skin->mesh) : TetMesh{};
-  report["mesh"] =
-      mesh_stage(scene, half ? mirrored : skin->mesh, skin->wall["mesh"].get<double>(), out_dir + "/mesh");
 
   Stopwatch clock;
   auto adjoints = adjoint_setup(scene, skin);
   wall["green_adjoints"] = adjoints->wall["adjoint_solves"];
+  // A half skin is shown, and its quality and volume checked, as the whole it stands for: on a thread,
+  // beside the green stage (after the adjoint solves, whose peak its VTK copies would raise); its lines are
+  // printed first, where they belong.
+  std::string mesh_lines;
+  std::future<nlohmann::json> mesh_summary = std::async(std::launch::async, [&] {
+    const TetMesh& m = skin->mesh;
+    const double seconds = skin->wall["mesh"].get<double>();
+    if (!is_half_y(m)) return mesh_stage(scene, m, seconds, out_dir + "/mesh", &mesh_lines);
+    return mesh_stage(scene, mirror_half(m), seconds, out_dir + "/mesh", &mesh_lines);
+  });
   clock = Stopwatch();
   const SensorGreens greens = sensor_greens(scene, *adjoints);
+  // The exact layer's k sweep needs no FE, only the headline sensor's thickness: it runs on a thread (the
+  // layer's closed forms, no MUMPS) beside the stages to come, whose main thread leaves a core free. A fast
+  // report leaves it out.
+  double k_sweep_seconds = 0;
+  std::future<validation::KTargetAnswer> k_sweep;
+  if (!fast)
+    k_sweep = std::async(std::launch::async, [&] {
+      const ThreadCap one(1);
+      const Stopwatch own;
+      auto a = k_paper_sweep(scene, greens.thickness.at(0));
+      k_sweep_seconds = own.seconds();
+      return a;
+    });
+  // k_sweep.png is drawn with the contact's figures, or at the end when the mesh levels join the sweep.
+  const bool k_figure_with_contact = !fast && error_scales.empty() && scene.contact;
+  std::optional<pipeline::MeridianScan> axis_scan;
+  if (meridian_run.valid()) {
+    MeridianChecks m = meridian_run.get();
+    beside["meridian_checks"] = meridian_seconds;
+    meridian_check = std::move(m.contact);
+    axis_scan = std::move(m.axis);
+  }
   std::optional<MeridianCheck> axis_check;  // the green stage's, which kfit would otherwise solve again
   {
-    auto green = green_stage(scene, greens, adjoints.get(), out_dir + "/green");
+    std::string green_lines;
+    auto green = green_stage(scene, greens, adjoints.get(), out_dir + "/green", 0,
+                             axis_scan ? &*axis_scan : nullptr, &green_lines);
+    report["mesh"] = mesh_summary.get();
+    std::fputs((mesh_lines + green_lines).c_str(), stdout);
     report["green"] = std::move(green.summary);
     axis_check = green.result.meridian_check;
   }
-  const auto kf = kfit_stage(scene, greens, out_dir + "/kfit", "punch", axis_check ? &*axis_check : nullptr);
-  report["kfit"] = kf.summary;
-  const pipeline::KfitSensor& headline = kf.result.sensors.at(0);
-  wall["green_kfit_profiles"] = clock.seconds();
+  wall["green_profiles"] = clock.seconds();
+  // kfit's scans and fits read the 3D maps only: they run on threads beside the contact and the defect
+  // sweep, which do not need them (the green stage's meridian check is reused: no MUMPS there).
+  double kfit_seconds = 0;
+  std::future<pipeline::KfitResult> kfit_run = std::async(std::launch::async, [&] {
+    const Stopwatch own;
+    auto r =
+        pipeline::kfit(scene, greens, green::LayerLoad::punch, axis_check ? &*axis_check : nullptr, !fast);
+    kfit_seconds = own.seconds();
+    return r;
+  });
 
   IndexInput index;
-  index.kfit_verdict = kf.result.verdict;
+  std::optional<StageOutput<pipeline::KfitResult>> kf;
+  const pipeline::KfitSensor* headline = nullptr;
+  std::vector<int> figure_children;
+  int contact_figures_go = -1;  // their interpreter's stdin, told "go" once their inputs are written
+  const std::string script = figures_script();
+
+  // The k sweep's answer, with the FE's mesh levels (mesh_rows) when the error bars bring them.
+  const auto finish_k_sweep = [&](const std::vector<validation::KSweepPoint>& mesh_rows) {
+    const Stopwatch own;
+    validation::KTargetAnswer k_answer = k_sweep.get();
+    write_k_paper_answer(k_answer, mesh_rows, out_dir + "/kfit", report["k_paper"]);
+    index.k_paper_answer = k_answer.answer;
+    beside["k_sweep"] = k_sweep_seconds;
+    wall["k_sweep_wait"] = own.seconds();
+  };
+  // kfit's end: its outputs, and the calibration's figures drawn in a background process beside the stages
+  // still to come. The contact's are drawn after the crosscheck (and the budget), by an interpreter started
+  // now that waits for the word; the rest at the end.
+  const auto finish_kfit = [&] {
+    if (kf) return;
+    const Stopwatch own;
+    kf = kfit_stage(scene, kfit_run.get(), out_dir + "/kfit");
+    report["kfit"] = kf->summary;
+    headline = &kf->result.sensors.at(0);
+    index.kfit_verdict = kf->result.verdict;
+    beside["kfit"] = kfit_seconds;
+    wall["kfit_wait"] = own.seconds();
+    progress("figures: " + script + ", beside the stages to come");
+    figure_children.push_back(start_background_child(
+        {"/usr/bin/python3", script, out_dir, "--only", "fig1_calibration.png,green_vs_halfspace.png"}));
+    if (scene.contact)
+      figure_children.push_back(start_background_child(
+          {"/usr/bin/python3", script, out_dir, "--except",
+           std::string("fig1_calibration.png,green_vs_halfspace.png,pareto.png,post_design.png") +
+               (k_figure_with_contact ? "" : ",k_sweep.png"),
+           "--wait-for-go"},
+          &contact_figures_go));
+  };
+
   std::shared_ptr<ContactSetup> contact;
   std::optional<DefectRun> defect;
   std::optional<validation::Crosscheck> x;
@@ -258,9 +364,10 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
       // Every position's frame: the crosscheck convolves each one's tractions.
       defect = defect_stage(scene, contact, out_dir + "/defect", {}, pipeline::DefectFrames::every, !fast);
       wall["defect"] = clock.seconds();
+      finish_kfit();
       clock = Stopwatch();
       x = crosscheck_run(scene, *adjoints, *contact, *defect, scene.contact->force.value_or(force),
-                         headline.fe.k_lsq_line, meridian ? &*meridian : nullptr);
+                         headline->fe.k_lsq_line, meridian ? &*meridian : nullptr);
       write_crosscheck(*x, scene.sensors, out_dir + "/crosscheck");
       index.front = validation::front_sensor_answer(
           *x, validation::front_sensors(scene.sensors, contact_center(scene), scene.contact->direction),
@@ -270,7 +377,7 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
       if (!fast) {
         clock = Stopwatch();
         auto budget = hole_budget_stage(scene, *contact, *x, out_dir + "/crosscheck",
-                                        pipeline::paper_reading_scale(kf.result));
+                                        pipeline::paper_reading_scale(kf->result));
         report["hole_budget"] = std::move(budget.summary);
         index.budget = std::move(budget.result);
         wall["hole_budget"] = clock.seconds();
@@ -278,12 +385,17 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
     }
   }
 
-  // The figures whose inputs are final are drawn from here on, beside the stages still to come; those of
-  // the later stages (kfit/k_sweep.csv, study/chain_study.csv, green/post_design.csv) at the end.
-  const std::string script = figures_script(), late_figures = "k_sweep.png,pareto.png,post_design.png";
-  progress("figures: " + script + ", beside the stages to come");
-  const int early_figures =
-      start_background_child({"/usr/bin/python3", script, out_dir, "--except", late_figures});
+  finish_kfit();
+  if (!fast && error_scales.empty()) finish_k_sweep({});
+  tell_background_child(contact_figures_go, "go");
+  // Figures of the later stages (kfit/k_sweep.csv with the mesh levels, study/chain_study.csv,
+  // green/post_design.csv) at the end.
+  std::vector<std::string> late;
+  if (!fast && !k_figure_with_contact) late.push_back("k_sweep.png");
+  if (!error_scales.empty()) late.push_back("pareto.png");
+  if (!fast) late.push_back("post_design.png");
+  std::string late_figures;
+  for (const std::string& name : late) late_figures += (late_figures.empty() ? "" : ",") + name;
 
   // Error bars: the chain's headline quantities on this mesh and on coarser ones (every mesh size scaled),
   // Richardson through the three finest. The coarse levels come after this level's memory is released.
@@ -318,11 +430,7 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
     for (const ChainLevel& l : levels) mesh_rows.push_back({"mesh_scale", l.scale, l.value[0], l.value[1]});
     wall["error_levels"] = clock.seconds();
   }
-  clock = Stopwatch();
-  progress("k sweep: which protocol reading gives the paper's k");
-  index.k_paper_answer =
-      k_paper_answer(scene, headline.h_mm, mesh_rows, out_dir + "/kfit", report["k_paper"]).answer;
-  wall["k_sweep"] = clock.seconds();
+  if (!error_scales.empty()) finish_k_sweep(mesh_rows);
 
   clock = Stopwatch();
   StageOutput<pipeline::PostDesign> post;
@@ -335,20 +443,28 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
     }
     wall["post_design"] = clock.seconds();
   } else {
-    index.left_out = "error bars (the coarser levels)";
+    std::vector<std::string> out{"error bars (the coarser levels)"};
     if (scene.contact && scene.contact->sweep)
-      index.left_out += ", the hole-signal budget of hypotheses, the defect sweep's VTK frames";
-    index.left_out += " and the post design sweep";
+      out.insert(out.end(), {"the hole-signal budget of hypotheses", "the defect sweep's VTK frames"});
+    out.push_back("the post design sweep");
+    out.push_back("the k sweep (which protocol reading gives the paper's k)");
+    if (scene.geometry.kind == GeometryKind::cap)
+      out.push_back("the cap's effective-thickness fits (kfit.json)");
+    for (size_t i = 0; i < out.size(); ++i)
+      index.left_out += (i == 0 ? "" : i + 1 < out.size() ? ", " : " and ") + out[i];
     report["fast"] = {{"left_out", index.left_out}};
   }
 
   clock = Stopwatch();
-  progress("figures: the last ones, and the end of the others");
-  int stopped_by = 0;
-  const int rc_late = run_child({"/usr/bin/python3", script, out_dir, "--only", late_figures}, &stopped_by);
-  if (stopped_by != 0) kill(early_figures, stopped_by);
-  const int rc_early = wait_background_child(early_figures);
-  const int rc = rc_early != 0 ? rc_early : rc_late;
+  progress(late_figures.empty() ? "figures: the end of those drawn beside"
+                                : "figures: the last ones, and the end of the others");
+  int stopped_by = 0, rc = 0;
+  if (!late_figures.empty())
+    rc = run_child({"/usr/bin/python3", script, out_dir, "--only", late_figures}, &stopped_by);
+  if (stopped_by != 0)
+    for (const int child : figure_children) kill(child, stopped_by);
+  for (const int child : figure_children)
+    if (const int c = wait_background_child(child); rc == 0) rc = c;
   if (stopped_by != 0) {
     std::fprintf(stderr,
                  "skinfem: report: stopped by signal %d (%s) while drawing the figures; report.json and "
@@ -361,12 +477,14 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
 
   report["scene"] = scene_json(scene);
   report["wall_s"] = wall;
+  report["wall_beside_s"] = beside;
   report["wall_total_s"] = index.wall_total_s = total.seconds();
   report["peak_rss_mb"] = index.peak_rss_mb = peak_rss_mb();
   report["units"] = {{"length", "mm"}, {"force", "N"}, {"stress", "kPa in tables and CSV, MPa in the model"}};
   write_json(out_dir + "/report.json", report);
   index.dofs = dofs;
   index.wall = &wall;
+  index.wall_beside = &beside;
   index.x = x ? &*x : nullptr;
   write_index(out_dir, scene, index);
   std::printf("report %s: %d DOFs, one factorization for the chain%s; %.1f s, peak %.0f MB\n",
@@ -378,7 +496,7 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
   for (const ErrorBar& e : index.error_bars)
     std::printf("  %s: %s%s%s (%s)\n", e.what.c_str(), with_error(e.value, e.error).c_str(),
                 e.unit.empty() ? "" : " ", e.unit.c_str(), e.method.c_str());
-  std::printf("  %s\n", index.k_paper_answer.c_str());
+  if (!index.k_paper_answer.empty()) std::printf("  %s\n", index.k_paper_answer.c_str());
   if (index.front) std::printf("  %s\n", index.front->answer.c_str());
   if (rc != 0)
     std::printf("  figures: scripts/figures.py exited with %d; index.html lists the figures written\n", rc);
@@ -390,6 +508,10 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
   std::string line;
   for (const auto& [t, stage] : stages) line += (line.empty() ? "" : ", ") + stage + " " + fmt("%.1f", t);
   std::printf("  seconds per stage: %s\n", line.c_str());
+  line.clear();
+  for (const auto& [stage, t] : beside.items())
+    line += (line.empty() ? "" : ", ") + stage + " " + fmt("%.1f", t.get<double>());
+  if (!line.empty()) std::printf("  beside them, on another thread: %s\n", line.c_str());
   std::printf("  wrote %s/index.html, report.json\n", out_dir.c_str());
   return 0;
 }

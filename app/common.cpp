@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/prctl.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -11,6 +12,7 @@
 #include <chrono>
 #include <climits>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -178,20 +180,39 @@ int run_child(const std::vector<std::string>& argv, int* interrupted_by, double 
   return rc;
 }
 
-int start_background_child(const std::vector<std::string>& argv) {
+int start_background_child(const std::vector<std::string>& argv, int* go_fd) {
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
+  int go[2] = {-1, -1};
+  // A socket pair rather than a pipe: a line sent to a child that has already ended must not raise SIGPIPE.
+  if (go_fd && socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, go) != 0) return -1;
   const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid == 0) {
     // Only async-signal-safe calls until exec.
     if (prctl(PR_SET_PDEATHSIG, SIGTERM) != 0 || getppid() != parent) _exit(128 + SIGTERM);
     dup2(STDERR_FILENO, STDOUT_FILENO);
+    if (go_fd) dup2(go[0], STDIN_FILENO);
     execvp(args[0], args.data());
     _exit(127);
   }
+  if (go_fd) {
+    close(go[0]);
+    if (pid < 0) close(go[1]);
+    *go_fd = pid < 0 ? -1 : go[1];
+  }
   return pid;
+}
+
+void tell_background_child(int& go_fd, const std::string& line) {
+  if (go_fd < 0) return;
+  const std::string text = line + "\n";
+  ssize_t n;
+  while ((n = send(go_fd, text.data(), text.size(), MSG_NOSIGNAL)) < 0 && errno == EINTR) {
+  }
+  close(go_fd);
+  go_fd = -1;
 }
 
 int wait_background_child(int pid) {
@@ -222,6 +243,26 @@ void check_levels(const std::string& option, const std::vector<double>& levels, 
 }
 
 void progress(const std::string& message) { std::cerr << "[skinfem] " << message << std::endl; }
+
+void say(std::string* to, const char* format, ...) {
+  va_list args;
+  va_start(args, format);
+  if (!to) {
+    std::vprintf(format, args);
+  } else {
+    va_list copy;
+    va_copy(copy, args);
+    const int n = std::vsnprintf(nullptr, 0, format, copy);
+    va_end(copy);
+    if (n > 0) {
+      std::string text(static_cast<size_t>(n) + 1, '\0');
+      std::vsnprintf(text.data(), text.size(), format, args);
+      text.pop_back();
+      *to += text;
+    }
+  }
+  va_end(args);
+}
 
 namespace {
 // A file shipped beside the command when installed (share/skinfem/NAME), else the source tree's.

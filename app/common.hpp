@@ -45,7 +45,11 @@ int run_child(const std::vector<std::string>& argv, int* interrupted_by = nullpt
 // A child started in the background, its stdout sent to our stderr, in our process group (a terminal's
 // Ctrl-C reaches it as it reaches us), ended with SIGTERM when we end first. Returns its id, or -1 when it
 // could not start. wait_background_child: its exit code, or 128 + the signal that ended it (127: no exec).
-int start_background_child(const std::vector<std::string>& argv);
+// go_fd, when given: the child's stdin is a socket whose other end comes back here, for a child that starts
+// before its inputs are ready and waits for a line (tell_background_child sends it and closes the socket; our
+// end closing unsaid, as when we stop early, gives the child an end of file).
+int start_background_child(const std::vector<std::string>& argv, int* go_fd = nullptr);
+void tell_background_child(int& go_fd, const std::string& line);
 int wait_background_child(int pid);
 
 // Study levels given on the command line (--scales, --ridges, --error-scales): each finite, no two equal,
@@ -55,6 +59,9 @@ void check_levels(const std::string& option, const std::vector<double>& levels, 
 
 // "[skinfem] stage…" on stderr, so stdout stays the human summary.
 void progress(const std::string& message);
+// printf onto `to` when given (a stage computed beside others, its lines printed later in their place), else
+// to stdout.
+void say(std::string* to, const char* format, ...) __attribute__((format(printf, 2, 3)));
 
 // scripts/figures.py: installed beside the command (../share/skinfem/figures.py from its directory), else
 // the source tree's (a build tree's command).

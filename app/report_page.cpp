@@ -183,9 +183,15 @@ void stage_times_and_k(std::ostream& h, const IndexInput& in) {
   for (const auto& [stage, sec] : in.wall->items())
     h << "<tr><td style=\"text-align:left\">" << stage << "</td><td>" << fmt("%.2f", sec.get<double>())
       << "</td></tr>\n";
+  if (in.wall_beside)
+    for (const auto& [stage, sec] : in.wall_beside->items())
+      h << "<tr><td style=\"text-align:left\">" << stage << " (on another thread, beside the others)</td><td>"
+        << fmt("%.2f", sec.get<double>()) << "</td></tr>\n";
   h << "</table>\n";
-  h << "<h2>k</h2><p>" << html_escape(in.kfit_verdict) << "</p>\n<p>" << html_escape(in.k_paper_answer)
-    << " (<a href=\"kfit/k_sweep.csv\">kfit/k_sweep.csv</a>)</p>\n";
+  h << "<h2>k</h2><p>" << html_escape(in.kfit_verdict) << "</p>\n";
+  if (!in.k_paper_answer.empty())
+    h << "<p>" << html_escape(in.k_paper_answer)
+      << " (<a href=\"kfit/k_sweep.csv\">kfit/k_sweep.csv</a>)</p>\n";
 }
 
 void post_design(std::ostream& h, const IndexInput& in) {

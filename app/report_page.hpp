@@ -30,7 +30,8 @@ struct ErrorBar {
 struct IndexInput {
   int dofs = 0;
   double wall_total_s = 0, peak_rss_mb = 0;
-  const nlohmann::json* wall = nullptr;  // the report's own seconds per stage
+  const nlohmann::json* wall = nullptr;         // the report's own seconds per stage
+  const nlohmann::json* wall_beside = nullptr;  // seconds of the stages run on another thread beside them
   std::string kfit_verdict, k_paper_answer;
   std::optional<validation::FrontSensorAnswer> front;
   std::optional<HoleBudget> budget;

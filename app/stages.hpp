@@ -22,8 +22,10 @@
 
 namespace skinfem::app {
 
+// lines: where its lines go instead of stdout (common.hpp say: the report's mesh stage runs on a thread
+// beside its green stage, and prints both in order).
 nlohmann::json mesh_stage(const Scene& scene, const TetMesh& mesh, double mesh_seconds,
-                          const std::string& out_dir);
+                          const std::string& out_dir, std::string* lines = nullptr);
 // grid_dx > 0: also the kernel on that grid over the top (kernel.h5, kernel.vti; green/kernel_grid.hpp).
 // setup: the 3D path's adjoints (reciprocity check, maps on the mesh), or null for the meridian path.
 template <class Result>
@@ -33,11 +35,16 @@ struct StageOutput {
 };
 StageOutput<pipeline::GreenRun> green_stage(const Scene& scene, const SensorGreens& greens,
                                             const AdjointSetup* setup, const std::string& out_dir,
-                                            double grid_dx = 0);
+                                            double grid_dx = 0,
+                                            const pipeline::MeridianScan* axis_scan = nullptr,
+                                            std::string* lines = nullptr);
 // axis_check: pipeline::kfit's (green_stage's, reused).
 StageOutput<pipeline::KfitResult> kfit_stage(const Scene& scene, const SensorGreens& greens,
                                              const std::string& out_dir, const std::string& load_name,
                                              const MeridianCheck* axis_check = nullptr);
+// Its second half, for a run made elsewhere (the report's, on a thread): writes kfit.json, prints the lines.
+StageOutput<pipeline::KfitResult> kfit_stage(const Scene& scene, pipeline::KfitResult r,
+                                             const std::string& out_dir);
 // not_meridian: why the automatic path did not take the meridian (said and kept in summary.json).
 // frictionless: pipeline::contact_run's.
 StageOutput<pipeline::ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const ContactSetup> setup,

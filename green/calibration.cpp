@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -90,19 +91,24 @@ std::array<double, 4> max_error_over_peak(const std::vector<GreenSample>& fe,
 
 namespace {
 // Golden section for the minimum of a thickness misfit on [lo, hi] (to 1e-6 of h0); a minimum at a bound
-// is no fit.
+// is no fit. misfit(h, stop) may return early, with any value above `stop`, once its sum exceeds it: a
+// sum of squares only grows term by term, so the comparison that needs it has its answer, and the
+// search keeps only the smaller of the two values it compares. The search's steps, and its result, are
+// those of the full sums.
 template <class Misfit>
 double best_thickness(const Misfit& misfit, double lo, double hi, double h0, const char* what) {
+  constexpr double kNone = std::numeric_limits<double>::infinity();
   double a = lo, b = hi;
   const double phi = 0.5 * (std::sqrt(5.0) - 1);
-  double c = b - phi * (b - a), d = a + phi * (b - a), fc = misfit(c), fd = misfit(d);
+  double c = b - phi * (b - a), d = a + phi * (b - a), fc = misfit(c, kNone), fd = misfit(d, fc);
   while (b - a > 1e-6 * h0) {
     if (fc < fd) {
       b = d, d = c, fd = fc;
-      c = b - phi * (b - a), fc = misfit(c);
+      // fc is kept only if fc < fd: a sum past the largest value below fd has answered.
+      c = b - phi * (b - a), fc = misfit(c, std::nextafter(fd, 0.0));
     } else {
       a = c, c = d, fc = fd;
-      d = a + phi * (b - a), fd = misfit(d);
+      d = a + phi * (b - a), fd = misfit(d, fc);  // fd is kept only if fd <= fc
     }
   }
   const double h = 0.5 * (a + b);
@@ -139,10 +145,10 @@ double rms_over_peak(const std::vector<double>& m, double s, const std::vector<d
 
 double effective_thickness(const std::vector<double>& x, const std::vector<double>& g_zz, double h0,
                            double nu, LayerLoad load, double radius) {
-  auto misfit = [&](double h) {
+  auto misfit = [&](double h, double stop) {
     const LayerGreen layer(h, nu, load, radius);
     double s = 0;
-    for (size_t i = 0; i < x.size(); ++i) s += std::pow(layer.zz_at(x[i], 0.0) - g_zz[i], 2);
+    for (size_t i = 0; i < x.size() && !(s > stop); ++i) s += std::pow(layer.zz_at(x[i], 0.0) - g_zz[i], 2);
     return s;
   };
   return best_thickness(misfit, 0.5 * h0, 1.5 * h0, h0, "effective thickness");
@@ -157,7 +163,7 @@ PaperCalibration paper_calibration(const std::vector<double>& x, const std::vect
     for (const GreenSample& s : layer_line(h, nu, load, radius, x)) mz.push_back(s.zz), mx.push_back(s.zx);
   };
   std::vector<double> mz, mx;
-  const auto misfit = [&](double h) {
+  const auto misfit = [&](double h, double /*stop: the scale needs every term*/) {
     layer_at(h, mz, mx);
     const double s = linear_scale(mz, zz);
     double r = 0;

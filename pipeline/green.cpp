@@ -85,8 +85,8 @@ void check_kernel_grid(const Scene& scene, double dx) {
   }
 }
 
-GreenRun green_run(const Scene& scene, const SensorGreens& greens, const AdjointSetup* setup,
-                   double grid_dx) {
+GreenRun green_run(const Scene& scene, const SensorGreens& greens, const AdjointSetup* setup, double grid_dx,
+                   const MeridianScan* axis_scan) {
   using green::GreenSample;
   using green::LayerLoad;
   const double radius = 0.5 * scene.calibration.punch_diameter;
@@ -140,7 +140,10 @@ GreenRun green_run(const Scene& scene, const SensorGreens& greens, const Adjoint
       });
   if (axis >= 0 && axis < ns)
     run.meridian_check =
-        meridian_check(scene, axis, scans[axis].profile, LayerLoad::punch, radius, scans[axis].h_mm);
+        axis_scan && axis_scan->sensor == axis && axis_scan->load == LayerLoad::punch &&
+                axis_scan->radius == radius && axis_scan->profile.offset_x == scans[axis].profile.offset_x
+            ? meridian_check(scene, *axis_scan, scans[axis].profile, scans[axis].h_mm)
+            : meridian_check(scene, axis, scans[axis].profile, LayerLoad::punch, radius, scans[axis].h_mm);
   run.scans = std::move(scans);
   run.wall["profiles"] = clock.seconds();
 

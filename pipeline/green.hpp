@@ -50,9 +50,10 @@ std::array<double, 4> footprint_box(const Scene& scene);
 void check_kernel_grid(const Scene& scene, double dx);
 
 // setup: the 3D path's adjoints (reciprocity check, maps on the mesh), or null for the meridian path.
-// grid_dx > 0: also the kernel on that grid over the footprint.
+// grid_dx > 0: also the kernel on that grid over the footprint. axis_scan: the meridian check's scan, made
+// before (a fast report's, beside its factorization); used when it is of the axis sensor's scan.
 GreenRun green_run(const Scene& scene, const SensorGreens& greens, const AdjointSetup* setup,
-                   double grid_dx = 0);
+                   double grid_dx = 0, const MeridianScan* axis_scan = nullptr);
 // summary.json of `skinfem green`.
 nlohmann::json green_json(const Scene& scene, const SensorGreens& greens, const GreenRun& run,
                           double grid_dx);

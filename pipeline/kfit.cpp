@@ -15,7 +15,7 @@ namespace skinfem::pipeline {
 using green::LayerLoad;
 
 KfitResult kfit(const Scene& scene, const SensorGreens& greens, LayerLoad load,
-                const MeridianCheck* axis_check) {
+                const MeridianCheck* axis_check, bool thickness_fits) {
   KfitResult r;
   r.load = load;
   r.punch_diameter_mm = load == LayerLoad::point ? 0.0 : scene.calibration.punch_diameter;
@@ -60,7 +60,7 @@ KfitResult kfit(const Scene& scene, const SensorGreens& greens, LayerLoad load,
         // A post's scan is not a layer's: calibrate it as the paper did, scale and thickness.
         k.paper_calibration =
             green::paper_calibration(prof.offset_x, prof.point, h, scene.material.nu, load, radius);
-      } else if (scene.geometry.kind == GeometryKind::cap) {
+      } else if (scene.geometry.kind == GeometryKind::cap && thickness_fits) {
         std::vector<double> zz;
         for (const auto& g : prof.point) zz.push_back(g.zz);
         k.effective_thickness_mm =

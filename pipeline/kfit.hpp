@@ -63,9 +63,10 @@ struct KfitResult {
 
 // load: point or punch (the calibration punch of the scene). axis_check: the axis sensor's meridian check of
 // the same scan, already made (pipeline/green.hpp GreenRun's, under the punch), reused instead of solved
-// again; null or of another sensor or load: kfit makes its own.
+// again; null or of another sensor or load: kfit makes its own. thickness_fits false: no cap's
+// effective-thickness fit (three quarters of kfit's time; a fast report leaves it out).
 KfitResult kfit(const Scene& scene, const SensorGreens& greens, green::LayerLoad load,
-                const MeridianCheck* axis_check = nullptr);
+                const MeridianCheck* axis_check = nullptr, bool thickness_fits = true);
 // 2·sensors: each reading's scale in the paper's calibration (σ_z of sensor k at 2k, σ_x at 2k + 1), for
 // the hole budget's units; empty unless every sensor was calibrated (posts).
 Eigen::VectorXd paper_reading_scale(const KfitResult& r);

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
+#include "mesh/shape.hpp"
 #include "pipeline/clock.hpp"
 #include "pipeline/kfit.hpp"
 #include "pipeline/progress.hpp"
@@ -230,18 +232,53 @@ int axis_sensor(const Scene& scene, const SensorGreens& greens) {
   return -1;
 }
 
-MeridianCheck meridian_check(const Scene& scene, int sensor, const green::ScanProfile& prof,
-                             green::LayerLoad load, double radius, double h) {
+MeridianScan meridian_scan(const Scene& scene, int sensor, green::LayerLoad load, double radius,
+                           double half_width) {
   Stopwatch clock;
   const SensorGreens m = meridian_sensor_greens(with_sensor(scene, sensor));
-  const auto mp = green::scan_profile(m.of(0), load, radius, prof.offset_x.back(), scene.calibration.spacing);
+  MeridianScan out;
+  out.sensor = sensor;
+  out.load = load;
+  out.radius = radius;
+  out.path_model = m.model;
+  out.dofs = m.dofs;
+  out.profile = green::scan_profile(m.of(0), load, radius, half_width, scene.calibration.spacing);
+  out.seconds = clock.seconds();
+  return out;
+}
+
+std::optional<std::pair<int, double>> planned_axis_scan(const Scene& scene) {
+  const SkinShape shape(scene.geometry);
+  if (scene.geometry.kind != GeometryKind::cap || !shape.exact() || posts_among_others(scene)) return {};
+  for (size_t s = 0; s < scene.sensors.positions.size(); ++s)
+    if (meridian_unavailable(with_sensor(scene, s)).empty()) {
+      const Vec2& p = scene.sensors.positions[s];
+      const double w = scan_half_width(scene, nullptr, shape.mean_top_z(p[0], p[1]), p);
+      // The grid's last offset, as green::scan_profile places it.
+      return std::pair{static_cast<int>(s),
+                       std::floor(w / scene.calibration.spacing + 1e-9) * scene.calibration.spacing};
+    }
+  return {};
+}
+
+MeridianCheck meridian_check(const Scene& scene, int sensor, const green::ScanProfile& prof,
+                             green::LayerLoad load, double radius, double h) {
+  return meridian_check(scene, meridian_scan(scene, sensor, load, radius, prof.offset_x.back()), prof, h);
+}
+
+MeridianCheck meridian_check(const Scene& scene, const MeridianScan& scan, const green::ScanProfile& prof,
+                             double h) {
+  const auto& mp = scan.profile;
+  if (mp.offset_x != prof.offset_x)
+    throw std::invalid_argument("meridian_check: the meridian scan's offsets are not the 3D scan's");
+  Stopwatch clock;
   const green::ChannelGains gains = sensor_gains(scene.sensors, scene.material.nu, h).gains;
   const green::KReport k3 = green::fit_profile(prof.offset_x, prof.point, h, gains);
   const green::KReport mk = green::fit_profile(mp.offset_x, mp.point, h, gains);
   MeridianCheck c;
-  c.sensor = sensor + 1;
-  c.path_model = m.model;
-  c.dofs = m.dofs;
+  c.sensor = scan.sensor + 1;
+  c.path_model = scan.path_model;
+  c.dofs = scan.dofs;
   c.k_central = mk.k_central;
   c.k_lsq_line = mk.k_lsq_line;
   c.k_central_3d_vs_meridian = k3.k_central / mk.k_central - 1;
@@ -249,7 +286,7 @@ MeridianCheck meridian_check(const Scene& scene, int sensor, const green::ScanPr
   for (size_t i = 0; i < 4; ++i) c.component_k_3d_minus_meridian[i] = k3.components[i].k - mk.components[i].k;
   c.point_max_diff_over_peak = green::max_error_over_peak(prof.point, mp.point);
   c.disc_max_diff_over_peak = green::max_error_over_peak(prof.disc, mp.disc);
-  c.seconds = clock.seconds();
+  c.seconds = scan.seconds + clock.seconds();
   return c;
 }
 

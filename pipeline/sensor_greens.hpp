@@ -7,7 +7,9 @@
 #include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "green/calibration.hpp"
@@ -119,6 +121,25 @@ struct MeridianCheck {
 };
 MeridianCheck meridian_check(const Scene& scene, int sensor, const green::ScanProfile& prof,
                              green::LayerLoad load, double radius, double h);
+// Its meridian half, which needs no 3D solve: the sensor's scan on the meridian path over offsets
+// |x| ≤ half_width. A fast report makes it beside its 3D factorization, for a cap whose shape gives the axis
+// sensor's thickness (planned_axis_scan: the sensor (0-based) and half-width green_run will scan, from the
+// scene alone; nullopt elsewhere).
+struct MeridianScan {
+  int sensor = -1;  // 0-based
+  green::LayerLoad load = green::LayerLoad::punch;
+  double radius = 0;
+  std::string path_model;
+  int dofs = 0;
+  green::ScanProfile profile;
+  double seconds = 0;
+};
+MeridianScan meridian_scan(const Scene& scene, int sensor, green::LayerLoad load, double radius,
+                           double half_width);
+std::optional<std::pair<int, double>> planned_axis_scan(const Scene& scene);
+// The check from a scan made before; throws std::invalid_argument unless it holds prof's offsets.
+MeridianCheck meridian_check(const Scene& scene, const MeridianScan& scan, const green::ScanProfile& prof,
+                             double h);
 // As kfit.json and green's summary.json hold it.
 nlohmann::json meridian_check_json(const MeridianCheck& check);
 // One line for stdout, from the check's numbers.

@@ -21,7 +21,17 @@
 
 namespace skinfem {
 
+namespace {
+thread_local int t_thread_cap = 0;  // 0: none
+}  // namespace
+
+ThreadCap::ThreadCap(int n) : before_(t_thread_cap) {
+  t_thread_cap = before_ > 0 ? std::min(before_, std::max(1, n)) : std::max(1, n);
+}
+ThreadCap::~ThreadCap() { t_thread_cap = before_; }
+
 int worker_threads() {
+  if (t_thread_cap == 1) return 1;  // no system call for a thread that may use one core
   cpu_set_t set;
   int n = sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : 1;
   if (const char* omp = std::getenv("OMP_NUM_THREADS")) {
@@ -29,6 +39,7 @@ int worker_threads() {
     const long cap = std::strtol(omp, &end, 10);
     if (end != omp && *end == '\0' && cap >= 1) n = static_cast<int>(std::min<long>(n, cap));
   }
+  if (t_thread_cap > 0) n = std::min(n, t_thread_cap);
   return std::max(1, n);
 }
 

@@ -11,6 +11,18 @@ namespace skinfem {
 // Threads such work may use: the CPUs this process may run on, at most OMP_NUM_THREADS when that is set (a
 // sweep's member declares its threads that way).
 int worker_threads();
+// Caps worker_threads() on the calling thread while it lives (a cap inside another keeps the smaller): work
+// run on a thread beside others (the report's k sweep) takes no more cores than it was given.
+class ThreadCap {
+ public:
+  explicit ThreadCap(int n);
+  ~ThreadCap();
+  ThreadCap(const ThreadCap&) = delete;
+  ThreadCap& operator=(const ThreadCap&) = delete;
+
+ private:
+  int before_;
+};
 
 // f(0), ..., f(n - 1) on up to worker_threads() threads when `parallel`, else in order on this one. After an
 // item throws, no item above it starts; the exception of the lowest index that threw is rethrown once every

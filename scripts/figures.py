@@ -10,7 +10,8 @@
 #   $ /usr/bin/python3 scripts/figures.py out/candelier2011 --only k_sweep.png,pareto.png
 # --only NAMES / --except NAMES (comma-separated figure names): draw just those, or all but those, and delete
 # no other PNG: `skinfem report` draws the figures whose inputs are final while its later stages compute,
-# and the rest at its end.
+# and the rest at its end. --wait-for-go: read one line from stdin first and draw only if it says go (the
+# report starts the interpreter, whose imports take a third of a second, before the inputs are written).
 #
 # Needs only the standard library, numpy and matplotlib (Debian's /usr/bin/python3; Agg backend). No
 # randomness and no version string in the PNGs (savefig metadata Software=None): same inputs, same bytes.
@@ -220,6 +221,15 @@ def read_readings(d):
 
 
 # ---- helpers --------------------------------------------------------------------------------------------
+def inch_margins(fig, left, right, bottom, top, wspace, hspace):
+    """Margins in inches, as tight_layout finds them on the default scene, with room to spare: tight_layout
+    measures every tick label of every axes, a third of a many-panel figure's time (0.36 of 1.08 s for
+    fig. 3), and the figures drawn after the report's last stage are what it waits for."""
+    w, h = fig.get_size_inches()
+    fig.subplots_adjust(left=left / w, right=1 - right / w, bottom=bottom / h, top=1 - top / h, wspace=wspace,
+                        hspace=hspace)
+
+
 def sensor_color(s):
     return plt.get_cmap("tab10")((s - 1) % 10)
 
@@ -279,7 +289,7 @@ def fig1_calibration(d):
     fig.legend(handles, labels, loc="center right", title="FE: disc mean, solid")
     fig.suptitle("Calibration scans (paper fig. 1): FE Green tensor of every sensor along y = 0, against the\n"
                  f"rescaled half-space model at sensor #1's depth h = {kf['h_mm']:.3f} mm")
-    fig.tight_layout(rect=(0, 0, 0.76, 1))
+    inch_margins(fig, left=0.95, right=3.8, bottom=0.6, top=0.9, wspace=0.2, hspace=0.12)
     return fig
 
 
@@ -325,7 +335,7 @@ def fig2_static_sliding(d):
     fig.legend(list(handles.values()), list(handles), loc="lower center", ncol=min(len(handles), 7),
                title="variant (fe: full FE; paper_model: the paper's convolution model)")
     fig.suptitle("Mean sensor stresses under the plate, static and sliding (paper fig. 2): FE and model variants")
-    fig.tight_layout(rect=(0, 0.08, 1, 1))
+    inch_margins(fig, left=0.85, right=0.2, bottom=1.3, top=0.95, wspace=0.13, hspace=0.13)
     return fig
 
 
@@ -386,7 +396,7 @@ def fig_varsigma(d, comp):
     fig.legend(handles, labels, loc="center right", title="sensor (dot: its x)")
     fig.suptitle(f"Hole signals {sym}(u) as the hole in the plate crosses the contact (paper fig. "
                  f"{3 if comp == 'z' else 4}); FE and model panels have their own y scales")
-    fig.tight_layout(rect=(0, 0, 0.89, 1))
+    inch_margins(fig, left=0.95, right=2.15, bottom=0.6, top=0.75, wspace=0.2, hspace=0.16)
     return fig
 
 
@@ -421,7 +431,7 @@ def pressure_profiles(d):
     ax.set_xlabel("x (mm), along y = 0")
     ax.set_ylabel("contact traction (kPa)")
     ax.set_title("Contact pressure p (and tangential traction q) along the line y = 0 through the contact")
-    fig.tight_layout()
+    inch_margins(fig, left=0.8, right=0.2, bottom=0.6, top=0.45, wspace=0.2, hspace=0.2)
     return fig
 
 
@@ -457,7 +467,7 @@ def green_vs_halfspace(d):
         bottom.set_xlabel("offset x = load position − sensor position (mm)")
     fig.suptitle(f"FE Green tensor of sensor #1 against the rescaled half-space c·k·g_half(√k·x) at h = "
                  f"{kf['h_mm']:.3f} mm")
-    fig.tight_layout()
+    inch_margins(fig, left=0.85, right=0.2, bottom=0.6, top=0.75, wspace=0.15, hspace=0.06)
     return fig
 
 
@@ -483,7 +493,7 @@ def k_sweep(d):
     axes[0].set_ylabel("k (exact bonded layer; mesh-scale panel: FE)")
     axes[0].legend(fontsize=8)
     fig.suptitle("Which reading of the calibration protocol gives the paper's k: one parameter at a time")
-    fig.tight_layout()
+    inch_margins(fig, left=0.85, right=0.2, bottom=0.6, top=0.55, wspace=0.08, hspace=0.2)
     return fig
 
 
@@ -567,12 +577,7 @@ def fig_budget(d, hypothesis):
     axes[0, 0].legend(fontsize=7, loc="best")
     fig.suptitle(f"Hole signals under hypothesis '{hypothesis}' (sliding, coupled) against the paper's model, "
                  "laid out like the paper's fig. 3")
-    # Margins in inches, as tight_layout finds them on the default scene with room to spare: tight_layout
-    # measures every tick label of the 2 × 10 axes, and on ten such figures that was a third of the report's
-    # figure time.
-    w, h = fig.get_size_inches()
-    fig.subplots_adjust(left=0.8 / w, right=1 - 0.15 / w, bottom=0.55 / h, top=1 - 0.95 / h, wspace=0.35,
-                        hspace=0.25)
+    inch_margins(fig, left=0.8, right=0.15, bottom=0.55, top=0.95, wspace=0.35, hspace=0.25)
     return fig
 
 
@@ -647,8 +652,11 @@ def save(fig, path):
 
 
 def main(argv):
-    usage = ("usage: /usr/bin/python3 scripts/figures.py DIR [--only NAMES | --except NAMES]  (DIR: a "
-             "`skinfem report` output folder; NAMES: comma-separated figure names, e.g. pareto.png)")
+    usage = ("usage: /usr/bin/python3 scripts/figures.py DIR [--only NAMES | --except NAMES] [--wait-for-go]  "
+             "(DIR: a `skinfem report` output folder; NAMES: comma-separated figure names, e.g. pareto.png)")
+    wait = len(argv) in (3, 5) and argv[-1] == "--wait-for-go"
+    if wait:
+        argv = argv[:-1]
     selection = None
     if len(argv) == 4 and argv[2] in ("--only", "--except"):
         selection = (argv[2], set(argv[3].split(",")))
@@ -656,6 +664,8 @@ def main(argv):
         print(usage, file=sys.stderr)
         return 2
     d = argv[1]
+    if wait and sys.stdin.readline().strip() != "go":
+        return 0  # the report stopped before these figures' inputs were written
     out = os.path.join(d, "figures")
     os.makedirs(out, exist_ok=True)
     written = skipped = 0

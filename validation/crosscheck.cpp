@@ -8,6 +8,7 @@
 #include "contact/hole_cover.hpp"
 #include "contact/layer_hertz.hpp"
 #include "contact/small_hole.hpp"
+#include "scene/parallel.hpp"
 #include "validation/text.hpp"
 
 namespace skinfem::validation {
@@ -120,8 +121,10 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
   add_signal("green_k_paper", "each position's FE tractions, Green rescaled by the paper's k", [&](int c) {
     const Eigen::VectorXd base = convolve(tractions(c, sweeps[c].baseline), k_paper, in.sensors);
     Eigen::MatrixXd s(n, 2 * ns);
-    for (int i = 0; i < n; ++i)
+    // Each position's row alone: on the machine's cores.
+    for_each_index(n, [&](std::size_t i) {
       s.row(i) = (convolve(tractions(c, frames[c][i]), k_paper, in.sensors) - base).transpose();
+    });
     return s;
   });
   // One frictionless sweep serves both cases' uncoupled friction.

@@ -132,19 +132,16 @@ double crossing_root(const KProtocol& base, const std::string& parameter, const 
   return std::abs(fa) < std::abs(fb) ? a : b;
 }
 
-KTargetAnswer k_target_answer(const KProtocol& base, const std::vector<KSweepPoint>& extra, double target,
-                              double band) {
-  KTargetAnswer a;
-  a.target = target;
-  a.band = band;
-  a.points = k_sweep(base);
-  a.points.insert(a.points.end(), extra.begin(), extra.end());
+namespace {
+// `near` and `answer` from the points and crossings: the one part that changes as points are added.
+void compose(KTargetAnswer& a) {
   const char* loads[3] = {"point", "uniform disc", "punch"};
   std::string near, cross;
+  a.near.clear();
   for (const auto& p : a.points)
     for (const char* crit : {"k_central", "k_lsq_line"}) {
       const double k = std::string(crit) == "k_central" ? p.k_central : p.k_lsq_line;
-      if (std::abs(k - target) <= band) {
+      if (std::abs(k - a.target) <= a.band) {
         const std::string what = p.parameter == "load"
                                      ? std::string("load ") + loads[static_cast<int>(p.value)]
                                      : p.parameter + " = " + fmt("%.3g", p.value);
@@ -152,6 +149,24 @@ KTargetAnswer k_target_answer(const KProtocol& base, const std::vector<KSweepPoi
         a.near.push_back({p.parameter, crit, p.value, k});
       }
     }
+  for (const auto& c : a.crossings)
+    cross += (cross.empty() ? "" : "; ") + c.criterion + " = " + fmt("%.2f", a.target) + " at " +
+             c.parameter + " = " + fmt("%.4g", c.value);
+  a.answer = "Exact layer (h " + fmt("%.3g", a.h) + " mm) with one protocol reading changed at a time" +
+             (a.extra_points ? ", and the FE mesh scale" : "") + ": " +
+             (near.empty() ? "no reading in the sweep gives k within " + fmt("%g", a.band) + " of " +
+                                 fmt("%.2f", a.target)
+                           : "within " + fmt("%g", a.band) + " of " + fmt("%.2f", a.target) + ": " + near) +
+             (cross.empty() ? std::string("; no parameter's range crosses it") : "; crossings: " + cross);
+}
+}  // namespace
+
+KTargetAnswer k_target_answer(const KProtocol& base, double target, double band) {
+  KTargetAnswer a;
+  a.target = target;
+  a.band = band;
+  a.h = base.h;
+  a.points = k_sweep(base);
   // The sweep's points of each parameter bracket its crossings; each root is found between them, the
   // brackets on the machine's cores.
   struct Bracket {
@@ -177,19 +192,17 @@ KTargetAnswer k_target_answer(const KProtocol& base, const std::vector<KSweepPoi
     const Bracket& b = brackets[i];
     roots[i] = crossing_root(base, b.param, b.crit, target, b.va, b.vb);
   });
-  for (size_t i = 0; i < brackets.size(); ++i) {
-    const Bracket& b = brackets[i];
-    cross += (cross.empty() ? "" : "; ") + std::string(b.crit) + " = " + fmt("%.2f", target) + " at " +
-             b.param + " = " + fmt("%.4g", roots[i]);
-    a.crossings.push_back({b.param, b.crit, roots[i], b.linear});
-  }
-  a.answer = "Exact layer (h " + fmt("%.3g", base.h) + " mm) with one protocol reading changed at a time" +
-             (extra.empty() ? std::string() : ", and the FE mesh scale") + ": " +
-             (near.empty()
-                  ? "no reading in the sweep gives k within " + fmt("%g", band) + " of " + fmt("%.2f", target)
-                  : "within " + fmt("%g", band) + " of " + fmt("%.2f", target) + ": " + near) +
-             (cross.empty() ? std::string("; no parameter's range crosses it") : "; crossings: " + cross);
+  for (size_t i = 0; i < brackets.size(); ++i)
+    a.crossings.push_back({brackets[i].param, brackets[i].crit, roots[i], brackets[i].linear});
+  compose(a);
   return a;
+}
+
+void add_points(KTargetAnswer& a, const std::vector<KSweepPoint>& extra) {
+  if (extra.empty()) return;
+  a.points.insert(a.points.end(), extra.begin(), extra.end());
+  a.extra_points = true;
+  compose(a);
 }
 
 }  // namespace skinfem::validation

@@ -45,10 +45,10 @@ std::vector<double> crossings(const std::vector<KSweepPoint>& points, const std:
 double crossing_root(const KProtocol& base, const std::string& parameter, const std::string& criterion,
                      double target, double lo, double hi);
 
-// Which single change of the protocol gives a target k (the paper's 1.48): the sweep about `base`, with
-// `extra` points appended (the report adds the FE k per mesh scale, parameter "mesh_scale"), the readings
-// whose k lies within `band` of the target, and where each parameter's k crosses it (crossing_root, from the
-// sweep's brackets). `answer` says so in one sentence computed from these numbers.
+// Which single change of the protocol gives a target k (the paper's 1.48): the sweep about `base`, the
+// readings whose k lies within `band` of the target, and where each parameter's k crosses it (crossing_root,
+// from the sweep's brackets). `answer` says so in one sentence computed from these numbers. The exact layer
+// alone: it needs no FE, so the report computes it beside its factorization.
 struct KTargetAnswer {
   struct Near {
     std::string parameter, criterion;  // criterion: k_central or k_lsq_line
@@ -59,13 +59,16 @@ struct KTargetAnswer {
     double value = 0;         // crossing_root's: k of the protocol with it equals the target
     double interpolated = 0;  // the linear interpolation between sweep points
   };
-  double target = 0, band = 0;
+  double target = 0, band = 0, h = 0;  // h: the base's layer thickness, mm
   std::vector<KSweepPoint> points;
   std::vector<Near> near;
   std::vector<Crossing> crossings;
+  bool extra_points = false;  // add_points added some
   std::string answer;
 };
-KTargetAnswer k_target_answer(const KProtocol& base, const std::vector<KSweepPoint>& extra, double target,
-                              double band = 0.01);
+KTargetAnswer k_target_answer(const KProtocol& base, double target, double band = 0.01);
+// Points of another axis (the report's FE k per mesh scale, parameter "mesh_scale") join `near` and the
+// answer; crossings stay the exact layer's.
+void add_points(KTargetAnswer& a, const std::vector<KSweepPoint>& extra);
 
 }  // namespace skinfem::validation

@@ -155,22 +155,24 @@ sys.exit(1 if bad else 0)
 PY
 # The page as a parser reads it: tables, links, figures and their captions, notation.
 /usr/bin/python3 "$(dirname "$0")/page_check.py" "$out" || fail=1
-# --fast leaves out the error bars, the hypothesis budget, the post design and the defect's VTK frames, and
-# says so on the page, in report.json and on the terminal; what it keeps (the headline numbers, the
-# crosscheck) is the full report's.
+# --fast leaves out the error bars, the hypothesis budget, the post design, the k sweep, the cap's
+# effective-thickness fits and the defect's VTK frames, and says so on the page, in report.json and on the
+# terminal; what it keeps (the headline numbers, the crosscheck) is the full report's.
 if "$skinfem" report "$tmp/scene.json" --fast --out "$tmp/fast" >"$tmp/fast_stdout" 2>"$tmp/stderr"; then
   /usr/bin/python3 - "$out" "$tmp/fast" "$tmp/fast_stdout" <<'PY' || fail=1
 import json, os, sys
 full, fast = (json.load(open(os.path.join(d, "report.json"))) for d in sys.argv[1:3])
 html = open(os.path.join(sys.argv[2], "index.html"), encoding="utf-8").read()
 bad = []
-for key in ("error_bars", "hole_budget", "post_design", "chain_study"):
+for key in ("error_bars", "hole_budget", "post_design", "chain_study", "k_paper"):
     if key in fast: bad.append(f"--fast report.json has {key}")
+if any("effective_thickness_mm" in s for s in fast["kfit"]["sensors"]): bad.append("--fast fitted thicknesses")
 for f in ("crosscheck/hole_budget.csv", "green/post_design.csv", "study/chain_study.csv", "defect/defect.pvd",
-          "defect/frames"):
+          "defect/frames", "kfit/k_sweep.csv", "figures/k_sweep.png"):
     if os.path.exists(os.path.join(sys.argv[2], f)): bad.append(f"--fast wrote {f}")
 left = fast.get("fast", {}).get("left_out", "")
-if "error bars" not in left or "budget" not in left or "frames" not in left: bad.append(f"report.json fast.left_out = {left!r}")
+if any(w not in left for w in ("error bars", "budget", "frames", "k sweep", "effective-thickness")):
+    bad.append(f"report.json fast.left_out = {left!r}")
 if "A fast report" not in html or left not in html: bad.append("index.html does not say what --fast left out")
 if f"fast: left out the {left}" not in open(sys.argv[3]).read(): bad.append("the terminal does not say it")
 # The same system, factored without the hole path's border (no budget to need it): equal up to the two
@@ -180,6 +182,11 @@ def close(a, b): return abs(a - b) <= 1e-6 * abs(b)
 for key in ("k_central", "k_lsq_line"):
     if not close(fast["kfit"][key], full["kfit"][key]): bad.append(f"kfit {key}: {fast['kfit'][key]} vs {full['kfit'][key]}")
 if not close(fast["contact"]["contact_radius_mm"], full["contact"]["contact_radius_mm"]): bad.append("contact radius differs")
+# Its meridian checks, made on a thread beside the factorization, are the full report's to the last bit.
+for key in ("sensor", "path_model", "dofs", "k_central", "k_lsq_line"):
+    if fast["green"]["meridian_check"][key] != full["green"]["meridian_check"][key]:
+        bad.append(f"green meridian_check {key}: {fast['green']['meridian_check'][key]} vs {full['green']['meridian_check'][key]}")
+if fast["contact"]["meridian_check"]["dofs"] != full["contact"]["meridian_check"]["dofs"]: bad.append("contact meridian_check")
 for b in bad: print("FAIL --fast:", b)
 sys.exit(1 if bad else 0)
 PY

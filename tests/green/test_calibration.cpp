@@ -1,6 +1,7 @@
 // The paper's calibration of a scan (green/calibration.hpp): thickness and scale fitted to the exact layer.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -61,6 +62,37 @@ TEST(PaperCalibration, ThicknessAtTheSearchBoundIsAnError) {
   std::vector<double> zz;
   for (double xi : x) zz.push_back(layer.at(xi, 0.0).zz);
   EXPECT_NEAR(effective_thickness(x, zz, kH0, 0.5, LayerLoad::punch, kRadius), 2.5, 1e-5 * kH0);
+}
+
+// effective_thickness stops a misfit's sum once it has answered the golden section's comparison
+// (green/calibration.cpp). The search written out here with full sums, on a scan no layer fits exactly (a
+// wavy FE-like profile), must return the same thickness to the last bit: the early stop changes no step.
+TEST(EffectiveThickness, EqualsTheGoldenSectionOfFullSums) {
+  const std::vector<double> x = offsets();
+  for (double h : {2.2, 3.0, 3.7}) {
+    const LayerGreen layer(h, 0.5, LayerLoad::punch, kRadius);
+    std::vector<double> zz;
+    for (double xi : x) zz.push_back(layer.at(xi, 0.0).zz * (1 + 0.03 * std::sin(2.1 * xi)));
+    const auto misfit = [&](double t) {
+      const LayerGreen l(t, 0.5, LayerLoad::punch, kRadius);
+      double s = 0;
+      for (size_t i = 0; i < x.size(); ++i) s += std::pow(l.zz_at(x[i], 0.0) - zz[i], 2);
+      return s;
+    };
+    double a = 0.5 * kH0, b = 1.5 * kH0;
+    const double phi = 0.5 * (std::sqrt(5.0) - 1);
+    double c = b - phi * (b - a), d = a + phi * (b - a), fc = misfit(c), fd = misfit(d);
+    while (b - a > 1e-6 * kH0) {
+      if (fc < fd) {
+        b = d, d = c, fd = fc;
+        c = b - phi * (b - a), fc = misfit(c);
+      } else {
+        a = c, c = d, fc = fd;
+        d = a + phi * (b - a), fd = misfit(d);
+      }
+    }
+    EXPECT_EQ(effective_thickness(x, zz, kH0, 0.5, LayerLoad::punch, kRadius), 0.5 * (a + b)) << h;
+  }
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "scene/parallel.hpp"
@@ -27,6 +28,24 @@ TEST(ForEachIndex, EveryIndexOnceAndTheLowestFailureRethrown) {
   } catch (const std::runtime_error& e) {
     EXPECT_STREQ(e.what(), "item 17");
   }
+}
+
+// A ThreadCap holds on its own thread only, nests (the smaller cap wins), and ends with its scope.
+TEST(ThreadCap, CapsThisThreadOnlyWhileItLives) {
+  const int all = worker_threads();
+  {
+    const ThreadCap one(1);
+    EXPECT_EQ(worker_threads(), 1);
+    int other = 0;
+    std::thread([&] { other = worker_threads(); }).join();
+    EXPECT_EQ(other, all);
+    {
+      const ThreadCap many(1000);
+      EXPECT_EQ(worker_threads(), 1);
+    }
+    EXPECT_EQ(worker_threads(), 1);
+  }
+  EXPECT_EQ(worker_threads(), all);
 }
 
 TEST(MapInProcesses, ResultsInIndexOrderFromTheChildren) {

@@ -53,7 +53,7 @@ TEST(KSweep, CrossingsInterpolateBetweenNeighbours) {
 // tolerance, a second evaluation independent of the sweep.
 TEST(KSweep, CrossingsAreRootsOfTheExactLayersK) {
   const KProtocol base;
-  const KTargetAnswer a = k_target_answer(base, {}, 1.48);
+  const KTargetAnswer a = k_target_answer(base, 1.48);
   ASSERT_FALSE(a.crossings.empty());
   for (const auto& c : a.crossings) {
     KProtocol p = base;
