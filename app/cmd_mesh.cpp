@@ -86,10 +86,8 @@ nlohmann::json mesh_stage(const Scene& scene, const TetMesh& mesh, double mesh_s
 int run_mesh(const Scene& scene, const std::string& out_dir) {
   check_output_dir(out_dir);
   Stopwatch clock;
-  const MeshEstimate estimate = check_resources(scene, g_max_dofs);
-  progress("meshing " + scene.name);
-  const TetMesh mesh = build_mesh(scene, MeshPart::whole, max_tets_allowed(g_max_dofs));
-  check_meshed_dofs(scene, mesh, g_max_dofs);
+  MeshEstimate estimate;
+  const TetMesh mesh = guarded_mesh(scene, MeshPart::whole, &estimate);
   nlohmann::json summary = mesh_stage(scene, mesh, clock.seconds(), out_dir);
   if (estimate.known) {
     summary["estimated_tets"] = estimate.tets;

@@ -23,7 +23,7 @@ namespace skinfem::app {
 int run_study(const Scene& scene, const std::string& out_dir, const std::vector<double>& scales) {
   check_output_dir(out_dir);
   // The study's levels are scaled_scene's (mesh/sizing.hpp).
-  check_resources(scaled_scene(scene, *std::min_element(scales.begin(), scales.end())), g_max_dofs);
+  check_resources(scaled_scene(scene, *std::min_element(scales.begin(), scales.end())));
   for (double sc : scales)  // the coarsest levels must still fit their loads on the skin
     check_load_placement(scaled_scene(scene, sc), "--scales " + std::to_string(sc).substr(0, 6));
   const std::vector<SolverKind> solvers{SolverKind::direct_ldlt, SolverKind::schur_cg};

@@ -188,8 +188,8 @@ int main(int argc, char** argv) {
     if (sweep->parsed())
       return skinfem::app::run_sweep(spec_path, sweep->count("--out") ? out_dir : "", cores, profile,
                                      dry_run);
-    skinfem::pipeline::g_max_dofs = max_dofs;
-    const skinfem::Scene scene = skinfem::load_scene(scene_path);
+    skinfem::Scene scene = skinfem::load_scene(scene_path);
+    scene.limits.max_dofs = max_dofs;
     const std::string command = cli.get_subcommands().front()->get_name();
     const std::string out = report->parsed() && !report->count("--out") ? "out/" + scene.name : out_dir;
     skinfem::app::check_output_dir(out);

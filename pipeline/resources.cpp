@@ -5,12 +5,11 @@
 #include <cstdio>
 
 #include "fem/memory.hpp"
+#include "mesh/build.hpp"
 #include "pipeline/clock.hpp"
 #include "pipeline/progress.hpp"
 
 namespace skinfem::pipeline {
-
-double g_max_dofs = 0;
 
 double estimated_memory_gb(double dofs) { return 19e3 * dofs * std::max(1.0, std::cbrt(dofs / 2e5)) / 1e9; }
 
@@ -27,7 +26,11 @@ double dof_limit(double max_dofs) {
 
 double max_tets_allowed(double max_dofs) { return dof_limit(max_dofs) / kDofsPerTet; }
 
-MeshEstimate check_resources(const Scene& scene, double max_dofs, MeshPart part) {
+// The limit's name in both front ends: the command line's option, Python's property.
+constexpr const char* kLimitName = "max_dofs (--max-dofs)";
+
+MeshEstimate check_resources(const Scene& scene, MeshPart part) {
+  const double max_dofs = scene.limits.max_dofs;
   // TetGen refines the half's cut face: its mesh is about 1.1 × the half of the sizing field (the whole's
   // share was 0.51 on a small cap, 0.54 on candelier2011).
   const double share = part == MeshPart::half_y ? 1.1 : 1.0;
@@ -44,9 +47,8 @@ MeshEstimate check_resources(const Scene& scene, double max_dofs, MeshPart part)
       "mesh.h_min, mesh.growth, mesh.regions[].h, contact.h, contact.sweep.h, contact.holes[].h";
   if (max_dofs > 0 && e.dofs > max_dofs) {
     std::snprintf(buf, sizeof buf,
-                  "%s: the mesh would have %s %.3g tetrahedra and %.3g DOFs, above --max-dofs = %.3g; "
-                  "coarsen %s",
-                  scene.source_path.c_str(), about, e.tets, e.dofs, max_dofs, fields);
+                  "%s: the mesh would have %s %.3g tetrahedra and %.3g DOFs, above %s = %.3g; coarsen %s",
+                  scene.source_path.c_str(), about, e.tets, e.dofs, kLimitName, max_dofs, fields);
     throw SceneError(buf);
   }
   if (avail > 0 && gb > avail) {
@@ -65,7 +67,8 @@ MeshEstimate check_resources(const Scene& scene, double max_dofs, MeshPart part)
 
 double unknowns_bound(const TetMesh& mesh) { return 3.0 * mesh.num_nodes() + mesh.num_vertices; }
 
-void check_meshed_dofs(const Scene& scene, const TetMesh& mesh, double max_dofs) {
+void check_meshed_dofs(const Scene& scene, const TetMesh& mesh) {
+  const double max_dofs = scene.limits.max_dofs;
   const double dofs = unknowns_bound(mesh);
   const double gb = estimated_memory_gb(dofs), avail = available_memory_gb();
   char buf[512];
@@ -74,8 +77,8 @@ void check_meshed_dofs(const Scene& scene, const TetMesh& mesh, double max_dofs)
                            : "mesh.h_min, mesh.growth, mesh.regions[].h, contact.h, contact.sweep.h";
   if (max_dofs > 0 && dofs > max_dofs) {
     std::snprintf(buf, sizeof buf,
-                  "%s: the mesh has %d tetrahedra and %.0f DOFs, above --max-dofs = %.3g; coarsen %s",
-                  scene.source_path.c_str(), mesh.num_tets(), dofs, max_dofs, fields);
+                  "%s: the mesh has %d tetrahedra and %.0f DOFs, above %s = %.3g; coarsen %s",
+                  scene.source_path.c_str(), mesh.num_tets(), dofs, kLimitName, max_dofs, fields);
     throw SceneError(buf);
   }
   if (avail > 0 && gb > avail) {
@@ -85,6 +88,15 @@ void check_meshed_dofs(const Scene& scene, const TetMesh& mesh, double max_dofs)
                   scene.source_path.c_str(), mesh.num_tets(), dofs, gb, avail, fields);
     throw SceneError(buf);
   }
+}
+
+TetMesh guarded_mesh(const Scene& scene, MeshPart part, MeshEstimate* estimate) {
+  const MeshEstimate e = check_resources(scene, part);
+  if (estimate) *estimate = e;
+  progress("meshing " + scene.name + (part == MeshPart::half_y ? " (the half y >= 0: mirror symmetry)" : ""));
+  TetMesh mesh = build_mesh(scene, part, max_tets_allowed(scene.limits.max_dofs));
+  check_meshed_dofs(scene, mesh);
+  return mesh;
 }
 
 }  // namespace skinfem::pipeline

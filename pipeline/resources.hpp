@@ -16,13 +16,13 @@ double estimated_memory_gb(double dofs);
 // MemAvailable of /proc/meminfo, GB (0 if unknown).
 double available_memory_gb();
 
-// Throws SceneError when the estimate exceeds --max-dofs (if > 0) or the available memory; else reports the
-// estimate as a progress line and returns it.
+// Throws SceneError when the estimate exceeds scene.limits.max_dofs (if > 0) or the available memory; else
+// reports the estimate as a progress line and returns it.
 // part: what will be meshed; a half y >= 0 is integrated over its side with its own sizing field (every
 // region mirrored into it), and counted 1.1× for the cut face TetGen refines.
-MeshEstimate check_resources(const Scene& scene, double max_dofs, MeshPart part = MeshPart::whole);
+MeshEstimate check_resources(const Scene& scene, MeshPart part = MeshPart::whole);
 
-// The most tetrahedra memory and --max-dofs (if > 0) allow, at kDofsPerTet (mesh/size_estimate.hpp):
+// The most tetrahedra memory and max_dofs (if > 0) allow, at kDofsPerTet (mesh/size_estimate.hpp):
 // build_mesh's floor for imported surfaces, which have no estimate.
 double max_tets_allowed(double max_dofs);
 
@@ -32,9 +32,10 @@ double unknowns_bound(const TetMesh& mesh);
 
 // The same limits on a built mesh, before anything is assembled: the backstop where no estimate exists
 // (imported surfaces) or where the estimate fell short. DOFs counted by unknowns_bound.
-void check_meshed_dofs(const Scene& scene, const TetMesh& mesh, double max_dofs);
+void check_meshed_dofs(const Scene& scene, const TetMesh& mesh);
 
-// The --max-dofs of this process (0: only the memory limit), set once by main.
-extern double g_max_dofs;
+// The guarded meshing every command starts with: check_resources, build_mesh within the limits, then
+// check_meshed_dofs; `estimate`, if given, receives check_resources's.
+TetMesh guarded_mesh(const Scene& scene, MeshPart part = MeshPart::whole, MeshEstimate* estimate = nullptr);
 
 }  // namespace skinfem::pipeline

@@ -53,7 +53,7 @@ RidgeStudy ridge_study(const Scene& scene, std::vector<double> per_period,
   for (double L : per_period) {
     Scene level = scene;
     level.geometry.ridges.h = ridges.period / L;
-    check_resources(level, g_max_dofs);
+    check_resources(level);
   }
   const bool flat = scene.geometry.kind == GeometryKind::flat;
   const Vec2 sensor = scene.sensors.positions[0];
@@ -67,7 +67,7 @@ RidgeStudy ridge_study(const Scene& scene, std::vector<double> per_period,
     progress(std::string("ridge study: ") + buf);
     Stopwatch clock;
     TetMesh mesh = build_mesh(level);
-    check_meshed_dofs(level, mesh, g_max_dofs);
+    check_meshed_dofs(level, mesh);
     check_sensors_on_skin(level, mesh);
     RidgeLevel out;
     out.per_period = L;

@@ -10,10 +10,7 @@ namespace skinfem::pipeline {
 
 std::shared_ptr<Skin> skin_setup(const Scene& scene, MeshPart part, const Border& border) {
   Stopwatch clock;
-  check_resources(scene, g_max_dofs, part);
-  progress("meshing " + scene.name + (part == MeshPart::half_y ? " (the half y >= 0: mirror symmetry)" : ""));
-  TetMesh mesh = build_mesh(scene, part, max_tets_allowed(g_max_dofs));
-  check_meshed_dofs(scene, mesh, g_max_dofs);
+  TetMesh mesh = guarded_mesh(scene, part);
   check_sensors_on_skin(scene, mesh);
   return factored_skin(scene, std::move(mesh), clock.seconds(), border);
 }

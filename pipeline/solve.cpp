@@ -14,11 +14,8 @@ SolveRun solve_run(const Scene& scene, SolverKind solver) {
     throw SceneError(scene.source_path + ": loads = {}: solve needs at least one punch or patch");
   SolveRun run;
   Stopwatch clock;
-  check_resources(scene, g_max_dofs);
-  progress("meshing " + scene.name);
-  run.mesh = std::make_unique<TetMesh>(build_mesh(scene, MeshPart::whole, max_tets_allowed(g_max_dofs)));
+  run.mesh = std::make_unique<TetMesh>(guarded_mesh(scene));
   const TetMesh& mesh = *run.mesh;
-  check_meshed_dofs(scene, mesh, g_max_dofs);
   check_sensors_on_skin(scene, mesh);
   run.wall["mesh"] = clock.seconds();
 

@@ -179,6 +179,14 @@ PYBIND11_MODULE(_skinfem, m) {
                                return a;
                              })
       .def_property_readonly("has_contact", [](const Scene& s) { return s.contact.has_value(); })
+      .def_property(
+          "max_dofs", [](const Scene& s) { return s.limits.max_dofs; },
+          [](Scene& s, double n) {
+            require(std::isfinite(n) && n >= 0, "max_dofs", n, "must be a finite number >= 0 (0: no limit)");
+            s.limits.max_dofs = n;
+          },
+          "Refuse a mesh estimated or built above this many DOFs, as the command line's --max-dofs does "
+          "(0, the default: the available memory only).")
       .def(
           "scaled",
           [](const Scene& scene, double s, bool cap_holes) {

@@ -259,6 +259,14 @@ struct ContactLoad {
 // applies).
 enum class SymmetryUse { automatic, none };
 
+// What a run may use, set by its caller and not by the scene file: the command line's --max-dofs, Python's
+// Scene.max_dofs. It travels with the scene, so every stage and every scene made from it (an error level, a
+// study's level) honours it.
+struct RunLimits {
+  double max_dofs =
+      0;  // refuse a mesh estimated or built above this many DOFs (0: the available memory only)
+};
+
 struct Scene {
   std::string name;
   std::string source_path;  // the JSON file this came from (empty if built in code)
@@ -270,6 +278,7 @@ struct Scene {
   Calibration calibration;
   std::optional<ContactLoad> contact;
   SymmetryUse symmetry = SymmetryUse::automatic;
+  RunLimits limits;
 };
 
 // Thrown for any invalid scene; what() is one line naming the JSON path, the value and what is allowed.

@@ -124,7 +124,7 @@ bad zone_at_side 'd["contact"] = {"indenter": {"type": "sphere", "R": 50, "cente
 bad huge_mesh 'd["mesh"]["h_min"] = 0.001' 'the mesh would have at least .* tetrahedra .* GB available; coarsen mesh.h_min'
 bad thin_layer_fine 'd["geometry"] = {"type": "flat", "h": 0.1, "half_width": 20}; d["mesh"]["h_min"] = 0.05; d["loads"]["punches"][0]["displacement"] = 0.01; del d["loads"]["punches"][0]["force"]' 'the mesh would have .* tetrahedra .* GB available'
 variant max_dofs 'pass'
-check max_dofs 'above --max-dofs = 1e\+03; coarsen mesh.h_min' "$skinfem" solve "$tmp/max_dofs.json" --max-dofs 1000 --out "$tmp/out"
+check max_dofs 'above max_dofs \(--max-dofs\) = 1e\+03; coarsen mesh.h_min' "$skinfem" solve "$tmp/max_dofs.json" --max-dofs 1000 --out "$tmp/out"
 
 # Imported surfaces.
 printf 'solid x\n garbage\nendsolid\n' >"$tmp/garbage.stl"
@@ -163,7 +163,7 @@ variant off_non_manifold 'd["geometry"] = {"type": "surface", "path": "edge.off"
 check off_non_manifold 'edge.off: 4 faces share the edge at \(8, 8, 1.5\) mm' "$skinfem" mesh "$tmp/off_non_manifold.json" --out "$tmp/out"
 # No size estimate exists for an imported surface: the built mesh is checked before anything is assembled.
 variant stl_max_dofs 'd["geometry"] = {"type": "surface", "path": "box.stl"}; d["loads"] = {}'
-check stl_max_dofs 'stl_max_dofs.json: the mesh has [0-9]+ tetrahedra and [0-9]+ DOFs, above --max-dofs = 3e\+03' "$skinfem" green "$tmp/stl_max_dofs.json" --max-dofs 3000 --out "$tmp/out"
+check stl_max_dofs 'stl_max_dofs.json: the mesh has [0-9]+ tetrahedra and [0-9]+ DOFs, above max_dofs \(--max-dofs\) = 3e\+03' "$skinfem" green "$tmp/stl_max_dofs.json" --max-dofs 3000 --out "$tmp/out"
 variant stl_missing 'd["geometry"] = {"type": "surface", "path": "none.stl"}'
 check stl_missing 'geometry.path = "none.stl": must name an existing file' "$skinfem" mesh "$tmp/stl_missing.json" --out "$tmp/out"
 variant stl_extension 'd["geometry"] = {"type": "surface", "path": "base.json"}'

@@ -178,6 +178,19 @@ def test_bad_arguments_name_the_argument():
         skinfem.scene("no/such/scene.json")
 
 
+def test_max_dofs_guards_a_python_run_as_the_command_line_does():
+    """Scene.max_dofs is the command line's --max-dofs (pipeline/resources.hpp): a run over it stops before
+    meshing with the command's one-line message; out of range, the setter names the property."""
+    scene = skinfem.scene(FLAT)
+    assert scene.max_dofs == 0
+    scene.max_dofs = 1000
+    with pytest.raises(skinfem.SceneError, match=r"above max_dofs \(--max-dofs\) = 1e\+03; coarsen mesh.h_min"):
+        skinfem.kfit(scene, path="3d")
+    for bad in (-1.0, float("nan"), float("inf")):
+        with pytest.raises(skinfem.SceneError, match="max_dofs = .*must be a finite number >= 0"):
+            scene.max_dofs = bad
+
+
 def test_progress_reaches_the_callback():
     lines = []
     skinfem.set_progress(lines.append)
