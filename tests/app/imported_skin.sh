@@ -37,7 +37,7 @@ if abs(h - 3.0) > 1e-9: bad.append(f"thickness from the meshed top {h}, expected
 w = box["sensors"][0]["scan_half_width_mm"]
 if not 7.75 - 0.2 < w <= 7.75: bad.append(f"scan half-width {w}: should stop within a step of 8 - 0.25")
 # Against the exact infinite layer of the same h (kfit's k_central_exact of the flat scene): within 2.5 %,
-# the flat layer's FE error at 16k DOFs in the README's refinement table (these meshes have ~30k).
+# the flat layer's FE error at 16k DOFs in docs/numerics.md's refinement table (these meshes have ~30k).
 exact = flat["k_central_exact"]
 for name, v in (("imported k_central", box["k_central"]), ("generated k_central", flat["k_central"])):
     print(f"{name} {v:.5f} against the exact layer's {exact:.5f} ({100 * (v / exact - 1):+.2f} %)")

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The Green kernel export (skinfem green --grid) and the README's h5py snippet: the snippet, run as written
-# on the exported kernel, must give the sensor reading that skinfem's own FE solve of the same load gives
-# (reciprocity: the solve and the kernel are the same FE field, so only the grid's quadrature differs).
+# The Green kernel export (skinfem green --grid) and the h5py snippet of docs/kernels.md: the snippet, run as
+# written on the exported kernel, must give the sensor reading that skinfem's own FE solve of the same load
+# gives (reciprocity: the solve and the kernel are the same FE field, so only the grid's quadrature differs).
 # Tolerance 0.25 %: a study on this scene at DX = 0.1, 0.05, 0.025 mm gave errors 0.26 %, 0.064 %, 0.022 % for
 # σ_z (second order down to the FE load quadrature's 0.02–0.04 % floor); 0.25 % is 4× the DX = 0.05 error.
 # Also: the HDF5 attributes (units, convention, sensor positions), the VTI arrays, and a too-fine grid
@@ -10,7 +10,7 @@
 # (tests/green/test_mirror_symmetry.cpp), the meridian path's is checked in tests/app/kfit_paths.sh.
 set -u
 skinfem=$(realpath "$1")
-readme=$(realpath "$(dirname "$0")/../../README.md")
+doc=$(realpath "$(dirname "$0")/../../docs/kernels.md")
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cd "$tmp"
@@ -25,10 +25,10 @@ cat >scene.json <<'JSON'
 JSON
 "$skinfem" green scene.json --path 3d --grid 0.05 --out out/green >green.log 2>&1 || { echo "FAIL green --grid:"; cat green.log; exit 1; }
 "$skinfem" solve scene.json --out out/solve >solve.log 2>&1 || { echo "FAIL solve:"; cat solve.log; exit 1; }
-# The README's block after the kernel-snippet marker, exactly as a reader would copy it.
+# docs/kernels.md's block after the kernel-snippet marker, exactly as a reader would copy it.
 awk '/<!-- kernel-snippet/ {on = 1; next} on && /^```python/ {inside = 1; next} inside && /^```/ {exit} inside' \
-  "$readme" >snippet.py
-[ -s snippet.py ] || { echo "FAIL: no kernel snippet found in README.md"; exit 1; }
+  "$doc" >snippet.py
+[ -s snippet.py ] || { echo "FAIL: no kernel snippet found in $doc"; exit 1; }
 /usr/bin/python3 snippet.py >snippet.out 2>&1 || { echo "FAIL snippet:"; cat snippet.out; exit 1; }
 /usr/bin/python3 - <<'PY'
 import csv, h5py, json, re, sys

@@ -93,8 +93,8 @@ for name in studies:
 
 sine = json.load(open(tmp + "/sine/ridge_study.json"))
 # The ridges' effect is a property of the skin, not of the mesh: on each level's own mesh it comes out the same
-# to 10 % (at the scene's sizes, levels 4-8 spread over 1.8 % of it; README), while those meshes' own errors
-# against the exact layer differ by more than the effect itself.
+# to 10 % (at the scene's sizes, levels 4-8 spread over 1.8 % of it; docs/ridges.md), while those meshes' own
+# errors against the exact layer differ by more than the effect itself.
 for q in ("k_central", "k_lsq_line"):
     change = [lev[q + "_change"] for lev in sine["levels"]]
     mesh_err = [lev["control_vs_exact"][q] for lev in sine["levels"]]

@@ -21,7 +21,7 @@ namespace {
 
 // The paper's layer (h = 3.04 mm, E = 3 MPa, ν = 0.5) under a sphere R = 129.7 mm at 0.8 N: a ≈ 2.3 mm.
 // Coarse contact mesh (zone h = 0.6 mm) so the suite stays fast; the tolerances below come from the
-// refinement study in the README (contact.h 0.8 → 0.5 → 0.4 → 0.3 on scenes/hertz_layer.json).
+// refinement study in docs/contact_results.md (contact.h 0.8 → 0.5 → 0.4 → 0.3 on scenes/hertz_layer.json).
 struct Fixture {
   Scene scene;
   TetMesh mesh;
@@ -76,8 +76,9 @@ Fixture& layer() {
 }
 
 // Against the exact bonded-layer solution (Sneddon/Nyström, contact/layer_hertz.hpp): a = 2.4879 mm,
-// p0 = 63.75 kPa, δ = 28.46 µm. The README's study brackets this zone size: a −2.7 % (h 0.8) to −0.26 %
-// (h 0.5), p0 within +0.3 %, δ within 0.05 % at every level; tolerances: a 2.5 %, p0 1 %, δ 0.2 %.
+// p0 = 63.75 kPa, δ = 28.46 µm. The study in docs/contact_results.md brackets this zone size: a −2.7 %
+// (h 0.8) to −0.26 % (h 0.5), p0 within +0.3 %, δ within 0.05 % at every level; tolerances: a 2.5 %,
+// p0 1 %, δ 0.2 %.
 TEST(ContactFe, SphereOnBondedLayerMatchesTheExactSolution) {
   Fixture& f = layer();
   const ContactResult r = f.solver->solve(FrictionMode::none);

@@ -48,8 +48,8 @@ std::array<double, 4> point_map_errors(const MeridianGreen& g, const green::Laye
 
 TEST(MeridianGreen, FlatLayerConvergesToTheExactLayer) {
   // The exact layer is unbounded: the meridian reaches 60 mm (20 h), where the side's influence,
-  // exp(−0.739 r/h) (README, Truncation), is below 1e-6. Three levels of MeridianSizes::for_thickness (scale
-  // 2, 1.41, 1: the last is what kfit uses), point and disc readings.
+  // exp(−0.739 r/h) (docs/scenes.md, Truncation), is below 1e-6. Three levels of MeridianSizes::for_thickness
+  // (scale 2, 1.41, 1: the last is what kfit uses), point and disc readings.
   constexpr double h = 3.04, b = 0.1;
   const green::LayerGreen point(h, 0.5, green::LayerLoad::point, 0),
       punch(h, 0.5, green::LayerLoad::punch, kA), disc(h, 0.5, green::LayerLoad::point, 0, {}, b);
@@ -345,7 +345,7 @@ TEST(MeridianGreen, FlatLayerAxisPostAgreesWithThe3DPost) {
   // axis (0.2 × 0.4 mm, meshed at the default sensor_h, 0.6 of its radius); the reference is the unbounded
   // layer's meridian post at twice kfit's resolution (its own error ~1e-3 of peak,
   // PostConvergesOnItsMeridian); the layer's free side is 17 mm beyond the farthest offset, where the side's
-  // influence is below 1e-6 (README, Truncation).
+  // influence is below 1e-6 (docs/scenes.md, Truncation).
   constexpr double h = 3.04;
   Scene s;
   s.geometry.kind = GeometryKind::flat;

@@ -23,9 +23,9 @@ std::array<double, 4> as_array(const GreenSample& g) { return {g.zz, g.zx, g.xz,
 
 TEST(SensorGreens, ThreeDMapsOffTheSensorLineConvergeToTheExactLayer) {
   // scenes/flat_layer.json (h = 3.04 mm, one 0.2 mm disc at the origin; its side 20 mm away, where it
-  // moves the maps by < 1e-6 of their peak within 2h of the sensor: README "Truncation"), solved in 3D at
-  // mesh scales 2, 1.41 and 1. The disc readings for a unit point force anywhere within 2h of the sensor
-  // (polar grid, every h/30 and 10°: on and off the sensor line) against the exact layer's disc means.
+  // moves the maps by < 1e-6 of their peak within 2h of the sensor: docs/scenes.md "Truncation"), solved in
+  // 3D at mesh scales 2, 1.41 and 1. The disc readings for a unit point force anywhere within 2h of the
+  // sensor (polar grid, every h/30 and 10°: on and off the sensor line) against the exact layer's disc means.
   // Bound: 0.5 % of each component's peak at the shipped sizes, where the top within one thickness of the
   // sensor is meshed at 0.2 thickness (the map footprint region of the scene); and the error must fall
   // with the mesh at an observed order ≥ 1.5 over the three levels (P2 maps of a smooth kernel: order 2–3).

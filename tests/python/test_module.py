@@ -1,9 +1,10 @@
 """The Python module against the command: the same scene gives the same numbers and the same errors.
 
 The independent side of each check is the other front end (the `skinfem` executable, run as a user would)
-and, for the README, the examples run exactly as written. Environment (set by ctest): PYTHONPATH with the
-package, SKINFEM_EXE the command, SKINFEM_SOURCE_DIR the source tree.
+and, for the documentation (README.md, docs/*.md), the examples run exactly as written. Environment (set by
+ctest): PYTHONPATH with the package, SKINFEM_EXE the command, SKINFEM_SOURCE_DIR the source tree.
 """
+import glob
 import json
 import math
 import os
@@ -252,15 +253,20 @@ def test_a_progress_callback_left_set_does_not_hang_the_exit():
 
 
 def test_readme_python_examples_run_as_written(tmp_path):
-    """Every ```python block after a <!-- python-example --> marker in the README, run from the source tree."""
-    with open(os.path.join(SRC, "README.md")) as f:
-        text = f.read()
-    blocks = re.findall(r"<!-- python-example -->\s*```python\n(.*?)```", text, re.S)
-    assert blocks, "no <!-- python-example --> block in README.md"
-    for code in blocks:
+    """Every ```python block after a <!-- python-example --> marker in README.md or docs/*.md (the module's
+    example is in docs/library.md), run from the source tree."""
+    docs = [os.path.join(SRC, "README.md")] + sorted(glob.glob(os.path.join(SRC, "docs", "*.md")))
+    blocks = []
+    for doc in docs:
+        with open(doc) as f:
+            text = f.read()
+        blocks += [(os.path.relpath(doc, SRC), code)
+                   for code in re.findall(r"<!-- python-example -->\s*```python\n(.*?)```", text, re.S)]
+    assert blocks, "no <!-- python-example --> block in README.md or docs/*.md"
+    for doc, code in blocks:
         r = subprocess.run([sys.executable, "-c", code], cwd=SRC, capture_output=True, text=True,
                            env=os.environ | {"PYTHONPATH": os.environ["PYTHONPATH"]})
-        assert r.returncode == 0, f"README example failed:\n{code}\n{r.stderr}"
+        assert r.returncode == 0, f"{doc}'s example failed:\n{code}\n{r.stderr}"
 
 
 def test_paper_model_ingredients_against_closed_forms():
@@ -326,7 +332,7 @@ def test_crosscheck_variants_are_their_ingredients(sweep_path):
 
 def test_kernel_grid_reproduces_the_command(tmp_path):
     # `skinfem green --grid` writes kernel.h5; the module's kernel() is the same grid over the same footprint.
-    import h5py  # scripts/setup installs it (the README kernel snippet needs it too)
+    import h5py  # scripts/setup installs it (docs/kernels.md's kernel snippet needs it too)
     r = run_cli("green", FLAT, "--grid", "0.5", "--out", str(tmp_path))
     assert r.returncode == 0, r.stderr
     k = skinfem.greens(skinfem.scene(FLAT)).kernel(0.5)

@@ -100,7 +100,8 @@ TEST(SceneLoad, Candelier2011) {
   EXPECT_TRUE(s.mesh.refine_sensors);
   EXPECT_DOUBLE_EQ(s.mesh.max_radius_edge, 1.5);
   EXPECT_DOUBLE_EQ(s.mesh.min_dihedral_deg, 10);
-  // Mesh sizes are tuned for cost versus error (README); the region along the sensor line is physics.
+  // Mesh sizes are tuned for cost versus error (docs/scenes.md, docs/contact_results.md); the region along
+  // the sensor line is physics.
   ASSERT_FALSE(s.mesh.regions.empty());
   EXPECT_EQ(s.mesh.regions[0].a, (Vec2{-4.5, 0.0}));
   EXPECT_EQ(s.mesh.regions[0].b, (Vec2{4.5, 0.0}));
