@@ -88,7 +88,7 @@ StageOutput<ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const 
   write_readings(out_dir, scene, chosen, readings);
   run.wall["write"] = clock.seconds();
   nlohmann::json summary = contact_json(scene, run);
-  const nlohmann::json& wall = run.wall;
+  const Timings& wall = run.wall;
   const Interface& interface = scene.contact->interface;
   const Vec2 t = scene.contact->direction;
   const auto& cu = run.metrics.at(FrictionMode::coupled);
@@ -123,10 +123,9 @@ StageOutput<ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const 
   std::printf(
       "  %d DOFs, %d multipliers (%s); mesh %.2f s, assemble %.2f s, factor %.2f s, "
       "condense %.2f s (%s), contact %.3f s; peak %.0f MB\n",
-      setup.model->solver().free_dofs(), c.zone.size(), symmetry_used(scene, setup).c_str(),
-      wall["mesh"].get<double>(), wall["assemble"].get<double>(), wall["factor"].get<double>(),
-      wall["condense"].get<double>(), condensation_said(setup).c_str(), wall["contact_solves"].get<double>(),
-      peak_rss_mb());
+      setup.model->solver().free_dofs(), c.zone.size(), symmetry_used(scene, setup).c_str(), wall.at("mesh"),
+      wall.at("assemble"), wall.at("factor"), wall.at("condense"), condensation_said(setup).c_str(),
+      wall.at("contact_solves"), peak_rss_mb());
   if (const auto& mc = run.meridian_check)
     std::printf(
         "  against the meridian (frictionless and uncoupled, exact in 2D, %d DOFs, %.2f s): readings within "
@@ -157,7 +156,7 @@ void meridian_contact_stage(const Scene& scene, const std::string& out_dir, Fric
   run.wall["write"] = clock.seconds();
   const nlohmann::json summary = meridian_contact_json(scene, run);
   write_json(out_dir + "/summary.json", summary);
-  const nlohmann::json& wall = run.wall;
+  const Timings& wall = run.wall;
   std::printf(
       "contact %s (%s), meridian path: %.4f N normal, %.4f N tangential; a = %.4f mm, p0 = %.2f kPa, "
       "indentation %.3f um\n",
@@ -180,9 +179,8 @@ void meridian_contact_stage(const Scene& scene, const std::string& out_dir, Fric
       "  %d DOFs, %d multipliers (second pass, graded to the edge); mesh %.3f s, assemble %.3f s, factor "
       "%.3f s, "
       "condense %.3f s, contact %.3f s, readings %.3f s; peak %.0f MB\n",
-      s.dofs, s.multipliers, wall["mesh"].get<double>(), wall["assemble"].get<double>(),
-      wall["factor"].get<double>(), wall["condense"].get<double>(), wall["contact_solves"].get<double>(),
-      wall["readings"].get<double>(), peak_rss_mb());
+      s.dofs, s.multipliers, wall.at("mesh"), wall.at("assemble"), wall.at("factor"), wall.at("condense"),
+      wall.at("contact_solves"), wall.at("readings"), peak_rss_mb());
   std::printf("  wrote %s/pressure.csv, sensors.csv, modes.csv, summary.json\n", out_dir.c_str());
 }
 }  // namespace

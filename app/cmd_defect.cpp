@@ -94,20 +94,19 @@ DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> s
   }
   run.wall["write"] = clock.seconds();
   const nlohmann::json summary = defect_json(scene, run);
-  const nlohmann::json& wall = run.wall;
+  const Timings& wall = run.wall;
   write_json(out_dir + "/summary.json", summary);
 
   std::printf("defect %s: %zu cases x %d positions; %d DOFs, %d multipliers (%d solved%s)\n",
               scene.name.c_str(), run.cases.size(), sweep.positions, setup.model->solver().free_dofs(),
               setup.solver->zone().size(), setup.condensed->zone.size(),
               setup.whole ? " on the half y >= 0, mirror-symmetric" : "");
-  std::printf("  mesh %.2f s, assemble %.2f s, factor %.2f s, condense %.2f s; sweeps",
-              wall["mesh"].get<double>(), wall["assemble"].get<double>(), wall["factor"].get<double>(),
-              wall["condense"].get<double>());
+  std::printf("  mesh %.2f s, assemble %.2f s, factor %.2f s, condense %.2f s; sweeps", wall.at("mesh"),
+              wall.at("assemble"), wall.at("factor"), wall.at("condense"));
   for (size_t ci = 0; ci < run.cases.size(); ++ci)
     std::printf(" %s %.2f s (%.2f ms/position)", run.cases[ci].c_str(), results[ci].seconds,
                 1e3 * results[ci].seconds / sweep.positions);
-  std::printf("; total %.1f s, peak %.0f MB\n", total_seconds(wall), peak_rss_mb());
+  std::printf("; total %.1f s, peak %.0f MB\n", wall.total(), peak_rss_mb());
   for (size_t ci = 0; ci < run.cases.size(); ++ci) {
     const int col = run.max_roughness_column[ci];
     std::printf("  %s: largest second difference along u %.1f %% of its curve's peak (#%d varsigma_%c)\n",

@@ -15,7 +15,7 @@
 // solved in 3D, meridian_check: its sensor on the cap's axis against the meridian path,
 // pipeline/sensor_greens.hpp). With --grid DX: DIR/kernel.h5 and DIR/kernel.vti, every sensor's four
 // disc-reading components on a regular grid of spacing DX over the top's bounding box (green/kernel_grid.hpp;
-// the README loads it with h5py). The computation and summary.json are pipeline/green.hpp's; this file
+// docs/kernels.md loads it with h5py). The computation and summary.json are pipeline/green.hpp's; this file
 // writes and prints them.
 #include <algorithm>
 #include <cstdio>
@@ -69,8 +69,7 @@ StageOutput<GreenRun> green_stage(const Scene& scene, const SensorGreens& greens
       "green %s: %zu sensors × 4 components, %s path (%s): %d adjoint solves on %d DOFs; %.1f s (factor "
       "%.1f s), peak %.0f MB\n",
       scene.name.c_str(), scene.sensors.positions.size(), greens.path.c_str(), greens.model.c_str(),
-      greens.adjoint_solves, greens.dofs, total_seconds(run.wall), run.wall["factor"].get<double>(),
-      peak_rss_mb());
+      greens.adjoint_solves, greens.dofs, run.wall.total(), run.wall.at("factor"), peak_rss_mb());
   if (run.reciprocity_rel)
     say(lines, "  reciprocity check (direct solve vs adjoint, sensor 1, offset 1 mm): %.1e relative\n",
         *run.reciprocity_rel);

@@ -5,8 +5,8 @@
 //   layer h = 3.04 mm (meridian radius 60.8 mm = 20 h, traction-free there)): 47027 DOFs, 1.08 s (...)
 //     k_central 1.54995, k_lsq_line 1.60863 (exact layer: 1.54996, 1.60856); FE vs exact, ...
 //
-// Definitions and the fit: pipeline/kfit.hpp (also in the README and kfit.json). The Green tensor comes
-// from adjoint solves (reciprocity): on the meridian where the skin is a body of revolution with every
+// Definitions and the fit: pipeline/kfit.hpp (also in docs/k_correction.md and kfit.json). The Green tensor
+// comes from adjoint solves (reciprocity): on the meridian where the skin is a body of revolution with every
 // sensor on its axis (pipeline/sensor_greens.hpp; --path auto, the default), else on the 3D mesh. Writes
 // DIR/kfit.json.
 #include <algorithm>
@@ -50,9 +50,8 @@ StageOutput<KfitResult> kfit_stage(const Scene& scene, KfitResult r, const std::
       "%.2f, "
       "assemble %.2f, factor %.2f, adjoint %.2f)\n",
       scene.name.c_str(), r.sensors.size(), first.h_mm, r.nu, r.load == LayerLoad::point ? "point" : "punch",
-      r.path.c_str(), r.path_model.c_str(), r.dofs, total_seconds(r.wall), r.wall["mesh"].get<double>(),
-      r.wall["assemble"].get<double>(), r.wall["factor"].get<double>(),
-      r.wall["adjoint_solves"].get<double>());
+      r.path.c_str(), r.path_model.c_str(), r.dofs, r.wall.total(), r.wall.at("mesh"), r.wall.at("assemble"),
+      r.wall.at("factor"), r.wall.at("adjoint_solves"));
   std::printf("  k_central %.5f, k_lsq_line %.5f", first.fe.k_central, first.fe.k_lsq_line);
   if (first.exact) {
     const auto& d = first.disc_max_diff_over_peak;

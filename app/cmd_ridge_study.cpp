@@ -59,12 +59,11 @@ void print_level(const RidgeLevel& l) {
       "MB\n  k_central ridged %.5f control %.5f: %+.3f %%; k_lsq_line %.5f / %.5f: %+.3f %%\n"
       "  peaks zz %+.2f %%, zx %+.2f %%, xz %+.2f %%, xx %+.2f %%; max |ridged - control| / peak "
       "zz %.2f %%, zx %.2f %%, xz %.2f %%, xx %.2f %%\n",
-      l.per_period, l.ridge_h_mm, l.dofs, l.straightened,
-      total_seconds(l.wall_ridged) + total_seconds(l.wall_control), l.mesh_s,
-      l.wall_ridged["factor"].get<double>(), l.wall_control["factor"].get<double>(), l.peak_rss_mb,
-      l.ridged.k_central, l.control.k_central, 100 * l.k_central_change, l.ridged.k_lsq_line,
-      l.control.k_lsq_line, 100 * l.k_lsq_line_change, 100 * l.peak_change[0], 100 * l.peak_change[1],
-      100 * l.peak_change[2], 100 * l.peak_change[3], 100 * d[0], 100 * d[1], 100 * d[2], 100 * d[3]);
+      l.per_period, l.ridge_h_mm, l.dofs, l.straightened, l.wall_ridged.total() + l.wall_control.total(),
+      l.mesh_s, l.wall_ridged.at("factor"), l.wall_control.at("factor"), l.peak_rss_mb, l.ridged.k_central,
+      l.control.k_central, 100 * l.k_central_change, l.ridged.k_lsq_line, l.control.k_lsq_line,
+      100 * l.k_lsq_line_change, 100 * l.peak_change[0], 100 * l.peak_change[1], 100 * l.peak_change[2],
+      100 * l.peak_change[3], 100 * d[0], 100 * d[1], 100 * d[2], 100 * d[3]);
   std::fflush(stdout);
 }
 
@@ -84,10 +83,10 @@ int run_ridge_study(const Scene& scene, const std::string& out_dir, std::vector<
     const auto& w = l.wall_ridged;
     const auto& d = l.disc_max_diff_over_peak;
     csv << l.per_period << "," << l.ridge_h_mm << "," << l.dofs << "," << l.straightened << ","
-        << w["mesh"].get<double>() << "," << w["assemble"].get<double>() << "," << w["factor"].get<double>()
-        << "," << w["adjoint_solves"].get<double>() << "," << l.peak_rss_mb << "," << l.ridged.k_central
-        << "," << l.control.k_central << "," << l.ridged.k_lsq_line << "," << l.control.k_lsq_line << ","
-        << d[0] << "," << d[1] << "," << d[2] << "," << d[3] << "\n";
+        << w.at("mesh") << "," << w.at("assemble") << "," << w.at("factor") << "," << w.at("adjoint_solves")
+        << "," << l.peak_rss_mb << "," << l.ridged.k_central << "," << l.control.k_central << ","
+        << l.ridged.k_lsq_line << "," << l.control.k_lsq_line << "," << d[0] << "," << d[1] << "," << d[2]
+        << "," << d[3] << "\n";
   }
   nlohmann::json limits;
   for (const RidgeLimit& lim : study.limits) {

@@ -25,7 +25,7 @@ int run_solve(const Scene& scene, const std::string& out_dir, SolverKind solver)
   SolveRun run = solve_run(scene, solver);
   const TetMesh& mesh = *run.mesh;
   const LoadCaseResult& r = run.result;
-  nlohmann::json& wall = run.wall;
+  Timings& wall = run.wall;
 
   Stopwatch clock;
   std::ostringstream csv;
@@ -67,9 +67,8 @@ int run_solve(const Scene& scene, const std::string& out_dir, SolverKind solver)
 
   std::printf(
       "solve %s: %d DOFs (%s); mesh %.2f s, assemble %.2f s, factor %.2f s, solve %.2f s; peak %.0f MB\n",
-      scene.name.c_str(), run.model->solver().free_dofs(), to_string(solver), wall["mesh"].get<double>(),
-      wall["assemble"].get<double>(), wall["factor"].get<double>(), wall["solve"].get<double>(),
-      peak_rss_mb());
+      scene.name.c_str(), run.model->solver().free_dofs(), to_string(solver), wall.at("mesh"),
+      wall.at("assemble"), wall.at("factor"), wall.at("solve"), peak_rss_mb());
   std::printf("  residual %.1e, applied force (%.4g, %.4g, %.4g) N, force balance %.1e", r.solution.residual,
               applied[0], applied[1], applied[2], balance);
   if (run.metrics.center_ratio) std::printf(", center_ratio %.5f", *run.metrics.center_ratio);

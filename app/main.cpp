@@ -137,7 +137,8 @@ int main(int argc, char** argv) {
   std::string spec_path, profile;
   int cores = 1;
   bool dry_run = false;
-  sweep->add_option("spec", spec_path, "sweep spec JSON file (format: scene/sweep.cpp, README)")->required();
+  sweep->add_option("spec", spec_path, "sweep spec JSON file (format: scene/sweep.cpp, docs/sweeps.md)")
+      ->required();
   sweep->add_option("--out", out_dir, "output directory (default: out/<sweep name>)");
   sweep->add_option("--cores", cores, "cores Snakemake may use on this machine, one per member job")
       ->check(CLI::Range(1, 4096))

@@ -146,7 +146,7 @@ void error_levels(std::ostream& h, const IndexInput& in) {
   if (in.levels) {
     const std::vector<ChainLevel>& levels = *in.levels;
     std::vector<std::string> stages;
-    for (const auto& [stage, t] : levels.back().wall.items()) stages.push_back(stage);
+    for (const auto& [stage, t] : levels.back().wall) stages.push_back(stage);
     // The quantities in name order, as chain_study.json lists them.
     std::vector<size_t> order(levels.back().names.size());
     for (size_t i = 0; i < order.size(); ++i) order[i] = i;
@@ -161,7 +161,7 @@ void error_levels(std::ostream& h, const IndexInput& in) {
     for (const ChainLevel& l : levels) {
       h << "<tr><td>" << fmt("%g", l.scale) << "</td><td>" << l.dofs << "</td>";
       for (const auto& st : stages)
-        h << "<td>" << (l.wall.contains(st) ? fmt("%.2f", l.wall[st].get<double>()) : "") << "</td>";
+        h << "<td>" << (l.wall.contains(st) ? fmt("%.2f", l.wall.at(st)) : "") << "</td>";
       h << "<td>" << fmt("%.0f", l.peak_rss_mb) << "</td>";
       for (size_t i : order) h << "<td>" << fmt("%.6g", l.value[i]) << "</td>";
       h << "</tr>\n";
@@ -180,13 +180,12 @@ void error_levels(std::ostream& h, const IndexInput& in) {
 
 void stage_times_and_k(std::ostream& h, const IndexInput& in) {
   h << "<h2>Time per stage</h2><table><tr><th>stage</th><th>seconds</th></tr>\n";
-  for (const auto& [stage, sec] : in.wall->items())
-    h << "<tr><td style=\"text-align:left\">" << stage << "</td><td>" << fmt("%.2f", sec.get<double>())
-      << "</td></tr>\n";
+  for (const auto& [stage, sec] : *in.wall)
+    h << "<tr><td style=\"text-align:left\">" << stage << "</td><td>" << fmt("%.2f", sec) << "</td></tr>\n";
   if (in.wall_beside)
-    for (const auto& [stage, sec] : in.wall_beside->items())
+    for (const auto& [stage, sec] : *in.wall_beside)
       h << "<tr><td style=\"text-align:left\">" << stage << " (on another thread, beside the others)</td><td>"
-        << fmt("%.2f", sec.get<double>()) << "</td></tr>\n";
+        << fmt("%.2f", sec) << "</td></tr>\n";
   h << "</table>\n";
   h << "<h2>k</h2><p>" << html_escape(in.kfit_verdict) << "</p>\n";
   if (!in.k_paper_answer.empty())

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "pipeline/chain_level.hpp"
+#include "pipeline/clock.hpp"
 #include "pipeline/hole_budget.hpp"
 #include "pipeline/post_design.hpp"
 #include "scene/scene.hpp"
@@ -19,6 +20,7 @@ namespace skinfem::app {
 
 using pipeline::ChainLevel;
 using pipeline::HoleBudget;
+using pipeline::Timings;
 
 // The chain's quantities with their error bars (pipeline/chain_level.hpp), in display units.
 struct ErrorBar {
@@ -30,8 +32,8 @@ struct ErrorBar {
 struct IndexInput {
   int dofs = 0;
   double wall_total_s = 0, peak_rss_mb = 0;
-  const nlohmann::json* wall = nullptr;         // the report's own seconds per stage
-  const nlohmann::json* wall_beside = nullptr;  // seconds of the stages run on another thread beside them
+  const Timings* wall = nullptr;         // the report's own seconds per stage
+  const Timings* wall_beside = nullptr;  // seconds of the stages run on another thread beside them
   std::string kfit_verdict, k_paper_answer;
   std::optional<validation::FrontSensorAnswer> front;
   std::optional<HoleBudget> budget;

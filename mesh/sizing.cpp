@@ -17,7 +17,7 @@ double distance_to_segment(double x, double y, const Vec2& a, const Vec2& b) {
 
 double sensor_mesh_size(const Scene& scene) {
   if (scene.mesh.sensor_h > 0) return scene.mesh.sensor_h;
-  // A post's wall and rim are curved P2 faces, its rim singular: 0.6 of its radius (README, "Post sensors").
+  // A post's wall and rim are curved P2 faces, its rim singular: 0.6 of its radius (docs/posts.md).
   const double disc_radius = scene.sensors.footprint_radius();
   const double size = scene.sensors.model == SensorModel::post ? 0.6 * disc_radius : disc_radius;
   return size > 0 ? std::min(scene.mesh.h_min, size) : scene.mesh.h_min;

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "green/fe_green.hpp"
+#include "pipeline/clock.hpp"
 #include "pipeline/skin_setup.hpp"
 
 namespace skinfem::pipeline {
@@ -18,7 +19,7 @@ struct AdjointSetup {
   const TetMesh& mesh;
   const ElasticModel* model;
   std::unique_ptr<green::FeGreen> fe;  // refers to model
-  nlohmann::json wall;
+  Timings wall;
 };
 
 // skin: an already factored skin of this scene, or null to mesh and factor one (its half y ≥ 0 where the

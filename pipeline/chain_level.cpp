@@ -34,7 +34,7 @@ ChainLevel chain_values(const Scene& s, const AdjointSetup& adj, const ContactSe
                           scan_half_width(s, &adj.mesh, h, pos), s.calibration.spacing);
   const green::KReport k =
       green::fit_profile(prof.offset_x, prof.point, h, sensor_gains(s.sensors, s.material.nu, h).gains);
-  const double t_green = total_seconds(adj.wall) + clock.seconds();
+  const double t_green = adj.wall.total() + clock.seconds();
   add("k_central", k.k_central, t_green);
   add("k_lsq_line", k.k_lsq_line, t_green);
   if (s.contact && c) {
@@ -42,11 +42,11 @@ ChainLevel chain_values(const Scene& s, const AdjointSetup& adj, const ContactSe
     const contact::ContactResult r = c->solver->solve(FrictionMode::coupled);
     const contact::ContactMetrics m =
         contact::contact_metrics(*c->solver, c->mesh(), *c->top, r, contact_center(s));
-    const double t_contact = t_green + c->wall["condense"].get<double>() + clock.seconds();
+    const double t_contact = t_green + c->wall.at("condense") + clock.seconds();
     add("contact_radius", m.contact_radius_mm, t_contact);
     add("contact_p0", m.p0_MPa, t_contact);
     add("indentation", r.depth_mm, t_contact);
-    l.wall["condense"] = c->wall["condense"];
+    l.wall["condense"] = c->wall.at("condense");
     if (s.contact->sweep) {
       clock = Stopwatch();
       const contact::HoleDimples dimples(*c->solver, c->mesh(), *c->top, s.material.E, s.material.nu);
@@ -136,12 +136,12 @@ void check_error_scales(const std::vector<double>& error_scales) {
 
 std::map<std::string, double> time_vs_dofs_exponent(const std::vector<ChainLevel>& levels) {
   std::map<std::string, double> out;
-  for (const auto& [stage, t] : levels.back().wall.items()) {
+  for (const auto& [stage, t] : levels.back().wall) {
     std::vector<double> x, y;
     for (const ChainLevel& c : levels)
-      if (c.wall.contains(stage) && c.wall[stage].is_number()) {
+      if (c.wall.contains(stage)) {
         x.push_back(c.dofs);
-        y.push_back(c.wall[stage].get<double>());
+        y.push_back(c.wall.at(stage));
       }
     const double e = validation::loglog_slope(x, y);
     if (std::isfinite(e)) out[stage] = e;

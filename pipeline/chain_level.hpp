@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "pipeline/adjoint_setup.hpp"
+#include "pipeline/clock.hpp"
 #include "pipeline/contact_setup.hpp"
 
 namespace skinfem::pipeline {
@@ -20,7 +21,7 @@ struct ChainLevel {
   std::vector<std::string> names;
   std::vector<double> value;    // per name, units above
   std::vector<double> seconds;  // per name: every stage the quantity needs (mesh, factor, adjoints, ...)
-  nlohmann::json wall;          // seconds per stage
+  Timings wall;                 // seconds per stage
   double peak_rss_mb = 0;  // this level's own peak (chain_level: sampled); the process's up to here otherwise
   // Set when the uniformly scaled level left a hole unresolved and was redone with cap_holes: this level
   // is then not a uniform scaling of the scene, which Richardson assumes.

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <stdexcept>
 
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -56,10 +57,15 @@ void release_freed_memory() {
 #endif
 }
 
-double total_seconds(const nlohmann::json& wall) {
+double Timings::at(const std::string& stage) const {
+  const auto it = seconds_.find(stage);
+  if (it == seconds_.end()) throw std::out_of_range("no stage '" + stage + "' was timed");
+  return it->second;
+}
+
+double Timings::total() const {
   double t = 0;
-  for (const auto& [stage, seconds] : wall.items())
-    if (seconds.is_number()) t += seconds.get<double>();
+  for (const auto& [stage, seconds] : seconds_) t += seconds;
   return t;
 }
 

@@ -3,7 +3,9 @@
 
 #include <atomic>
 #include <chrono>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <thread>
 
 namespace skinfem::pipeline {
@@ -43,7 +45,24 @@ class RssSampler {
 // resident otherwise (glibc keeps freed heap pages), and the next stage's peak sits on top of it: the
 // report's error-bar levels peaked 350 MB above its own chain on the paper's skin with posts.
 void release_freed_memory();
-// Sum of the numbers in a {"stage": seconds} object.
-double total_seconds(const nlohmann::json& wall);
+// Wall-clock seconds per named stage of a run (mesh, assemble, factor, ...), kept in name order, the order
+// summary.json writes them in ("wall_s").
+class Timings {
+ public:
+  Timings() = default;
+  Timings(std::initializer_list<std::pair<const std::string, double>> stages) : seconds_(stages) {}
+  double& operator[](const std::string& stage) { return seconds_[stage]; }
+  double at(const std::string& stage) const;  // throws std::out_of_range naming a stage never timed
+  bool contains(const std::string& stage) const { return seconds_.count(stage) > 0; }
+  double total() const;
+  auto begin() const { return seconds_.begin(); }
+  auto end() const { return seconds_.end(); }
+  nlohmann::json json() const { return seconds_; }
+
+ private:
+  std::map<std::string, double> seconds_;
+};
+// As summary.json's "wall_s": {"stage": seconds}.
+inline void to_json(nlohmann::json& j, const Timings& t) { j = t.json(); }
 
 }  // namespace skinfem::pipeline

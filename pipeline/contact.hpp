@@ -12,6 +12,7 @@
 #include "contact/meridian_contact.hpp"
 #include "contact/metrics.hpp"
 #include "fem/mixed_solver.hpp"
+#include "pipeline/clock.hpp"
 #include "pipeline/contact_setup.hpp"
 #include "pipeline/meridian_contact.hpp"
 
@@ -33,7 +34,7 @@ struct ContactRun {
     double pressure_mm = 0, zone_mm = 0;
     Vec2 pressure_xy_mm{0, 0}, zone_xy_mm{0, 0};
   } coupling_shift;
-  nlohmann::json wall;  // seconds per stage (the set-up's, contact_solves, full_solve)
+  Timings wall;  // seconds per stage (the set-up's, contact_solves, full_solve)
   // Why the 3D path ran where the path was automatic (pipeline/meridian_contact.hpp); empty otherwise.
   std::string not_meridian;
   // A second method where the scene is a body of revolution about the indenter

@@ -15,6 +15,7 @@
 #include "contact/mortar.hpp"
 #include "fem/face_index.hpp"
 #include "fem/sensor_reading.hpp"
+#include "pipeline/clock.hpp"
 #include "pipeline/skin_setup.hpp"
 
 namespace skinfem::pipeline {
@@ -34,7 +35,7 @@ struct ContactSetup {
   std::unique_ptr<contact::ContactSolver> solver;        // refers to condensed and mirror
   std::unique_ptr<PlanarFaceIndex> top;                  // of mesh()
   double zone_radius = 0, zone_h = 0;
-  nlohmann::json wall;
+  Timings wall;
 };
 
 // Whether to condense, with a contact.sweep, the compliance of the nodes its hole can reach, so that the

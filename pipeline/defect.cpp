@@ -120,7 +120,7 @@ DefectRun defect_run(const Scene& scene, std::shared_ptr<const ContactSetup> sha
     own.dofs = setup.model->solver().free_dofs();
     own.names = {kLargest};
     own.value = {contact::largest_varsigma_z(run.sweeps.back().varsigma)};
-    own.seconds = {total_seconds(run.wall) - seconds};
+    own.seconds = {run.wall.total() - seconds};
     own.peak_rss_mb = peak_rss_mb();
     run.levels.push_back(own);
   }
@@ -198,7 +198,7 @@ nlohmann::json defect_json(const Scene& scene, const DefectRun& run) {
     summary["largest_sliding"] = b;
   }
   summary["wall_s"] = run.wall;
-  summary["wall_total_s"] = total_seconds(run.wall);
+  summary["wall_total_s"] = run.wall.total();
   summary["peak_rss_mb"] = peak_rss_mb();
   return summary;
 }

@@ -12,6 +12,7 @@
 
 #include "contact/hole_sweep.hpp"
 #include "pipeline/chain_level.hpp"
+#include "pipeline/clock.hpp"
 #include "pipeline/contact_setup.hpp"
 
 namespace skinfem::pipeline {
@@ -33,7 +34,7 @@ struct DefectRun {
   // Per case, the jaggedest curve: validation::roughness and its column of ς (σ_z of sensor k at 2k).
   std::vector<double> max_roughness;
   std::vector<int> max_roughness_column;
-  nlohmann::json wall;  // seconds per stage
+  Timings wall;  // seconds per stage
   // The largest sliding |ς_z| over sensors and positions on coarser levels (largest_sliding_levels) and this
   // one, last; empty without error bars.
   std::vector<ChainLevel> levels;

@@ -211,7 +211,7 @@ nlohmann::json green_json(const Scene& scene, const SensorGreens& greens, const 
       {"load_model", "rigid-punch half-space profile F/(2πa√(a²−r²)), normal and tangential"},
       {"punch_diameter_mm", scene.calibration.punch_diameter},
       {"wall_s", run.wall},
-      {"wall_total_s", total_seconds(run.wall)},
+      {"wall_total_s", run.wall.total()},
       {"peak_rss_mb", peak_rss_mb()}};
   if (run.reciprocity_rel) {
     summary["mesh_part"] = run.mesh_part;

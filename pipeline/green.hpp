@@ -14,6 +14,7 @@
 #include "green/calibration.hpp"
 #include "green/kernel_grid.hpp"
 #include "pipeline/adjoint_setup.hpp"
+#include "pipeline/clock.hpp"
 #include "pipeline/sensor_greens.hpp"
 
 namespace skinfem::pipeline {
@@ -40,7 +41,7 @@ struct GreenRun {
   std::shared_ptr<const TetMesh> top;
   std::vector<std::array<std::vector<double>, 4>> maps;
   std::optional<green::KernelGrid> grid;
-  nlohmann::json wall;  // the Green path's stages, reciprocity_check, profiles, kernel_grid
+  Timings wall;  // the Green path's stages, reciprocity_check, profiles, kernel_grid
 };
 
 // Bounding box (x_lo, x_hi, y_lo, y_hi; mm) of the skin's footprint, from the scene alone (no meshing).

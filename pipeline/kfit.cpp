@@ -282,7 +282,7 @@ nlohmann::json kfit_json(const KfitResult& r) {
   summary["adjoint_solves"] = r.adjoint_solves;
   if (r.path == "3d") summary["max_adjoint_residual"] = r.max_adjoint_residual;
   summary["wall_s"] = r.wall;
-  summary["wall_total_s"] = total_seconds(r.wall);
+  summary["wall_total_s"] = r.wall.total();
   summary["peak_rss_mb"] = r.peak_rss_mb;
   summary["paper_k"] = r.paper_k;
   summary["paper_k_reproduced_within_1pct"] = r.paper_k_reproduced;

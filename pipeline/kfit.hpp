@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "green/calibration.hpp"
+#include "pipeline/clock.hpp"
 #include "pipeline/sensor_greens.hpp"
 
 namespace skinfem::pipeline {
@@ -50,7 +51,7 @@ struct KfitResult {
   std::string path, path_model;                 // of the Green tensors
   int dofs = 0, adjoint_solves = 0;
   double max_adjoint_residual = 0;  // 3D path
-  nlohmann::json wall;              // seconds per stage
+  Timings wall;                     // seconds per stage
   double peak_rss_mb = 0;
   double paper_k = 0;
   bool paper_k_reproduced = false;  // by sensor #1's k_central or k_lsq_line within 1 %

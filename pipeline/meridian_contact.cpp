@@ -177,7 +177,7 @@ nlohmann::json meridian_contact_json(const Scene& scene, const MeridianContactRu
   j["zone"] = {{"radius_mm", run.zone_radius}, {"multipliers", s.multipliers}};
   j["dofs"] = s.dofs;
   j["wall_s"] = run.wall;
-  j["wall_total_s"] = total_seconds(run.wall);
+  j["wall_total_s"] = run.wall.total();
   j["peak_rss_mb"] = peak_rss_mb();
   return j;
 }

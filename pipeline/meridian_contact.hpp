@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "contact/meridian_contact.hpp"
+#include "pipeline/clock.hpp"
 #include "pipeline/sensor_greens.hpp"
 
 namespace skinfem::pipeline {
@@ -37,7 +38,7 @@ struct MeridianContactRun {
   std::vector<FrictionMode> left_out;  // static, coupled with a ratio > 0
   double zone_radius = 0;              // mm
   Vec2 axis{0, 0};                     // the meridian's axis on the base, mm
-  nlohmann::json wall;                 // seconds per stage
+  Timings wall;                        // seconds per stage
 };
 
 // Throws SceneError with meridian_contact_unavailable's reason, or naming contact.zone_radius when the

@@ -23,7 +23,7 @@ struct Solved {
   int dofs = 0;
   green::KReport k;
   green::ScanProfile profile;
-  nlohmann::json wall;
+  Timings wall;
 };
 
 Solved solve_scan(const Scene& scene, std::shared_ptr<Skin> skin, double h, const Vec2& sensor) {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "green/calibration.hpp"
+#include "pipeline/clock.hpp"
 #include "scene/scene.hpp"
 #include "validation/richardson.hpp"
 
@@ -28,7 +29,7 @@ struct RidgeLevel {
   double per_period = 0, ridge_h_mm = 0;
   int dofs = 0, straightened = 0;
   double mesh_s = 0, peak_rss_mb = 0;
-  nlohmann::json wall_ridged, wall_control;  // seconds per stage of each solve
+  Timings wall_ridged, wall_control;  // seconds per stage of each solve
   green::KReport ridged, control;
   // zz, zx, xz, xx: peaks of the point readings over the scan (1/mm²), and max |ridged − control| / peak
   // of the disc readings.

@@ -100,7 +100,7 @@ std::string meridian_unavailable(const Scene& scene) {
 
 namespace {
 // A flat scene stands for the unbounded layer (what kfit compares it with): its meridian reaches 20 h, where
-// the side's influence on the readings, exp(−0.739 r/h) (README, Truncation), is below 1e-6.
+// the side's influence on the readings, exp(−0.739 r/h) (docs/scenes.md, "Truncation"), is below 1e-6.
 constexpr double kUnboundedRadiusOverH = 20;
 
 struct MeridianPair {

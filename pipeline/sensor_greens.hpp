@@ -16,6 +16,7 @@
 #include "green/kernel_grid.hpp"
 #include "green/meridian.hpp"
 #include "pipeline/adjoint_setup.hpp"
+#include "pipeline/clock.hpp"
 
 namespace skinfem::pipeline {
 
@@ -37,7 +38,7 @@ struct SensorGreens {
   std::vector<double> thickness, scan_half_width;  // per sensor, mm
   int dofs = 0, adjoint_solves = 0;
   double max_adjoint_residual = 0;
-  nlohmann::json wall;                // seconds: mesh, assemble, factor, adjoint_solves
+  Timings wall;                       // seconds: mesh, assemble, factor, adjoint_solves
   std::shared_ptr<const void> owner;  // keeps the meridian solutions alive
   // The 3D path's adjoint set-up when green_path made it (maps on the mesh, reciprocity); else null.
   std::shared_ptr<const AdjointSetup> adjoints;
@@ -57,8 +58,8 @@ SensorGreens sensor_greens(const Scene& scene, const AdjointSetup& setup);
 // ridges.
 std::string not_of_revolution(const Geometry& g);
 // The meridian stands for the unbounded layer: a flat layer's side must lie at least 2.5 h beyond every load
-// and reading (the side's influence decays as exp(−0.739 d/h), README "Truncation": below 0.2 % of g_xx's
-// peak there). Why `what` at `margin` mm from the side is too near (a sentence), or empty.
+// and reading (the side's influence decays as exp(−0.739 d/h), docs/scenes.md "Truncation": below 0.2 % of
+// g_xx's peak there). Why `what` at `margin` mm from the side is too near (a sentence), or empty.
 std::string side_too_near(const Geometry& g, const std::string& what, double margin);
 
 // Why the meridian path cannot serve the scene (a sentence naming what breaks the symmetry); empty when it

@@ -8,6 +8,7 @@
 
 #include "fem/elastic_model.hpp"
 #include "mesh/tet_mesh.hpp"
+#include "pipeline/clock.hpp"
 #include "scene/scene.hpp"
 
 namespace skinfem::pipeline {
@@ -15,7 +16,7 @@ namespace skinfem::pipeline {
 struct Skin {
   TetMesh mesh;
   std::unique_ptr<ElasticModel> model;  // refers to mesh; bonded base, no punches
-  nlohmann::json wall;                  // seconds: mesh, assemble, factor
+  Timings wall;                         // seconds: mesh, assemble, factor
 };
 
 // Given the skin's mesh before it is factored, columns to border the factorization with

@@ -9,6 +9,7 @@
 
 #include "fem/elastic_model.hpp"
 #include "fem/sensor_reading.hpp"
+#include "pipeline/clock.hpp"
 #include "validation/load_metrics.hpp"
 
 namespace skinfem::pipeline {
@@ -20,7 +21,7 @@ struct SolveRun {
   LoadMetrics metrics;
   Eigen::Vector3d base_force_N = Eigen::Vector3d::Zero();  // ∫ base traction
   std::vector<SensorReading> readings;                     // per sensor, MPa
-  nlohmann::json wall;                                     // mesh, assemble, factor, solve
+  Timings wall;                                            // mesh, assemble, factor, solve
 };
 
 // Throws SceneError when the scene has no load, or beyond the resource guard (before meshing).

@@ -479,7 +479,7 @@ Sensors read_sensors(const Reader& r, const json& s, std::vector<SensorSource>& 
         r.fail(PS, *support,
                R"(must be "rigid" or the membrane's springs {"k_normal", "k_tangential", "k_tilt"})");
       r.object(*support, PS, {"k_normal", "k_tangential", "k_tilt"});
-      // Stiffnesses from 1e-6 to 1e9 N/mm: a silicon membrane's are about 1e2–1e4 N/mm (README, Posts).
+      // Stiffnesses from 1e-6 to 1e9 N/mm: a silicon membrane's are about 1e2–1e4 N/mm (docs/posts.md).
       const auto stiffness = [](const std::string& unit) {
         return Rule{"a stiffness in [1e-06, 1e+09] " + unit, [](double x) { return x >= 1e-6 && x <= 1e9; }};
       };

@@ -2,7 +2,7 @@
 // (green/layer_exact.hpp) as each reading of the paper's calibration protocol is varied alone about a base
 // case: Poisson's ratio, the punch diameter (0.5 mm read as a diameter or as a radius), the load model
 // (point, uniform disc, rigid punch), the sensor's averaging disc, and the layer's thickness. The FE's own
-// error on these numbers is the kfit one (0.1 % on the flat layer, README).
+// error on these numbers is the kfit one (0.1 % on the flat layer, docs/k_correction.md).
 #pragma once
 
 #include <string>

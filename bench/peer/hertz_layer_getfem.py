@@ -69,7 +69,7 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[2]
 SCENE = "scenes/hertz_layer.json"
 # Exact bonded layer at 0.8 N: contact/layer_hertz.hpp gives a = 2.4879 mm, p0 = 63.75 kPa, delta = 28.46 um
-# (README "Error against cost"); the digits below are the same Fredholm equation solved again by
+# (docs/contact_results.md, "Error against cost"); the digits below are the same Fredholm equation solved again by
 # exact_layer_hertz() (`--exact` prints it; unchanged when its quadratures are doubled).
 EXACT = {"a_mm": 2.4878929, "p0_kPa": 63.74610, "delta_um": 28.46396}
 COLUMNS = ["code", "path", "dofs", "seconds", "peak_mb", "a_mm", "a_rel", "p0_kPa", "p0_rel", "delta_um",
