@@ -56,8 +56,8 @@ void write_readings(const std::string& out_dir, const Scene& scene, FrictionMode
     const auto& p = scene.sensors.positions[k];
     csv << k + 1 << "," << p[0] << "," << p[1] << "," << 1e3 * r[2 * k] << "," << 1e3 * r[2 * k + 1] << "\n";
     for (const auto& [mode, v] : readings)
-      modes << k + 1 << "," << p[0] << "," << p[1] << "," << contact::to_string(mode) << "," << 1e3 * v[2 * k]
-            << "," << 1e3 * v[2 * k + 1] << "\n";
+      modes << k + 1 << "," << p[0] << "," << p[1] << "," << to_string(mode) << "," << 1e3 * v[2 * k] << ","
+            << 1e3 * v[2 * k + 1] << "\n";
   }
   write_text_atomic(out_dir + "/sensors.csv", csv.str());
   write_text_atomic(out_dir + "/modes.csv", modes.str());
@@ -102,7 +102,7 @@ StageOutput<ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const 
   std::printf(
       "contact %s (%s): %.4f N normal, %.4f N tangential; a = %.4f mm (area-equivalent %.4f mm), %s, "
       "indentation %.3f um\n",
-      scene.name.c_str(), contact::to_string(chosen), r.force_N, r.tangential_force_N, m.contact_radius_mm,
+      scene.name.c_str(), to_string(chosen), r.force_N, r.tangential_force_N, m.contact_radius_mm,
       m.equivalent_radius_mm, p0, 1e3 * r.depth_mm);
   if (interface.law == InterfaceLaw::linear && !m.p0_in_hole)
     std::printf("  linear interface: K = %.4g MPa/mm, it closes by %.3g um under p0\n", interface.K,
@@ -160,7 +160,7 @@ void meridian_contact_stage(const Scene& scene, const std::string& out_dir, Fric
   std::printf(
       "contact %s (%s), meridian path: %.4f N normal, %.4f N tangential; a = %.4f mm, p0 = %.2f kPa, "
       "indentation %.3f um\n",
-      scene.name.c_str(), contact::to_string(chosen), s.force_N, m.ratio * s.force_N, s.contact_radius_mm,
+      scene.name.c_str(), to_string(chosen), s.force_N, m.ratio * s.force_N, s.contact_radius_mm,
       1e3 * s.p0_MPa, 1e3 * s.depth_mm);
   std::printf("  %s\n", run.model.c_str());
   if (scene.contact->interface.law == InterfaceLaw::linear)
@@ -168,8 +168,7 @@ void meridian_contact_stage(const Scene& scene, const std::string& out_dir, Fric
                 scene.contact->interface.K, 1e3 * s.p0_MPa / scene.contact->interface.K);
   std::printf("  complementarity %.1e, min pressure %.2e kPa\n", s.complementarity, 1e3 * s.min_lambda);
   std::string left;
-  for (FrictionMode mode : run.left_out)
-    left += std::string(left.empty() ? "" : ", ") + contact::to_string(mode);
+  for (FrictionMode mode : run.left_out) left += std::string(left.empty() ? "" : ", ") + to_string(mode);
   if (!left.empty())
     std::printf(
         "  left out (not exact on the meridian, their contact zone is not a disc): %s; --path 3d solves "

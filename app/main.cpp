@@ -11,6 +11,7 @@
 #include "mesh/surface.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/resources.hpp"
+#include "scene/laws.hpp"
 #include "scene/load.hpp"
 
 namespace {
@@ -93,9 +94,11 @@ int main(int argc, char** argv) {
       "contact",
       "rigid indenter in contact with the skin (pressure.vtp, fields.vtu, sensors.csv, summary.json)");
   std::string friction = "scene";
+  std::vector<std::string> friction_choices{"scene"};
+  for (const std::string& mode : skinfem::friction_mode_names()) friction_choices.push_back(mode);
   contact_cmd
       ->add_option("--friction", friction, "friction mode (default: the scene's contact.friction.mode)")
-      ->check(CLI::IsMember({"scene", "none", "static", "uncoupled", "coupled"}))
+      ->check(CLI::IsMember(friction_choices))
       ->capture_default_str();
   contact_cmd
       ->add_option("--path", path_name,

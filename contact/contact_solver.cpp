@@ -13,44 +13,6 @@
 
 namespace skinfem::contact {
 
-const char* to_string(FrictionMode mode) {
-  switch (mode) {
-    case FrictionMode::none:
-      return "none";
-    case FrictionMode::static_residual:
-      return "static";
-    case FrictionMode::uncoupled:
-      return "uncoupled";
-    case FrictionMode::coupled:
-      return "coupled";
-  }
-  return "none";
-}
-
-const char* to_string(FrictionLaw law) {
-  switch (law) {
-    case FrictionLaw::coulomb:
-      return "coulomb";
-    case FrictionLaw::shear_strength:
-      return "shear_strength";
-    case FrictionLaw::mixed:
-      return "mixed";
-  }
-  return "coulomb";
-}
-
-const char* to_string(InterfaceLaw law) {
-  switch (law) {
-    case InterfaceLaw::hard:
-      return "hard";
-    case InterfaceLaw::linear:
-      return "linear";
-    case InterfaceLaw::exponential:
-      return "exponential";
-  }
-  return "hard";
-}
-
 MirrorView mirror_view(const TetMesh& whole, const std::vector<int>& source, const MortarZone& half_zone,
                        const Vec2& center, double radius) {
   MirrorView v;
@@ -134,28 +96,18 @@ ContactResult ContactSolver::started(FrictionMode mode) const {
   return out;
 }
 
-double ContactSolver::solved_ratio(FrictionMode mode) const {
-  // The pressure is solved with the traction acting, except in the uncoupled mode.
-  return mode == FrictionMode::uncoupled ? 0.0 : ratio(mode);
-}
+double ContactSolver::solved_ratio(FrictionMode mode) const { return kind(mode).coupled ? ratio(mode) : 0.0; }
 
 double ContactSolver::ratio(FrictionMode mode) const {
-  switch (mode) {
-    case FrictionMode::none:
-      return 0.0;
-    case FrictionMode::static_residual:
-      return load_.law == FrictionLaw::shear_strength ? 0.0 : load_.static_ratio;
-    case FrictionMode::uncoupled:
-    case FrictionMode::coupled:
-      return load_.law == FrictionLaw::shear_strength ? 0.0 : load_.mu;
-  }
-  return 0.0;
+  const FrictionModeKind& m = kind(mode);
+  if (!m.traction || !kind(load_.law).proportional) return 0.0;
+  return m.at_rest ? load_.static_ratio : load_.mu;
 }
 
 double ContactSolver::shear(FrictionMode mode) const {
-  if (load_.law == FrictionLaw::coulomb || mode == FrictionMode::none) return 0.0;
-  if (mode == FrictionMode::static_residual)
-    return load_.mu > 0 ? tau0() * load_.static_ratio / load_.mu : 0.0;
+  const FrictionModeKind& m = kind(mode);
+  if (!m.traction || !kind(load_.law).shear_strength) return 0.0;
+  if (m.at_rest) return load_.mu > 0 ? tau0() * load_.static_ratio / load_.mu : 0.0;
   return tau0();
 }
 
@@ -305,7 +257,7 @@ ContactResult ContactSolver::solve(FrictionMode mode, const std::vector<char>& e
     };
     const bool holed = std::find(excluded.begin(), excluded.end(), 1) != excluded.end() ||
                        (covered.size() && covered.maxCoeff() > 0);
-    const bool acting = mode != FrictionMode::uncoupled;
+    const bool acting = kind(mode).coupled;
     if (holed) {
       out.shear = out.tau * touched(mode);
       if (covered.size()) out.shear = out.shear.cwiseProduct((1.0 - covered.array()).matrix());
@@ -371,8 +323,8 @@ ContactResult ContactSolver::solve(FrictionMode mode, const std::vector<char>& e
     for (int i = 0; i < zone().size(); ++i) out.partial_shear += partial.count(solved_index(i)) ? 1 : 0;
   }
   Eigen::VectorXd gap = s.gap;
-  if (mode == FrictionMode::uncoupled) gap += out.ratio * (c_.C_zt * s.lambda);
-  if (mode == FrictionMode::uncoupled && out.tau != 0) gap += c_.C_zt * shear_solved;
+  if (!kind(mode).coupled) gap += out.ratio * (c_.C_zt * s.lambda);
+  if (!kind(mode).coupled && out.tau != 0) gap += c_.C_zt * shear_solved;
   out.readings = solved_readings(s.lambda, out.ratio);
   if (out.tau != 0) out.readings += c_.S_t * shear_solved;
   finish(out, s, gap, excluded);
@@ -453,7 +405,7 @@ ContactResult ContactSolver::solve(FrictionMode mode, const CutProblem& cp,
     shear_solved = out.tau * w.cwiseProduct(outside);
     out.shear = Eigen::VectorXd::Zero(zone().size());
     for (int i = 0; i < zone().size(); ++i) out.shear[i] = shear_solved[solved_index(i)];
-    if (mode != FrictionMode::uncoupled) q2 += zt_times(shear_solved, true);
+    if (kind(mode).coupled) q2 += zt_times(shear_solved, true);
   }
   const double share = mirror_ ? 0.5 : 1.0;
   const double value = load_.force ? share * *load_.force : *load_.depth;
@@ -466,7 +418,7 @@ ContactResult ContactSolver::solve(FrictionMode mode, const CutProblem& cp,
     s = solve_exponential(M2_unscaled, q2, m, {load_.interface.u0, load_.interface.p_ref},
                           load_.force.has_value(), value, ex, s);
   Eigen::VectorXd gap = s.gap;
-  if (mode == FrictionMode::uncoupled) {
+  if (!kind(mode).coupled) {
     if (out.ratio != 0) gap += out.ratio * zt_times(s.lambda, false);
     if (out.tau != 0) gap += zt_times(shear_solved, true);
   }
@@ -494,7 +446,7 @@ ContactResult ContactSolver::solve(FrictionMode mode, const HoleDimple& dimple) 
     out.shear = out.tau * touched(mode);
     if (dimple.covered.size()) out.shear = out.shear.cwiseProduct((1.0 - dimple.covered.array()).matrix());
     shear_solved = solved_lambda(out.shear);
-    if (mode != FrictionMode::uncoupled) shift += c_.C_zt * shear_solved;
+    if (kind(mode).coupled) shift += c_.C_zt * shear_solved;
   }
   const double value = load_.force ? (mirror_ ? 0.5 : 1.0) * *load_.force : *load_.depth;
   // The hole-free set, bilateral; one principal solve on its stored factorization (set_reference).
@@ -508,7 +460,7 @@ ContactResult ContactSolver::solve(FrictionMode mode, const HoleDimple& dimple) 
                             ? problem.solve_force(value, out_of_contact, set, shift, dimple.in_contact)
                             : problem.solve_depth(value, out_of_contact, set, shift, dimple.in_contact);
   Eigen::VectorXd gap = s.gap;
-  if (mode == FrictionMode::uncoupled) {
+  if (!kind(mode).coupled) {
     if (out.ratio != 0) gap += out.ratio * (c_.C_zt * s.lambda);
     if (out.tau != 0) gap += c_.C_zt * shear_solved;
   }

@@ -28,12 +28,9 @@
 
 #include "contact/condensed.hpp"
 #include "contact/lcp.hpp"
+#include "scene/laws.hpp"
 
 namespace skinfem::contact {
-
-const char* to_string(FrictionMode mode);
-const char* to_string(FrictionLaw law);
-const char* to_string(InterfaceLaw law);
 
 struct ContactResult {
   FrictionMode mode = FrictionMode::none;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/laws.hpp"
+
 namespace skinfem::contact {
 
 namespace {
@@ -90,13 +92,13 @@ ContactMetrics contact_metrics(const ContactSolver& solver, const TetMesh& m, co
   // Edge fit: p^q = α + βr² + γr⁴ over the outer part of the contact, root nearest the last active ring. A
   // hard contact's pressure vanishes like √(a − r) (q = 2); through a linear interface the closure p/K
   // takes up the gap at the edge, so p vanishes like a − r (q = 1; contact/layer_hertz_interface.hpp).
-  const bool linear_edge = solver.load().interface.law == InterfaceLaw::linear;
+  const bool linear_edge = kind(solver.load().interface.law).edge_q == 1;
   // With holes the pressure centroid leaves the centre (the holes carry nothing): the fit is made about
   // the centroid of the area inside the outer boundary, holes included.
   const Eigen::Vector2d fc = holes.empty() ? pc : Eigen::Vector2d(enclosed_moment / enclosed);
   // An exponential interface has no edge, only a tail: fit the loaded part (λ ≥ 5 % of the peak, the
   // asperities closed to within u0 ln 20 of the mean plane) and extrapolate it to its hard-contact edge.
-  const double floor = solver.load().interface.law == InterfaceLaw::exponential ? 0.05 * out.p_max_MPa : 0.0;
+  const double floor = kind(solver.load().interface.law).smooth ? 0.05 * out.p_max_MPa : 0.0;
   const auto fitted = [&](int i) {
     if (!touching[i] || r.lambda[i] < floor) return false;
     for (const Hole& h : holes)

@@ -3,6 +3,8 @@
 #include <Eigen/LU>
 #include <cmath>
 
+#include "scene/laws.hpp"
+
 namespace skinfem::contact {
 
 Eigen::MatrixXd small_hole_signals(const ContactSolver& solver, FrictionMode mode, const TetMesh& mesh,
@@ -13,7 +15,7 @@ Eigen::MatrixXd small_hole_signals(const ContactSolver& solver, FrictionMode mod
   const CondensedContact& c = solver.condensed();
   const MortarZone& z = solver.zone();
   const ContactResult r = solver.solve(mode);
-  const double solved_ratio = mode == FrictionMode::uncoupled ? 0.0 : r.ratio;
+  const double solved_ratio = kind(mode).coupled ? r.ratio : 0.0;
   const std::vector<int> A = solver.solved_set(r.active);
   const int na = static_cast<int>(A.size()), nr = static_cast<int>(c.S_p.rows());
   // Force control borders the active block with the force row and the unknown approach δ.
@@ -42,7 +44,7 @@ Eigen::MatrixXd small_hole_signals(const ContactSolver& solver, FrictionMode mod
   // hole's area lumped on the hats, contact/hole_cover.hpp), read directly through S_t and, where it acts
   // while the pressure is solved, through the gaps it opens, C_zt Δτ, on the kept zone.
   const bool shear = r.tau != 0;
-  const bool shear_acting = shear && mode != FrictionMode::uncoupled;
+  const bool shear_acting = shear && kind(mode).coupled;
   const double S_d = M_PI * 0.25 * hole_diameter * hole_diameter;
   Eigen::VectorXd drop = Eigen::VectorXd::Zero(z.size());
   const double eps = 0.5 * hole_diameter;

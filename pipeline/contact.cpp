@@ -8,6 +8,7 @@
 #include "pipeline/meridian_contact.hpp"
 #include "pipeline/scene_json.hpp"
 #include "pipeline/symmetry.hpp"
+#include "scene/laws.hpp"
 
 namespace skinfem::pipeline {
 
@@ -20,7 +21,7 @@ nlohmann::json p0_json(const contact::ContactMetrics& m) {
 }
 
 nlohmann::json metrics_json(const contact::ContactMetrics& m, const ContactResult& r) {
-  return {{"friction", contact::to_string(r.mode)},
+  return {{"friction", to_string(r.mode)},
           {"ratio", r.ratio},
           {"shear_kPa", 1e3 * r.tau},
           {"force_N", r.force_N},
@@ -51,11 +52,8 @@ void require_contact(const Scene& scene) {
 FrictionMode friction_mode_named(const Scene& scene, const std::string& name) {
   require_contact(scene);
   if (name.empty() || name == "scene") return scene.contact->friction;
-  if (name == "none") return FrictionMode::none;
-  if (name == "static") return FrictionMode::static_residual;
-  if (name == "uncoupled") return FrictionMode::uncoupled;
-  if (name == "coupled") return FrictionMode::coupled;
-  throw SceneError("friction: '" + name + "' is not one of none, static, uncoupled, coupled");
+  if (const auto mode = skinfem::friction_mode_named(name)) return *mode;
+  throw SceneError("friction: '" + name + "' is not one of " + choice_list(friction_mode_names(), false));
 }
 
 ContactRun contact_run(const Scene& scene, std::shared_ptr<const ContactSetup> shared, FrictionMode chosen,
@@ -183,10 +181,10 @@ nlohmann::json contact_json(const Scene& scene, const ContactRun& run) {
   summary["scene"] = scene_json(scene);
   summary["path"] = "3d";
   if (!run.not_meridian.empty()) summary["not_meridian"] = run.not_meridian;
-  summary["friction_law"] = contact::to_string(scene.contact->law);
-  if (scene.contact->law != FrictionLaw::coulomb) summary["tau0_kPa"] = 1e3 * solver.tau0();
+  summary["friction_law"] = to_string(scene.contact->law);
+  if (kind(scene.contact->law).shear_strength) summary["tau0_kPa"] = 1e3 * solver.tau0();
   const Interface& interface = scene.contact->interface;
-  summary["interface"] = contact::to_string(interface.law);
+  summary["interface"] = to_string(interface.law);
   if (interface.law == InterfaceLaw::linear) summary["interface_K_MPa_per_mm"] = interface.K;
   if (interface.law == InterfaceLaw::exponential) {
     summary["interface_u0_um"] = 1e3 * interface.u0;
@@ -199,15 +197,16 @@ nlohmann::json contact_json(const Scene& scene, const ContactRun& run) {
   summary["pressure_centroid_x_mm"] = m.pressure_centroid[0];
   summary["readings_condensed_vs_reactions_rel"] = run.readings_condensed_vs_reactions_rel;
   if (const auto& c = run.meridian_check)
-    summary["meridian_check"] = {{"readings_rel", c->readings_rel},
-                                 {"contact_radius_rel", c->a_rel},
-                                 {"p0_rel", c->p0_rel},
-                                 {"indentation_rel", c->indentation_rel},
-                                 {"dofs", c->dofs},
-                                 {"modes", {"none", "uncoupled"}}};
+    summary["meridian_check"] = {
+        {"readings_rel", c->readings_rel},
+        {"contact_radius_rel", c->a_rel},
+        {"p0_rel", c->p0_rel},
+        {"indentation_rel", c->indentation_rel},
+        {"dofs", c->dofs},
+        {"modes", {to_string(FrictionMode::none), to_string(FrictionMode::uncoupled)}}};
   summary["residual"] = run.solution.residual;
   for (const auto& [mode, res] : results)
-    summary["modes"][contact::to_string(mode)] = metrics_json(metrics.at(mode), res);
+    summary["modes"][to_string(mode)] = metrics_json(metrics.at(mode), res);
   // What coupling changes: coupled − uncoupled at the same μ (the paper's assumption is "nothing").
   const auto& cu = metrics.at(FrictionMode::coupled);
   const auto& un = metrics.at(FrictionMode::uncoupled);

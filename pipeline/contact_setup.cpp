@@ -10,6 +10,7 @@
 #include "pipeline/progress.hpp"
 #include "pipeline/resources.hpp"
 #include "pipeline/symmetry.hpp"
+#include "scene/laws.hpp"
 
 namespace skinfem::pipeline {
 
@@ -150,7 +151,7 @@ void check_zone(const Scene& scene, const ContactSetup& s, const contact::Contac
   };
   // The outermost ring of multipliers lies within one element of the zone's edge.
   const double ring = s.zone_radius - s.zone_h;
-  if (scene.contact->interface.law == InterfaceLaw::exponential) {
+  if (kind(scene.contact->interface.law).smooth) {
     // An exponential interface touches everywhere: its tail is cut at the zone's edge whatever the radius.
     // The outer ring's share of the force measures the cut (it bounds what lies beyond where the tail
     // decays within the ring's width, as on the paper's skin: R u0 / (zone radius · h) = 0.2 at u0 = 5 µm).
@@ -167,8 +168,7 @@ void check_zone(const Scene& scene, const ContactSetup& s, const contact::Contac
           "%s: contact.zone_radius = %g: the exponential interface carries %.2g of the force in the "
           "zone's outer element ring (friction %s; allowed %.0e): its tail is cut short there; give a "
           "larger contact.zone_radius",
-          scene.source_path.c_str(), s.zone_radius, outer / total, contact::to_string(r.mode),
-          kZoneTailFraction);
+          scene.source_path.c_str(), s.zone_radius, outer / total, to_string(r.mode), kZoneTailFraction);
       throw SceneError(buf);
     }
     return;
@@ -178,8 +178,7 @@ void check_zone(const Scene& scene, const ContactSetup& s, const contact::Contac
   // Contact reaching the outer ring may be cut short by the zone.
   if (reach > ring)
     throw SceneError(scene.source_path + ": contact.zone_radius = " + std::to_string(s.zone_radius) +
-                     ": the contact (friction " + contact::to_string(r.mode) + ") reaches " +
-                     std::to_string(reach) +
+                     ": the contact (friction " + to_string(r.mode) + ") reaches " + std::to_string(reach) +
                      " mm from the centre, within one element (contact.h = " + std::to_string(s.zone_h) +
                      ")" + " mm of the zone's edge; give a larger contact.zone_radius");
 }

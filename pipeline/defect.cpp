@@ -135,7 +135,7 @@ nlohmann::json defect_json(const Scene& scene, const DefectRun& run) {
   for (size_t ci = 0; ci < run.cases.size(); ++ci) {
     const auto& res = run.sweeps[ci];
     nlohmann::json c;
-    c["friction"] = contact::to_string(res.mode);
+    c["friction"] = to_string(res.mode);
     c["ratio"] = setup.solver->ratio(res.mode);
     c["shear_kPa"] = 1e3 * setup.solver->shear(res.mode);
     c["seconds"] = res.seconds;
@@ -162,7 +162,7 @@ nlohmann::json defect_json(const Scene& scene, const DefectRun& run) {
     summary["cases"][run.cases[ci]] = c;
   }
   summary["scene"] = scene_json(scene);
-  summary["friction_law"] = contact::to_string(scene.contact->law);
+  summary["friction_law"] = to_string(scene.contact->law);
   summary["positions"] = sweep.positions;
   summary["hole_diameter_mm"] = sweep.hole_diameter;
   summary["hole_model"] = sweep.model == HoleModel::bulge ? "bulge" : "resolved";

@@ -7,13 +7,16 @@
 #include "pipeline/clock.hpp"
 #include "pipeline/contact.hpp"
 #include "pipeline/scene_json.hpp"
+#include "scene/laws.hpp"
 
 namespace skinfem::pipeline {
 
 namespace {
 // The Coulomb ratio a mode applies while the pressure is solved (the uncoupled mode's comes after it).
 double solved_ratio(const ContactLoad& c, FrictionMode m) {
-  return m == FrictionMode::static_residual ? c.static_ratio : m == FrictionMode::coupled ? c.mu : 0.0;
+  const FrictionModeKind& k = kind(m);
+  if (!k.traction || !k.coupled) return 0.0;
+  return k.at_rest ? c.static_ratio : c.mu;
 }
 
 std::string not_exact(const ContactLoad& c, FrictionMode m) {
@@ -22,7 +25,7 @@ std::string not_exact(const ContactLoad& c, FrictionMode m) {
       buf, sizeof buf,
       "the %s mode's traction acts while the pressure is solved (contact.friction.%s = %g): its normal "
       "displacement varies as cos θ, so the contact zone is not a disc",
-      contact::to_string(m), m == FrictionMode::coupled ? "mu" : "static_ratio", solved_ratio(c, m));
+      to_string(m), kind(m).at_rest ? "static_ratio" : "mu", solved_ratio(c, m));
   return buf;
 }
 }  // namespace
@@ -41,10 +44,10 @@ std::string meridian_contact_unavailable(const Scene& scene, FrictionMode chosen
     return "holes are on the 3D path only (a hole on the axis keeps the symmetry, but the meridian does not "
            "model one yet)";
   }
-  if (c.interface.law == InterfaceLaw::exponential)
-    return std::string("the ") + contact::to_string(c.interface.law) + " interface is on the 3D path only";
-  if (c.law != FrictionLaw::coulomb)
-    return std::string("the ") + contact::to_string(c.law) + " friction law is on the 3D path only";
+  if (kind(c.interface.law).smooth)
+    return std::string("the ") + to_string(c.interface.law) + " interface is on the 3D path only";
+  if (kind(c.law).shear_strength)
+    return std::string("the ") + to_string(c.law) + " friction law is on the 3D path only";
   const Vec2 centre = contact_center(scene);
   if (g.kind == GeometryKind::cap && std::hypot(centre[0] - g.cap.apex_x, centre[1] - g.cap.apex_y) > 1e-9) {
     char buf[200];
@@ -147,8 +150,8 @@ nlohmann::json meridian_contact_json(const Scene& scene, const MeridianContactRu
   j["scene"] = scene_json(scene);
   j["path"] = "meridian";
   j["model"] = run.model;
-  j["friction"] = contact::to_string(run.chosen);
-  j["interface"] = contact::to_string(scene.contact->interface.law);
+  j["friction"] = to_string(run.chosen);
+  j["interface"] = to_string(scene.contact->interface.law);
   if (scene.contact->interface.law == InterfaceLaw::linear)
     j["interface_K_MPa_per_mm"] = scene.contact->interface.K;
   j["ratio"] = m.ratio;
@@ -170,10 +173,10 @@ nlohmann::json meridian_contact_json(const Scene& scene, const MeridianContactRu
                          {"y_mm", scene.sensors.positions[k][1]},
                          {"sigma_z_kPa", 1e3 * v.readings[2 * k]},
                          {"sigma_x_kPa", 1e3 * v.readings[2 * k + 1]}});
-    j["modes"][contact::to_string(mode)] = {{"ratio", v.ratio}, {"sensors", sensors}};
+    j["modes"][to_string(mode)] = {{"ratio", v.ratio}, {"sensors", sensors}};
   }
   j["left_out"] = nlohmann::json::array();
-  for (FrictionMode mode : run.left_out) j["left_out"].push_back(contact::to_string(mode));
+  for (FrictionMode mode : run.left_out) j["left_out"].push_back(to_string(mode));
   j["zone"] = {{"radius_mm", run.zone_radius}, {"multipliers", s.multipliers}};
   j["dofs"] = s.dofs;
   j["wall_s"] = run.wall;

@@ -24,8 +24,7 @@ void bind_contact(py::module_& m) {
       m, "ContactRun", py::dynamic_attr(),
       "The indenter on the skin in every friction mode; attributes are the chosen "
       "mode's (pipeline/contact.hpp).")
-      .def_property_readonly("friction",
-                             [](const pipeline::ContactRun& r) { return contact::to_string(r.chosen); })
+      .def_property_readonly("friction", [](const pipeline::ContactRun& r) { return to_string(r.chosen); })
       .def_property_readonly("force_N", [](const pipeline::ContactRun& r) { return r.result().force_N; })
       .def_property_readonly("tangential_force_N",
                              [](const pipeline::ContactRun& r) { return r.result().tangential_force_N; })
@@ -73,12 +72,12 @@ void bind_contact(py::module_& m) {
       m, "MeridianContactRun", py::dynamic_attr(),
       "The indenter on the axis of a body of revolution, on its meridian, in the modes exact there; "
       "attributes are the chosen mode's (pipeline/meridian_contact.hpp).")
-      .def_property_readonly(
-          "friction", [](const pipeline::MeridianContactRun& r) { return contact::to_string(r.chosen); })
+      .def_property_readonly("friction",
+                             [](const pipeline::MeridianContactRun& r) { return to_string(r.chosen); })
       .def_property_readonly("left_out",
                              [](const pipeline::MeridianContactRun& r) {
                                std::vector<std::string> v;
-                               for (FrictionMode m : r.left_out) v.push_back(contact::to_string(m));
+                               for (FrictionMode m : r.left_out) v.push_back(to_string(m));
                                return v;
                              })
       .def_property_readonly("force_N",

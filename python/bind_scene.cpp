@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/sizing.hpp"
 #include "python/bindings.hpp"
 #include "scene/load.hpp"
 #include "validation/k_sweep.hpp"

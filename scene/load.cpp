@@ -90,6 +90,7 @@
 #include <vector>
 
 #include "scene/json_text.hpp"
+#include "scene/laws.hpp"
 
 namespace skinfem {
 namespace {
@@ -793,16 +794,9 @@ void check_loads(const Reader& r, const Scene& scene) {
 void read_friction(const Reader& r, const json& f, const std::string& path, ContactLoad& out) {
   r.object(f, path, {"mode", "law", "mu", "tau0", "static_ratio", "direction"});
   if (const json* mode = Reader::find(f, "mode")) {
-    if (*mode == "none")
-      out.friction = FrictionMode::none;
-    else if (*mode == "static")
-      out.friction = FrictionMode::static_residual;
-    else if (*mode == "uncoupled")
-      out.friction = FrictionMode::uncoupled;
-    else if (*mode == "coupled")
-      out.friction = FrictionMode::coupled;
-    else
-      r.fail(sub(path, "mode"), *mode, R"(must be one of "none", "static", "uncoupled", "coupled")");
+    const auto m = mode->is_string() ? friction_mode_named(mode->get<std::string>()) : std::nullopt;
+    if (!m) r.fail(sub(path, "mode"), *mode, "must be one of " + choice_list(friction_mode_names()));
+    out.friction = *m;
   }
   // μ = 0 is allowed with every mode: coupled friction with μ = 0 must then reproduce frictionless contact.
   out.mu = r.number_or(f, path, "mu", 0.0, non_negative());
@@ -813,17 +807,12 @@ void read_friction(const Reader& r, const json& f, const std::string& path, Cont
            "|p_t| <= mu p_z; give contact.friction.mu)",
        [mu = out.mu](double x) { return x >= 0 && x <= mu; }});
   if (const json* law = Reader::find(f, "law")) {
-    if (*law == "coulomb")
-      out.law = FrictionLaw::coulomb;
-    else if (*law == "shear_strength")
-      out.law = FrictionLaw::shear_strength;
-    else if (*law == "mixed")
-      out.law = FrictionLaw::mixed;
-    else
-      r.fail(sub(path, "law"), *law, R"(must be one of "coulomb", "shear_strength", "mixed")");
+    const auto l = law->is_string() ? friction_law_named(law->get<std::string>()) : std::nullopt;
+    if (!l) r.fail(sub(path, "law"), *law, "must be one of " + choice_list(friction_law_names()));
+    out.law = *l;
   }
   if (const json* tau0 = Reader::find(f, "tau0")) {
-    if (out.law == FrictionLaw::coulomb)
+    if (!kind(out.law).shear_strength)
       r.fail(sub(path, "tau0"), *tau0,
              R"(is the shear strength of "law": "shear_strength" or "mixed"; Coulomb friction has none)");
     if (*tau0 != "from_force")
@@ -928,22 +917,16 @@ ContactLoad read_contact(const Reader& r, const json& c, const Geometry& geo) {
   if (const json* i = Reader::find(c, "interface")) {
     const std::string path = sub(P, "interface");
     r.object(*i, path, {"law", "K", "u0", "p_ref"});
-    const json& law = r.need(*i, path, "law", R"("hard", "linear" or "exponential")");
-    if (law == "hard")
-      out.interface.law = InterfaceLaw::hard;
-    else if (law == "linear")
-      out.interface.law = InterfaceLaw::linear;
-    else if (law == "exponential")
-      out.interface.law = InterfaceLaw::exponential;
-    else
-      r.fail(sub(path, "law"), law, R"(must be one of "hard", "linear", "exponential")");
+    const json& law = r.need(*i, path, "law", choice_list(interface_law_names()));
+    const auto l = law.is_string() ? interface_law_named(law.get<std::string>()) : std::nullopt;
+    if (!l) r.fail(sub(path, "law"), law, "must be one of " + choice_list(interface_law_names()));
+    out.interface.law = *l;
     const auto only = [&](const char* key, InterfaceLaw owner, const char* what) {
       if (out.interface.law == owner) return true;
       if (const json* v = Reader::find(*i, key))
-        r.fail(sub(path, key), *v,
-               std::string("is ") + what + " of \"law\": \"" +
-                   (owner == InterfaceLaw::linear ? "linear" : "exponential") +
-                   "\"; this interface has none");
+        r.fail(
+            sub(path, key), *v,
+            std::string("is ") + what + " of \"law\": \"" + to_string(owner) + "\"; this interface has none");
       return false;
     };
     if (only("K", InterfaceLaw::linear, "the stiffness"))
@@ -956,7 +939,7 @@ ContactLoad read_contact(const Reader& r, const json& c, const Geometry& geo) {
     if (only("p_ref", InterfaceLaw::exponential, "the reference pressure"))
       out.interface.p_ref = r.number(
           *i, path, "p_ref", {"a pressure in (0, 1e6] MPa", [](double x) { return x > 0 && x <= 1e6; }});
-    if (out.interface.law == InterfaceLaw::exponential && out.law != FrictionLaw::coulomb)
+    if (kind(out.interface.law).smooth && kind(out.law).shear_strength)
       r.fail(
           sub(path, "law"), law,
           R"(touches everywhere, and a shear strength acts where the skin touches: use "friction": {"law": "coulomb"} with it, or a hard or linear interface)");
@@ -965,12 +948,11 @@ ContactLoad read_contact(const Reader& r, const json& c, const Geometry& geo) {
     out.sweep = read_sweep(r, *sw, sub(P, "sweep"), geo);
     // The bulge is the small hole's solution under a hard interface: through a compliant one the pressure
     // missing over the hole is reloaded over E*/K, not on the rim. Unsaid, such a sweep is resolved.
-    if (out.interface.law != InterfaceLaw::hard) {
+    if (kind(out.interface.law).compliant) {
       if (Reader::find(*sw, "hole_model") && out.sweep->model == HoleModel::bulge)
         r.fail(sub(P, "sweep.hole_model"), "bulge",
                std::string(R"(is the hole's solution under a hard interface; with "interface": {"law": ")") +
-                   (out.interface.law == InterfaceLaw::linear ? "linear" : "exponential") +
-                   R"("} use "resolved")");
+                   to_string(out.interface.law) + R"("} use "resolved")");
       out.sweep->model = HoleModel::resolved;
     }
     // The bulge is the first term in (ε/d)², ε the hole's radius and d the skin's thickness: against resolved

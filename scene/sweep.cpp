@@ -31,6 +31,7 @@
 #include <set>
 
 #include "scene/json_text.hpp"
+#include "scene/laws.hpp"
 #include "scene/load.hpp"
 #include "scene/parallel.hpp"
 
@@ -104,7 +105,11 @@ std::vector<std::string> read_options(const SpecReader& r, const json& o, const 
   static const std::map<std::string, std::set<std::string>> choices{
       {"path", {"auto", "3d", "meridian"}},
       {"load", {"punch", "point"}},
-      {"friction", {"scene", "none", "static", "uncoupled", "coupled"}}};
+      {"friction", [] {
+         std::set<std::string> modes{"scene"};
+         for (const std::string& m : friction_mode_names()) modes.insert(m);
+         return modes;
+       }()}};
   static const std::map<std::string, std::set<std::string>> allowed{
       {"kfit", {"path", "load", "max_dofs"}},
       {"green", {"path", "grid", "max_dofs"}},

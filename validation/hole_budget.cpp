@@ -10,6 +10,7 @@
 
 #include "contact/hole_sweep.hpp"
 #include "contact/metrics.hpp"
+#include "scene/laws.hpp"
 #include "validation/crosscheck.hpp"
 
 namespace skinfem::validation {
@@ -263,7 +264,7 @@ HypothesisResult run_hypothesis(const Hypothesis& h, const contact::CondensedCon
   HypothesisResult out;
   out.hypothesis = h;
   const contact::ContactSolver solver(condensed, h.load, mirror);
-  out.tau0_MPa = h.load.law == FrictionLaw::coulomb ? 0.0 : solver.tau0();
+  out.tau0_MPa = kind(h.load.law).shear_strength ? solver.tau0() : 0.0;
   const contact::ContactResult sliding = solver.solve(FrictionMode::coupled);
   {
     const contact::MortarZone& z = solver.zone();
@@ -287,7 +288,7 @@ HypothesisResult run_hypothesis(const Hypothesis& h, const contact::CondensedCon
   // The bulge is a hole's solution under a hard interface only (contact/hole_dimple.hpp): through a
   // compliant one the hole is resolved, which needs the path's compliance in `condensed`.
   HoleSweep hyp_sweep = sweep;
-  if (h.load.interface.law != InterfaceLaw::hard) {
+  if (kind(h.load.interface.law).compliant) {
     if (!condensed.path)
       throw std::runtime_error(
           "a hole through a compliant interface is resolved, and the condensed skin has no hole path");
