@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "app/common.hpp"
-#include "validation/richardson.hpp"
+#include "skinfem/validation/richardson.hpp"
 
 namespace skinfem::app {
 

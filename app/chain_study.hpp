@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/chain_level.hpp"
+#include "skinfem/pipeline/chain_level.hpp"
 
 namespace skinfem::app {
 

@@ -33,12 +33,12 @@
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "app/stages.hpp"
-#include "contact/metrics.hpp"
-#include "contact/pressure_map.hpp"
-#include "fem/fields.hpp"
-#include "pipeline/contact.hpp"
-#include "pipeline/contact_setup.hpp"
-#include "pipeline/meridian_contact.hpp"
+#include "skinfem/contact/metrics.hpp"
+#include "skinfem/contact/pressure_map.hpp"
+#include "skinfem/fem/fields.hpp"
+#include "skinfem/pipeline/contact.hpp"
+#include "skinfem/pipeline/contact_setup.hpp"
+#include "skinfem/pipeline/meridian_contact.hpp"
 
 namespace skinfem::app {
 

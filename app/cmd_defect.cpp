@@ -22,12 +22,12 @@
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "app/stages.hpp"
-#include "contact/hole_sweep.hpp"
-#include "contact/pressure_map.hpp"
-#include "pipeline/contact_setup.hpp"
-#include "pipeline/defect.hpp"
-#include "scene/parallel.hpp"
-#include "validation/text.hpp"
+#include "skinfem/contact/hole_sweep.hpp"
+#include "skinfem/contact/pressure_map.hpp"
+#include "skinfem/pipeline/contact_setup.hpp"
+#include "skinfem/pipeline/defect.hpp"
+#include "skinfem/scene/parallel.hpp"
+#include "skinfem/validation/text.hpp"
 
 namespace skinfem::app {
 

@@ -24,8 +24,8 @@
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "app/stages.hpp"
-#include "mesh/vtu.hpp"
-#include "pipeline/green.hpp"
+#include "skinfem/mesh/vtu.hpp"
+#include "skinfem/pipeline/green.hpp"
 
 namespace skinfem::app {
 

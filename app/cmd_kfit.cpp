@@ -16,9 +16,9 @@
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "app/stages.hpp"
-#include "pipeline/adjoint_setup.hpp"
-#include "pipeline/kfit.hpp"
-#include "pipeline/sensor_greens.hpp"
+#include "skinfem/pipeline/adjoint_setup.hpp"
+#include "skinfem/pipeline/kfit.hpp"
+#include "skinfem/pipeline/sensor_greens.hpp"
 
 namespace skinfem::app {
 

@@ -15,11 +15,11 @@
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "app/stages.hpp"
-#include "mesh/build.hpp"
-#include "mesh/quality.hpp"
-#include "mesh/shape.hpp"
-#include "mesh/vtu.hpp"
-#include "pipeline/resources.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/mesh/quality.hpp"
+#include "skinfem/mesh/shape.hpp"
+#include "skinfem/mesh/vtu.hpp"
+#include "skinfem/pipeline/resources.hpp"
 
 namespace skinfem::app {
 

@@ -27,7 +27,7 @@
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "app/report_run.hpp"
-#include "pipeline/chain_level.hpp"
+#include "skinfem/pipeline/chain_level.hpp"
 
 namespace skinfem::app {
 

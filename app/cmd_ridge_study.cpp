@@ -21,7 +21,7 @@
 
 #include "app/commands.hpp"
 #include "app/common.hpp"
-#include "pipeline/ridge_study.hpp"
+#include "skinfem/pipeline/ridge_study.hpp"
 
 namespace skinfem::app {
 

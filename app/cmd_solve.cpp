@@ -14,8 +14,8 @@
 
 #include "app/commands.hpp"
 #include "app/common.hpp"
-#include "fem/fields.hpp"
-#include "pipeline/solve.hpp"
+#include "skinfem/fem/fields.hpp"
+#include "skinfem/pipeline/solve.hpp"
 
 namespace skinfem::app {
 

@@ -13,10 +13,10 @@
 
 #include "app/commands.hpp"
 #include "app/common.hpp"
-#include "mesh/sizing.hpp"
-#include "pipeline/resources.hpp"
-#include "scene/load.hpp"
-#include "validation/refinement_study.hpp"
+#include "skinfem/mesh/sizing.hpp"
+#include "skinfem/pipeline/resources.hpp"
+#include "skinfem/scene/load.hpp"
+#include "skinfem/validation/refinement_study.hpp"
 
 namespace skinfem::app {
 

@@ -33,10 +33,10 @@
 
 #include "app/commands.hpp"
 #include "app/common.hpp"
-#include "mesh/size_estimate.hpp"
-#include "pipeline/green.hpp"
-#include "pipeline/resources.hpp"
-#include "scene/parallel.hpp"
+#include "skinfem/mesh/size_estimate.hpp"
+#include "skinfem/pipeline/green.hpp"
+#include "skinfem/pipeline/resources.hpp"
+#include "skinfem/scene/parallel.hpp"
 
 namespace skinfem::app {
 namespace {

@@ -4,10 +4,10 @@
 #include <string>
 #include <vector>
 
-#include "fem/mixed_solver.hpp"
-#include "pipeline/sensor_greens.hpp"
-#include "scene/scene.hpp"
-#include "scene/sweep.hpp"
+#include "skinfem/fem/mixed_solver.hpp"
+#include "skinfem/pipeline/sensor_greens.hpp"
+#include "skinfem/scene/scene.hpp"
+#include "skinfem/scene/sweep.hpp"
 
 namespace skinfem::app {
 

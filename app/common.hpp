@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/clock.hpp"
-#include "pipeline/progress.hpp"
-#include "pipeline/scene_json.hpp"
-#include "scene/scene.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/progress.hpp"
+#include "skinfem/pipeline/scene_json.hpp"
+#include "skinfem/scene/scene.hpp"
 
 namespace skinfem::app {
 

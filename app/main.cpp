@@ -8,11 +8,11 @@
 
 #include "app/commands.hpp"
 #include "app/common.hpp"
-#include "mesh/surface.hpp"
-#include "pipeline/progress.hpp"
-#include "pipeline/resources.hpp"
-#include "scene/laws.hpp"
-#include "scene/load.hpp"
+#include "skinfem/mesh/surface.hpp"
+#include "skinfem/pipeline/progress.hpp"
+#include "skinfem/pipeline/resources.hpp"
+#include "skinfem/scene/laws.hpp"
+#include "skinfem/scene/load.hpp"
 
 namespace {
 // A number option's check: CLI11's PositiveNumber and NonNegativeNumber print DBL_MAX in 309 digits and call

@@ -8,7 +8,7 @@
 
 #include "app/common.hpp"
 #include "app/stages.hpp"
-#include "validation/text.hpp"
+#include "skinfem/validation/text.hpp"
 
 namespace skinfem::app {
 

@@ -4,8 +4,8 @@
 #include <sstream>
 
 #include "app/common.hpp"
-#include "green/kfit.hpp"
-#include "validation/text.hpp"
+#include "skinfem/green/kfit.hpp"
+#include "skinfem/validation/text.hpp"
 
 namespace skinfem::app {
 

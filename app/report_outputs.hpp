@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "app/report_page.hpp"
-#include "pipeline/chain_level.hpp"
-#include "scene/scene.hpp"
-#include "validation/crosscheck.hpp"
-#include "validation/k_sweep.hpp"
+#include "skinfem/pipeline/chain_level.hpp"
+#include "skinfem/scene/scene.hpp"
+#include "skinfem/validation/crosscheck.hpp"
+#include "skinfem/validation/k_sweep.hpp"
 
 namespace skinfem::app {
 

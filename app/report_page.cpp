@@ -12,7 +12,7 @@
 #include <utility>
 
 #include "app/common.hpp"
-#include "validation/text.hpp"
+#include "skinfem/validation/text.hpp"
 
 namespace skinfem::app {
 

@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/chain_level.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/hole_budget.hpp"
-#include "pipeline/post_design.hpp"
-#include "scene/scene.hpp"
-#include "validation/crosscheck.hpp"
+#include "skinfem/pipeline/chain_level.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/hole_budget.hpp"
+#include "skinfem/pipeline/post_design.hpp"
+#include "skinfem/scene/scene.hpp"
+#include "skinfem/validation/crosscheck.hpp"
 
 namespace skinfem::app {
 

@@ -8,12 +8,12 @@
 #include "app/chain_study.hpp"
 #include "app/common.hpp"
 #include "app/report_outputs.hpp"
-#include "fem/blas_threads.hpp"
-#include "mesh/mirror.hpp"
-#include "pipeline/crosscheck.hpp"
-#include "pipeline/symmetry.hpp"
-#include "scene/parallel.hpp"
-#include "validation/text.hpp"
+#include "skinfem/fem/blas_threads.hpp"
+#include "skinfem/mesh/mirror.hpp"
+#include "skinfem/pipeline/crosscheck.hpp"
+#include "skinfem/pipeline/symmetry.hpp"
+#include "skinfem/scene/parallel.hpp"
+#include "skinfem/validation/text.hpp"
 
 namespace skinfem::app {
 

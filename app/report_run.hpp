@@ -14,8 +14,8 @@
 #include "app/report_figures.hpp"
 #include "app/report_page.hpp"
 #include "app/stages.hpp"
-#include "pipeline/clock.hpp"
-#include "validation/k_sweep.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/validation/k_sweep.hpp"
 
 namespace skinfem::app {
 

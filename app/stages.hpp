@@ -8,17 +8,17 @@
 #include <string>
 #include <vector>
 
-#include "contact/hole_sweep.hpp"
-#include "pipeline/adjoint_setup.hpp"
-#include "pipeline/contact.hpp"
-#include "pipeline/contact_setup.hpp"
-#include "pipeline/defect.hpp"
-#include "pipeline/green.hpp"
-#include "pipeline/hole_budget.hpp"
-#include "pipeline/kfit.hpp"
-#include "pipeline/post_design.hpp"
-#include "pipeline/sensor_greens.hpp"
-#include "validation/crosscheck.hpp"
+#include "skinfem/contact/hole_sweep.hpp"
+#include "skinfem/pipeline/adjoint_setup.hpp"
+#include "skinfem/pipeline/contact.hpp"
+#include "skinfem/pipeline/contact_setup.hpp"
+#include "skinfem/pipeline/defect.hpp"
+#include "skinfem/pipeline/green.hpp"
+#include "skinfem/pipeline/hole_budget.hpp"
+#include "skinfem/pipeline/kfit.hpp"
+#include "skinfem/pipeline/post_design.hpp"
+#include "skinfem/pipeline/sensor_greens.hpp"
+#include "skinfem/validation/crosscheck.hpp"
 
 namespace skinfem::app {
 

@@ -12,16 +12,16 @@
 #include <optional>
 #include <string>
 
-#include "contact/condensed.hpp"
-#include "fem/assembly.hpp"
-#include "fem/elastic_model.hpp"
-#include "green/calibration.hpp"
-#include "green/fe_green.hpp"
-#include "green/kfit.hpp"
-#include "green/meridian.hpp"
-#include "mesh/build.hpp"
-#include "mesh/sizing.hpp"
-#include "scene/load.hpp"
+#include "skinfem/contact/condensed.hpp"
+#include "skinfem/fem/assembly.hpp"
+#include "skinfem/fem/elastic_model.hpp"
+#include "skinfem/green/calibration.hpp"
+#include "skinfem/green/fe_green.hpp"
+#include "skinfem/green/kfit.hpp"
+#include "skinfem/green/meridian.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/mesh/sizing.hpp"
+#include "skinfem/scene/load.hpp"
 
 namespace skinfem {
 namespace {

@@ -1,4 +1,4 @@
-#include "contact/condensed.hpp"
+#include "skinfem/contact/condensed.hpp"
 
 #include <algorithm>
 #include <chrono>

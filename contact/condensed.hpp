@@ -15,11 +15,11 @@
 #include <optional>
 #include <string>
 
-#include "contact/hole_cut.hpp"
-#include "contact/indenter.hpp"
-#include "contact/mortar.hpp"
-#include "fem/elastic_model.hpp"
-#include "fem/sensor_reading.hpp"
+#include "skinfem/contact/hole_cut.hpp"
+#include "skinfem/contact/indenter.hpp"
+#include "skinfem/contact/mortar.hpp"
+#include "skinfem/fem/elastic_model.hpp"
+#include "skinfem/fem/sensor_reading.hpp"
 
 namespace skinfem::contact {
 

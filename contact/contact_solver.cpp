@@ -1,4 +1,4 @@
-#include "contact/contact_solver.hpp"
+#include "skinfem/contact/contact_solver.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "contact/exponential_interface.hpp"
+#include "skinfem/contact/exponential_interface.hpp"
 
 namespace skinfem::contact {
 

@@ -26,9 +26,9 @@
 #include <optional>
 #include <vector>
 
-#include "contact/condensed.hpp"
-#include "contact/lcp.hpp"
-#include "scene/laws.hpp"
+#include "skinfem/contact/condensed.hpp"
+#include "skinfem/contact/lcp.hpp"
+#include "skinfem/scene/laws.hpp"
 
 namespace skinfem::contact {
 

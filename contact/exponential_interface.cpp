@@ -1,4 +1,4 @@
-#include "contact/exponential_interface.hpp"
+#include "skinfem/contact/exponential_interface.hpp"
 
 #include <Eigen/LU>
 #include <algorithm>

@@ -19,7 +19,7 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "contact/lcp.hpp"
+#include "skinfem/contact/lcp.hpp"
 
 namespace skinfem::contact {
 

@@ -1,4 +1,4 @@
-#include "contact/hole_cover.hpp"
+#include "skinfem/contact/hole_cover.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -13,7 +13,7 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "contact/mortar.hpp"
+#include "skinfem/contact/mortar.hpp"
 
 namespace skinfem::contact {
 

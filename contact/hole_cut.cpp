@@ -1,10 +1,10 @@
-#include "contact/hole_cut.hpp"
+#include "skinfem/contact/hole_cut.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "contact/hole_cover.hpp"
-#include "mesh/surface_quadrature.hpp"
+#include "skinfem/contact/hole_cover.hpp"
+#include "skinfem/mesh/surface_quadrature.hpp"
 
 namespace skinfem::contact {
 

@@ -25,8 +25,8 @@
 #include <memory>
 #include <vector>
 
-#include "contact/indenter.hpp"
-#include "contact/mortar.hpp"
+#include "skinfem/contact/indenter.hpp"
+#include "skinfem/contact/mortar.hpp"
 
 namespace skinfem::contact {
 

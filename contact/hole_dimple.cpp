@@ -1,11 +1,11 @@
-#include "contact/hole_dimple.hpp"
+#include "skinfem/contact/hole_dimple.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "contact/hole_cover.hpp"
-#include "mesh/gauss_legendre.hpp"
+#include "skinfem/contact/hole_cover.hpp"
+#include "skinfem/mesh/gauss_legendre.hpp"
 
 namespace skinfem::contact {
 

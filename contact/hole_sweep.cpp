@@ -1,12 +1,12 @@
-#include "contact/hole_sweep.hpp"
+#include "skinfem/contact/hole_sweep.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
-#include "contact/hole_cover.hpp"
-#include "contact/hole_cut.hpp"
-#include "scene/parallel.hpp"
+#include "skinfem/contact/hole_cover.hpp"
+#include "skinfem/contact/hole_cut.hpp"
+#include "skinfem/scene/parallel.hpp"
 
 namespace skinfem::contact {
 

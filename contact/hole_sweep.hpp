@@ -9,8 +9,8 @@
 #include <optional>
 #include <vector>
 
-#include "contact/contact_solver.hpp"
-#include "contact/hole_dimple.hpp"
+#include "skinfem/contact/contact_solver.hpp"
+#include "skinfem/contact/hole_dimple.hpp"
 
 namespace skinfem::contact {
 

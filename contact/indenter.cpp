@@ -1,9 +1,9 @@
-#include "contact/indenter.hpp"
+#include "skinfem/contact/indenter.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "mesh/shape.hpp"
+#include "skinfem/mesh/shape.hpp"
 
 namespace skinfem::contact {
 

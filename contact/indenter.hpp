@@ -2,8 +2,8 @@
 // the height at which it first touches the undeformed skin (scene.hpp, ContactLoad).
 #pragma once
 
-#include "mesh/tet_mesh.hpp"
-#include "scene/scene.hpp"
+#include "skinfem/mesh/tet_mesh.hpp"
+#include "skinfem/scene/scene.hpp"
 
 namespace skinfem::contact {
 

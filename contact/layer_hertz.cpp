@@ -1,4 +1,4 @@
-#include "contact/layer_hertz.hpp"
+#include "skinfem/contact/layer_hertz.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/gauss_legendre.hpp"
+#include "skinfem/mesh/gauss_legendre.hpp"
 
 // Derivation (checked by tests/contact/test_layer_hertz.cpp: M(t) against an independent 4×4 solve, the
 // half-space and lubrication limits, force balance, the literature's first-order thickness coefficient).

@@ -1,4 +1,4 @@
-#include "contact/layer_hertz_interface.hpp"
+#include "skinfem/contact/layer_hertz_interface.hpp"
 
 #include <Eigen/Dense>
 #include <cmath>
@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "contact/layer_hertz.hpp"
-#include "mesh/gauss_legendre.hpp"
+#include "skinfem/contact/layer_hertz.hpp"
+#include "skinfem/mesh/gauss_legendre.hpp"
 
 // Derivation. Notation of layer_hertz.cpp: g(ax) = G γ(x), G = E*a²/(2R), δ = d a²/R, λ = a/h, the layer's
 // Fredholm operator (π/2)γ + λ∫₀¹ k(x, ξ)γ(ξ) dξ with k(x, ξ) = ∫₀^∞ (M(u) − 1) cos(λux) cos(λuξ) du.

@@ -1,4 +1,4 @@
-#include "contact/lcp.hpp"
+#include "skinfem/contact/lcp.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "contact/meridian_contact.hpp"
+#include "skinfem/contact/meridian_contact.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -7,10 +7,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "contact/lcp.hpp"
-#include "contact/metrics.hpp"
-#include "green/meridian_mode.hpp"
-#include "mesh/gauss_legendre.hpp"
+#include "skinfem/contact/lcp.hpp"
+#include "skinfem/contact/metrics.hpp"
+#include "skinfem/green/meridian_mode.hpp"
+#include "skinfem/mesh/gauss_legendre.hpp"
 
 namespace skinfem::contact {
 

@@ -26,8 +26,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "fem/sensor_reading.hpp"
-#include "green/meridian.hpp"
+#include "skinfem/fem/sensor_reading.hpp"
+#include "skinfem/green/meridian.hpp"
 
 namespace skinfem::contact {
 

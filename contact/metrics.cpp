@@ -1,9 +1,9 @@
-#include "contact/metrics.hpp"
+#include "skinfem/contact/metrics.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "scene/laws.hpp"
+#include "skinfem/scene/laws.hpp"
 
 namespace skinfem::contact {
 

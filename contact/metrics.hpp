@@ -1,8 +1,8 @@
 // What a contact solve says about the contact: its size, peak pressures and how sliding moves them.
 #pragma once
 
-#include "contact/contact_solver.hpp"
-#include "fem/face_index.hpp"
+#include "skinfem/contact/contact_solver.hpp"
+#include "skinfem/fem/face_index.hpp"
 
 namespace skinfem::contact {
 

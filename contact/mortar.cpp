@@ -1,10 +1,10 @@
-#include "contact/mortar.hpp"
+#include "skinfem/contact/mortar.hpp"
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "mesh/surface_quadrature.hpp"
+#include "skinfem/mesh/surface_quadrature.hpp"
 
 namespace skinfem::contact {
 

@@ -15,8 +15,8 @@
 #include <functional>
 #include <vector>
 
-#include "mesh/tet_mesh.hpp"
-#include "scene/scene.hpp"
+#include "skinfem/mesh/tet_mesh.hpp"
+#include "skinfem/scene/scene.hpp"
 
 namespace skinfem::contact {
 

@@ -1,10 +1,10 @@
-#include "contact/pressure_map.hpp"
+#include "skinfem/contact/pressure_map.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "mesh/vtu.hpp"
+#include "skinfem/mesh/vtu.hpp"
 
 namespace skinfem::contact {
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "contact/contact_solver.hpp"
+#include "skinfem/contact/contact_solver.hpp"
 
 namespace skinfem::contact {
 

@@ -1,9 +1,9 @@
-#include "contact/small_hole.hpp"
+#include "skinfem/contact/small_hole.hpp"
 
 #include <Eigen/LU>
 #include <cmath>
 
-#include "scene/laws.hpp"
+#include "skinfem/scene/laws.hpp"
 
 namespace skinfem::contact {
 

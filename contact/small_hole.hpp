@@ -17,8 +17,8 @@
 
 #include <vector>
 
-#include "contact/contact_solver.hpp"
-#include "fem/face_index.hpp"
+#include "skinfem/contact/contact_solver.hpp"
+#include "skinfem/fem/face_index.hpp"
 
 namespace skinfem::contact {
 

@@ -1,11 +1,11 @@
-#include "fem/assembly.hpp"
+#include "skinfem/fem/assembly.hpp"
 
 #include <algorithm>
 #include <vector>
 
-#include "mesh/p2_tet.hpp"
-#include "mesh/quality.hpp"
-#include "mesh/surface_quadrature.hpp"
+#include "skinfem/mesh/p2_tet.hpp"
+#include "skinfem/mesh/quality.hpp"
+#include "skinfem/mesh/surface_quadrature.hpp"
 
 namespace skinfem {
 

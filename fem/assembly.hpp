@@ -12,8 +12,8 @@
 #include <Eigen/Sparse>
 #include <functional>
 
-#include "fem/material.hpp"
-#include "mesh/tet_mesh.hpp"
+#include "skinfem/fem/material.hpp"
+#include "skinfem/mesh/tet_mesh.hpp"
 
 namespace skinfem {
 

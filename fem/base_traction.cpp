@@ -1,4 +1,4 @@
-#include "fem/base_traction.hpp"
+#include "skinfem/fem/base_traction.hpp"
 
 #include <Eigen/SparseCholesky>
 #include <cmath>
@@ -6,9 +6,9 @@
 #include <unordered_map>
 #include <vector>
 
-#include "fem/face_index.hpp"
-#include "mesh/gauss_legendre.hpp"
-#include "mesh/surface_quadrature.hpp"
+#include "skinfem/fem/face_index.hpp"
+#include "skinfem/mesh/gauss_legendre.hpp"
+#include "skinfem/mesh/surface_quadrature.hpp"
 
 namespace skinfem {
 

@@ -11,7 +11,7 @@
 #include <optional>
 #include <vector>
 
-#include "mesh/tet_mesh.hpp"
+#include "skinfem/mesh/tet_mesh.hpp"
 
 namespace skinfem {
 

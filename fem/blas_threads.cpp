@@ -1,4 +1,4 @@
-#include "fem/blas_threads.hpp"
+#include "skinfem/fem/blas_threads.hpp"
 
 #include <dlfcn.h>
 

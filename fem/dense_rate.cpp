@@ -1,4 +1,4 @@
-#include "fem/dense_rate.hpp"
+#include "skinfem/fem/dense_rate.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Dense>

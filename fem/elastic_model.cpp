@@ -1,11 +1,11 @@
-#include "fem/elastic_model.hpp"
+#include "skinfem/fem/elastic_model.hpp"
 
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
 
-#include "fem/face_index.hpp"
-#include "mesh/surface_quadrature.hpp"
+#include "skinfem/fem/face_index.hpp"
+#include "skinfem/mesh/surface_quadrature.hpp"
 
 namespace skinfem {
 

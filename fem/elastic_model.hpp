@@ -6,11 +6,11 @@
 #include <memory>
 #include <vector>
 
-#include "fem/assembly.hpp"
-#include "fem/base_traction.hpp"
-#include "fem/face_index.hpp"
-#include "fem/mixed_solver.hpp"
-#include "scene/scene.hpp"
+#include "skinfem/fem/assembly.hpp"
+#include "skinfem/fem/base_traction.hpp"
+#include "skinfem/fem/face_index.hpp"
+#include "skinfem/fem/mixed_solver.hpp"
+#include "skinfem/scene/scene.hpp"
 
 namespace skinfem {
 

@@ -1,4 +1,4 @@
-#include "fem/face_index.hpp"
+#include "skinfem/fem/face_index.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "mesh/shape.hpp"
-#include "mesh/surface_quadrature.hpp"
+#include "skinfem/mesh/shape.hpp"
+#include "skinfem/mesh/surface_quadrature.hpp"
 
 namespace skinfem {
 

@@ -1,10 +1,10 @@
-#include "fem/fields.hpp"
+#include "skinfem/fem/fields.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "mesh/p2_tet.hpp"
-#include "mesh/vtu.hpp"
+#include "skinfem/mesh/p2_tet.hpp"
+#include "skinfem/mesh/vtu.hpp"
 
 namespace skinfem {
 

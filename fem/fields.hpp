@@ -4,10 +4,10 @@
 #include <string>
 #include <vector>
 
-#include "fem/material.hpp"
-#include "fem/mixed_solver.hpp"
-#include "mesh/locate.hpp"
-#include "mesh/tet_mesh.hpp"
+#include "skinfem/fem/material.hpp"
+#include "skinfem/fem/mixed_solver.hpp"
+#include "skinfem/mesh/locate.hpp"
+#include "skinfem/mesh/tet_mesh.hpp"
 
 namespace skinfem {
 

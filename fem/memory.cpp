@@ -1,4 +1,4 @@
-#include "fem/memory.hpp"
+#include "skinfem/fem/memory.hpp"
 
 #include <fstream>
 #include <string>

@@ -1,11 +1,11 @@
-#include "fem/mixed_solver.hpp"
+#include "skinfem/fem/mixed_solver.hpp"
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 #include <chrono>
 #include <cmath>
 
-#include "fem/mumps_ldlt.hpp"
+#include "skinfem/fem/mumps_ldlt.hpp"
 
 namespace skinfem {
 

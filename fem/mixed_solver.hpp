@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "fem/assembly.hpp"
-#include "fem/factor_progress.hpp"
+#include "skinfem/fem/assembly.hpp"
+#include "skinfem/fem/factor_progress.hpp"
 
 namespace skinfem {
 

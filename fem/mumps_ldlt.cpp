@@ -1,4 +1,4 @@
-#include "fem/mumps_ldlt.hpp"
+#include "skinfem/fem/mumps_ldlt.hpp"
 
 #include <dmumps_c.h>
 
@@ -13,8 +13,8 @@
 #include <thread>
 #include <vector>
 
-#include "fem/dense_rate.hpp"
-#include "fem/memory.hpp"
+#include "skinfem/fem/dense_rate.hpp"
+#include "skinfem/fem/memory.hpp"
 
 namespace skinfem {
 

@@ -8,7 +8,7 @@
 #include <memory>
 #include <vector>
 
-#include "fem/factor_progress.hpp"
+#include "skinfem/fem/factor_progress.hpp"
 
 namespace skinfem {
 

@@ -1,4 +1,4 @@
-#include "fem/sensor_reading.hpp"
+#include "skinfem/fem/sensor_reading.hpp"
 
 #include <cmath>
 #include <stdexcept>

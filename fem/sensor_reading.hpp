@@ -18,10 +18,10 @@
 #include <memory>
 #include <vector>
 
-#include "fem/base_traction.hpp"
-#include "fem/mixed_solver.hpp"
-#include "mesh/tet_mesh.hpp"
-#include "scene/scene.hpp"
+#include "skinfem/fem/base_traction.hpp"
+#include "skinfem/fem/mixed_solver.hpp"
+#include "skinfem/mesh/tet_mesh.hpp"
+#include "skinfem/scene/scene.hpp"
 
 namespace skinfem {
 

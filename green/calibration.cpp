@@ -1,4 +1,4 @@
-#include "green/calibration.hpp"
+#include "skinfem/green/calibration.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -7,8 +7,8 @@
 #include <optional>
 #include <vector>
 
-#include "green/fe_green.hpp"
-#include "green/kfit.hpp"
+#include "skinfem/green/fe_green.hpp"
+#include "skinfem/green/kfit.hpp"
 
 namespace skinfem::green {
 

@@ -1,11 +1,11 @@
-#include "green/fe_green.hpp"
+#include "skinfem/green/fe_green.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "fem/sensor_reading.hpp"
-#include "mesh/gauss_legendre.hpp"
-#include "mesh/surface_quadrature.hpp"
+#include "skinfem/fem/sensor_reading.hpp"
+#include "skinfem/mesh/gauss_legendre.hpp"
+#include "skinfem/mesh/surface_quadrature.hpp"
 
 namespace skinfem::green {
 

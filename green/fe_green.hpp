@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "fem/elastic_model.hpp"
-#include "fem/face_index.hpp"
-#include "green/halfspace.hpp"
-#include "green/layer_exact.hpp"
+#include "skinfem/fem/elastic_model.hpp"
+#include "skinfem/fem/face_index.hpp"
+#include "skinfem/green/halfspace.hpp"
+#include "skinfem/green/layer_exact.hpp"
 
 namespace skinfem::green {
 

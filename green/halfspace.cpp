@@ -1,4 +1,4 @@
-#include "green/halfspace.hpp"
+#include "skinfem/green/halfspace.hpp"
 
 #include <cmath>
 #include <stdexcept>

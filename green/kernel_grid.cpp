@@ -1,4 +1,4 @@
-#include "green/kernel_grid.hpp"
+#include "skinfem/green/kernel_grid.hpp"
 
 #include <hdf5.h>
 #include <vtkDoubleArray.h>
@@ -12,7 +12,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "green/calibration.hpp"
+#include "skinfem/green/calibration.hpp"
 
 namespace skinfem::green {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "green/fe_green.hpp"
+#include "skinfem/green/fe_green.hpp"
 
 namespace skinfem::green {
 

@@ -1,4 +1,4 @@
-#include "green/kfit.hpp"
+#include "skinfem/green/kfit.hpp"
 
 #include <algorithm>
 #include <cmath>

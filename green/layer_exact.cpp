@@ -1,4 +1,4 @@
-#include "green/layer_exact.hpp"
+#include "skinfem/green/layer_exact.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "mesh/gauss_legendre.hpp"
+#include "skinfem/mesh/gauss_legendre.hpp"
 
 // Derivation (summarised; signs and factors are checked by tests/green/test_layer_exact.cpp against the
 // half-space closed forms, the force balance and the closed-form/linear-system agreement).

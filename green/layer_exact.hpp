@@ -38,7 +38,7 @@
 #include <optional>
 #include <vector>
 
-#include "green/halfspace.hpp"
+#include "skinfem/green/halfspace.hpp"
 
 namespace skinfem::green {
 

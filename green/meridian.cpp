@@ -1,4 +1,4 @@
-#include "green/meridian.hpp"
+#include "skinfem/green/meridian.hpp"
 
 #include <Eigen/SparseCore>
 #include <algorithm>
@@ -6,13 +6,13 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "fem/base_traction.hpp"
-#include "fem/mumps_ldlt.hpp"
-#include "green/fe_green.hpp"
-#include "green/halfspace.hpp"
-#include "green/meridian_mode.hpp"
-#include "mesh/gauss_legendre.hpp"
-#include "mesh/surface_quadrature.hpp"
+#include "skinfem/fem/base_traction.hpp"
+#include "skinfem/fem/mumps_ldlt.hpp"
+#include "skinfem/green/fe_green.hpp"
+#include "skinfem/green/halfspace.hpp"
+#include "skinfem/green/meridian_mode.hpp"
+#include "skinfem/mesh/gauss_legendre.hpp"
+#include "skinfem/mesh/surface_quadrature.hpp"
 
 namespace skinfem {
 

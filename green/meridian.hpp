@@ -22,10 +22,10 @@
 #include <functional>
 #include <vector>
 
-#include "fem/sensor_reading.hpp"
-#include "green/halfspace.hpp"
-#include "green/layer_exact.hpp"
-#include "scene/scene.hpp"
+#include "skinfem/fem/sensor_reading.hpp"
+#include "skinfem/green/halfspace.hpp"
+#include "skinfem/green/layer_exact.hpp"
+#include "skinfem/scene/scene.hpp"
 
 namespace skinfem {
 

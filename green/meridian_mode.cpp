@@ -1,13 +1,13 @@
-#include "green/meridian_mode.hpp"
+#include "skinfem/green/meridian_mode.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
 
-#include "fem/mumps_ldlt.hpp"
-#include "mesh/gauss_legendre.hpp"
-#include "mesh/surface_quadrature.hpp"
+#include "skinfem/fem/mumps_ldlt.hpp"
+#include "skinfem/mesh/gauss_legendre.hpp"
+#include "skinfem/mesh/surface_quadrature.hpp"
 
 namespace skinfem {
 

@@ -13,7 +13,7 @@
 #include <memory>
 #include <vector>
 
-#include "green/meridian.hpp"
+#include "skinfem/green/meridian.hpp"
 
 namespace skinfem {
 

@@ -1,15 +1,15 @@
-#include "mesh/build.hpp"
+#include "skinfem/mesh/build.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <map>
 
-#include "mesh/p2_tet.hpp"
-#include "mesh/quality.hpp"
-#include "mesh/shape.hpp"
-#include "mesh/size_estimate.hpp"
-#include "mesh/surface.hpp"
-#include "mesh/tetrahedralize.hpp"
+#include "skinfem/mesh/p2_tet.hpp"
+#include "skinfem/mesh/quality.hpp"
+#include "skinfem/mesh/shape.hpp"
+#include "skinfem/mesh/size_estimate.hpp"
+#include "skinfem/mesh/surface.hpp"
+#include "skinfem/mesh/tetrahedralize.hpp"
 
 namespace skinfem {
 

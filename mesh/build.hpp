@@ -2,10 +2,10 @@
 // nodes on the exact surface → markers.
 #pragma once
 
-#include "mesh/footprint.hpp"
-#include "mesh/sizing.hpp"
-#include "mesh/tet_mesh.hpp"
-#include "scene/scene.hpp"
+#include "skinfem/mesh/footprint.hpp"
+#include "skinfem/mesh/sizing.hpp"
+#include "skinfem/mesh/tet_mesh.hpp"
+#include "skinfem/scene/scene.hpp"
 
 namespace skinfem {
 

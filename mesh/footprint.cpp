@@ -1,4 +1,4 @@
-#include "mesh/footprint.hpp"
+#include "skinfem/mesh/footprint.hpp"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_criteria_2.h>

@@ -1,4 +1,4 @@
-#include "mesh/gauss_legendre.hpp"
+#include "skinfem/mesh/gauss_legendre.hpp"
 
 #include <cmath>
 

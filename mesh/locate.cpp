@@ -1,4 +1,4 @@
-#include "mesh/locate.hpp"
+#include "skinfem/mesh/locate.hpp"
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <vector>
 
-#include "mesh/p2_tet.hpp"
-#include "mesh/quality.hpp"
+#include "skinfem/mesh/p2_tet.hpp"
+#include "skinfem/mesh/quality.hpp"
 
 namespace skinfem {
 

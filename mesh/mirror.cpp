@@ -1,4 +1,4 @@
-#include "mesh/mirror.hpp"
+#include "skinfem/mesh/mirror.hpp"
 
 #include <stdexcept>
 #include <vector>

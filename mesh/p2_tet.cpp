@@ -1,4 +1,4 @@
-#include "mesh/p2_tet.hpp"
+#include "skinfem/mesh/p2_tet.hpp"
 
 namespace skinfem::p2 {
 

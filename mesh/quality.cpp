@@ -1,12 +1,12 @@
-#include "mesh/quality.hpp"
+#include "skinfem/mesh/quality.hpp"
 
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "mesh/p2_tet.hpp"
-#include "mesh/surface.hpp"
+#include "skinfem/mesh/p2_tet.hpp"
+#include "skinfem/mesh/surface.hpp"
 
 namespace skinfem {
 

@@ -1,7 +1,7 @@
 // Element quality and size figures of a 10-node tet mesh.
 #pragma once
 
-#include "mesh/tet_mesh.hpp"
+#include "skinfem/mesh/tet_mesh.hpp"
 
 namespace skinfem {
 

@@ -1,10 +1,10 @@
-#include "mesh/scale_ridges.hpp"
+#include "skinfem/mesh/scale_ridges.hpp"
 
 #include <algorithm>
 
-#include "mesh/build.hpp"
-#include "mesh/quality.hpp"
-#include "mesh/shape.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/mesh/quality.hpp"
+#include "skinfem/mesh/shape.hpp"
 
 namespace skinfem {
 

@@ -10,8 +10,8 @@
 // them. A small f squashes them by f instead.
 #pragma once
 
-#include "mesh/tet_mesh.hpp"
-#include "scene/scene.hpp"
+#include "skinfem/mesh/tet_mesh.hpp"
+#include "skinfem/scene/scene.hpp"
 
 namespace skinfem {
 

@@ -1,4 +1,4 @@
-#include "mesh/self_intersection.hpp"
+#include "skinfem/mesh/self_intersection.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>

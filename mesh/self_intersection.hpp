@@ -5,7 +5,7 @@
 #include <Eigen/Core>
 #include <optional>
 
-#include "mesh/tet_mesh.hpp"
+#include "skinfem/mesh/tet_mesh.hpp"
 
 namespace skinfem {
 

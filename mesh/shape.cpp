@@ -1,9 +1,9 @@
-#include "mesh/shape.hpp"
+#include "skinfem/mesh/shape.hpp"
 
 #include <cmath>
 #include <vector>
 
-#include "mesh/gauss_legendre.hpp"
+#include "skinfem/mesh/gauss_legendre.hpp"
 
 namespace skinfem {
 

@@ -2,7 +2,7 @@
 // Imported surfaces have no exact shape beyond their triangles (SkinShape::exact() is false).
 #pragma once
 
-#include "scene/scene.hpp"
+#include "skinfem/scene/scene.hpp"
 
 namespace skinfem {
 

@@ -1,13 +1,13 @@
-#include "mesh/size_estimate.hpp"
+#include "skinfem/mesh/size_estimate.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
 
-#include "mesh/shape.hpp"
-#include "mesh/sizing.hpp"
-#include "mesh/surface.hpp"
+#include "skinfem/mesh/shape.hpp"
+#include "skinfem/mesh/sizing.hpp"
+#include "skinfem/mesh/surface.hpp"
 
 namespace skinfem {
 

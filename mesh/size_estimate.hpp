@@ -8,8 +8,8 @@
 // to TetGen's actual counts (size_estimate.cpp); the estimate is meant to be right within a factor 2.
 #pragma once
 
-#include "mesh/tet_mesh.hpp"
-#include "scene/scene.hpp"
+#include "skinfem/mesh/tet_mesh.hpp"
+#include "skinfem/scene/scene.hpp"
 
 namespace skinfem {
 

@@ -1,4 +1,4 @@
-#include "mesh/sizing.hpp"
+#include "skinfem/mesh/sizing.hpp"
 
 #include <algorithm>
 #include <cmath>

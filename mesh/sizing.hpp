@@ -21,9 +21,9 @@
 #include <optional>
 #include <vector>
 
-#include "mesh/shape.hpp"
-#include "mesh/tet_mesh.hpp"
-#include "scene/scene.hpp"
+#include "skinfem/mesh/shape.hpp"
+#include "skinfem/mesh/tet_mesh.hpp"
+#include "skinfem/scene/scene.hpp"
 
 namespace skinfem {
 

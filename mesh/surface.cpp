@@ -1,4 +1,4 @@
-#include "mesh/surface.hpp"
+#include "skinfem/mesh/surface.hpp"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -16,8 +16,8 @@
 #include <optional>
 #include <sstream>
 
-#include "mesh/footprint.hpp"
-#include "mesh/self_intersection.hpp"
+#include "skinfem/mesh/footprint.hpp"
+#include "skinfem/mesh/self_intersection.hpp"
 
 namespace skinfem {
 

@@ -6,10 +6,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "mesh/footprint.hpp"
-#include "mesh/shape.hpp"
-#include "mesh/sizing.hpp"
-#include "mesh/tet_mesh.hpp"
+#include "skinfem/mesh/footprint.hpp"
+#include "skinfem/mesh/shape.hpp"
+#include "skinfem/mesh/sizing.hpp"
+#include "skinfem/mesh/tet_mesh.hpp"
 
 namespace skinfem {
 

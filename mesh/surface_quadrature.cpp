@@ -1,4 +1,4 @@
-#include "mesh/surface_quadrature.hpp"
+#include "skinfem/mesh/surface_quadrature.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 #include <array>
 #include <vector>
 
-#include "mesh/tet_mesh.hpp"
+#include "skinfem/mesh/tet_mesh.hpp"
 
 namespace skinfem {
 

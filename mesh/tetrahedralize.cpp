@@ -1,4 +1,4 @@
-#include "mesh/tetrahedralize.hpp"
+#include "skinfem/mesh/tetrahedralize.hpp"
 
 #include <tetgen.h>
 
@@ -10,7 +10,7 @@
 #include <sstream>
 #include <vector>
 
-#include "mesh/surface.hpp"
+#include "skinfem/mesh/surface.hpp"
 
 namespace skinfem {
 

@@ -2,8 +2,8 @@
 // sizing field and the quality bounds hold. TetGen is not thread-safe: calls are serialised.
 #pragma once
 
-#include "mesh/sizing.hpp"
-#include "mesh/tet_mesh.hpp"
+#include "skinfem/mesh/sizing.hpp"
+#include "skinfem/mesh/tet_mesh.hpp"
 
 namespace skinfem {
 

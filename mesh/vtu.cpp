@@ -1,4 +1,4 @@
-#include "mesh/vtu.hpp"
+#include "skinfem/mesh/vtu.hpp"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -15,7 +15,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "mesh/quality.hpp"
+#include "skinfem/mesh/quality.hpp"
 
 namespace skinfem {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/tet_mesh.hpp"
+#include "skinfem/mesh/tet_mesh.hpp"
 
 namespace skinfem {
 

@@ -1,14 +1,14 @@
-#include "pipeline/adjoint_setup.hpp"
+#include "skinfem/pipeline/adjoint_setup.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "fem/face_index.hpp"
-#include "mesh/shape.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/progress.hpp"
-#include "pipeline/symmetry.hpp"
+#include "skinfem/fem/face_index.hpp"
+#include "skinfem/mesh/shape.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/progress.hpp"
+#include "skinfem/pipeline/symmetry.hpp"
 
 namespace skinfem::pipeline {
 

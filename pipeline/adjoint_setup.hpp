@@ -6,9 +6,9 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "green/fe_green.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/skin_setup.hpp"
+#include "skinfem/green/fe_green.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/skin_setup.hpp"
 
 namespace skinfem::pipeline {
 

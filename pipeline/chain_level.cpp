@@ -1,19 +1,19 @@
-#include "pipeline/chain_level.hpp"
+#include "skinfem/pipeline/chain_level.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 
-#include "contact/hole_sweep.hpp"
-#include "contact/metrics.hpp"
-#include "green/calibration.hpp"
-#include "green/kfit.hpp"
-#include "mesh/sizing.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/kfit.hpp"
-#include "pipeline/progress.hpp"
-#include "pipeline/symmetry.hpp"
-#include "validation/richardson.hpp"
+#include "skinfem/contact/hole_sweep.hpp"
+#include "skinfem/contact/metrics.hpp"
+#include "skinfem/green/calibration.hpp"
+#include "skinfem/green/kfit.hpp"
+#include "skinfem/mesh/sizing.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/kfit.hpp"
+#include "skinfem/pipeline/progress.hpp"
+#include "skinfem/pipeline/symmetry.hpp"
+#include "skinfem/validation/richardson.hpp"
 
 namespace skinfem::pipeline {
 

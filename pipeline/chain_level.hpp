@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/adjoint_setup.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/contact_setup.hpp"
+#include "skinfem/pipeline/adjoint_setup.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/contact_setup.hpp"
 
 namespace skinfem::pipeline {
 

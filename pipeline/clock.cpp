@@ -1,4 +1,4 @@
-#include "pipeline/clock.hpp"
+#include "skinfem/pipeline/clock.hpp"
 
 #include <sys/resource.h>
 #include <unistd.h>

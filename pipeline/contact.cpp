@@ -1,14 +1,14 @@
-#include "pipeline/contact.hpp"
+#include "skinfem/pipeline/contact.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "contact/hole_cover.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/meridian_contact.hpp"
-#include "pipeline/scene_json.hpp"
-#include "pipeline/symmetry.hpp"
-#include "scene/laws.hpp"
+#include "skinfem/contact/hole_cover.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/meridian_contact.hpp"
+#include "skinfem/pipeline/scene_json.hpp"
+#include "skinfem/pipeline/symmetry.hpp"
+#include "skinfem/scene/laws.hpp"
 
 namespace skinfem::pipeline {
 

@@ -9,12 +9,12 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
-#include "contact/meridian_contact.hpp"
-#include "contact/metrics.hpp"
-#include "fem/mixed_solver.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/contact_setup.hpp"
-#include "pipeline/meridian_contact.hpp"
+#include "skinfem/contact/meridian_contact.hpp"
+#include "skinfem/contact/metrics.hpp"
+#include "skinfem/fem/mixed_solver.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/contact_setup.hpp"
+#include "skinfem/pipeline/meridian_contact.hpp"
 
 namespace skinfem::pipeline {
 

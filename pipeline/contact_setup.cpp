@@ -1,16 +1,16 @@
-#include "pipeline/contact_setup.hpp"
+#include "skinfem/pipeline/contact_setup.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <optional>
 #include <stdexcept>
 
-#include "mesh/mirror.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/progress.hpp"
-#include "pipeline/resources.hpp"
-#include "pipeline/symmetry.hpp"
-#include "scene/laws.hpp"
+#include "skinfem/mesh/mirror.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/progress.hpp"
+#include "skinfem/pipeline/resources.hpp"
+#include "skinfem/pipeline/symmetry.hpp"
+#include "skinfem/scene/laws.hpp"
 
 namespace skinfem::pipeline {
 

@@ -10,13 +10,13 @@
 #include <optional>
 #include <vector>
 
-#include "contact/condensed.hpp"
-#include "contact/contact_solver.hpp"
-#include "contact/mortar.hpp"
-#include "fem/face_index.hpp"
-#include "fem/sensor_reading.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/skin_setup.hpp"
+#include "skinfem/contact/condensed.hpp"
+#include "skinfem/contact/contact_solver.hpp"
+#include "skinfem/contact/mortar.hpp"
+#include "skinfem/fem/face_index.hpp"
+#include "skinfem/fem/sensor_reading.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/skin_setup.hpp"
 
 namespace skinfem::pipeline {
 

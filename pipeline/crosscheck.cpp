@@ -1,7 +1,7 @@
-#include "pipeline/crosscheck.hpp"
+#include "skinfem/pipeline/crosscheck.hpp"
 
-#include "green/kfit.hpp"
-#include "pipeline/progress.hpp"
+#include "skinfem/green/kfit.hpp"
+#include "skinfem/pipeline/progress.hpp"
 
 namespace skinfem::pipeline {
 

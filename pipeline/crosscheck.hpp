@@ -3,10 +3,10 @@
 // sweeps of `defect` (pipeline/defect.hpp). Units: mm, N, MPa.
 #pragma once
 
-#include "pipeline/adjoint_setup.hpp"
-#include "pipeline/contact_setup.hpp"
-#include "pipeline/defect.hpp"
-#include "validation/crosscheck.hpp"
+#include "skinfem/pipeline/adjoint_setup.hpp"
+#include "skinfem/pipeline/contact_setup.hpp"
+#include "skinfem/pipeline/defect.hpp"
+#include "skinfem/validation/crosscheck.hpp"
 
 namespace skinfem::pipeline {
 

@@ -1,14 +1,14 @@
-#include "pipeline/defect.hpp"
+#include "skinfem/pipeline/defect.hpp"
 
 #include <cstdio>
 
-#include "contact/pressure_map.hpp"
-#include "mesh/sizing.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/progress.hpp"
-#include "pipeline/scene_json.hpp"
-#include "pipeline/symmetry.hpp"
-#include "validation/hole_budget.hpp"
+#include "skinfem/contact/pressure_map.hpp"
+#include "skinfem/mesh/sizing.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/progress.hpp"
+#include "skinfem/pipeline/scene_json.hpp"
+#include "skinfem/pipeline/symmetry.hpp"
+#include "skinfem/validation/hole_budget.hpp"
 
 namespace skinfem::pipeline {
 

@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "contact/hole_sweep.hpp"
-#include "pipeline/chain_level.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/contact_setup.hpp"
+#include "skinfem/contact/hole_sweep.hpp"
+#include "skinfem/pipeline/chain_level.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/contact_setup.hpp"
 
 namespace skinfem::pipeline {
 

@@ -1,17 +1,17 @@
-#include "pipeline/green.hpp"
+#include "skinfem/pipeline/green.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "fem/sensor_reading.hpp"
-#include "mesh/mirror.hpp"
-#include "mesh/shape.hpp"
-#include "mesh/surface.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/progress.hpp"
-#include "pipeline/scene_json.hpp"
-#include "scene/parallel.hpp"
+#include "skinfem/fem/sensor_reading.hpp"
+#include "skinfem/mesh/mirror.hpp"
+#include "skinfem/mesh/shape.hpp"
+#include "skinfem/mesh/surface.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/progress.hpp"
+#include "skinfem/pipeline/scene_json.hpp"
+#include "skinfem/scene/parallel.hpp"
 
 namespace skinfem::pipeline {
 

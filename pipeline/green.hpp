@@ -11,11 +11,11 @@
 #include <optional>
 #include <vector>
 
-#include "green/calibration.hpp"
-#include "green/kernel_grid.hpp"
-#include "pipeline/adjoint_setup.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/sensor_greens.hpp"
+#include "skinfem/green/calibration.hpp"
+#include "skinfem/green/kernel_grid.hpp"
+#include "skinfem/pipeline/adjoint_setup.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/sensor_greens.hpp"
 
 namespace skinfem::pipeline {
 

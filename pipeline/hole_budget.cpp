@@ -1,11 +1,11 @@
-#include "pipeline/hole_budget.hpp"
+#include "skinfem/pipeline/hole_budget.hpp"
 
 #include <algorithm>
 #include <optional>
 
-#include "pipeline/clock.hpp"
-#include "pipeline/progress.hpp"
-#include "scene/parallel.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/progress.hpp"
+#include "skinfem/scene/parallel.hpp"
 
 namespace skinfem::pipeline {
 

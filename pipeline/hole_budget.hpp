@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/contact_setup.hpp"
-#include "validation/crosscheck.hpp"
-#include "validation/hole_budget.hpp"
+#include "skinfem/pipeline/contact_setup.hpp"
+#include "skinfem/validation/crosscheck.hpp"
+#include "skinfem/validation/hole_budget.hpp"
 
 namespace skinfem::pipeline {
 

@@ -1,14 +1,14 @@
-#include "pipeline/kfit.hpp"
+#include "skinfem/pipeline/kfit.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <stdexcept>
 
-#include "green/kfit.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/progress.hpp"
-#include "scene/parallel.hpp"
+#include "skinfem/green/kfit.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/progress.hpp"
+#include "skinfem/scene/parallel.hpp"
 
 namespace skinfem::pipeline {
 

@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "green/calibration.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/sensor_greens.hpp"
+#include "skinfem/green/calibration.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/sensor_greens.hpp"
 
 namespace skinfem::pipeline {
 

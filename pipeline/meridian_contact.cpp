@@ -1,13 +1,13 @@
-#include "pipeline/meridian_contact.hpp"
+#include "skinfem/pipeline/meridian_contact.hpp"
 
 #include <cmath>
 #include <cstdio>
 
-#include "contact/contact_solver.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/contact.hpp"
-#include "pipeline/scene_json.hpp"
-#include "scene/laws.hpp"
+#include "skinfem/contact/contact_solver.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/contact.hpp"
+#include "skinfem/pipeline/scene_json.hpp"
+#include "skinfem/scene/laws.hpp"
 
 namespace skinfem::pipeline {
 

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "contact/meridian_contact.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/sensor_greens.hpp"
+#include "skinfem/contact/meridian_contact.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/sensor_greens.hpp"
 
 namespace skinfem::pipeline {
 

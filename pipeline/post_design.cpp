@@ -1,12 +1,12 @@
-#include "pipeline/post_design.hpp"
+#include "skinfem/pipeline/post_design.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "fem/blas_threads.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/sensor_greens.hpp"
-#include "scene/parallel.hpp"
+#include "skinfem/fem/blas_threads.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/sensor_greens.hpp"
+#include "skinfem/scene/parallel.hpp"
 
 namespace skinfem::pipeline {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "green/meridian.hpp"
-#include "scene/scene.hpp"
+#include "skinfem/green/meridian.hpp"
+#include "skinfem/scene/scene.hpp"
 
 namespace skinfem::pipeline {
 

@@ -1,4 +1,4 @@
-#include "pipeline/progress.hpp"
+#include "skinfem/pipeline/progress.hpp"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,13 +1,13 @@
-#include "pipeline/resources.hpp"
+#include "skinfem/pipeline/resources.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "fem/memory.hpp"
-#include "mesh/build.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/progress.hpp"
+#include "skinfem/fem/memory.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/progress.hpp"
 
 namespace skinfem::pipeline {
 

@@ -3,9 +3,9 @@
 // the size.
 #pragma once
 
-#include "mesh/size_estimate.hpp"
-#include "mesh/tet_mesh.hpp"
-#include "scene/scene.hpp"
+#include "skinfem/mesh/size_estimate.hpp"
+#include "skinfem/mesh/tet_mesh.hpp"
+#include "skinfem/scene/scene.hpp"
 
 namespace skinfem::pipeline {
 

@@ -1,19 +1,19 @@
-#include "pipeline/ridge_study.hpp"
+#include "skinfem/pipeline/ridge_study.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "green/calibration.hpp"
-#include "green/layer_exact.hpp"
-#include "mesh/build.hpp"
-#include "mesh/scale_ridges.hpp"
-#include "mesh/surface.hpp"
-#include "pipeline/adjoint_setup.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/kfit.hpp"
-#include "pipeline/progress.hpp"
-#include "pipeline/resources.hpp"
+#include "skinfem/green/calibration.hpp"
+#include "skinfem/green/layer_exact.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/mesh/scale_ridges.hpp"
+#include "skinfem/mesh/surface.hpp"
+#include "skinfem/pipeline/adjoint_setup.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/kfit.hpp"
+#include "skinfem/pipeline/progress.hpp"
+#include "skinfem/pipeline/resources.hpp"
 
 namespace skinfem::pipeline {
 

@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
-#include "green/calibration.hpp"
-#include "pipeline/clock.hpp"
-#include "scene/scene.hpp"
-#include "validation/richardson.hpp"
+#include "skinfem/green/calibration.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/scene/scene.hpp"
+#include "skinfem/validation/richardson.hpp"
 
 namespace skinfem::pipeline {
 

@@ -1,4 +1,4 @@
-#include "pipeline/scene_json.hpp"
+#include "skinfem/pipeline/scene_json.hpp"
 
 namespace skinfem::pipeline {
 

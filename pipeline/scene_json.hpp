@@ -3,7 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "scene/scene.hpp"
+#include "skinfem/scene/scene.hpp"
 
 namespace skinfem::pipeline {
 

@@ -1,14 +1,14 @@
-#include "pipeline/sensor_greens.hpp"
+#include "skinfem/pipeline/sensor_greens.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
-#include "mesh/shape.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/kfit.hpp"
-#include "pipeline/progress.hpp"
+#include "skinfem/mesh/shape.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/kfit.hpp"
+#include "skinfem/pipeline/progress.hpp"
 
 namespace skinfem::pipeline {
 

@@ -12,11 +12,11 @@
 #include <utility>
 #include <vector>
 
-#include "green/calibration.hpp"
-#include "green/kernel_grid.hpp"
-#include "green/meridian.hpp"
-#include "pipeline/adjoint_setup.hpp"
-#include "pipeline/clock.hpp"
+#include "skinfem/green/calibration.hpp"
+#include "skinfem/green/kernel_grid.hpp"
+#include "skinfem/green/meridian.hpp"
+#include "skinfem/pipeline/adjoint_setup.hpp"
+#include "skinfem/pipeline/clock.hpp"
 
 namespace skinfem::pipeline {
 

@@ -6,10 +6,10 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "fem/elastic_model.hpp"
-#include "mesh/tet_mesh.hpp"
-#include "pipeline/clock.hpp"
-#include "scene/scene.hpp"
+#include "skinfem/fem/elastic_model.hpp"
+#include "skinfem/mesh/tet_mesh.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/scene/scene.hpp"
 
 namespace skinfem::pipeline {
 

@@ -1,11 +1,11 @@
-#include "pipeline/solve.hpp"
+#include "skinfem/pipeline/solve.hpp"
 
-#include "fem/base_traction.hpp"
-#include "mesh/build.hpp"
-#include "pipeline/adjoint_setup.hpp"
-#include "pipeline/clock.hpp"
-#include "pipeline/progress.hpp"
-#include "pipeline/resources.hpp"
+#include "skinfem/fem/base_traction.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/pipeline/adjoint_setup.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/pipeline/progress.hpp"
+#include "skinfem/pipeline/resources.hpp"
 
 namespace skinfem::pipeline {
 

@@ -7,10 +7,10 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "fem/elastic_model.hpp"
-#include "fem/sensor_reading.hpp"
-#include "pipeline/clock.hpp"
-#include "validation/load_metrics.hpp"
+#include "skinfem/fem/elastic_model.hpp"
+#include "skinfem/fem/sensor_reading.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/validation/load_metrics.hpp"
 
 namespace skinfem::pipeline {
 

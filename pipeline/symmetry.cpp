@@ -1,4 +1,4 @@
-#include "pipeline/symmetry.hpp"
+#include "skinfem/pipeline/symmetry.hpp"
 
 #include <cstdio>
 

@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "contact/contact_solver.hpp"
-#include "pipeline/contact.hpp"
-#include "pipeline/contact_setup.hpp"
-#include "pipeline/meridian_contact.hpp"
 #include "python/bindings.hpp"
+#include "skinfem/contact/contact_solver.hpp"
+#include "skinfem/pipeline/contact.hpp"
+#include "skinfem/pipeline/contact_setup.hpp"
+#include "skinfem/pipeline/meridian_contact.hpp"
 
 namespace skinfem::python {
 

@@ -11,16 +11,16 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/adjoint_setup.hpp"
-#include "pipeline/contact.hpp"
-#include "pipeline/contact_setup.hpp"
-#include "pipeline/crosscheck.hpp"
-#include "pipeline/defect.hpp"
-#include "pipeline/kfit.hpp"
-#include "pipeline/sensor_greens.hpp"
-#include "pipeline/skin_setup.hpp"
-#include "pipeline/symmetry.hpp"
 #include "python/bindings.hpp"
+#include "skinfem/pipeline/adjoint_setup.hpp"
+#include "skinfem/pipeline/contact.hpp"
+#include "skinfem/pipeline/contact_setup.hpp"
+#include "skinfem/pipeline/crosscheck.hpp"
+#include "skinfem/pipeline/defect.hpp"
+#include "skinfem/pipeline/kfit.hpp"
+#include "skinfem/pipeline/sensor_greens.hpp"
+#include "skinfem/pipeline/skin_setup.hpp"
+#include "skinfem/pipeline/symmetry.hpp"
 
 namespace skinfem::python {
 

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/chain_level.hpp"
-#include "pipeline/contact_setup.hpp"
-#include "pipeline/defect.hpp"
 #include "python/bindings.hpp"
+#include "skinfem/pipeline/chain_level.hpp"
+#include "skinfem/pipeline/contact_setup.hpp"
+#include "skinfem/pipeline/defect.hpp"
 
 namespace skinfem::python {
 

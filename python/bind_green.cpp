@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "green/kernel_grid.hpp"
-#include "pipeline/green.hpp"
-#include "pipeline/sensor_greens.hpp"
 #include "python/bindings.hpp"
+#include "skinfem/green/kernel_grid.hpp"
+#include "skinfem/pipeline/green.hpp"
+#include "skinfem/pipeline/sensor_greens.hpp"
 
 namespace skinfem::python {
 

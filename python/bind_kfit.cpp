@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "green/calibration.hpp"
-#include "pipeline/kfit.hpp"
-#include "pipeline/sensor_greens.hpp"
 #include "python/bindings.hpp"
+#include "skinfem/green/calibration.hpp"
+#include "skinfem/pipeline/kfit.hpp"
+#include "skinfem/pipeline/sensor_greens.hpp"
 
 namespace skinfem::python {
 

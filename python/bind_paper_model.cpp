@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "contact/layer_hertz.hpp"
-#include "pipeline/sensor_greens.hpp"
 #include "python/bindings.hpp"
-#include "validation/paper_model.hpp"
+#include "skinfem/contact/layer_hertz.hpp"
+#include "skinfem/pipeline/sensor_greens.hpp"
+#include "skinfem/validation/paper_model.hpp"
 
 namespace skinfem::python {
 

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "mesh/sizing.hpp"
 #include "python/bindings.hpp"
-#include "scene/load.hpp"
-#include "validation/k_sweep.hpp"
+#include "skinfem/mesh/sizing.hpp"
+#include "skinfem/scene/load.hpp"
+#include "skinfem/validation/k_sweep.hpp"
 
 namespace skinfem::python {
 

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "green/layer_exact.hpp"
-#include "pipeline/sensor_greens.hpp"
-#include "scene/scene.hpp"
-#include "validation/crosscheck.hpp"
-#include "validation/paper_model.hpp"
+#include "skinfem/green/layer_exact.hpp"
+#include "skinfem/pipeline/sensor_greens.hpp"
+#include "skinfem/scene/scene.hpp"
+#include "skinfem/validation/crosscheck.hpp"
+#include "skinfem/validation/paper_model.hpp"
 
 namespace skinfem::python {
 

@@ -1,8 +1,8 @@
 #include <cstdio>
 
-#include "fem/sensor_reading.hpp"
 #include "python/bindings.hpp"
-#include "scene/load.hpp"
+#include "skinfem/fem/sensor_reading.hpp"
+#include "skinfem/scene/load.hpp"
 
 namespace skinfem::python {
 

@@ -9,11 +9,11 @@
 
 #include <string>
 
-#include "fem/mixed_solver.hpp"
-#include "mesh/surface.hpp"
-#include "pipeline/progress.hpp"
 #include "python/bindings.hpp"
-#include "scene/load.hpp"
+#include "skinfem/fem/mixed_solver.hpp"
+#include "skinfem/mesh/surface.hpp"
+#include "skinfem/pipeline/progress.hpp"
+#include "skinfem/scene/load.hpp"
 
 using namespace skinfem;
 using namespace skinfem::python;

@@ -1,4 +1,4 @@
-#include "scene/laws.hpp"
+#include "skinfem/scene/laws.hpp"
 
 #include <iterator>
 

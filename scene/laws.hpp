@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "scene/scene.hpp"
+#include "skinfem/scene/scene.hpp"
 
 namespace skinfem {
 

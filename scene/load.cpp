@@ -68,7 +68,7 @@
 //                 apex) inside the footprint's edge, the truncated side. Not checked on an imported surface.
 // Unknown keys, duplicate keys, wrong types, missing required keys and out-of-range values are errors.
 // Every error is a SceneError whose what() is one line: "<file>: <json.path> = <value>: <what is allowed>".
-#include "scene/load.hpp"
+#include "skinfem/scene/load.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -89,8 +89,8 @@
 #include <utility>
 #include <vector>
 
-#include "scene/json_text.hpp"
-#include "scene/laws.hpp"
+#include "skinfem/scene/json_text.hpp"
+#include "skinfem/scene/laws.hpp"
 
 namespace skinfem {
 namespace {

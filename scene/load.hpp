@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "scene/scene.hpp"
+#include "skinfem/scene/scene.hpp"
 
 namespace skinfem {
 

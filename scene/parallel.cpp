@@ -1,4 +1,4 @@
-#include "scene/parallel.hpp"
+#include "skinfem/scene/parallel.hpp"
 
 #include <sched.h>
 #include <signal.h>

@@ -1,4 +1,4 @@
-#include "scene/scene.hpp"
+#include "skinfem/scene/scene.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -17,7 +17,7 @@
 // green's point limits, app/cmd_sweep.cpp), friction (contact: scene, none, static, uncoupled, coupled),
 // error_scales (defect, report: at least two scales in (1, 4], strictly decreasing; not checked with
 // no_error_bars, which ignores them) and no_error_bars, max_dofs (every command).
-#include "scene/sweep.hpp"
+#include "skinfem/scene/sweep.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -30,10 +30,10 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
-#include "scene/json_text.hpp"
-#include "scene/laws.hpp"
-#include "scene/load.hpp"
-#include "scene/parallel.hpp"
+#include "skinfem/scene/json_text.hpp"
+#include "skinfem/scene/laws.hpp"
+#include "skinfem/scene/load.hpp"
+#include "skinfem/scene/parallel.hpp"
 
 namespace skinfem {
 namespace {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.hpp"
+#include "skinfem/scene/scene.hpp"
 
 namespace skinfem {
 

@@ -1,15 +1,15 @@
-#include "validation/crosscheck.hpp"
+#include "skinfem/validation/crosscheck.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include "contact/hole_cover.hpp"
-#include "contact/layer_hertz.hpp"
-#include "contact/small_hole.hpp"
-#include "scene/parallel.hpp"
-#include "validation/text.hpp"
+#include "skinfem/contact/hole_cover.hpp"
+#include "skinfem/contact/layer_hertz.hpp"
+#include "skinfem/contact/small_hole.hpp"
+#include "skinfem/scene/parallel.hpp"
+#include "skinfem/validation/text.hpp"
 
 namespace skinfem::validation {
 
@@ -28,6 +28,41 @@ SignalMetrics compare_signals(const std::vector<double>& u, const Eigen::VectorX
   m.shape_error = nm > 0 && nr > 0 ? (model / nm - reference / nr).norm() : std::sqrt(2.0);
   return m;
 }
+
+namespace {
+// Each variant's signals against the full FE's (the first variant), per case, sensor and component.
+void add_metrics(Crosscheck& out, int ns) {
+  for (size_t v = 0; v < out.signals.size(); ++v) {
+    std::array<std::vector<std::array<SignalMetrics, 2>>, 2> m;
+    for (int c = 0; c < 2; ++c)
+      for (int k = 0; k < ns; ++k)
+        m[c].push_back(
+            {compare_signals(out.u, out.signals[v][c].col(2 * k), out.signals[0][c].col(2 * k)),
+             compare_signals(out.u, out.signals[v][c].col(2 * k + 1), out.signals[0][c].col(2 * k + 1))});
+    out.metrics.push_back(m);
+  }
+}
+
+// The pressures through the contact along x: the closed forms', the FE's frictionless and coupled ones (and
+// the coupled traction), the meridian's.
+void add_pressure_profile(Crosscheck& out, const CrosscheckInput& in, const Tractions& fe_none,
+                          const Tractions& fe_coupled, const std::optional<contact::HertzHalfspace>& hertz,
+                          const std::optional<contact::LayerHertzResult>& layer) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double reach = hertz ? 1.3 * std::max(hertz->a_mm, layer->a_mm) : 4.0;
+  for (int i = 0; i <= 400; ++i) {
+    const double x = in.center[0] - reach + 2 * reach * i / 400.0, y = in.center[1];
+    const double r = std::abs(x - in.center[0]);
+    const double ph =
+        hertz ? hertz->p0_MPa * std::sqrt(std::max(0.0, 1 - r * r / (hertz->a_mm * hertz->a_mm))) : nan;
+    const double pl = layer ? layer->pressure_MPa(r) : nan;
+    const double pc = fe_coupled.pressure(x, y);
+    const double pm =
+        in.meridian ? in.meridian->pressure_at(std::hypot(x - in.center[0], y - in.center[1])) : nan;
+    out.pressure_profile.push_back({x, ph, pl, fe_none.pressure(x, y), pc, fe_coupled.tangential(x, y), pm});
+  }
+}
+}  // namespace
 
 Crosscheck crosscheck(const CrosscheckInput& in) {
   if (!in.mesh || !in.solver || !in.fe || !in.sweeps || !in.frames || in.sweeps->size() != 2 ||
@@ -165,32 +200,9 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
                                          k_paper, in.sensors, centers, S);
                });
 
-  for (size_t v = 0; v < out.signals.size(); ++v) {
-    std::array<std::vector<std::array<SignalMetrics, 2>>, 2> m;
-    for (int c = 0; c < 2; ++c)
-      for (int k = 0; k < ns; ++k)
-        m[c].push_back(
-            {compare_signals(out.u, out.signals[v][c].col(2 * k), out.signals[0][c].col(2 * k)),
-             compare_signals(out.u, out.signals[v][c].col(2 * k + 1), out.signals[0][c].col(2 * k + 1))});
-    out.metrics.push_back(m);
-  }
-
-  // Pressure profiles through the contact along x.
-  const Tractions fe_none = fe_tractions(zone, *in.mesh, none.lambda, 0);
-  const Tractions fe_coupled = tractions(Crosscheck::kSliding, full[Crosscheck::kSliding]);
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  const double reach = hertz ? 1.3 * std::max(hertz->a_mm, layer->a_mm) : 4.0;
-  for (int i = 0; i <= 400; ++i) {
-    const double x = in.center[0] - reach + 2 * reach * i / 400.0, y = in.center[1];
-    const double r = std::abs(x - in.center[0]);
-    const double ph =
-        hertz ? hertz->p0_MPa * std::sqrt(std::max(0.0, 1 - r * r / (hertz->a_mm * hertz->a_mm))) : nan;
-    const double pl = layer ? layer->pressure_MPa(r) : nan;
-    const double pc = fe_coupled.pressure(x, y);
-    const double pm =
-        in.meridian ? in.meridian->pressure_at(std::hypot(x - in.center[0], y - in.center[1])) : nan;
-    out.pressure_profile.push_back({x, ph, pl, fe_none.pressure(x, y), pc, fe_coupled.tangential(x, y), pm});
-  }
+  add_metrics(out, ns);
+  add_pressure_profile(out, in, fe_tractions(zone, *in.mesh, none.lambda, 0),
+                       tractions(Crosscheck::kSliding, full[Crosscheck::kSliding]), hertz, layer);
   return out;
 }
 

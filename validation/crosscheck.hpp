@@ -33,9 +33,9 @@
 #include <string>
 #include <vector>
 
-#include "contact/hole_sweep.hpp"
-#include "contact/meridian_contact.hpp"
-#include "validation/paper_model.hpp"
+#include "skinfem/contact/hole_sweep.hpp"
+#include "skinfem/contact/meridian_contact.hpp"
+#include "skinfem/validation/paper_model.hpp"
 
 namespace skinfem::validation {
 

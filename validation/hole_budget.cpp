@@ -1,4 +1,4 @@
-#include "validation/hole_budget.hpp"
+#include "skinfem/validation/hole_budget.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -8,10 +8,10 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "contact/hole_sweep.hpp"
-#include "contact/metrics.hpp"
-#include "scene/laws.hpp"
-#include "validation/crosscheck.hpp"
+#include "skinfem/contact/hole_sweep.hpp"
+#include "skinfem/contact/metrics.hpp"
+#include "skinfem/scene/laws.hpp"
+#include "skinfem/validation/crosscheck.hpp"
 
 namespace skinfem::validation {
 

@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "contact/contact_solver.hpp"
-#include "contact/hole_sweep.hpp"
-#include "fem/face_index.hpp"
+#include "skinfem/contact/contact_solver.hpp"
+#include "skinfem/contact/hole_sweep.hpp"
+#include "skinfem/fem/face_index.hpp"
 
 namespace skinfem::validation {
 

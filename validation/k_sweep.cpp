@@ -1,11 +1,11 @@
-#include "validation/k_sweep.hpp"
+#include "skinfem/validation/k_sweep.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "green/calibration.hpp"
-#include "scene/parallel.hpp"
-#include "validation/text.hpp"
+#include "skinfem/green/calibration.hpp"
+#include "skinfem/scene/parallel.hpp"
+#include "skinfem/validation/text.hpp"
 
 namespace skinfem::validation {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "green/layer_exact.hpp"
+#include "skinfem/green/layer_exact.hpp"
 
 namespace skinfem::validation {
 

@@ -1,8 +1,8 @@
-#include "validation/load_metrics.hpp"
+#include "skinfem/validation/load_metrics.hpp"
 
 #include <cmath>
 
-#include "fem/face_index.hpp"
+#include "skinfem/fem/face_index.hpp"
 
 namespace skinfem {
 

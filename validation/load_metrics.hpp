@@ -4,8 +4,8 @@
 #include <optional>
 #include <string>
 
-#include "fem/elastic_model.hpp"
-#include "scene/scene.hpp"
+#include "skinfem/fem/elastic_model.hpp"
+#include "skinfem/scene/scene.hpp"
 
 namespace skinfem {
 

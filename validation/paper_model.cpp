@@ -1,13 +1,13 @@
-#include "validation/paper_model.hpp"
+#include "skinfem/validation/paper_model.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
 
-#include "fem/face_index.hpp"
-#include "mesh/gauss_legendre.hpp"
-#include "mesh/surface_quadrature.hpp"
+#include "skinfem/fem/face_index.hpp"
+#include "skinfem/mesh/gauss_legendre.hpp"
+#include "skinfem/mesh/surface_quadrature.hpp"
 
 namespace skinfem::validation {
 

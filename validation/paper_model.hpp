@@ -18,10 +18,10 @@
 #include <functional>
 #include <vector>
 
-#include "contact/condensed.hpp"
-#include "contact/layer_hertz.hpp"
-#include "green/fe_green.hpp"
-#include "green/layer_exact.hpp"
+#include "skinfem/contact/condensed.hpp"
+#include "skinfem/contact/layer_hertz.hpp"
+#include "skinfem/green/fe_green.hpp"
+#include "skinfem/green/layer_exact.hpp"
 
 namespace skinfem::validation {
 

@@ -1,4 +1,4 @@
-#include "validation/refinement_study.hpp"
+#include "skinfem/validation/refinement_study.hpp"
 
 #include <unistd.h>
 
@@ -7,11 +7,11 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "fem/elastic_model.hpp"
-#include "green/layer_exact.hpp"
-#include "mesh/build.hpp"
-#include "mesh/sizing.hpp"
-#include "validation/load_metrics.hpp"
+#include "skinfem/fem/elastic_model.hpp"
+#include "skinfem/green/layer_exact.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/mesh/sizing.hpp"
+#include "skinfem/validation/load_metrics.hpp"
 
 namespace skinfem {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "fem/mixed_solver.hpp"
-#include "scene/scene.hpp"
+#include "skinfem/fem/mixed_solver.hpp"
+#include "skinfem/scene/scene.hpp"
 
 namespace skinfem {
 

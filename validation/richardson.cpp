@@ -1,4 +1,4 @@
-#include "validation/richardson.hpp"
+#include "skinfem/validation/richardson.hpp"
 
 #include <cmath>
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "contact/condensed.hpp"
-#include "mesh/build.hpp"
+#include "skinfem/contact/condensed.hpp"
+#include "skinfem/mesh/build.hpp"
 
 namespace skinfem::testing {
 

@@ -8,13 +8,13 @@
 #include <cstdio>
 #include <memory>
 
-#include "contact/contact_solver.hpp"
-#include "contact/hole_sweep.hpp"
-#include "contact/layer_hertz.hpp"
-#include "contact/layer_hertz_interface.hpp"
-#include "contact/metrics.hpp"
-#include "fem/base_traction.hpp"
-#include "mesh/build.hpp"
+#include "skinfem/contact/contact_solver.hpp"
+#include "skinfem/contact/hole_sweep.hpp"
+#include "skinfem/contact/layer_hertz.hpp"
+#include "skinfem/contact/layer_hertz_interface.hpp"
+#include "skinfem/contact/metrics.hpp"
+#include "skinfem/fem/base_traction.hpp"
+#include "skinfem/mesh/build.hpp"
 
 namespace skinfem::contact {
 namespace {

@@ -14,11 +14,11 @@
 #include <cstdio>
 #include <memory>
 
-#include "contact/contact_solver.hpp"
-#include "contact/hole_cover.hpp"
-#include "fem/base_traction.hpp"
-#include "green/fe_green.hpp"
 #include "layer_fixture.hpp"
+#include "skinfem/contact/contact_solver.hpp"
+#include "skinfem/contact/hole_cover.hpp"
+#include "skinfem/fem/base_traction.hpp"
+#include "skinfem/green/fe_green.hpp"
 
 namespace skinfem::contact {
 namespace {

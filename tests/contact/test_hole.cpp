@@ -17,10 +17,10 @@
 #include <cmath>
 #include <memory>
 
-#include "contact/contact_solver.hpp"
-#include "contact/hole_dimple.hpp"
-#include "contact/small_hole.hpp"
 #include "layer_fixture.hpp"
+#include "skinfem/contact/contact_solver.hpp"
+#include "skinfem/contact/hole_dimple.hpp"
+#include "skinfem/contact/small_hole.hpp"
 
 namespace skinfem::contact {
 namespace {

@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "contact/hole_cover.hpp"
-#include "mesh/build.hpp"
+#include "skinfem/contact/hole_cover.hpp"
+#include "skinfem/mesh/build.hpp"
 
 namespace skinfem::contact {
 namespace {

@@ -9,11 +9,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "contact/contact_solver.hpp"
-#include "contact/hole_cut.hpp"
-#include "contact/hole_sweep.hpp"
-#include "fem/base_traction.hpp"
 #include "layer_fixture.hpp"
+#include "skinfem/contact/contact_solver.hpp"
+#include "skinfem/contact/hole_cut.hpp"
+#include "skinfem/contact/hole_sweep.hpp"
+#include "skinfem/fem/base_traction.hpp"
 
 namespace skinfem::contact {
 namespace {

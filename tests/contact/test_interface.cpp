@@ -14,8 +14,8 @@
 #include <memory>
 
 #include "../common/convergence.hpp"
-#include "contact/contact_solver.hpp"
 #include "layer_fixture.hpp"
+#include "skinfem/contact/contact_solver.hpp"
 
 namespace skinfem::contact {
 namespace {

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "contact/layer_hertz.hpp"
-#include "mesh/gauss_legendre.hpp"
+#include "skinfem/contact/layer_hertz.hpp"
+#include "skinfem/mesh/gauss_legendre.hpp"
 
 namespace {
 

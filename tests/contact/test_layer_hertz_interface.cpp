@@ -13,8 +13,8 @@
 #include <stdexcept>
 
 #include "../common/convergence.hpp"
-#include "contact/layer_hertz.hpp"
-#include "contact/layer_hertz_interface.hpp"
+#include "skinfem/contact/layer_hertz.hpp"
+#include "skinfem/contact/layer_hertz_interface.hpp"
 
 namespace skinfem::contact {
 namespace {

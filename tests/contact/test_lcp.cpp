@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "contact/lcp.hpp"
+#include "skinfem/contact/lcp.hpp"
 
 namespace skinfem::contact {
 namespace {

@@ -6,11 +6,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "contact/layer_hertz.hpp"
-#include "contact/layer_hertz_interface.hpp"
-#include "contact/meridian_contact.hpp"
-#include "green/layer_exact.hpp"
-#include "mesh/gauss_legendre.hpp"
+#include "skinfem/contact/layer_hertz.hpp"
+#include "skinfem/contact/layer_hertz_interface.hpp"
+#include "skinfem/contact/meridian_contact.hpp"
+#include "skinfem/green/layer_exact.hpp"
+#include "skinfem/mesh/gauss_legendre.hpp"
 
 namespace skinfem::contact {
 namespace {

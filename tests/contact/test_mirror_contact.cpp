@@ -7,13 +7,13 @@
 #include <cmath>
 #include <cstdio>
 
-#include "contact/contact_solver.hpp"
-#include "contact/hole_cover.hpp"
-#include "contact/hole_sweep.hpp"
-#include "contact/metrics.hpp"
-#include "contact/small_hole.hpp"
-#include "mesh/build.hpp"
-#include "mesh/mirror.hpp"
+#include "skinfem/contact/contact_solver.hpp"
+#include "skinfem/contact/hole_cover.hpp"
+#include "skinfem/contact/hole_sweep.hpp"
+#include "skinfem/contact/metrics.hpp"
+#include "skinfem/contact/small_hole.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/mesh/mirror.hpp"
 
 namespace skinfem::contact {
 namespace {

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <vector>
 
-#include "contact/mortar.hpp"
-#include "fem/assembly.hpp"
-#include "mesh/build.hpp"
-#include "mesh/surface_quadrature.hpp"
+#include "skinfem/contact/mortar.hpp"
+#include "skinfem/fem/assembly.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/mesh/surface_quadrature.hpp"
 
 namespace skinfem::contact {
 namespace {

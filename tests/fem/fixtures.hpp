@@ -4,8 +4,8 @@
 #include <cmath>
 #include <vector>
 
-#include "fem/assembly.hpp"
-#include "mesh/build.hpp"
+#include "skinfem/fem/assembly.hpp"
+#include "skinfem/mesh/build.hpp"
 
 namespace skinfem::testing {
 

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "fem/base_traction.hpp"
+#include "skinfem/fem/base_traction.hpp"
 
 namespace skinfem {
 namespace {

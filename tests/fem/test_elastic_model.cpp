@@ -9,10 +9,10 @@
 #include <cstdio>
 #include <vector>
 
-#include "fem/base_traction.hpp"
-#include "fem/elastic_model.hpp"
-#include "mesh/build.hpp"
-#include "mesh/surface_quadrature.hpp"
+#include "skinfem/fem/base_traction.hpp"
+#include "skinfem/fem/elastic_model.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/mesh/surface_quadrature.hpp"
 
 namespace skinfem {
 namespace {

@@ -8,10 +8,10 @@
 #include <cmath>
 #include <string>
 
-#include "fem/base_traction.hpp"
-#include "fem/elastic_model.hpp"
-#include "fem/sensor_reading.hpp"
-#include "mesh/build.hpp"
+#include "skinfem/fem/base_traction.hpp"
+#include "skinfem/fem/elastic_model.hpp"
+#include "skinfem/fem/sensor_reading.hpp"
+#include "skinfem/mesh/build.hpp"
 
 namespace skinfem {
 namespace {

@@ -8,10 +8,10 @@
 #include <map>
 #include <vector>
 
-#include "fem/assembly.hpp"
-#include "fem/elastic_model.hpp"
 #include "fixtures.hpp"
-#include "mesh/surface_quadrature.hpp"
+#include "skinfem/fem/assembly.hpp"
+#include "skinfem/fem/elastic_model.hpp"
+#include "skinfem/mesh/surface_quadrature.hpp"
 
 namespace skinfem {
 namespace {

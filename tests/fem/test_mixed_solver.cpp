@@ -5,10 +5,10 @@
 #include <cstring>
 
 #include "../common/convergence.hpp"
-#include "fem/assembly.hpp"
-#include "fem/mixed_solver.hpp"
 #include "fixtures.hpp"
-#include "mesh/p2_tet.hpp"
+#include "skinfem/fem/assembly.hpp"
+#include "skinfem/fem/mixed_solver.hpp"
+#include "skinfem/mesh/p2_tet.hpp"
 
 namespace skinfem {
 namespace {

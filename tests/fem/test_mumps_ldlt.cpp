@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "fem/mumps_ldlt.hpp"
+#include "skinfem/fem/mumps_ldlt.hpp"
 
 namespace skinfem {
 namespace {

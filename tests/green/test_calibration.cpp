@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "green/calibration.hpp"
-#include "green/layer_exact.hpp"
+#include "skinfem/green/calibration.hpp"
+#include "skinfem/green/layer_exact.hpp"
 
 namespace {
 

@@ -3,10 +3,10 @@
 
 #include <cmath>
 
-#include "fem/elastic_model.hpp"
-#include "fem/fields.hpp"
-#include "green/layer_exact.hpp"
-#include "mesh/build.hpp"
+#include "skinfem/fem/elastic_model.hpp"
+#include "skinfem/fem/fields.hpp"
+#include "skinfem/green/layer_exact.hpp"
+#include "skinfem/mesh/build.hpp"
 
 namespace skinfem::green {
 namespace {

@@ -11,14 +11,14 @@
 #include <string>
 #include <vector>
 
-#include "fem/base_traction.hpp"
-#include "fem/elastic_model.hpp"
-#include "fem/face_index.hpp"
-#include "green/calibration.hpp"
-#include "green/fe_green.hpp"
-#include "mesh/build.hpp"
-#include "mesh/surface_quadrature.hpp"
-#include "scene/load.hpp"
+#include "skinfem/fem/base_traction.hpp"
+#include "skinfem/fem/elastic_model.hpp"
+#include "skinfem/fem/face_index.hpp"
+#include "skinfem/green/calibration.hpp"
+#include "skinfem/green/fe_green.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/mesh/surface_quadrature.hpp"
+#include "skinfem/scene/load.hpp"
 
 namespace skinfem::green {
 namespace {

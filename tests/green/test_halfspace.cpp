@@ -7,8 +7,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "green/halfspace.hpp"
-#include "mesh/gauss_legendre.hpp"
+#include "skinfem/green/halfspace.hpp"
+#include "skinfem/mesh/gauss_legendre.hpp"
 
 namespace {
 

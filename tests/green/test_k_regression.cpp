@@ -4,10 +4,10 @@
 
 #include <cmath>
 
-#include "fem/face_index.hpp"
-#include "green/calibration.hpp"
-#include "mesh/build.hpp"
-#include "scene/load.hpp"
+#include "skinfem/fem/face_index.hpp"
+#include "skinfem/green/calibration.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/scene/load.hpp"
 
 namespace skinfem::green {
 namespace {

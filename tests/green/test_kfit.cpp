@@ -5,10 +5,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include "green/calibration.hpp"
-#include "green/halfspace.hpp"
-#include "green/kfit.hpp"
-#include "green/layer_exact.hpp"
+#include "skinfem/green/calibration.hpp"
+#include "skinfem/green/halfspace.hpp"
+#include "skinfem/green/kfit.hpp"
+#include "skinfem/green/layer_exact.hpp"
 
 namespace {
 

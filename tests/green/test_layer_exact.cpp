@@ -8,10 +8,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include "green/fe_green.hpp"
-#include "green/halfspace.hpp"
-#include "green/layer_exact.hpp"
-#include "mesh/gauss_legendre.hpp"
+#include "skinfem/green/fe_green.hpp"
+#include "skinfem/green/halfspace.hpp"
+#include "skinfem/green/layer_exact.hpp"
+#include "skinfem/mesh/gauss_legendre.hpp"
 
 namespace {
 

@@ -14,13 +14,13 @@
 
 #include "../common/convergence.hpp"
 #include "../common/short_posts.hpp"
-#include "fem/elastic_model.hpp"
-#include "green/calibration.hpp"
-#include "green/fe_green.hpp"
-#include "green/layer_exact.hpp"
-#include "green/meridian.hpp"
-#include "mesh/build.hpp"
-#include "mesh/sizing.hpp"
+#include "skinfem/fem/elastic_model.hpp"
+#include "skinfem/green/calibration.hpp"
+#include "skinfem/green/fe_green.hpp"
+#include "skinfem/green/layer_exact.hpp"
+#include "skinfem/green/meridian.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/mesh/sizing.hpp"
 
 namespace skinfem {
 namespace {

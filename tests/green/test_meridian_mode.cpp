@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "green/meridian.hpp"
-#include "green/meridian_mode.hpp"
+#include "skinfem/green/meridian.hpp"
+#include "skinfem/green/meridian_mode.hpp"
 
 namespace skinfem {
 namespace {

@@ -7,11 +7,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "fem/elastic_model.hpp"
-#include "green/calibration.hpp"
-#include "green/fe_green.hpp"
-#include "mesh/build.hpp"
-#include "mesh/mirror.hpp"
+#include "skinfem/fem/elastic_model.hpp"
+#include "skinfem/green/calibration.hpp"
+#include "skinfem/green/fe_green.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/mesh/mirror.hpp"
 
 namespace skinfem {
 namespace {

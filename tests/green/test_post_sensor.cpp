@@ -10,13 +10,13 @@
 #include <cstdio>
 
 #include "../common/short_posts.hpp"
-#include "fem/elastic_model.hpp"
-#include "fem/sensor_reading.hpp"
-#include "green/fe_green.hpp"
-#include "mesh/build.hpp"
-#include "mesh/quality.hpp"
-#include "mesh/surface_quadrature.hpp"
-#include "scene/load.hpp"
+#include "skinfem/fem/elastic_model.hpp"
+#include "skinfem/fem/sensor_reading.hpp"
+#include "skinfem/green/fe_green.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/mesh/quality.hpp"
+#include "skinfem/mesh/surface_quadrature.hpp"
+#include "skinfem/scene/load.hpp"
 
 namespace skinfem {
 namespace {

@@ -15,6 +15,12 @@ for f in bin/skinfem share/skinfem/figures.py share/skinfem/workflow/Snakefile s
   include/skinfem/pipeline/skin_setup.hpp include/skinfem/scene/scene.hpp; do
   [ -e "$prefix/$f" ] || { echo "install.sh: $f not installed" >&2; exit 1; }
 done
+# Installed headers include each other by their prefixed path (<skinfem/folder/x.hpp>), each found in the
+# prefix: a consumer's own scene/ or mesh/ can never stand in for ours.
+while read -r inc; do
+  [ -e "$prefix/include/$inc" ] || { echo "install.sh: an installed header includes \"$inc\", not in $prefix/include" >&2; exit 1; }
+  case $inc in skinfem/*) ;; *) echo "install.sh: an installed header includes \"$inc\" without the skinfem/ prefix" >&2; exit 1 ;; esac
+done < <(grep -rhoE '#include "[^"]+"' "$prefix/include/skinfem" | sed -E 's/#include "(.*)"/\1/' | sort -u)
 cmake -S "$src/tests/install/downstream" -B "$work/downstream" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
 cmake --build "$work/downstream" >/dev/null

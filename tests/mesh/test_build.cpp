@@ -4,14 +4,14 @@
 #include <cmath>
 
 #include "../common/convergence.hpp"
-#include "mesh/build.hpp"
-#include "mesh/p2_tet.hpp"
-#include "mesh/quality.hpp"
-#include "mesh/shape.hpp"
-#include "mesh/sizing.hpp"
-#include "mesh/surface.hpp"
-#include "mesh/surface_quadrature.hpp"
-#include "scene/load.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/mesh/p2_tet.hpp"
+#include "skinfem/mesh/quality.hpp"
+#include "skinfem/mesh/shape.hpp"
+#include "skinfem/mesh/sizing.hpp"
+#include "skinfem/mesh/surface.hpp"
+#include "skinfem/mesh/surface_quadrature.hpp"
+#include "skinfem/scene/load.hpp"
 
 namespace skinfem {
 namespace {

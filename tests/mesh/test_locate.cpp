@@ -3,10 +3,10 @@
 
 #include <random>
 
-#include "mesh/build.hpp"
-#include "mesh/locate.hpp"
-#include "mesh/p2_tet.hpp"
-#include "mesh/shape.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/mesh/locate.hpp"
+#include "skinfem/mesh/p2_tet.hpp"
+#include "skinfem/mesh/shape.hpp"
 
 namespace skinfem {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "mesh/p2_tet.hpp"
+#include "skinfem/mesh/p2_tet.hpp"
 
 namespace skinfem {
 namespace {

@@ -7,10 +7,10 @@
 #include <cstdio>
 #include <string>
 
-#include "mesh/build.hpp"
-#include "mesh/quality.hpp"
-#include "mesh/scale_ridges.hpp"
-#include "mesh/shape.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/mesh/quality.hpp"
+#include "skinfem/mesh/scale_ridges.hpp"
+#include "skinfem/mesh/shape.hpp"
 
 namespace skinfem {
 namespace {

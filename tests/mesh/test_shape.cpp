@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "mesh/shape.hpp"
+#include "skinfem/mesh/shape.hpp"
 
 namespace skinfem {
 namespace {

@@ -8,10 +8,10 @@
 
 #include <cstdio>
 
-#include "mesh/build.hpp"
-#include "mesh/size_estimate.hpp"
-#include "mesh/sizing.hpp"
-#include "scene/load.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/mesh/size_estimate.hpp"
+#include "skinfem/mesh/sizing.hpp"
+#include "skinfem/scene/load.hpp"
 
 namespace skinfem {
 namespace {

@@ -4,9 +4,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "mesh/build.hpp"
-#include "mesh/quality.hpp"
-#include "mesh/surface.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/mesh/quality.hpp"
+#include "skinfem/mesh/surface.hpp"
 
 namespace skinfem {
 namespace {

@@ -10,8 +10,8 @@
 
 #include <filesystem>
 
-#include "mesh/build.hpp"
-#include "mesh/vtu.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/mesh/vtu.hpp"
 
 namespace skinfem {
 namespace {

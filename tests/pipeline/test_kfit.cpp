@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "../common/convergence.hpp"
-#include "green/calibration.hpp"
-#include "green/meridian.hpp"
-#include "pipeline/sensor_greens.hpp"
+#include "skinfem/green/calibration.hpp"
+#include "skinfem/green/meridian.hpp"
+#include "skinfem/pipeline/sensor_greens.hpp"
 
 namespace skinfem::pipeline {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <cstdlib>
 
-#include "pipeline/post_design.hpp"
-#include "scene/load.hpp"
+#include "skinfem/pipeline/post_design.hpp"
+#include "skinfem/scene/load.hpp"
 
 namespace skinfem::pipeline {
 namespace {

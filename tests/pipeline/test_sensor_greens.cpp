@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "../common/convergence.hpp"
-#include "green/layer_exact.hpp"
-#include "mesh/sizing.hpp"
-#include "pipeline/sensor_greens.hpp"
-#include "scene/load.hpp"
+#include "skinfem/green/layer_exact.hpp"
+#include "skinfem/mesh/sizing.hpp"
+#include "skinfem/pipeline/sensor_greens.hpp"
+#include "skinfem/scene/load.hpp"
 
 namespace skinfem::pipeline {
 namespace {

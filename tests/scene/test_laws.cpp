@@ -5,7 +5,7 @@
 
 #include <set>
 
-#include "scene/laws.hpp"
+#include "skinfem/scene/laws.hpp"
 
 namespace skinfem {
 namespace {

@@ -9,8 +9,8 @@
 #include <string>
 #include <utility>
 
-#include "scene/load.hpp"
-#include "scene/scene.hpp"
+#include "skinfem/scene/load.hpp"
+#include "skinfem/scene/scene.hpp"
 
 namespace fs = std::filesystem;
 using namespace skinfem;

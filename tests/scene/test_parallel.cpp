@@ -11,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-#include "scene/parallel.hpp"
+#include "skinfem/scene/parallel.hpp"
 
 namespace skinfem {
 namespace {

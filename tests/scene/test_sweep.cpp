@@ -7,7 +7,7 @@
 #include <set>
 #include <string>
 
-#include "scene/sweep.hpp"
+#include "skinfem/scene/sweep.hpp"
 
 namespace fs = std::filesystem;
 using namespace skinfem;

@@ -3,7 +3,7 @@
 // component along the direction), checked on the paper's line of ten sensors.
 #include <gtest/gtest.h>
 
-#include "validation/crosscheck.hpp"
+#include "skinfem/validation/crosscheck.hpp"
 
 namespace skinfem::validation {
 namespace {

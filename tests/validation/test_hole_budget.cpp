@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "validation/hole_budget.hpp"
+#include "skinfem/validation/hole_budget.hpp"
 
 namespace skinfem::validation {
 namespace {

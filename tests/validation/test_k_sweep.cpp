@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "../common/convergence.hpp"
-#include "validation/k_sweep.hpp"
+#include "skinfem/validation/k_sweep.hpp"
 
 namespace skinfem::validation {
 namespace {

@@ -2,7 +2,7 @@
 // away (issue 57: a punch centred on a post solved, then exited with "point … is off the base").
 #include <gtest/gtest.h>
 
-#include "validation/load_metrics.hpp"
+#include "skinfem/validation/load_metrics.hpp"
 
 namespace skinfem {
 namespace {

@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "fem/base_traction.hpp"
-#include "mesh/build.hpp"
-#include "validation/paper_model.hpp"
+#include "skinfem/fem/base_traction.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/validation/paper_model.hpp"
 
 namespace skinfem::validation {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "validation/richardson.hpp"
+#include "skinfem/validation/richardson.hpp"
 
 namespace skinfem::validation {
 namespace {

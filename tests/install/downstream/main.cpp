@@ -1,9 +1,8 @@
 // Meshes and factors a scene through the installed pipeline library and prints what it built, one
 // "key value" per line: nodes, elements, free_dofs.
 #include <cstdio>
-
-#include "pipeline/skin_setup.hpp"
-#include "scene/load.hpp"
+#include <skinfem/pipeline/skin_setup.hpp>
+#include <skinfem/scene/load.hpp>
 
 int main(int argc, char** argv) {
   if (argc != 2) {
