@@ -198,9 +198,7 @@ int main(int argc, char** argv) {
     const std::string out = report->parsed() && !report->count("--out") ? "out/" + scene.name : out_dir;
     skinfem::app::check_output_dir(out);
     skinfem::app::check_run_record(out, command);
-    const auto path = path_name == "3d"         ? skinfem::app::GreenPath::full3d
-                      : path_name == "meridian" ? skinfem::app::GreenPath::meridian
-                                                : skinfem::app::GreenPath::automatic;
+    const auto path = skinfem::pipeline::green_path_named(path_name);
     const auto run = [&]() -> int {
       if (mesh->parsed()) return skinfem::app::run_mesh(scene, out);
       const auto solver =

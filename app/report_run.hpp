@@ -24,6 +24,8 @@ class ReportRun {
   // error_scales: the coarser levels' mesh scales for the error bars (empty: none). fast: no error bars,
   // budget, post design, k sweep or effective-thickness fits, said on the page.
   ReportRun(const Scene& scene, std::string out_dir, std::vector<double> error_scales, bool fast);
+  ReportRun(const ReportRun&) = delete;  // index_ points into its own members
+  ReportRun& operator=(const ReportRun&) = delete;
   void factor_chain();   // the meridian checks, the one factorization and the sensors' adjoints
   void green();          // the green stage, the mesh's files beside it; starts kfit and the k sweep
   void contact_chain();  // contact, defect sweep, crosscheck, hole budget (a scene with a contact)

@@ -232,6 +232,13 @@ int axis_sensor(const Scene& scene, const SensorGreens& greens) {
   return -1;
 }
 
+GreenPath green_path_named(const std::string& name) {
+  if (name == "auto") return GreenPath::automatic;
+  if (name == "3d") return GreenPath::full3d;
+  if (name == "meridian") return GreenPath::meridian;
+  throw SceneError("path: '" + name + "' is not one of auto, 3d, meridian");
+}
+
 MeridianScan meridian_scan(const Scene& scene, int sensor, green::LayerLoad load, double radius,
                            double half_width) {
   Stopwatch clock;

@@ -103,6 +103,9 @@ SensorGains sensor_gains(const Sensors& sensors, double nu, double h, double sca
 // The Green tensors by `path`: the meridian's where asked, or where automatic and meridian_unavailable is
 // empty; else the 3D path's (with_path_reason), with the adjoint set-up it made in `adjoints`.
 SensorGreens green_path(const Scene& scene, GreenPath path);
+// The path a name stands for (auto, 3d, meridian; as --path and Python's path= spell it); throws SceneError
+// naming the choices otherwise.
+GreenPath green_path_named(const std::string& name);
 
 // The first sensor on the axis of a cap solved in 3D (greens.path "3d"), or −1 (also for a post among others,
 // which the isolated post of the meridian does not stand for): the one sensor the meridian

@@ -121,7 +121,7 @@ void bind_contact(py::module_& m) {
       [](const Scene& scene, const std::string& friction, const std::string& path) -> py::object {
         const FrictionMode chosen = pipeline::friction_mode_named(scene, friction);
         std::string why;
-        if (pipeline::contact_on_meridian(scene, chosen, green_path_named(path), &why)) {
+        if (pipeline::contact_on_meridian(scene, chosen, pipeline::green_path_named(path), &why)) {
           py::gil_scoped_release free;
           auto run = pipeline::meridian_contact_run(scene, chosen);
           py::gil_scoped_acquire held;

@@ -82,7 +82,7 @@ void bind_green(py::module_& m) {
   m.def(
       "greens",
       [](const Scene& scene, const std::string& path) {
-        const pipeline::GreenPath p = green_path_named(path);
+        const pipeline::GreenPath p = pipeline::green_path_named(path);
         py::gil_scoped_release free;
         return pipeline::green_path(scene, p);
       },

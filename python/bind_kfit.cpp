@@ -87,7 +87,7 @@ void bind_kfit(py::module_& m) {
       "kfit",
       [](const Scene& scene, const std::string& load, const std::string& path) {
         const green::LayerLoad l = calibration_load_named(load);
-        const pipeline::GreenPath p = green_path_named(path);
+        const pipeline::GreenPath p = pipeline::green_path_named(path);
         py::gil_scoped_release free;
         return pipeline::kfit(scene, pipeline::green_path(scene, p), l);
       },

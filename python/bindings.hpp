@@ -28,7 +28,6 @@ py::array_t<double> per_component(const std::array<double, 4>& v);
 py::array_t<double> kpa(const Eigen::VectorXd& v, std::vector<py::ssize_t> shape);
 py::array_t<double> array_of(const std::vector<double>& v);
 py::object json_object(const nlohmann::json& j);
-pipeline::GreenPath green_path_named(const std::string& path);
 green::LayerLoad calibration_load_named(const std::string& load);
 // A positions × 2·sensors MPa matrix (σ_z of sensor k at column 2k) as positions × sensors × (z, x) kPa.
 py::array_t<double> kpa_by_sensor(const Eigen::MatrixXd& v);

@@ -38,13 +38,6 @@ py::object json_object(const nlohmann::json& j) {
   return py::module_::import("json").attr("loads")(j.dump());
 }
 
-pipeline::GreenPath green_path_named(const std::string& path) {
-  if (path == "auto") return pipeline::GreenPath::automatic;
-  if (path == "3d") return pipeline::GreenPath::full3d;
-  if (path == "meridian") return pipeline::GreenPath::meridian;
-  throw SceneError("path: '" + path + "' is not one of auto, 3d, meridian");
-}
-
 green::LayerLoad calibration_load_named(const std::string& load) {
   if (load == "punch") return green::LayerLoad::punch;
   if (load == "point") return green::LayerLoad::point;

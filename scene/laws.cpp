@@ -7,25 +7,25 @@ namespace skinfem {
 namespace {
 
 const FrictionModeKind kModes[] = {
-    {FrictionMode::none, "none", false, false, true, "frictionless"},
-    {FrictionMode::static_residual, "static", true, true, true,
-     "the plate at rest: p_t = static_ratio p (the law's traction scaled by static_ratio/mu)"},
-    {FrictionMode::uncoupled, "uncoupled", true, false, false,
-     "the frictionless pressure, then the sliding traction added (the paper's assumption)"},
-    {FrictionMode::coupled, "coupled", true, false, true,
-     "the sliding traction acting while pressure and zone are solved"},
+    {FrictionMode::none, "none", false, false, true},  // frictionless
+    // the plate at rest: the law's traction scaled by static_ratio/mu
+    {FrictionMode::static_residual, "static", true, true, true},
+    // the frictionless pressure, then the sliding traction added (the paper's assumption)
+    {FrictionMode::uncoupled, "uncoupled", true, false, false},
+    // the sliding traction acting while pressure and zone are solved
+    {FrictionMode::coupled, "coupled", true, false, true},
 };
 
 const FrictionLawKind kLaws[] = {
-    {FrictionLaw::coulomb, "coulomb", true, false, "p_t = mu p"},
-    {FrictionLaw::shear_strength, "shear_strength", false, true, "p_t = tau0 wherever the skin touches"},
-    {FrictionLaw::mixed, "mixed", true, true, "p_t = tau0 + mu p"},
+    {FrictionLaw::coulomb, "coulomb", true, false},                // p_t = mu p
+    {FrictionLaw::shear_strength, "shear_strength", false, true},  // p_t = tau0 wherever the skin touches
+    {FrictionLaw::mixed, "mixed", true, true},                     // p_t = tau0 + mu p
 };
 
 const InterfaceLawKind kInterfaces[] = {
-    {InterfaceLaw::hard, "hard", false, false, 2, "no interpenetration, exact complementarity"},
-    {InterfaceLaw::linear, "linear", true, false, 1, "p = K max(0, -gap): a Winkler layer of asperities"},
-    {InterfaceLaw::exponential, "exponential", true, true, 0, "p = p_ref exp(-gap/u0), any sign of gap"},
+    {InterfaceLaw::hard, "hard", false, false, 2},              // no interpenetration
+    {InterfaceLaw::linear, "linear", true, false, 1},           // p = K max(0, -gap): asperities as springs
+    {InterfaceLaw::exponential, "exponential", true, true, 0},  // p = p_ref exp(-gap/u0), any sign of gap
 };
 
 template <class Kind, size_t N, class Id>

@@ -16,11 +16,10 @@ namespace skinfem {
 // What each mode does with the plate's tangential traction p_t.
 struct FrictionModeKind {
   FrictionMode mode;
-  const char* name;   // as scenes and --friction spell it
-  bool traction;      // p_t acts at all (every mode but none)
-  bool at_rest;       // the plate at rest keeps static_ratio/μ of the sliding traction
-  bool coupled;       // pressure and zone are solved with p_t acting (all but uncoupled)
-  const char* means;  // one line
+  const char* name;  // as scenes and --friction spell it
+  bool traction;     // p_t acts at all (every mode but none)
+  bool at_rest;      // the plate at rest keeps static_ratio/μ of the sliding traction
+  bool coupled;      // pressure and zone are solved with p_t acting (all but uncoupled)
 };
 // A sliding plate's traction p_t = (shear_strength ? τ0 : 0) + (proportional ? μ p : 0).
 struct FrictionLawKind {
@@ -28,7 +27,6 @@ struct FrictionLawKind {
   const char* name;
   bool proportional;    // μ p
   bool shear_strength;  // τ0 wherever the skin touches
-  const char* traction;
 };
 // How plate and skin close: hard (no interpenetration), or a rough interface with its parameters.
 struct InterfaceLawKind {
@@ -37,7 +35,6 @@ struct InterfaceLawKind {
   bool compliant;  // the pressure is a function of the gap (not complementarity alone)
   bool smooth;     // p(gap) > 0 at every gap: the whole zone touches, with a tail and no edge
   int edge_q;      // the pressure vanishes at the contact's edge like (a − r)^(1/q); 0: no edge
-  const char* closure;
 };
 
 const FrictionModeKind& kind(FrictionMode mode);
