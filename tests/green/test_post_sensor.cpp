@@ -41,6 +41,14 @@ const TetMesh& post_mesh() {
   return m;
 }
 
+// The free-sided skin on that mesh, factored once for the tests that only solve on it (the suite runs as one
+// process: tests/CMakeLists.txt, shared_fixture_suites).
+const ElasticModel& free_model() {
+  static const ElasticModel model(post_mesh(), post_scene().material, SideCondition::free,
+                                  std::vector<Punch>{});
+  return model;
+}
+
 TEST(PostSensor, TheCavityIsTheExactCylinder) {
   const TetMesh& m = post_mesh();
   const Scene s = post_scene();
@@ -136,7 +144,7 @@ TEST(PostSensor, FinePostMeshesStayUnfolded) {
 
 TEST(PostSensor, BaseAndPostsBalanceTheLoad) {
   const TetMesh& m = post_mesh();
-  const ElasticModel model(m, post_scene().material, SideCondition::free, std::vector<Punch>{});
+  const ElasticModel& model = free_model();
   const TractionPatch patch{{0.6, 0.2}, 0.5, {0.3, 0.1, -1}, 1.0};
   const LoadCaseResult r = model.solve(model.patch_load(patch), {});
   // The force on the posts: every post node's tangential reaction, the normal one off the foot (where the
@@ -204,7 +212,7 @@ TEST(PostSensor, AdjointReadingIsTheForwardOne) {
   // peak is the requirement, round-off is what the algebra allows).
   const TetMesh& m = post_mesh();
   const Scene s = post_scene();
-  const ElasticModel model(m, s.material, SideCondition::free, std::vector<Punch>{});
+  const ElasticModel& model = free_model();
   const green::FeGreen fe(model, s.sensors);
   const SensorReadings readings(m, reading_sites(s.sensors));
   double peak = 0, worst = 0;
@@ -234,7 +242,7 @@ TEST(PostSensor, SpringReadingIsTheForwardEquilibrium) {
   const TetMesh& m = post_mesh();
   Scene s = post_scene();
   s.sensors.post.support = {8.0, 3.0, 0.05};  // N/mm, N/mm, N·mm/rad: of the order of the skin's own
-  const ElasticModel model(m, s.material, SideCondition::free, std::vector<Punch>{});
+  const ElasticModel& model = free_model();
   const SensorReadings springs(m, reading_sites(s.sensors), &model.solver());
   const Eigen::MatrixXd& K = springs.post_stiffness();
   ASSERT_EQ(K.rows(), 10);  // two posts, five rigid modes each
