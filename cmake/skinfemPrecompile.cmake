@@ -42,11 +42,9 @@ endfunction()
 # skinfem_front_end(target [ALWAYS]): target compiles at -O1 under the sanitizers (SKINFEM_SANITIZE), with ALWAYS
 # in every build, instead of the build type's -O2 or -O3. For the command and the Python module (under the
 # sanitizers) and the test suites (always): their own code sets up, sequences and checks calls into the
-# libraries, which keep the build's level and do the numerical work. A suite at -O1 compiles in about a third
-# less time (contact/test_lcp.cpp under the sanitizers: 40 instead of 61 s without a precompiled header; the
-# sanitizer build's command, module and suites 563 instead of 760 s of compiler time) and its pass runs as long
-# (1509 against 1499 s). A precompiled header keeps the level it was made with, so the targets that share one
-# (tests/CMakeLists.txt) all take the same.
+# libraries, which keep the build's level and do the numerical work, so their compile time falls by about a
+# third under the sanitizers while the passes run as long (tests/README.md, "Time budget"). A precompiled
+# header keeps the level it was made with, so the targets that share one (tests/CMakeLists.txt) all take the same.
 function(skinfem_front_end target)
   if(SKINFEM_SANITIZE OR "ALWAYS" IN_LIST ARGN)
     target_compile_options(${target} PRIVATE -O1)
