@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Ridged skins beyond the shipped scene, at coarse settings (scenes/ridged_layer.json with its skin mesh sizes
-# doubled, a patch of 2 periods, and a layer 1 mm thick and 8 mm wide, meshed without its regions: the
+# Ridged skins beyond the shipped scene, at coarse settings (scenes/ridged_layer.json with its h_min doubled,
+# a patch of 2 periods, and a layer 1 mm thick and 8 mm wide, meshed without its regions: the
 # ridges' patch is what the study refines, and the smaller layer around it halves the study's time):
 # - the rectangular profile meshes to the volume computed here independently (the profile written out in
 #   numpy, integrated by the midpoint rule; the C++ side sums its cosine series);
@@ -20,11 +20,10 @@ trap 'rm -rf "$tmp"' EXIT
 /usr/bin/python3 - "$root/scenes/ridged_layer.json" "$tmp" <<'PY'
 import copy, json, sys
 s = json.load(open(sys.argv[1]))
-for key in ("h_min", "h_max"):
-    s["mesh"][key] *= 2
+s["mesh"]["h_min"] *= 2
 s["geometry"].update(h=1.0, half_width=4.0)
-s["mesh"].update(h_max=1.0, regions=[])
-# No finer disc at the base: with it (the default 0.1 mm, or 0.2) these doubled sizes leave a folded top
+s["mesh"].update(h_max=1.0, regions=[])  # h_max: the whole thickness, one element
+# No finer disc at the base: with it (the default 0.1 mm, or 0.2) the doubled h_min leaves a folded top
 # element when the ridges are lowered for the control (TetGen places other interior points). The shipped
 # sizes study without it: `study --ridges 3,4,5` on scenes/ridged_layer.json.
 s["mesh"]["sensor_h"] = s["mesh"]["h_min"]
