@@ -36,6 +36,7 @@
 #include "skinfem/mesh/size_estimate.hpp"
 #include "skinfem/pipeline/green.hpp"
 #include "skinfem/pipeline/resources.hpp"
+#include "skinfem/scene/commands.hpp"
 #include "skinfem/scene/parallel.hpp"
 
 namespace skinfem::app {
@@ -96,10 +97,6 @@ void lock_sweep_dir(const std::string& dir) {
   }
 }
 
-std::string summary_file(const std::string& command) {
-  return command == "kfit" ? "kfit.json" : command == "report" ? "report.json" : "summary.json";
-}
-
 }  // namespace
 
 int run_sweep(const std::string& spec_path, const std::string& out, int cores, const std::string& profile,
@@ -133,7 +130,9 @@ int run_sweep(const std::string& spec_path, const std::string& out, int cores, c
   manifest["command"] = sweep.command;
   manifest["options"] = sweep.options;
   manifest["combine"] = sweep.combine;
-  manifest["summary_file"] = summary_file(sweep.command);
+  const CommandSpec& spec = command_named(sweep.command);
+  manifest["summary_file"] = spec.summary_file;
+  manifest["plotted"] = spec.plotted;
   std::error_code ec;
   manifest["skinfem"] = fs::read_symlink("/proc/self/exe", ec).string();
   manifest["skinfem_version"] = SKINFEM_VERSION;

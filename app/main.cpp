@@ -2,34 +2,95 @@
 // Subcommands: mesh, solve, study, kfit, green, contact, defect, report, sweep (see each cmd_*.cpp for what
 // it computes and writes). Exit codes: 0 success, 2 bad input (scene or arguments), 1 any other failure.
 #include <CLI/CLI.hpp>
-#include <cmath>
-#include <cstdlib>
+#include <functional>
 #include <iostream>
+#include <map>
 
+#include "app/command_line.hpp"
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "skinfem/mesh/surface.hpp"
 #include "skinfem/pipeline/progress.hpp"
 #include "skinfem/pipeline/resources.hpp"
-#include "skinfem/scene/laws.hpp"
 #include "skinfem/scene/load.hpp"
 
 namespace {
-// A number option's check: CLI11's PositiveNumber and NonNegativeNumber print DBL_MAX in 309 digits and call
-// a subnormal "not in range". Says what the value is and what is allowed.
-CLI::Validator number_check(bool strictly_positive) {
-  return CLI::Validator(
-      [strictly_positive](std::string& text) -> std::string {
-        char* end = nullptr;
-        const double v = std::strtod(text.c_str(), &end);
-        if (text.empty() || end != text.c_str() + text.size()) return text + ": must be a number";
-        if (!std::isfinite(v)) return text + ": must be a finite number";
-        if (strictly_positive && !(v > 0)) return text + ": must be a number > 0";
-        if (!strictly_positive && v < 0) return text + ": must be a number >= 0";
-        return "";
-      },
-      strictly_positive ? "POSITIVE" : "NONNEGATIVE");
+
+using skinfem::Scene;
+using skinfem::app::ParsedOptions;
+
+// What a command of the table (scene/commands.cpp) runs: its checks of the options among themselves, before
+// the scene is read, then its run on the scene. The sweep, which runs on a spec, is main's own case.
+struct Handler {
+  std::function<void(const ParsedOptions&)> check;
+  std::function<int(const Scene&, const std::string& out, const ParsedOptions&)> run;
+};
+
+// --error-scales unless --no-error-bars or report's --fast leaves the error bars out.
+std::vector<double> error_levels(const ParsedOptions& o) {
+  const bool fast = o.has("fast") && o.flag("fast");
+  return o.flag("no_error_bars") || fast ? std::vector<double>{} : o.numbers("error_scales");
 }
+
+const std::map<std::string, Handler>& handlers() {
+  namespace app = skinfem::app;
+  const auto none = [](const ParsedOptions&) {};
+  const auto path = [](const ParsedOptions& o) {
+    return skinfem::pipeline::green_path_named(o.text("path"));
+  };
+  const auto error_scales_check = [](const ParsedOptions& o) {
+    if (o.has("fast") && o.flag("fast") && o.given("error_scales"))
+      throw skinfem::SceneError("--error-scales: --fast draws no error bars; give one or the other");
+    if (!error_levels(o).empty()) app::check_levels("--error-scales", error_levels(o), true);
+  };
+  static const std::map<std::string, Handler> table{
+      {"mesh",
+       {none,
+        [](const Scene& s, const std::string& out, const ParsedOptions&) { return app::run_mesh(s, out); }}},
+      {"solve",
+       {none,
+        [](const Scene& s, const std::string& out, const ParsedOptions& o) {
+          return app::run_solve(s, out,
+                                o.text("solver") == "schur_cg" ? skinfem::SolverKind::schur_cg
+                                                               : skinfem::SolverKind::direct_ldlt);
+        }}},
+      {"study",
+       {[](const ParsedOptions& o) {
+          app::check_levels("--scales", o.numbers("scales"), true);
+          app::check_levels("--ridges", o.numbers("ridges"), false);
+          for (double l : o.numbers("ridges"))
+            if (l < 3)
+              throw skinfem::SceneError("--ridges: " + std::to_string(l) +
+                                        ": a level must give at least 3 mesh elements per ridge period");
+        },
+        [](const Scene& s, const std::string& out, const ParsedOptions& o) {
+          return !o.numbers("ridges").empty() ? app::run_ridge_study(s, out, o.numbers("ridges"))
+                 : o.flag("chain")            ? app::run_chain_study(s, out, o.numbers("scales"))
+                                              : app::run_study(s, out, o.numbers("scales"));
+        }}},
+      {"kfit",
+       {none, [path](const Scene& s, const std::string& out,
+                     const ParsedOptions& o) { return app::run_kfit(s, out, o.text("load"), path(o)); }}},
+      {"green",
+       {none, [path](const Scene& s, const std::string& out,
+                     const ParsedOptions& o) { return app::run_green(s, out, o.number("grid"), path(o)); }}},
+      {"contact",
+       {none,
+        [path](const Scene& s, const std::string& out, const ParsedOptions& o) {
+          return app::run_contact(s, out, o.text("friction"), path(o));
+        }}},
+      {"defect",
+       {error_scales_check, [](const Scene& s, const std::string& out,
+                               const ParsedOptions& o) { return app::run_defect(s, out, error_levels(o)); }}},
+      {"report",
+       {error_scales_check,
+        [](const Scene& s, const std::string& out, const ParsedOptions& o) {
+          return app::run_report(s, out, error_levels(o), o.flag("fast"));
+        }}},
+  };
+  return table;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -39,127 +100,7 @@ int main(int argc, char** argv) {
   cli.set_version_flag(
       "--version", [] { return "skinfem " SKINFEM_VERSION "\nfigures: " + skinfem::app::figures_script(); },
       "print the version and the figure script the report runs, and exit");
-  std::string scene_path, out_dir = "out";
-
-  auto* mesh =
-      cli.add_subcommand("mesh", "mesh the scene's skin (writes mesh.vtu, boundary.vtu, summary.json)");
-  auto* solve =
-      cli.add_subcommand("solve", "solve the scene's loads (writes fields.vtu, sensors.csv, summary.json)");
-  std::string solver_name = "direct_ldlt";
-  solve->add_option("--solver", solver_name, "saddle-point solver")
-      ->check(CLI::IsMember({"direct_ldlt", "schur_cg"}))
-      ->capture_default_str();
-  auto* study = cli.add_subcommand(
-      "study", "refinement study of the scene's load with both solvers (study.json, study.csv)");
-  std::vector<double> scales{2.0, 1.41, 1.0};
-  bool chain = false;
-  study->add_flag(
-      "--chain", chain,
-      "the whole chain (Green maps and k, contact, hole sweep) per level: chain_study.csv, .json");
-  std::vector<double> ridge_levels;
-  study
-      ->add_option(
-          "--ridges", ridge_levels,
-          "ridge study: mesh elements per ridge period, one level each (>= 3, e.g. 4,5,6,8): the ridged "
-          "skin against the same mesh with 2 % ridges (ridge_study.json, .csv)")
-      ->delimiter(',')
-      ->check(number_check(true));
-  study->add_option("--scales", scales, "factors applied to h_min and h_max, coarse to fine")
-      ->delimiter(',')
-      ->check(number_check(true))
-      ->capture_default_str();
-  auto* kfit = cli.add_subcommand("kfit", "fit the k correction of the Green tensor (kfit.json)");
-  std::string load_name = "punch";
-  kfit->add_option("--load", load_name, "calibration load model")
-      ->check(CLI::IsMember({"punch", "point"}))
-      ->capture_default_str();
-  std::string path_name = "auto";
-  auto* green_cmd =
-      cli.add_subcommand("green", "FE Green tensors of every sensor (green.csv, green_maps.vtp)");
-  double grid_dx = 0;
-  green_cmd
-      ->add_option(
-          "--grid", grid_dx,
-          "also each sensor's kernel on a regular grid of this spacing (mm) over the top: kernel.h5, "
-          "kernel.vti")
-      ->check(number_check(true));
-  for (auto* sub : {kfit, green_cmd})
-    sub->add_option(
-           "--path", path_name,
-           "Green tensor solver: meridian (2D axisymmetric; flat layers and a cap's apex sensor), 3d, "
-           "or auto (the meridian where it applies)")
-        ->check(CLI::IsMember({"auto", "3d", "meridian"}))
-        ->capture_default_str();
-  auto* contact_cmd = cli.add_subcommand(
-      "contact",
-      "rigid indenter in contact with the skin (pressure.vtp, fields.vtu, sensors.csv, summary.json)");
-  std::string friction = "scene";
-  std::vector<std::string> friction_choices{"scene"};
-  for (const std::string& mode : skinfem::friction_mode_names()) friction_choices.push_back(mode);
-  contact_cmd
-      ->add_option("--friction", friction, "friction mode (default: the scene's contact.friction.mode)")
-      ->check(CLI::IsMember(friction_choices))
-      ->capture_default_str();
-  contact_cmd
-      ->add_option("--path", path_name,
-                   "contact solver: meridian (2D axisymmetric: a flat layer or a cap's apex, the indenter on "
-                   "its axis; frictionless and uncoupled modes), 3d, or auto (the meridian where every mode "
-                   "contact reports is exact there)")
-      ->check(CLI::IsMember({"auto", "3d", "meridian"}))
-      ->capture_default_str();
-  auto* defect = cli.add_subcommand(
-      "defect", "hole swept through the contact, static and sliding (defect.csv, defect.pvd, summary.json)");
-  auto* report = cli.add_subcommand(
-      "report",
-      "the whole chain on one factorization and the paper's model against it (index.html, report.json)");
-  std::vector<double> error_scales{2.0, 1.41};
-  bool no_error_bars = false;
-  report
-      ->add_option("--error-scales", error_scales,
-                   "coarser levels (mesh sizes x s, s > 1) for the headline numbers' error bars")
-      ->delimiter(',')
-      ->capture_default_str();
-  auto* no_bars =
-      report->add_flag("--no-error-bars", no_error_bars, "skip the coarser levels (no error bars)");
-  bool fast = false;
-  report
-      ->add_flag(
-          "--fast", fast,
-          "headline numbers and the paper's figures only: no error bars, no hypothesis budget, no post "
-          "design sweep (the page says what it left out)")
-      ->excludes(no_bars);
-  defect
-      ->add_option("--error-scales", error_scales,
-                   "coarser levels (mesh sizes x s, s > 1) for the largest sliding signal's error bar")
-      ->delimiter(',')
-      ->capture_default_str();
-  defect->add_flag("--no-error-bars", no_error_bars, "skip the coarser levels (no error bar)");
-  auto* sweep = cli.add_subcommand("sweep",
-                                   "a family of scenes from a sweep spec, one run per member on Snakemake "
-                                   "(results.csv, results.h5, plots/)");
-  std::string spec_path, profile;
-  int cores = 1;
-  bool dry_run = false;
-  sweep->add_option("spec", spec_path, "sweep spec JSON file (format: scene/sweep.cpp, docs/sweeps.md)")
-      ->required();
-  sweep->add_option("--out", out_dir, "output directory (default: out/<sweep name>)");
-  sweep->add_option("--cores", cores, "cores Snakemake may use on this machine, one per member job")
-      ->check(CLI::Range(1, 4096))
-      ->capture_default_str();
-  sweep->add_option("--profile", profile, "a Snakemake profile (a cluster, e.g. sweeps/profiles/slurm)")
-      ->excludes("--cores");
-  sweep->add_flag("--dry-run", dry_run, "write the member scenes and the manifest, run nothing");
-  double max_dofs = 0;
-  for (auto* sub : {mesh, solve, study, kfit, green_cmd, contact_cmd, defect, report}) {
-    sub->add_option(
-           "--max-dofs", max_dofs,
-           "refuse scenes whose estimated mesh exceeds this many DOFs (default: available memory only)")
-        ->check(number_check(false));
-    sub->add_option("scene", scene_path, "scene JSON file")->required();
-    sub->add_option("--out", out_dir,
-                    sub == report ? "output directory (default: out/<scene name>)" : "output directory")
-        ->capture_default_str();
-  }
+  const skinfem::app::CommandLine line(cli);
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -177,46 +118,21 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    if (study->parsed()) {
-      skinfem::app::check_levels("--scales", scales, true);
-      skinfem::app::check_levels("--ridges", ridge_levels, false);
-      for (double l : ridge_levels)
-        if (l < 3)
-          throw skinfem::SceneError("--ridges: " + std::to_string(l) +
-                                    ": a level must give at least 3 mesh elements per ridge period");
-    }
-    if (fast && report->count("--error-scales"))
-      throw skinfem::SceneError("--error-scales: --fast draws no error bars; give one or the other");
-    if ((report->parsed() || defect->parsed()) && !no_error_bars && !fast)
-      skinfem::app::check_levels("--error-scales", error_scales, true);
-    if (sweep->parsed())
-      return skinfem::app::run_sweep(spec_path, sweep->count("--out") ? out_dir : "", cores, profile,
-                                     dry_run);
-    skinfem::Scene scene = skinfem::load_scene(scene_path);
-    scene.limits.max_dofs = max_dofs;
-    const std::string command = cli.get_subcommands().front()->get_name();
-    const std::string out = report->parsed() && !report->count("--out") ? "out/" + scene.name : out_dir;
+    const std::string command = line.command().name;
+    const ParsedOptions& o = line.options();
+    if (command == "sweep")
+      return skinfem::app::run_sweep(o.text("spec"), o.given("out") ? o.text("out") : "",
+                                     static_cast<int>(o.number("cores")), o.text("profile"),
+                                     o.flag("dry_run"));
+    const Handler& handler = handlers().at(command);
+    handler.check(o);
+    Scene scene = skinfem::load_scene(o.text("scene"));
+    scene.limits.max_dofs = o.number("max_dofs");
+    // An --out without a default is out/<scene name>.
+    const std::string out = o.given("out") || !o.text("out").empty() ? o.text("out") : "out/" + scene.name;
     skinfem::app::check_output_dir(out);
     skinfem::app::check_run_record(out, command);
-    const auto path = skinfem::pipeline::green_path_named(path_name);
-    const auto run = [&]() -> int {
-      if (mesh->parsed()) return skinfem::app::run_mesh(scene, out);
-      const auto solver =
-          solver_name == "schur_cg" ? skinfem::SolverKind::schur_cg : skinfem::SolverKind::direct_ldlt;
-      if (solve->parsed()) return skinfem::app::run_solve(scene, out, solver);
-      if (green_cmd->parsed()) return skinfem::app::run_green(scene, out, grid_dx, path);
-      if (kfit->parsed()) return skinfem::app::run_kfit(scene, out, load_name, path);
-      if (contact_cmd->parsed()) return skinfem::app::run_contact(scene, out, friction, path);
-      if (defect->parsed())
-        return skinfem::app::run_defect(scene, out, no_error_bars ? std::vector<double>{} : error_scales);
-      if (study->parsed())
-        return !ridge_levels.empty() ? skinfem::app::run_ridge_study(scene, out, ridge_levels)
-               : chain               ? skinfem::app::run_chain_study(scene, out, scales)
-                                     : skinfem::app::run_study(scene, out, scales);
-      return skinfem::app::run_report(scene, out,
-                                      no_error_bars || fast ? std::vector<double>{} : error_scales, fast);
-    };
-    const int rc = run();
+    const int rc = handler.run(scene, out, o);
     if (rc == 0) skinfem::app::write_run_record(out, command, scene);
     return rc;
   } catch (const skinfem::SceneError& e) {

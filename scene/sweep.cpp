@@ -12,11 +12,12 @@
 // inside another (/sensors/positions and /sensors/positions/0/0). Grid or zip, at most 10000 members. A
 // relative geometry.path, in the base scene or as an axis value, names a file beside the base scene; a
 // member's id hashes that file's bytes too, so editing it runs the member again.
-// Options, by command, accepted as the command line accepts them: path (kfit, green, contact: auto, 3d,
-// meridian), load (kfit: punch, point), grid (green: spacing > 0, mm; each member's kernel grid within
-// green's point limits, app/cmd_sweep.cpp), friction (contact: scene, none, static, uncoupled, coupled),
-// error_scales (defect, report: at least two scales in (1, 4], strictly decreasing; not checked with
-// no_error_bars, which ignores them) and no_error_bars, max_dofs (every command).
+// Options: the command's options marked in_sweeps in the command table (scene/commands.cpp), by their names
+// there (error_scales for --error-scales), accepted as the command line accepts them: path (kfit, green,
+// contact), load (kfit), grid (green: spacing > 0, mm; each member's kernel grid within green's point
+// limits, app/cmd_sweep.cpp), friction (contact), error_scales (defect, report: at least two scales in
+// (1, 4], strictly decreasing; not checked with no_error_bars, which ignores them) and no_error_bars,
+// max_dofs (every command).
 #include "skinfem/scene/sweep.hpp"
 
 #include <algorithm>
@@ -30,8 +31,8 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "skinfem/scene/commands.hpp"
 #include "skinfem/scene/json_text.hpp"
-#include "skinfem/scene/laws.hpp"
 #include "skinfem/scene/load.hpp"
 #include "skinfem/scene/parallel.hpp"
 
@@ -100,61 +101,55 @@ std::string word(double v) {
   return buf;
 }
 
-// The command's options as command-line words, each checked against what the command accepts.
-std::vector<std::string> read_options(const SpecReader& r, const json& o, const std::string& command) {
-  static const std::map<std::string, std::set<std::string>> choices{
-      {"path", {"auto", "3d", "meridian"}},
-      {"load", {"punch", "point"}},
-      {"friction", [] {
-         std::set<std::string> modes{"scene"};
-         for (const std::string& m : friction_mode_names()) modes.insert(m);
-         return modes;
-       }()}};
-  static const std::map<std::string, std::set<std::string>> allowed{
-      {"kfit", {"path", "load", "max_dofs"}},
-      {"green", {"path", "grid", "max_dofs"}},
-      {"contact", {"path", "friction", "max_dofs"}},
-      {"defect", {"error_scales", "no_error_bars", "max_dofs"}},
-      {"report", {"error_scales", "no_error_bars", "max_dofs"}}};
+// The command's options as command-line words, each checked against what the command accepts (the command
+// table, scene/commands.hpp).
+std::vector<std::string> read_options(const SpecReader& r, const json& o, const CommandSpec& command) {
+  std::map<std::string, const OptionSpec*> allowed;
+  for (const OptionSpec& option : command.options)
+    if (option.in_sweeps) allowed[option.name] = &option;
   if (!o.is_object()) r.fail("options", o, "must be an object of the command's options");
   std::vector<std::string> words;
   for (const auto& [key, v] : o.items()) {
     const std::string field = "options." + key;
-    const auto& ok = allowed.at(command);
-    if (!ok.count(key)) r.fail(field, v, "not an option of " + command + "; allowed: " + joined(ok));
-    std::string flag = "--" + key;
-    for (char& c : flag)
-      if (c == '_') c = '-';
-    if (choices.count(key)) {
-      if (!v.is_string() || !choices.at(key).count(v.get<std::string>()))
-        r.fail(field, v, "must be one of " + joined(choices.at(key)));
+    if (!allowed.count(key)) {
+      std::set<std::string> names;
+      for (const auto& entry : allowed) names.insert(entry.first);
+      r.fail(field, v, "not an option of " + command.name + "; allowed: " + joined(names));
+    }
+    const OptionSpec& option = *allowed.at(key);
+    const std::string flag = option_flag(key);
+    if (option.kind == OptionKind::choice) {
+      const std::set<std::string> choices(option.choices.begin(), option.choices.end());
+      if (!v.is_string() || !choices.count(v.get<std::string>()))
+        r.fail(field, v, "must be one of " + joined(choices));
       words.insert(words.end(), {flag, v.get<std::string>()});
-    } else if (key == "no_error_bars") {
+    } else if (option.kind == OptionKind::flag) {
       if (!v.is_boolean()) r.fail(field, v, "must be true or false");
       if (v.get<bool>()) words.push_back(flag);
-    } else if (key == "error_scales") {
+    } else if (option.kind == OptionKind::numbers) {  // error_scales
       // As `--error-scales` on the command line: at least two levels, each in (1, kMaxErrorScale], coarse
       // to fine (strictly decreasing, so no level twice); unchecked with no_error_bars, which ignores them.
-      const std::string allowed = "must be an array of at least two mesh scales in (1, " +
-                                  std::to_string(static_cast<int>(kMaxErrorScale)) +
-                                  "], strictly decreasing (coarse to fine)";
-      if (!v.is_array() || v.empty()) r.fail(field, v, allowed);
+      const std::string rule = "must be an array of at least two mesh scales in (1, " +
+                               std::to_string(static_cast<int>(kMaxErrorScale)) +
+                               "], strictly decreasing (coarse to fine)";
+      if (!v.is_array() || v.empty()) r.fail(field, v, rule);
       const bool unchecked = o.contains("no_error_bars") && o["no_error_bars"] == true;
       std::string list;
       double previous = 0;
       for (const json& s : v) {
         const double x = number(r, s, field);
         if (!unchecked && (!(x > 1 && x <= kMaxErrorScale) || (!list.empty() && !(x < previous))))
-          r.fail(field, v, allowed);
+          r.fail(field, v, rule);
         previous = x;
         list += (list.empty() ? "" : ",") + word(s.get<double>());
       }
-      if (!unchecked && v.size() < 2) r.fail(field, v, allowed);
+      if (!unchecked && v.size() < 2) r.fail(field, v, rule);
       words.insert(words.end(), {flag, list});
     } else {  // grid (> 0) or max_dofs (>= 0)
       const double x = number(r, v, field);
-      if (key == "grid" ? !(x > 0) : !(x >= 0))
-        r.fail(field, v, key == "grid" ? "must be a spacing > 0 (mm)" : "must be a number >= 0");
+      const bool positive = option.kind == OptionKind::positive;
+      if (positive ? !(x > 0) : !(x >= 0))
+        r.fail(field, v, positive ? "must be a spacing > 0 (mm)" : "must be a number >= 0");
       words.insert(words.end(), {flag, word(x)});
     }
   }
@@ -257,12 +252,14 @@ Sweep load_sweep(const std::string& path) {
            "must be the base scene's file, relative to the spec's folder");
   const fs::path spec_dir = fs::absolute(path).parent_path();
   s.base_scene_path = fs::weakly_canonical(spec_dir / spec["scene"].get<std::string>()).string();
-  static const std::set<std::string> commands{"kfit", "green", "contact", "defect", "report"};
+  std::set<std::string> commands;
+  for (const CommandSpec& c : skinfem::commands())
+    if (c.in_sweeps) commands.insert(c.name);
   if (!spec.contains("command") || !spec["command"].is_string() ||
       !commands.count(spec["command"].get<std::string>()))
-    r.fail("command", spec.value("command", json()), "must be one of contact, defect, green, kfit, report");
+    r.fail("command", spec.value("command", json()), "must be one of " + joined(commands));
   s.command = spec["command"].get<std::string>();
-  if (spec.contains("options")) s.options = read_options(r, spec["options"], s.command);
+  if (spec.contains("options")) s.options = read_options(r, spec["options"], command_named(s.command));
   const json combine = spec.value("combine", json("grid"));
   if (combine != "grid" && combine != "zip") r.fail("combine", combine, "must be \"grid\" or \"zip\"");
   s.combine = combine.get<std::string>();

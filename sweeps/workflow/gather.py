@@ -28,12 +28,9 @@ LENGTH_KEYS = {"h", "R", "R_y", "diameter", "radius", "half_width", "h_min", "h_
                "disc_diameter", "punch_diameter", "width", "depth"}
 UNITS = {"E": "MPa", "force": "N"}
 
-# What each command's plots show (keys of its summary file); the table holds every number.
-PLOTTED = {
-    "kfit": ["k_central", "k_lsq_line"],
-    "contact": ["contact_radius_mm", "p0_kPa", "indentation_um"],
-}
-# Otherwise (green, defect, report: their results are per sensor, in results.h5): the cost.
+# What the plots show: the keys of the summary file that the command table names (manifest "plotted",
+# scene/commands.cpp); for commands whose results are per sensor (in results.h5), the cost. The table holds
+# every number.
 COST = ["dofs", "wall_total_s"]
 
 
@@ -180,7 +177,7 @@ def gather(manifest, directory):
                     store_csv(g, name[:-4], os.path.join(out, name))
     os.replace(tmp, os.path.join(directory, "results.h5"))
 
-    plotted = [k for k in PLOTTED.get(manifest["command"], COST) if k in columns]
+    plotted = [k for k in manifest.get("plotted") or COST if k in columns]
     written = plot(manifest, rows, numbers, plotted, os.path.join(directory, "plots")) if plotted else []
     failed = sum(1 for _, s, _ in rows if s["exit_code"] != 0)
     plural = lambda n: "" if n == 1 else "s"
