@@ -22,7 +22,7 @@
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "app/stages.hpp"
-#include "skinfem/contact/hole_sweep.hpp"
+#include "skinfem/contact/holes/sweep.hpp"
 #include "skinfem/contact/pressure_map.hpp"
 #include "skinfem/pipeline/contact_setup.hpp"
 #include "skinfem/pipeline/defect.hpp"

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "skinfem/contact/hole_sweep.hpp"
+#include "skinfem/contact/holes/sweep.hpp"
 #include "skinfem/pipeline/adjoint_setup.hpp"
 #include "skinfem/pipeline/contact.hpp"
 #include "skinfem/pipeline/contact_setup.hpp"

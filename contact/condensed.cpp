@@ -193,7 +193,7 @@ CutProblem cut_problem(const CondensedContact& c, const HoleCut& cut, bool tange
       bt.emplace_back(a, it.col(), it.value());
   Eigen::SparseMatrix<double, Eigen::RowMajor> BT(t, static_cast<int>(P.nodes.size()));
   BT.setFromTriplets(bt.begin(), bt.end());
-  // C_zz' = C_zz − B Wz − (B Wz)ᵀ + B Gzz Bᵀ on rows T (hole_cut.hpp), with X = B_T Wz, Y = B_T Gzz B_Tᵀ.
+  // C_zz' = C_zz − B Wz − (B Wz)ᵀ + B Gzz Bᵀ on rows T (holes/cut.hpp), with X = B_T Wz, Y = B_T Gzz B_Tᵀ.
   const Eigen::MatrixXd X = BT * P.Wz, Y = (BT * P.Gzz) * BT.transpose();
   out.zz.resize(t, n);
   out.sp.resize(c.S_p.rows(), t);

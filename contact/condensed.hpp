@@ -15,7 +15,7 @@
 #include <optional>
 #include <string>
 
-#include "skinfem/contact/hole_cut.hpp"
+#include "skinfem/contact/holes/cut.hpp"
 #include "skinfem/contact/indenter.hpp"
 #include "skinfem/contact/mortar.hpp"
 #include "skinfem/fem/elastic_model.hpp"
@@ -30,7 +30,7 @@ struct CondensedContact {
   Eigen::VectorXd gap0;             // n_c: ∫ψ_i (z_touch + φ − s) dx dy, mm³
   Eigen::MatrixXd S_p, S_t;         // 2·sensors × n_c
   // The skin's answer at the P2 nodes a swept hole can reach, for holes that cut the hats
-  // (contact/hole_cut.hpp); absent unless condense was given the faces to watch.
+  // (contact/holes/cut.hpp); absent unless condense was given the faces to watch.
   std::optional<PathCompliance> path;
   double solve_seconds = 0;  // block solves (multipliers and adjoints), or reading the bordered products
   int block_solves = 0;      // right-hand sides solved (0 from a bordered factorization)
@@ -57,7 +57,7 @@ CondenseColumns condense_columns(const TetMesh& mesh, const MortarZone& zone, co
                                  const Vec2& direction, const std::vector<int>& watch_faces);
 
 // progress(fraction done, message) is called between blocks. watch_faces: top faces of the zone a swept
-// hole can cut (contact/hole_cut.hpp, watch_path); their P2 nodes get one more solve each. When the model
+// hole can cut (contact/holes/cut.hpp, watch_path); their P2 nodes get one more solve each. When the model
 // was factored with the coupling of condense_columns(…) of these same arguments, pass it as `bordered`:
 // its products replace every block solve (where MUMPS's estimates chose the plain factorization instead,
 // MixedSolver::border_choice, the block solves run).
@@ -67,7 +67,7 @@ CondensedContact condense(const ElasticModel& model, const MortarZone& zone, con
                           const std::vector<int>& watch_faces = {},
                           const CondenseColumns* bordered = nullptr);
 
-// The condensed problem with a hole that cuts the hats (hole_cut.hpp): the hole-free one with the rows and
+// The condensed problem with a hole that cuts the hats (holes/cut.hpp): the hole-free one with the rows and
 // columns of the multipliers the hole touches (T) replaced. Shapes: |T| × n for rows, 2·sensors × |T| for
 // reading columns; C_zz' is symmetric, so its columns T are its rows T transposed. zt* only when
 // `tangential`. Needs c.path.

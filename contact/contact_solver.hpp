@@ -15,7 +15,7 @@
 // three warm-started solves). An edge multiplier may touch without its own shear and lift under it (a
 // cycle): it then holds the fraction of τ at which it just touches, found by bisection. With holes τ acts on
 // the hole-free contact of the same mode minus the holes, lumped on the hats with the share of each hat
-// outside them (contact/hole_cover.hpp): the hole removes exactly τ S_d, a point force that the plate
+// outside them (contact/holes/cover.hpp): the hole removes exactly τ S_d, a point force that the plate
 // does not put back on the rim, and the signal varies continuously with the hole's position. (Letting the
 // holed contact's own edge decide would move whole hats of τ, each larger than τ S_d on the default scene,
 // in and out of the load as the hole moves: noise, not physics.)
@@ -72,7 +72,7 @@ struct MirrorView {
 MirrorView mirror_view(const TetMesh& whole, const std::vector<int>& source, const MortarZone& half_zone,
                        const Vec2& center, double radius);
 
-// A small hole as the bulge it lets the skin make (contact/hole_dimple.hpp): the weighted gaps it opens,
+// A small hole as the bulge it lets the skin make (contact/holes/dimple.hpp): the weighted gaps it opens,
 // and its cut of the shear.
 struct HoleDimple {
   Eigen::VectorXd opening;  // per solved multiplier (the half's under a mirror view), mm³
@@ -95,15 +95,15 @@ class ContactSolver {
   // Throws std::runtime_error when the shear's touched set does not settle.
   ContactResult solve(FrictionMode mode, const std::vector<char>& excluded = {},
                       const std::vector<int>& warm = {}, const Eigen::VectorXd& covered = {}) const;
-  // A hole that cuts the hats on its exact disc (contact/hole_cut.hpp; needs condensed().path): `cut` is the
+  // A hole that cuts the hats on its exact disc (contact/holes/cut.hpp; needs condensed().path): `cut` is the
   // solved problem's (the half's under a mirror view), warm the whole zone's active set. Multipliers with
   // less than 1e-9 of their hat outside the hole drop out (their rows have vanished with it). The result's
   // λ_i is hat i's force over its whole area (the nodal pressure times the share outside the hole).
   ContactResult solve(FrictionMode mode, const HoleCut& cut, const std::vector<int>& warm = {}) const;
   // The same from the cut's problem (cut_problem(condensed(), cut, true)), which depends on the hole alone:
-  // sweeps of several laws or modes over the same positions share it (HoleCuts, hole_sweep.hpp).
+  // sweeps of several laws or modes over the same positions share it (HoleCuts, holes/sweep.hpp).
   ContactResult solve(FrictionMode mode, const CutProblem& cp, const std::vector<int>& warm = {}) const;
-  // A small hole as a bulge (contact/hole_dimple.hpp): the hole-free problem with the dimple's gaps opened
+  // A small hole as a bulge (contact/holes/dimple.hpp): the hole-free problem with the dimple's gaps opened
   // on its contact set (solved on the stored reference, set_reference), the shear-strength part cut by
   // `covered`. Throws std::invalid_argument under an interface that is not hard.
   ContactResult solve(FrictionMode mode, const HoleDimple& dimple) const;
@@ -126,7 +126,7 @@ class ContactSolver {
   // contact is τ·touched·(1 − covered).
   const Eigen::VectorXd& touched(FrictionMode mode) const;
   bool force_controlled() const { return load_.force.has_value(); }
-  // The problem as solved (the half's under a mirror view): small_hole.hpp works on its matrices.
+  // The problem as solved (the half's under a mirror view): holes/small_hole.hpp works on its matrices.
   const CondensedContact& condensed() const { return c_; }
   // The zone results refer to: the whole one.
   const MortarZone& zone() const { return mirror_ ? mirror_->zone : c_.zone; }

@@ -63,7 +63,7 @@ class ContactLcp {
   // q_shift: empty, or n weighted gaps added to q for this solve only (a load that does not depend on λ,
   // such as a shear strength's traction; the stored factorizations do not depend on q). bilateral: empty or
   // n flags, 1 where the multiplier stays in contact with a free sign (the hats a small hole's bulge opens,
-  // contact/hole_dimple.hpp); they count in neither the feasibility tests nor the diagnostics.
+  // contact/holes/dimple.hpp); they count in neither the feasibility tests nor the diagnostics.
   LcpSolution solve_force(double F, const std::vector<char>& excluded = {}, const std::vector<int>& warm = {},
                           const Eigen::VectorXd& q_shift = {}, const std::vector<char>& bilateral = {}) const;
   LcpSolution solve_depth(double delta, const std::vector<char>& excluded = {},
@@ -71,7 +71,7 @@ class ContactLcp {
                           const std::vector<char>& bilateral = {}) const;
 
   // The problem with the rows and columns of the `dirty` indices changed (M, q, m agree with this problem's
-  // elsewhere; a hole cutting the hats, contact/hole_cut.hpp): solved with the stored reference for the
+  // elsewhere; a hole cutting the hats, contact/holes/cut.hpp): solved with the stored reference for the
   // rest, the dirty indices joining the low-rank update as removed and re-added. Same throws as above.
   LcpSolution solve_changed(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, const Eigen::VectorXd& m,
                             const std::vector<char>& dirty, bool force_control, double value,

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "skinfem/contact/hole_sweep.hpp"
+#include "skinfem/contact/holes/sweep.hpp"
 #include "skinfem/contact/metrics.hpp"
 #include "skinfem/green/calibration.hpp"
 #include "skinfem/green/kfit.hpp"

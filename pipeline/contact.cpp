@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "skinfem/contact/hole_cover.hpp"
+#include "skinfem/contact/holes/cover.hpp"
 #include "skinfem/pipeline/clock.hpp"
 #include "skinfem/pipeline/meridian_contact.hpp"
 #include "skinfem/pipeline/scene_json.hpp"

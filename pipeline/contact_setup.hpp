@@ -39,7 +39,7 @@ struct ContactSetup {
 };
 
 // Whether to condense, with a contact.sweep, the compliance of the nodes its hole can reach, so that the
-// sweep can cut the hats on the exact disc (contact/hole_cut.hpp; one more solve per such node): never, when
+// sweep can cut the hats on the exact disc (contact/holes/cut.hpp; one more solve per such node): never, when
 // the scene's sweep is resolved (HoleModel::resolved), or always (the report: its hole budget sweeps the
 // interface hypotheses resolved).
 enum class HolePath { none, as_scene, always };

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "skinfem/contact/hole_sweep.hpp"
+#include "skinfem/contact/holes/sweep.hpp"
 #include "skinfem/pipeline/chain_level.hpp"
 #include "skinfem/pipeline/clock.hpp"
 #include "skinfem/pipeline/contact_setup.hpp"

@@ -207,10 +207,10 @@ struct Hole {
 
 // A hole swept along a straight path: `positions` solves with the hole centre evenly spaced from `from`
 // to `to` (inclusive), each a full contact solve (skinfem defect).
-// How a swept hole is modelled (contact/hole_sweep.hpp): bulge, the small hole's asymptotic solution (the
+// How a swept hole is modelled (contact/holes/sweep.hpp): bulge, the small hole's asymptotic solution (the
 // skin bulging into it as into a penny-shaped crack, seen by the contact as a dimple of the indenter,
-// contact/hole_dimple.hpp); resolved, the hole's exact disc cutting the multipliers' hats
-// (contact/hole_cut.hpp).
+// contact/holes/dimple.hpp); resolved, the hole's exact disc cutting the multipliers' hats
+// (contact/holes/cut.hpp).
 enum class HoleModel { bulge, resolved };
 struct HoleSweep {
   Vec2 from{0, 0}, to{0, 0};

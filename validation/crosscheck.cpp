@@ -5,9 +5,9 @@
 #include <limits>
 #include <stdexcept>
 
-#include "skinfem/contact/hole_cover.hpp"
+#include "skinfem/contact/holes/cover.hpp"
+#include "skinfem/contact/holes/small_hole.hpp"
 #include "skinfem/contact/layer_hertz.hpp"
-#include "skinfem/contact/small_hole.hpp"
 #include "skinfem/scene/parallel.hpp"
 #include "skinfem/validation/text.hpp"
 
@@ -150,7 +150,7 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
   };
   add_signal("fe",
              in.sweep.model == HoleModel::bulge
-                 ? "the FE contact at each hole position, the hole as its bulge (contact/hole_dimple.hpp)"
+                 ? "the FE contact at each hole position, the hole as its bulge (contact/holes/dimple.hpp)"
                  : "a full FE contact solve per hole position, the hole cutting the hats",
              [&](int c) { return sweeps[c].varsigma; });
   add_signal("green_k_paper", "each position's FE tractions, Green rescaled by the paper's k", [&](int c) {
@@ -188,7 +188,7 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
   add_signal("first_order_hole", "eqs. (2)-(3) with the FE tractions and FE Green maps",
              [&](int c) { return first_order_hole(tractions(c, full[c]), fe, in.sensors, centers, S); });
   add_signal("small_hole",
-             "the hole as its penny-crack bulge in the intact FE contact (contact/small_hole.hpp)",
+             "the hole as its penny-crack bulge in the intact FE contact (contact/holes/small_hole.hpp)",
              [&](int c) {
                return contact::small_hole_signals(solver, kModes[c], *in.mesh, top, centers,
                                                   in.sweep.hole_diameter, in.E, in.nu);

@@ -15,12 +15,12 @@
 //     Green; paper_model        exact-layer pressure, Coulomb friction p_x = μ p_z uncoupled (whatever the
 //                        scene's law: it is the paper's model), Green rescaled by the paper's k.
 //   hole signals ς(u) (paper figs. 3–4):
-//     fe                 a full FE contact solve per hole position (contact/hole_sweep.hpp);
+//     fe                 a full FE contact solve per hole position (contact/holes/sweep.hpp);
 //     green_k_paper      each position's FE tractions convolved with the rescaled half-space;
 //     uncoupled          the frictionless FE sweep with the FE's traction added;
 //     first_order_hole   eqs. (2)–(3) with the FE hole-free tractions and the FE Green maps;
 //     small_hole         the hole as the penny-crack bulge it lets into it, in the intact FE contact
-//                        (contact/small_hole.hpp): the first-order formula with the right physics;
+//                        (contact/holes/small_hole.hpp): the first-order formula with the right physics;
 //     paper_model        eqs. (2)–(3), exact-layer pressure, uncoupled Coulomb, Green rescaled by the
 //                        paper's k.
 // Metrics of a signal against FE per sensor and component: amplitude ratio max|ς| / max|ς_FE|, peak shift
@@ -33,7 +33,7 @@
 #include <string>
 #include <vector>
 
-#include "skinfem/contact/hole_sweep.hpp"
+#include "skinfem/contact/holes/sweep.hpp"
 #include "skinfem/contact/meridian_contact.hpp"
 #include "skinfem/validation/paper_model.hpp"
 

@@ -8,7 +8,7 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "skinfem/contact/hole_sweep.hpp"
+#include "skinfem/contact/holes/sweep.hpp"
 #include "skinfem/contact/metrics.hpp"
 #include "skinfem/scene/laws.hpp"
 #include "skinfem/validation/crosscheck.hpp"
@@ -285,7 +285,7 @@ HypothesisResult run_hypothesis(const Hypothesis& h, const contact::CondensedCon
   out.contact_radius_mm = contact::contact_metrics(solver, mesh, top, sliding, base.center).contact_radius_mm;
   const FrictionMode modes[2] = {FrictionMode::static_residual, FrictionMode::coupled};
   const contact::HoleDimples dimples(solver, mesh, top, material.E, material.nu);
-  // The bulge is a hole's solution under a hard interface only (contact/hole_dimple.hpp): through a
+  // The bulge is a hole's solution under a hard interface only (contact/holes/dimple.hpp): through a
   // compliant one the hole is resolved, which needs the path's compliance in `condensed`.
   HoleSweep hyp_sweep = sweep;
   if (kind(h.load.interface.law).compliant) {

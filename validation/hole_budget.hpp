@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "skinfem/contact/contact_solver.hpp"
-#include "skinfem/contact/hole_sweep.hpp"
+#include "skinfem/contact/holes/sweep.hpp"
 #include "skinfem/fem/face_index.hpp"
 
 namespace skinfem::validation {

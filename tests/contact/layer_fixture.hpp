@@ -56,7 +56,7 @@ inline void condense_layer(CondensedLayer& x, Scene scene) {
   x.model = std::make_unique<ElasticModel>(x.mesh, s.material, s.geometry.side, std::vector<Punch>{});
   x.indenter = std::make_unique<contact::Indenter>(s, x.mesh);
   const auto zone = contact::mortar_zone(x.mesh, {0, 0}, s.contact->zone_radius);
-  // With a sweep, the nodes its hole can reach are condensed too (contact/hole_cut.hpp).
+  // With a sweep, the nodes its hole can reach are condensed too (contact/holes/cut.hpp).
   std::vector<int> faces;
   if (s.contact->sweep)
     faces = contact::watch_path(x.mesh, zone, s.contact->sweep->from, s.contact->sweep->to,

@@ -9,7 +9,7 @@
 #include <memory>
 
 #include "skinfem/contact/contact_solver.hpp"
-#include "skinfem/contact/hole_sweep.hpp"
+#include "skinfem/contact/holes/sweep.hpp"
 #include "skinfem/contact/layer_hertz.hpp"
 #include "skinfem/contact/layer_hertz_interface.hpp"
 #include "skinfem/contact/metrics.hpp"

@@ -16,7 +16,7 @@
 
 #include "layer_fixture.hpp"
 #include "skinfem/contact/contact_solver.hpp"
-#include "skinfem/contact/hole_cover.hpp"
+#include "skinfem/contact/holes/cover.hpp"
 #include "skinfem/fem/base_traction.hpp"
 #include "skinfem/green/fe_green.hpp"
 

@@ -351,7 +351,7 @@ TEST(ContactLcp, ExcludedMultipliersCarryNothingAndTheRestIsComplementary) {
   EXPECT_LE(diff / l_max, solve_tolerance(g.M, g.m, s.active, true));
 }
 
-// Bilateral multipliers (a small hole's bulge keeps the hole-free contact set, contact/hole_dimple.hpp):
+// Bilateral multipliers (a small hole's bulge keeps the hole-free contact set, contact/holes/dimple.hpp):
 // held at zero gap with a free sign, the rest complementary. A dimple that opens the gaps of a few central
 // multipliers by far more than their pressure closes makes them pull (λ < 0) instead of lifting off; the
 // answer is the principal system of the bilateral set solved directly (second method).

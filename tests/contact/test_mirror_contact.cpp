@@ -8,10 +8,10 @@
 #include <cstdio>
 
 #include "skinfem/contact/contact_solver.hpp"
-#include "skinfem/contact/hole_cover.hpp"
-#include "skinfem/contact/hole_sweep.hpp"
+#include "skinfem/contact/holes/cover.hpp"
+#include "skinfem/contact/holes/small_hole.hpp"
+#include "skinfem/contact/holes/sweep.hpp"
 #include "skinfem/contact/metrics.hpp"
-#include "skinfem/contact/small_hole.hpp"
 #include "skinfem/mesh/build.hpp"
 #include "skinfem/mesh/mirror.hpp"
 
@@ -45,7 +45,7 @@ struct Side {
   std::unique_ptr<CondensedContact> condensed;
 };
 
-// The sweep of the test below: its hole cuts the hats (contact/hole_cut.hpp), so its path is condensed too.
+// The sweep of the test below: its hole cuts the hats (contact/holes/cut.hpp), so its path is condensed too.
 HoleSweep test_sweep() {
   HoleSweep sweep;
   sweep.from = {-0.8, 0.0}, sweep.to = {1.8, 0.0}, sweep.positions = 9, sweep.hole_diameter = 0.4;

@@ -1,11 +1,11 @@
-// The share of each multiplier's hat under a hole (contact/hole_cover.hpp), on a flat top where the hats'
+// The share of each multiplier's hat under a hole (contact/holes/cover.hpp), on a flat top where the hats'
 // integrals are exact: the covered shares add up to the disc's area, hats inside the disc are covered
 // whole, and the shares move continuously with the disc.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "skinfem/contact/hole_cover.hpp"
+#include "skinfem/contact/holes/cover.hpp"
 #include "skinfem/mesh/build.hpp"
 
 namespace skinfem::contact {

@@ -1,4 +1,4 @@
-#include "skinfem/contact/hole_cover.hpp"
+#include "skinfem/contact/holes/cover.hpp"
 
 #include <algorithm>
 #include <cmath>

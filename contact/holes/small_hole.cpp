@@ -1,4 +1,4 @@
-#include "skinfem/contact/small_hole.hpp"
+#include "skinfem/contact/holes/small_hole.hpp"
 
 #include <Eigen/LU>
 #include <cmath>
@@ -41,7 +41,7 @@ Eigen::MatrixXd small_hole_signals(const ContactSolver& solver, FrictionMode mod
     whole_index[z.vertices[i]] = i;
   }
   // A shear strength τ is missing over the hole too: the nodal shear drops by S_d ψ_i(u) τ / ∫ψ_i (the
-  // hole's area lumped on the hats, contact/hole_cover.hpp), read directly through S_t and, where it acts
+  // hole's area lumped on the hats, contact/holes/cover.hpp), read directly through S_t and, where it acts
   // while the pressure is solved, through the gaps it opens, C_zt Δτ, on the kept zone.
   const bool shear = r.tau != 0;
   const bool shear_acting = shear && kind(mode).coupled;

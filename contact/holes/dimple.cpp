@@ -1,10 +1,10 @@
-#include "skinfem/contact/hole_dimple.hpp"
+#include "skinfem/contact/holes/dimple.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "skinfem/contact/hole_cover.hpp"
+#include "skinfem/contact/holes/cover.hpp"
 #include "skinfem/mesh/gauss_legendre.hpp"
 
 namespace skinfem::contact {

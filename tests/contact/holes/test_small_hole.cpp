@@ -17,10 +17,10 @@
 #include <cmath>
 #include <memory>
 
-#include "layer_fixture.hpp"
+#include "../layer_fixture.hpp"
 #include "skinfem/contact/contact_solver.hpp"
-#include "skinfem/contact/hole_dimple.hpp"
-#include "skinfem/contact/small_hole.hpp"
+#include "skinfem/contact/holes/dimple.hpp"
+#include "skinfem/contact/holes/small_hole.hpp"
 
 namespace skinfem::contact {
 namespace {
@@ -123,7 +123,7 @@ TEST(Hole, SignalScalesAsTheBulgeVolumeNotTheArea) {
   }
 }
 
-// The small-hole model (contact/small_hole.hpp: the crack's volume as a dimple in the intact contact)
+// The small-hole model (contact/holes/small_hole.hpp: the crack's volume as a dimple in the intact contact)
 // against the resolved holes: the signal per unit bulge volume, and the full prediction. The model's V is
 // the crack's, the FE's is 0.4 kHoleH/ε low at most (above), and the dimple stands for the bulge up to the
 // next multipole ((ε/d)² < 1 %): tolerance 0.4 kHoleH/ε + 2 %, against the model evaluated at the hole's
@@ -141,9 +141,9 @@ TEST(Hole, SmallHoleModelPredictsTheResolvedSignal) {
   }
 }
 
-// The bulge model (contact/hole_dimple.hpp: the crack's bulge as a dimple of the indenter, the hole-free
+// The bulge model (contact/holes/dimple.hpp: the crack's bulge as a dimple of the indenter, the hole-free
 // contact set kept) against the resolved holes, with the small-hole model's bound (0.4 kHoleH/ε + 2 %,
-// above), and against the small-hole model (contact/small_hole.hpp), which puts the same volume at the
+// above), and against the small-hole model (contact/holes/small_hole.hpp), which puts the same volume at the
 // hole's centre: both are the first term in the hole's volume, so their difference is the next one, the
 // bulge's spread (second moment 2ε²/5) seen through a kernel that varies over the sensor's distance d, of
 // order (ε/d)²: its observed order in ε over the three radii must be 2 (within 0.3, the radii's discrete

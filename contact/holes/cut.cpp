@@ -1,9 +1,9 @@
-#include "skinfem/contact/hole_cut.hpp"
+#include "skinfem/contact/holes/cut.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "skinfem/contact/hole_cover.hpp"
+#include "skinfem/contact/holes/cover.hpp"
 #include "skinfem/mesh/surface_quadrature.hpp"
 
 namespace skinfem::contact {

@@ -1,11 +1,11 @@
-#include "skinfem/contact/hole_sweep.hpp"
+#include "skinfem/contact/holes/sweep.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
-#include "skinfem/contact/hole_cover.hpp"
-#include "skinfem/contact/hole_cut.hpp"
+#include "skinfem/contact/holes/cover.hpp"
+#include "skinfem/contact/holes/cut.hpp"
 #include "skinfem/scene/parallel.hpp"
 
 namespace skinfem::contact {

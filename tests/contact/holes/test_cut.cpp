@@ -1,4 +1,4 @@
-// A hole that cuts the multipliers' hats on its exact disc (contact/hole_cut.hpp) on the paper's layer under
+// A hole that cuts the multipliers' hats on its exact disc (contact/holes/cut.hpp) on the paper's layer under
 // a sphere, against a second method and against what a cut must do:
 //   the cut matrices against full FE solves of the cut loads (the low-rank corrections' algebra);
 //   a hole outside the contact changes nothing; a hole far from every hat leaves the problem as it was;
@@ -9,10 +9,10 @@
 #include <cmath>
 #include <cstdio>
 
-#include "layer_fixture.hpp"
+#include "../layer_fixture.hpp"
 #include "skinfem/contact/contact_solver.hpp"
-#include "skinfem/contact/hole_cut.hpp"
-#include "skinfem/contact/hole_sweep.hpp"
+#include "skinfem/contact/holes/cut.hpp"
+#include "skinfem/contact/holes/sweep.hpp"
 #include "skinfem/fem/base_traction.hpp"
 
 namespace skinfem::contact {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "skinfem/contact/contact_solver.hpp"
-#include "skinfem/contact/hole_dimple.hpp"
+#include "skinfem/contact/holes/dimple.hpp"
 
 namespace skinfem::contact {
 
@@ -39,8 +39,8 @@ struct HoleCuts {
 };
 std::optional<HoleCuts> hole_cuts(const CondensedContact& condensed, const HoleSweep& sweep, double max_mb);
 
-// The hole per sweep.model: HoleModel::bulge through `dimples` (required then; contact/hole_dimple.hpp),
-// resolved by cutting the hats (needs solver.condensed().path, contact/hole_cut.hpp; without a path, by
+// The hole per sweep.model: HoleModel::bulge through `dimples` (required then; contact/holes/dimple.hpp),
+// resolved by cutting the hats (needs solver.condensed().path, contact/holes/cut.hpp; without a path, by
 // removing the multipliers whose vertex it holds). frame(i, result) is called after each position (to write
 // its pressure map, report progress). cuts: hole_cuts(solver.condensed(), sweep), or none (computed per
 // position). Throws std::invalid_argument for a bulge sweep without dimples.
