@@ -270,6 +270,81 @@ VectorXd shifted(const VectorXd& q, const VectorXd& shift) {
                                 " finite values, got " + std::to_string(shift.size()));
   return q + shift;
 }
+
+// The multipliers excluded (under a hole) and bilateral (held in contact), as flags over the n multipliers.
+struct Flags {
+  const std::vector<char>& excluded;
+  const std::vector<char>& bilateral;
+  bool is_excluded(int i) const { return !excluded.empty() && excluded[i] != 0; }
+  bool is_bilateral(int i) const { return !bilateral.empty() && bilateral[i] != 0 && !is_excluded(i); }
+};
+
+// The principal set to start from: the warm start's multipliers; cold, the rigid overlap (displacement
+// control) or the overlap of a local model (force control). Bilateral multipliers are always in.
+std::vector<char> starting_set(int n, const MatrixXd& M, const VectorXd& q, const VectorXd& m, bool force,
+                               double value, const std::vector<int>& warm, const Flags& flags) {
+  const auto is_excluded = [&](int i) { return flags.is_excluded(i); };
+  std::vector<char> in(n, 0);  // the current principal set S
+  int allowed = 0;
+  for (int i = 0; i < n; ++i) allowed += !is_excluded(i);
+  if (force && allowed == 0)
+    throw std::runtime_error(
+        "contact LCP: every multiplier is excluded (the hole covers the zone) at pivot 0");
+  for (int i : warm) {
+    if (i < 0 || i >= n)
+      throw std::invalid_argument("ContactLcp: warm-start index " + std::to_string(i) + " outside [0, " +
+                                  std::to_string(n) + ")");
+    if (!is_excluded(i)) in[i] = 1;
+  }
+  const bool cold = std::find(in.begin(), in.end(), 1) == in.end();
+  if (cold && !force) {  // the rigid overlap
+    for (int i = 0; i < n; ++i) in[i] = !is_excluded(i) && q[i] < value * m[i];
+  } else if (cold) {
+    // The overlap of the local model λ_i = (δ m_i − q_i)/M_ii, whose force Σ m_i λ_i over the overlap is
+    // piecewise linear in δ: exact in one pass over q_i/m_i ascending. Without M's coupling it is stiffer
+    // than M, so its overlap is usually smaller than the contact; the first exchanges grow it (n = 1521: 326
+    // → 1490 → … → 1006 in 7 exchanges, 3 of them dense).
+    std::vector<int> order;
+    for (int i = 0; i < n; ++i)
+      if (!is_excluded(i)) order.push_back(i);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return q[a] / m[a] < q[b] / m[b]; });
+    double sa = 0, sb = 0;  // Σ m_i²/M_ii, Σ m_i q_i/M_ii over the overlap
+    size_t k = 0;
+    for (; k < order.size(); ++k) {
+      const int i = order[k];
+      const double d = std::max(std::abs(M(i, i)), kEps);
+      if (k > 0 && (value + sb) / sa <= q[i] / m[i]) break;
+      sa += m[i] * m[i] / d;
+      sb += m[i] * q[i] / d;
+    }
+    for (size_t c = 0; c < std::max<size_t>(k, 1); ++c) in[order[c]] = 1;
+  }
+  for (int i = 0; i < n; ++i)
+    if (flags.is_bilateral(i)) in[i] = 1;
+  return in;
+}
+
+// The solution's active set and how well it meets the complementarity conditions (LcpSolution's fields).
+void judge(LcpSolution& s, const std::vector<char>& in, const Flags& flags, double q_scale, double m_max) {
+  const int n = static_cast<int>(in.size());
+  s.active.clear();
+  for (int i = 0; i < n; ++i)
+    if (in[i]) s.active.push_back(i);
+  double lambda_max = 0, product = 0;
+  s.min_lambda = 0;
+  s.min_gap = 0;
+  bool first = true;
+  for (int i = 0; i < n; ++i) {
+    if (flags.is_excluded(i) || flags.is_bilateral(i)) continue;
+    lambda_max = std::max(lambda_max, s.lambda[i]);
+    product = std::max(product, std::abs(s.lambda[i] * s.gap[i]));
+    s.min_lambda = first ? s.lambda[i] : std::min(s.min_lambda, s.lambda[i]);
+    s.min_gap = first ? s.gap[i] : std::min(s.min_gap, s.gap[i]);
+    first = false;
+  }
+  const double g_scale = q_scale + std::abs(s.delta) * m_max;
+  s.complementarity = lambda_max > 0 && g_scale > 0 ? product / (lambda_max * g_scale) : 0.0;
+}
 }  // namespace
 
 LcpSolution ContactLcp::solve_force(double F, const std::vector<char>& excluded, const std::vector<int>& warm,
@@ -339,46 +414,8 @@ LcpSolution ContactLcp::solve(bool force, double value, const std::vector<char>&
   if (!bilateral.empty() && static_cast<int>(bilateral.size()) != n)
     throw std::invalid_argument("ContactLcp: bilateral has " + std::to_string(bilateral.size()) +
                                 " flags for " + std::to_string(n) + " multipliers");
-  const auto is_excluded = [&](int i) { return !excluded.empty() && excluded[i] != 0; };
-  const auto is_bilateral = [&](int i) { return !bilateral.empty() && bilateral[i] != 0 && !is_excluded(i); };
-  std::vector<char> in(n, 0);  // the current principal set S
-  int allowed = 0;
-  for (int i = 0; i < n; ++i) allowed += !is_excluded(i);
-  if (force && allowed == 0)
-    throw std::runtime_error(
-        "contact LCP: every multiplier is excluded (the hole covers the zone) at pivot 0");
-  for (int i : warm) {
-    if (i < 0 || i >= n)
-      throw std::invalid_argument("ContactLcp: warm-start index " + std::to_string(i) + " outside [0, " +
-                                  std::to_string(n) + ")");
-    if (!is_excluded(i)) in[i] = 1;
-  }
-  const bool cold = std::find(in.begin(), in.end(), 1) == in.end();
-  if (cold && !force) {  // the rigid overlap
-    for (int i = 0; i < n; ++i) in[i] = !is_excluded(i) && q[i] < value * m[i];
-  } else if (cold) {
-    // The overlap of the local model λ_i = (δ m_i − q_i)/M_ii, whose force Σ m_i λ_i over the overlap is
-    // piecewise linear in δ: exact in one pass over q_i/m_i ascending. Without M's coupling it is stiffer
-    // than M, so its overlap is usually smaller than the contact; the first exchanges grow it (n = 1521: 326
-    // → 1490 → … → 1006 in 7 exchanges, 3 of them dense).
-    std::vector<int> order;
-    for (int i = 0; i < n; ++i)
-      if (!is_excluded(i)) order.push_back(i);
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return q[a] / m[a] < q[b] / m[b]; });
-    double sa = 0, sb = 0;  // Σ m_i²/M_ii, Σ m_i q_i/M_ii over the overlap
-    size_t k = 0;
-    for (; k < order.size(); ++k) {
-      const int i = order[k];
-      const double d = std::max(std::abs(M(i, i)), kEps);
-      if (k > 0 && (value + sb) / sa <= q[i] / m[i]) break;
-      sa += m[i] * m[i] / d;
-      sb += m[i] * q[i] / d;
-    }
-    for (size_t c = 0; c < std::max<size_t>(k, 1); ++c) in[order[c]] = 1;
-  }
-  for (int i = 0; i < n; ++i)
-    if (is_bilateral(i)) in[i] = 1;
-
+  const Flags flags{excluded, bilateral};
+  std::vector<char> in = starting_set(n, M, q, m, force, value, warm, flags);  // the current principal set S
   const System sys{M, q, m, sigma_, force, value, n};
   Principal principal(sys, ref_set_.empty() ? nullptr : &ref_set_, ref_set_.empty() ? nullptr : &Z_,
                       changed ? changed->dirty : nullptr);
@@ -433,7 +470,7 @@ LcpSolution ContactLcp::solve(bool force, double value, const std::vector<char>&
     const double tol_l = kFeasible * lambda_max, tol_g = kFeasible * g_scale;
     bad.clear();
     for (int i = 0; i < n; ++i) {
-      if (is_excluded(i) || is_bilateral(i)) continue;
+      if (flags.is_excluded(i) || flags.is_bilateral(i)) continue;
       if (in[i] ? s.lambda[i] < -tol_l : s.gap[i] < -tol_g) bad.push_back(i);
     }
     if (bad.empty()) break;
@@ -465,23 +502,7 @@ LcpSolution ContactLcp::solve(bool force, double value, const std::vector<char>&
                              " pivots (M is not a P-matrix, or is so far from positive definite that force "
                              "control loses uniqueness)");
 
-  s.active.clear();
-  for (int i = 0; i < n; ++i)
-    if (in[i]) s.active.push_back(i);
-  double lambda_max = 0, product = 0;
-  s.min_lambda = 0;
-  s.min_gap = 0;
-  bool first = true;
-  for (int i = 0; i < n; ++i) {
-    if (is_excluded(i) || is_bilateral(i)) continue;
-    lambda_max = std::max(lambda_max, s.lambda[i]);
-    product = std::max(product, std::abs(s.lambda[i] * s.gap[i]));
-    s.min_lambda = first ? s.lambda[i] : std::min(s.min_lambda, s.lambda[i]);
-    s.min_gap = first ? s.gap[i] : std::min(s.min_gap, s.gap[i]);
-    first = false;
-  }
-  const double g_scale = q_scale + std::abs(s.delta) * m_max;
-  s.complementarity = lambda_max > 0 && g_scale > 0 ? product / (lambda_max * g_scale) : 0.0;
+  judge(s, in, flags, q_scale, m_max);
   return s;
 }
 

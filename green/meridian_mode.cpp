@@ -54,64 +54,17 @@ namespace {
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
-}  // namespace
 
-MeridianMode::MeridianMode(const MeridianMesh& m, int mode, double nu, double mu, SideCondition side,
-                           std::vector<int> held, const std::vector<int>& compliance_nodes)
-    : mode_(mode),
-      nc_(mode == 0 ? 2 : 3),
-      n_(static_cast<int>(m.nodes.rows())),
-      nv_(m.num_vertices),
-      held_(std::move(held)) {
-  if (mode != 0 && mode != 1) throw std::invalid_argument("MeridianMode: mode must be 0 or 1");
-  auto clock = std::chrono::steady_clock::now();
-  const int nc = nc_, n = n_, ndof = nc * n + m.num_vertices;
-  const auto comp = [&](int node, int c) { return nc * node + c; };  // c: 0 U, then (mode 1) 1 V, last W
-  const int cW = nc - 1;
+// Mode `mode`'s element matrices over the meridian (the integral over θ done: `theta`), scattered by the
+// unknowns' numbering: the free block's lower triangle into MUMPS's coordinate arrays (it sums duplicates),
+// and the rows of constrained DOFs (right-hand sides of prescribed values, reactions) as triplets: no
+// assembled copy of the whole matrix.
+void assemble_mode(const MeridianMesh& m, int mode, double mu, double inv_lambda,
+                   const std::vector<int>& index, const std::vector<double>& sign, MumpsLdlt::Triplets& lower,
+                   std::vector<Eigen::Triplet<double>>& constrained) {
+  const int nc = mode == 0 ? 2 : 3, n = static_cast<int>(m.nodes.rows()), cW = nc - 1;
+  const auto comp = [&](int node, int c) { return nc * node + c; };
   const double theta = mode == 0 ? 2 * M_PI : M_PI;  // ∫ cos² nθ dθ
-  const double inv_lambda = nu >= 0.5 ? 0 : (1 - 2 * nu) / (2 * mu * nu);
-
-  // Constraints. Held nodes and a held side: every component. Axis: mode 0 U = 0; mode 1 W = 0, P = 0 and
-  // U + V = 0 (the displacement single-valued there), V tied to −U.
-  fixed_.assign(ndof, 0);
-  std::vector<int> tie(ndof, -1);
-  if (side == SideCondition::fixed)
-    for (int k : m.side)
-      for (int c = 0; c < nc; ++c) fixed_[comp(k, c)] = 1;
-  for (int k : held_)
-    for (int c = 0; c < nc; ++c) fixed_[comp(k, c)] = 1;
-  for (int k : m.axis) {
-    if (mode == 0) {
-      fixed_[comp(k, 0)] = 1;
-    } else {
-      fixed_[comp(k, cW)] = 1;
-      if (!fixed_[comp(k, 1)]) tie[comp(k, 1)] = comp(k, 0);
-      if (k < m.num_vertices) fixed_[nc * n + k] = 1;
-    }
-  }
-  index_.assign(ndof, -1);
-  std::vector<char> last(ndof, 0);  // the compliance nodes' free W unknowns, numbered after the others
-  for (int k : compliance_nodes)
-    if (!fixed_[comp(k, cW)] && tie[comp(k, cW)] < 0) last[comp(k, cW)] = 1;
-  for (int d = 0; d < ndof; ++d)
-    if (!fixed_[d] && tie[d] < 0 && !last[d]) index_[d] = free_++;
-  for (int k : compliance_nodes)
-    if (const int d = comp(k, cW); last[d])
-      index_[d] = free_++, ++schur_, last[d] = 0;  // once if listed twice
-  std::vector<int> schur_position;  // per compliance node: its W's position in the Schur block, −1 if held
-  for (int k : compliance_nodes) {
-    const int i = index_[comp(k, cW)];
-    schur_position.push_back(i >= free_ - schur_ ? i - (free_ - schur_) : -1);
-  }
-  sign_.assign(ndof, 1.0);
-  for (int d = 0; d < ndof; ++d)
-    if (tie[d] >= 0) index_[d] = index_[tie[d]], sign_[d] = -1;
-
-  // The free block's lower triangle straight into MUMPS's coordinate arrays (it sums duplicates), and the
-  // rows of constrained DOFs (right-hand sides of prescribed values, reactions) as triplets: no assembled
-  // copy of the whole matrix.
-  MumpsLdlt::Triplets lower;
-  std::vector<Eigen::Triplet<double>> constrained;
   const int nl = 6 * nc + 3;  // local DOFs: displacements node by node, then the 3 vertex pressures
   const size_t reserve = static_cast<size_t>(m.tris.rows()) * nl * (nl + 1) / 2;
   lower.row.reserve(reserve), lower.col.reserve(reserve), lower.value.reserve(reserve);
@@ -166,20 +119,76 @@ MeridianMode::MeridianMode(const MeridianMesh& m, int mode, double nu, double mu
       for (int c = 0; c < nc; ++c) g[nc * a + c] = comp(m.tris(e, a), c);
     for (int p = 0; p < 3; ++p) g[6 * nc + p] = nc * n + m.tris(e, p);
     for (int i = 0; i < nl; ++i) {
-      const int fi = index_[g[i]];
+      const int fi = index[g[i]];
       for (int j = 0; j < nl; ++j) {
         if (fi < 0) {
           constrained.emplace_back(g[i], g[j], A(i, j));
           continue;
         }
-        const int fj = index_[g[j]];
+        const int fj = index[g[j]];
         if (fj >= 0 && fi >= fj) {  // both (i, j) and (j, i) land here when fi == fj (a tied pair)
           lower.row.push_back(fi), lower.col.push_back(fj);
-          lower.value.push_back(sign_[g[i]] * sign_[g[j]] * A(i, j));
+          lower.value.push_back(sign[g[i]] * sign[g[j]] * A(i, j));
         }
       }
     }
   }
+}
+}  // namespace
+
+MeridianMode::MeridianMode(const MeridianMesh& m, int mode, double nu, double mu, SideCondition side,
+                           std::vector<int> held, const std::vector<int>& compliance_nodes)
+    : mode_(mode),
+      nc_(mode == 0 ? 2 : 3),
+      n_(static_cast<int>(m.nodes.rows())),
+      nv_(m.num_vertices),
+      held_(std::move(held)) {
+  if (mode != 0 && mode != 1) throw std::invalid_argument("MeridianMode: mode must be 0 or 1");
+  auto clock = std::chrono::steady_clock::now();
+  const int nc = nc_, n = n_, ndof = nc * n + m.num_vertices;
+  const auto comp = [&](int node, int c) { return nc * node + c; };  // c: 0 U, then (mode 1) 1 V, last W
+  const int cW = nc - 1;
+  const double inv_lambda = nu >= 0.5 ? 0 : (1 - 2 * nu) / (2 * mu * nu);
+
+  // Constraints. Held nodes and a held side: every component. Axis: mode 0 U = 0; mode 1 W = 0, P = 0 and
+  // U + V = 0 (the displacement single-valued there), V tied to −U.
+  fixed_.assign(ndof, 0);
+  std::vector<int> tie(ndof, -1);
+  if (side == SideCondition::fixed)
+    for (int k : m.side)
+      for (int c = 0; c < nc; ++c) fixed_[comp(k, c)] = 1;
+  for (int k : held_)
+    for (int c = 0; c < nc; ++c) fixed_[comp(k, c)] = 1;
+  for (int k : m.axis) {
+    if (mode == 0) {
+      fixed_[comp(k, 0)] = 1;
+    } else {
+      fixed_[comp(k, cW)] = 1;
+      if (!fixed_[comp(k, 1)]) tie[comp(k, 1)] = comp(k, 0);
+      if (k < m.num_vertices) fixed_[nc * n + k] = 1;
+    }
+  }
+  index_.assign(ndof, -1);
+  std::vector<char> last(ndof, 0);  // the compliance nodes' free W unknowns, numbered after the others
+  for (int k : compliance_nodes)
+    if (!fixed_[comp(k, cW)] && tie[comp(k, cW)] < 0) last[comp(k, cW)] = 1;
+  for (int d = 0; d < ndof; ++d)
+    if (!fixed_[d] && tie[d] < 0 && !last[d]) index_[d] = free_++;
+  for (int k : compliance_nodes)
+    if (const int d = comp(k, cW); last[d])
+      index_[d] = free_++, ++schur_, last[d] = 0;  // once if listed twice
+  std::vector<int> schur_position;  // per compliance node: its W's position in the Schur block, −1 if held
+  for (int k : compliance_nodes) {
+    const int i = index_[comp(k, cW)];
+    schur_position.push_back(i >= free_ - schur_ ? i - (free_ - schur_) : -1);
+  }
+  sign_.assign(ndof, 1.0);
+  for (int d = 0; d < ndof; ++d)
+    if (tie[d] >= 0) index_[d] = index_[tie[d]], sign_[d] = -1;
+
+  MumpsLdlt::Triplets lower;
+  std::vector<Eigen::Triplet<double>> constrained;
+  assemble_mode(m, mode, mu, inv_lambda, index_, sign_, lower, constrained);
   Kc_.resize(ndof, ndof);
   Kc_.setFromTriplets(constrained.begin(), constrained.end());
   cost_.assemble_s += seconds_since(clock);

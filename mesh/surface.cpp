@@ -334,6 +334,36 @@ void add_posts(SurfaceMesh& s, const std::vector<Circle>& posts, double height, 
     s.marker(t) = markers[t];
   }
 }
+// Appends the triangulation of a polygon of existing vertices in (x, z), counter-clockwise (an outward normal
+// −y), as faces of the cut y = 0 from face f on, dropping any rows past f; returns the new face count.
+int add_cut_polygon(SurfaceMesh& s, int f, const std::vector<int>& poly) {
+  std::vector<Vec2> xz;
+  for (int v : poly) xz.push_back({s.vertices(v, 0), s.vertices(v, 2)});
+  const RowMatrixX3i tris = triangulate_polygon(xz);
+  s.triangles.conservativeResize(f + tris.rows(), 3);
+  s.marker.conservativeResize(f + tris.rows());
+  for (int t = 0; t < tris.rows(); ++t) {
+    s.triangles.row(f + t) << poly[tris(t, 0)], poly[tris(t, 1)], poly[tris(t, 2)];
+    s.marker(f + t) = kSymmetry;
+  }
+  return f + static_cast<int>(tris.rows());
+}
+
+// Keeps only the vertices that the first f faces use, renumbered in their order.
+void drop_unused_vertices(SurfaceMesh& s, int f) {
+  std::vector<int> to(s.vertices.rows(), -1);
+  int n = 0;
+  for (int t = 0; t < f; ++t)
+    for (int c = 0; c < 3; ++c)
+      if (to[s.triangles(t, c)] < 0) to[s.triangles(t, c)] = 0;
+  RowMatrixX3d kept(s.vertices.rows(), 3);
+  for (int v = 0; v < s.vertices.rows(); ++v)
+    if (to[v] == 0) kept.row(n) = s.vertices.row(v), to[v] = n++;
+  s.vertices = kept.topRows(n);
+  for (int t = 0; t < f; ++t)
+    for (int c = 0; c < 3; ++c) s.triangles(t, c) = to[s.triangles(t, c)];
+}
+
 // The cut y = 0 of a half mesh with posts on it: whatever the other faces leave open there (base and top
 // along the cut, the side band's ends, each post's wall ends and the diameter of its top) is one polygon in
 // (x, z), meshed with no point added. triangulate_polygon's triangles are counter-clockwise in (x, z): an
@@ -362,47 +392,22 @@ void close_cut(SurfaceMesh& s) {
     poly.push_back(v);
   }
   if (poly.size() != next.size()) throw MeshError("a half mesh's cut y = 0 is not one polygon");
-  std::vector<Vec2> xz;
-  for (int v : poly) xz.push_back({s.vertices(v, 0), s.vertices(v, 2)});
-  const RowMatrixX3i tris = triangulate_polygon(xz);
-  const int f = s.triangles.rows();
-  s.triangles.conservativeResize(f + tris.rows(), 3);
-  s.marker.conservativeResize(f + tris.rows());
-  for (int t = 0; t < tris.rows(); ++t) {
-    s.triangles.row(f + t) << poly[tris(t, 0)], poly[tris(t, 1)], poly[tris(t, 2)];
-    s.marker(f + t) = kSymmetry;
-  }
+  add_cut_polygon(s, static_cast<int>(s.triangles.rows()), poly);
 }
-}  // namespace
-
-SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart part) {
-  const Geometry& geometry = scene.geometry;
-  const SkinShape shape(geometry);
-  const bool half = part == MeshPart::half_y;
-  const Vec2 centre =
-      geometry.kind == GeometryKind::cap ? Vec2{geometry.cap.apex_x, geometry.cap.apex_y} : Vec2{0, 0};
-  if (half && centre[1] != 0.0) throw MeshError("a half mesh (y >= 0) needs the skin's axis on y = 0");
+// The top's and the base's triangulations in the plane, their rims matched point for point (the side band
+// joins them). The base gets its own, coarser triangulation when contact regions grade with depth. The side
+// band needs both rims to be the same points; refinement splits rim chords differently on each face, so each
+// face is remeshed on the other's rim until they agree (else the base takes the top's triangulation).
+struct Faces {
+  Footprint top, base;
+  bool base_is_own = false;      // else base is the top's triangulation
+  std::vector<int> base_of_top;  // a half with posts: the base vertex of each top boundary position
+};
+Faces matched_faces(const SkinShape& shape, const std::vector<Vec2>& loop, const SizingField& size,
+                    const std::vector<Circle>& circles, const std::vector<Circle>& posts, bool half) {
   const Size2d top_size = [&](double x, double y) { return size(x, y); };
-  const double rim =
-      geometry.kind == GeometryKind::cap ? geometry.cap.truncation_radius : geometry.flat.half_width;
-  const auto loop =
-      geometry.kind == GeometryKind::cap
-          ? (half ? half_circle_loop(centre, rim, top_size) : circle_loop(centre, rim, top_size))
-          : (half ? half_square_loop(rim, top_size) : square_loop(rim, top_size));
-  // A half mesh keeps only the punch outlines wholly inside it: the commands that mesh a half (green, kfit)
-  // load no punch.
-  std::vector<Circle> circles;
-  for (const auto& p : scene.loads.punches)
-    if (!half || p.center[1] - 0.5 * p.diameter > 0) circles.push_back({p.center, 0.5 * p.diameter});
-  // Post sensors: the base follows their outlines, and each becomes a cavity in the skin (add_posts).
-  const std::vector<Circle> posts = post_circles(scene);
-  for (const Circle& c : posts)
-    if (half && c.centre[1] != 0.0) throw MeshError("a half mesh cuts only posts centred on y = 0");
   std::vector<Circle> outlines = circles;
   outlines.insert(outlines.end(), posts.begin(), posts.end());
-  // The base gets its own, coarser triangulation when contact regions grade with depth. The side band needs
-  // both rims to be the same points; refinement splits rim chords differently on each face, so each face
-  // is remeshed on the other's rim until they agree (else the base takes the top's triangulation).
   auto rim_of = [](const Footprint& fp) {
     std::vector<Vec2> rim;
     for (int b : fp.boundary) rim.push_back({fp.points(b, 0), fp.points(b, 1)});
@@ -421,7 +426,7 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
   std::optional<Footprint> own_base;
   // On a half with posts the base's cut is refined at the posts' ends; the top keeps its own cut points.
   const bool own_cuts = half && !posts.empty();
-  std::vector<int> base_of_top;  // own_cuts: the base vertex of each top boundary position
+  std::vector<int> base_of_top;
   // The base's rim with the top's own points on the cut instead of the base's.
   const auto rim_with_top_cut = [&](const Footprint& own, const Footprint& t) {
     std::vector<std::pair<double, double>> cut;
@@ -452,7 +457,37 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
   if (!own_base && top_outlines.size() != outlines.size())
     top = face_footprint(shape, rim_of(top), top_size, outlines, half);
   const bool base_is_own = own_base.has_value();
-  const Footprint base = own_base ? std::move(*own_base) : top;
+  Footprint base = own_base ? std::move(*own_base) : top;
+  return {std::move(top), std::move(base), base_is_own, std::move(base_of_top)};
+}
+}  // namespace
+
+SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart part) {
+  const Geometry& geometry = scene.geometry;
+  const SkinShape shape(geometry);
+  const bool half = part == MeshPart::half_y;
+  const Vec2 centre =
+      geometry.kind == GeometryKind::cap ? Vec2{geometry.cap.apex_x, geometry.cap.apex_y} : Vec2{0, 0};
+  if (half && centre[1] != 0.0) throw MeshError("a half mesh (y >= 0) needs the skin's axis on y = 0");
+  const Size2d top_size = [&](double x, double y) { return size(x, y); };
+  const double rim =
+      geometry.kind == GeometryKind::cap ? geometry.cap.truncation_radius : geometry.flat.half_width;
+  const auto loop =
+      geometry.kind == GeometryKind::cap
+          ? (half ? half_circle_loop(centre, rim, top_size) : circle_loop(centre, rim, top_size))
+          : (half ? half_square_loop(rim, top_size) : square_loop(rim, top_size));
+  // A half mesh keeps only the punch outlines wholly inside it: the commands that mesh a half (green, kfit)
+  // load no punch.
+  std::vector<Circle> circles;
+  for (const auto& p : scene.loads.punches)
+    if (!half || p.center[1] - 0.5 * p.diameter > 0) circles.push_back({p.center, 0.5 * p.diameter});
+  // Post sensors: the base follows their outlines, and each becomes a cavity in the skin (add_posts).
+  const std::vector<Circle> posts = post_circles(scene);
+  for (const Circle& c : posts)
+    if (half && c.centre[1] != 0.0) throw MeshError("a half mesh cuts only posts centred on y = 0");
+  const Faces faces = matched_faces(shape, loop, size, circles, posts, half);
+  const Footprint &top = faces.top, &base = faces.base;
+  const bool own_cuts = half && !posts.empty();
   const int nvb = base.points.rows(), nvt = top.points.rows(), nb = static_cast<int>(top.boundary.size());
 
   // Side band: as many layers as the rim's sizing asks for, at least one.
@@ -472,7 +507,7 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
   }
   // vertex of boundary position k on side layer j (0 = base, layers = top)
   auto side_vertex = [&](int k, int j) {
-    if (j == 0) return own_cuts && base_is_own ? base_of_top[k % nb] : base.boundary[k % nb];
+    if (j == 0) return own_cuts && faces.base_is_own ? faces.base_of_top[k % nb] : base.boundary[k % nb];
     if (j == layers) return nvb + top.boundary[k % nb];
     return nvb + nvt + (j - 1) * nb + k % nb;
   };
@@ -525,27 +560,8 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
     for (int j = 1; j < layers; ++j) poly.push_back(side_vertex(cut.back(), j));
     for (auto it = cut.rbegin(); it != cut.rend(); ++it) poly.push_back(side_vertex(*it, layers));
     for (int j = layers - 1; j >= 1; --j) poly.push_back(side_vertex(cut.front(), j));
-    std::vector<Vec2> xz;
-    for (int v : poly) xz.push_back({s.vertices(v, 0), s.vertices(v, 2)});
-    const RowMatrixX3i tris = triangulate_polygon(xz);
-    s.triangles.conservativeResize(f + tris.rows(), 3);
-    s.marker.conservativeResize(f + tris.rows());
-    for (int t = 0; t < tris.rows(); ++t) {
-      s.triangles.row(f) << poly[tris(t, 0)], poly[tris(t, 1)], poly[tris(t, 2)];
-      s.marker(f++) = kSymmetry;
-    }
-    // Side-band points above the cut's inner points belong to no face: drop them.
-    std::vector<int> to(s.vertices.rows(), -1);
-    int n = 0;
-    for (int t = 0; t < f; ++t)
-      for (int c = 0; c < 3; ++c)
-        if (to[s.triangles(t, c)] < 0) to[s.triangles(t, c)] = 0;
-    RowMatrixX3d kept(s.vertices.rows(), 3);
-    for (int v = 0; v < s.vertices.rows(); ++v)
-      if (to[v] == 0) kept.row(n) = s.vertices.row(v), to[v] = n++;
-    s.vertices = kept.topRows(n);
-    for (int t = 0; t < f; ++t)
-      for (int c = 0; c < 3; ++c) s.triangles(t, c) = to[s.triangles(t, c)];
+    f = add_cut_polygon(s, f, poly);
+    drop_unused_vertices(s, f);  // side-band points above the cut's inner points belong to no face
   }
   s.triangles.conservativeResize(f, 3);
   s.marker.conservativeResize(f);
