@@ -124,7 +124,7 @@ void BM_MeridianGreen(benchmark::State& st) {
     const MeridianMesh m =
         meridian_mesh([&](double) { return h; }, 20 * h, MeridianSizes::for_thickness(h, s));
     mesh_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const MeridianGreen g(m, 0.5, SideCondition::free, ReadingSite{{0, 0}, 0.2});
+    const MeridianGreen g(m, 0.5, SideCondition::free, disc_site({0, 0}, 0.2));
     n = g.dofs();
     cost = g.cost();
   }

@@ -6,12 +6,28 @@
 
 namespace skinfem {
 
+ReadingSite disc_site(Vec2 center, double diameter) {
+  ReadingSite s;
+  s.center = center, s.diameter = diameter;
+  return s;
+}
+
+ReadingSite post_site(Vec2 center, double diameter, double height, MembraneSprings support) {
+  if (!(diameter > 0) || !(height > 0))
+    throw std::invalid_argument("post_site: a post needs a diameter and a height > 0, got " +
+                                std::to_string(diameter) + " and " + std::to_string(height) + " mm");
+  ReadingSite s;
+  s.model = SensorModel::post;
+  s.center = center, s.diameter = diameter, s.post_height = height, s.support = support;
+  return s;
+}
+
 std::vector<ReadingSite> reading_sites(const Sensors& sensors, bool point) {
   std::vector<ReadingSite> sites;
   for (const Vec2& p : sensors.positions)
     sites.push_back(sensors.model == SensorModel::post
-                        ? ReadingSite{p, sensors.post.diameter, sensors.post.height, sensors.post.support}
-                        : ReadingSite{p, point ? 0.0 : sensors.disc_diameter, 0.0});
+                        ? post_site(p, sensors.post.diameter, sensors.post.height, sensors.post.support)
+                        : disc_site(p, point ? 0.0 : sensors.disc_diameter));
   return sites;
 }
 

@@ -26,12 +26,13 @@
 namespace skinfem {
 
 struct ReadingSite {
-  Vec2 center{0, 0};       // mm, on the base
+  SensorModel model = SensorModel::disc;  // a disc of the base, or a post standing on it
+  Vec2 center{0, 0};                      // mm, on the base
   double diameter = 0;     // mm: the disc the traction is averaged over (0 reads the value at the centre), or
                            // the post's
-  double post_height = 0;  // mm; > 0: a post of this height (the mesh must have it), else a disc
+  double post_height = 0;  // mm, a post's (the mesh must have it)
   MembraneSprings support{};  // a post's: rigid, or the springs its gauges read (see SensorReadings)
-  bool post() const { return post_height > 0; }
+  bool post() const { return model == SensorModel::post; }
   // Traits. The reading is unchanged by rotations about the vertical axis through its centre, so on a body
   // of revolution about that axis σ_z is a mode-0 and σ_x a mode-1 meridian problem.
   bool axisymmetric() const { return true; }
@@ -39,6 +40,11 @@ struct ReadingSite {
   // y = 0 is its own image (pipeline/symmetry.hpp solves such scenes on the half y ≥ 0).
   bool on_mirror_plane() const { return center[1] == 0; }
 };
+
+// A disc of the base (diameter 0: the value at its centre). A post of height > 0 and diameter > 0
+// (std::invalid_argument otherwise): a post of no height is the disc under its outline, disc_site's.
+ReadingSite disc_site(Vec2 center, double diameter);
+ReadingSite post_site(Vec2 center, double diameter, double height, MembraneSprings support = {});
 
 // The sites of a scene's sensors, in their order; point: each disc sensor's centre value instead of its disc
 // (a post has no centre value: its site is the post either way).

@@ -14,8 +14,8 @@
 // base reactions) with w = M⁻¹ b (M the base trace's mass matrix, weight 2πr): b_i = ∫_disc φ_i dA / (πa²)
 // for a disc mean; imposing the base displacement −w (along z) with no load gives, at each top node, the
 // reading per unit force there. The point value at the axis is the limit of disc means, extrapolated from
-// two small discs (a = h/40, h/20; meridian.cpp, disc_weights): the trace's own axis value, b = e_axis,
-// converges as a point value does, 20-40x less accurately.
+// two small discs (a = h/40, h/20; meridian_reading.cpp, disc_weights): the trace's own axis value, b =
+// e_axis, converges as a point value does, 20-40x less accurately.
 #pragma once
 
 #include <Eigen/Dense>

@@ -25,7 +25,8 @@ double relative_change(double fine, double coarse) {
 
 SensorDesign design(const MeridianSkin& skin, double nu, double diameter, double height, double scale,
                     int* dofs = nullptr) {
-  const ReadingSite site{{0, 0}, diameter, height};
+  // A post of no height is the base under its outline: the disc.
+  const ReadingSite site = height > 0 ? post_site({0, 0}, diameter, height) : disc_site({0, 0}, diameter);
   const MeridianGreen fine(skin.mesh(site, scale), nu, skin.side, site),
       coarse(skin.mesh(site, 2 * scale), nu, skin.side, site);
   if (dofs) *dofs = fine.dofs();

@@ -145,7 +145,7 @@ SensorGains sensor_gains(const Sensors& sensors, double nu, double h, double sca
     return g;
   }
   Stopwatch clock;
-  const ReadingSite post{{0, 0}, sensors.post.diameter, sensors.post.height};
+  const ReadingSite post = post_site({0, 0}, sensors.post.diameter, sensors.post.height);
   const auto at = [&](double s) {
     const MeridianSizes sizes = MeridianSizes::for_thickness(h, s);
     // The rim's cells at their default (green/meridian.hpp), or finer on a post too short or thin for it,

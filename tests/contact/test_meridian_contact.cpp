@@ -113,7 +113,7 @@ TEST(MeridianContact, ReadingsAreTheExactLayersGreenTensorAgainstTheExactPressur
   const double b = 0.1;  // disc radius, mm
   const green::LayerGreen G(kH, 0.5, green::LayerLoad::point, 0, {}, b);
   std::vector<ReadingSite> sites;
-  for (double x : {0.0, 1.5, 2.5, 3.5, 4.5}) sites.push_back(ReadingSite{{x, 0}, 2 * b});
+  for (double x : {0.0, 1.5, 2.5, 3.5, 4.5}) sites.push_back(disc_site({x, 0}, 2 * b));
   // The exact readings: polar Gauss over the contact disc, r = a sin t (p ~ √(a − r) made smooth).
   const GaussRule1d gr = gauss_legendre01(48), ga = gauss_legendre01(96);
   Eigen::MatrixXd exact = Eigen::MatrixXd::Zero(4, sites.size());  // σ_z, σ_x; per ratio σ_z, σ_x

@@ -85,7 +85,7 @@ TEST(SensorReading, WeightBlockLayout) {
     EXPECT_EQ((W.col(2 * k) - readings.weights(k, 'z')).norm(), 0.0);
     EXPECT_EQ((W.col(2 * k + 1) - readings.weights(k, 'x')).norm(), 0.0);
   }
-  EXPECT_THROW(SensorReadings(layer(), {ReadingSite{{2.95, 0}, 0.2}}).weights(0, 'z'), std::out_of_range);
+  EXPECT_THROW(SensorReadings(layer(), {disc_site({2.95, 0}, 0.2)}).weights(0, 'z'), std::out_of_range);
 }
 
 }  // namespace

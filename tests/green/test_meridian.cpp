@@ -58,7 +58,7 @@ TEST(MeridianGreen, FlatLayerConvergesToTheExactLayer) {
   for (double scale : {2.0, 1.41, 1.0}) {
     const MeridianMesh m =
         meridian_mesh([](double) { return h; }, 60.0, MeridianSizes::for_thickness(h, scale));
-    const MeridianGreen g(m, 0.5, SideCondition::free, ReadingSite{{0, 0}, 2 * b});
+    const MeridianGreen g(m, 0.5, SideCondition::free, disc_site({0, 0}, 2 * b));
     err_offsets = 0;
     for (double x : {1.0, 2.0, 4.0})
       err_offsets = std::max(err_offsets, std::abs(punch_reading(g, x) / punch.at(x, 0).zz - 1));
@@ -87,7 +87,7 @@ TEST(MeridianGreen, FlatLayerConvergesToTheExactLayer) {
   std::printf("observed order: point map mode 0 %.2f, mode 1 %.2f; disc map %.2f\n", order0, order1,
               order_disc);
   // Measured (scale 2, 1.41, 1; 12k, 24k, 47k DOFs), the point value as the limit of two disc means
-  // (meridian.cpp, disc_weights): mode 0 (zz, xz) 1.4e-3, 5.9e-4, 2.0e-4 of peak (order 2.8); mode 1 (zx, xx)
+  // (meridian_reading.cpp, disc_weights): mode 0 (zz, xz) 1.4e-3, 5.9e-4, 2.0e-4 of peak (order 2.8); mode 1 (zx, xx)
   // 2.2e-3, 9.1e-4, 2.3e-4 (order 3.2); the disc map 1.6e-3, 6.9e-4, 2.5e-4 (order 2.7); the punch reading at
   // 0, which gives k_central, 1.5e-4, 6.3e-6, 2.4e-6, at 1, 2, 4 mm, where g is smaller, 1.1e-2, 3.8e-4,
   // 1.4e-4 relative. The axis value of the projected trace itself (b = e_axis) gave mode 1 2.2e-2, 9.7e-3,
@@ -194,7 +194,7 @@ TEST(MeridianGreen, CapApexAgreesWithThe3DSolver) {
 TEST(MeridianGreen, MapShapesOfADiscAreTheExactLayers) {
   constexpr double h = 3.04, b = 0.1;
   const MeridianGreen g(meridian_mesh([](double) { return h; }, 60.0, MeridianSizes::for_thickness(h)), 0.5,
-                        SideCondition::free, ReadingSite{{0, 0}, 2 * b});
+                        SideCondition::free, disc_site({0, 0}, 2 * b));
   const green::LayerGreen exact(h, 0.5, green::LayerLoad::point, 0, {}, b);
   const MeridianGreen::Shape zz = g.shape_zz(), xx = g.shape_xx();
   EXPECT_NEAR(zz.integral, 1.0, 1e-3);
@@ -229,7 +229,7 @@ MeridianGreen post_green(const std::function<double(double)>& top, double radius
                          double height = kPostH, double diameter = kPostD) {
   const MeridianMesh m = meridian_mesh(top, radius, MeridianSizes::for_thickness(h, scale),
                                        MeridianPost{0.5 * diameter, height});
-  return MeridianGreen(m, 0.5, SideCondition::free, ReadingSite{{0, 0}, diameter, height});
+  return MeridianGreen(m, 0.5, SideCondition::free, post_site({0, 0}, diameter, height));
 }
 
 // Largest difference over every component at the offsets, over each component's largest reference value.
@@ -274,13 +274,13 @@ TEST(MeridianGreen, ShortPostsTendToTheDiscOnTheMeridian) {
   constexpr double h = 3.04;
   const auto top = [](double) { return h; };
   const MeridianGreen disc(meridian_mesh(top, 60, MeridianSizes::for_thickness(h, 0.5)), 0.5,
-                           SideCondition::free, ReadingSite{{0, 0}, kPostD});
+                           SideCondition::free, disc_site({0, 0}, kPostD));
   const std::vector<double> heights = {0.2, 0.1, 0.05, 0.025};
   std::vector<double> gap_z, gap_x;
   for (double t : heights) {
     const MeridianMesh m = meridian_mesh(top, 60, MeridianSizes::for_thickness(h),
                                          MeridianPost{0.5 * kPostD, t, std::min(t, 0.05) / 16});
-    const MeridianGreen g(m, 0.5, SideCondition::free, ReadingSite{{0, 0}, kPostD, t});
+    const MeridianGreen g(m, 0.5, SideCondition::free, post_site({0, 0}, kPostD, t));
     const green::GreenSample p = punch_readings(g, 0.5),
                              d = disc.at(true, 0.5, 0, green::LayerLoad::punch, kA);
     gap_z.push_back(std::abs(p.zz - d.zz) / std::abs(d.zz));

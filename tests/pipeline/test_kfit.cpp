@@ -48,7 +48,7 @@ TEST(SensorGains, APostReadsAUniformPressureExactlyAndConcentratesAShear) {
     const MeridianGreen g(m, 0.5, SideCondition::free, site);
     return std::make_pair(g.shape_zz().integral, g.shape_xx().integral);
   };
-  const ReadingSite post{{0, 0}, kPostD, 0.4}, disc{{0, 0}, kPostD};
+  const ReadingSite post = post_site({0, 0}, kPostD, 0.4), disc = disc_site({0, 0}, kPostD);
   const auto [pz, px] = integrals(2, post);
   const auto [pz4, px4] = integrals(4, post);
   const auto [dz, dx] = integrals(2, disc);
@@ -79,7 +79,7 @@ TEST(PostK, TendsToTheDiscsAsThePostVanishes) {
   // The disc's k at scale 1 and 2: their change is the mesh error the limit is reached within.
   const auto disc_k = [&](double scale) {
     const MeridianGreen disc(meridian_mesh(top, 20 * kH, MeridianSizes::for_thickness(kH, scale)), 0.5,
-                             SideCondition::free, ReadingSite{{0, 0}, kPostD});
+                             SideCondition::free, disc_site({0, 0}, kPostD));
     const green::ScanProfile dp = scan(disc);
     return green::fit_profile(dp.offset_x, dp.point, kH);
   };
@@ -94,7 +94,7 @@ TEST(PostK, TendsToTheDiscsAsThePostVanishes) {
   for (double t : heights) {
     const MeridianMesh m = meridian_mesh(top, 20 * kH, MeridianSizes::for_thickness(kH),
                                          MeridianPost{0.5 * kPostD, t, std::min(t, 0.05) / 16});
-    const MeridianGreen g(m, 0.5, SideCondition::free, ReadingSite{{0, 0}, kPostD, t});
+    const MeridianGreen g(m, 0.5, SideCondition::free, post_site({0, 0}, kPostD, t));
     const green::ScanProfile pp = scan(g);
     const SensorGains gains = sensor_gains(post_of_height(t), 0.5, kH);
     const std::vector<double> post = all_k(green::fit_profile(pp.offset_x, pp.point, kH, gains.gains));
