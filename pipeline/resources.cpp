@@ -15,6 +15,8 @@ double estimated_memory_gb(double dofs) { return 19e3 * dofs * std::max(1.0, std
 
 double available_memory_gb() { return available_memory_mb() / 1024; }
 
+namespace {
+// The DOFs a scene may reach: max_dofs when given, and no more than the available memory holds.
 double dof_limit(double max_dofs) {
   double limit = max_dofs > 0 ? max_dofs : 1e12;
   const double avail = available_memory_gb();
@@ -23,6 +25,7 @@ double dof_limit(double max_dofs) {
       if (estimated_memory_gb(d) > avail) return std::min(limit, d);
   return limit;
 }
+}  // namespace
 
 double max_tets_allowed(double max_dofs) { return dof_limit(max_dofs) / kDofsPerTet; }
 

@@ -9,9 +9,9 @@
 
 namespace skinfem::pipeline {
 
-// Memory the chain needs per DOF, GB: 19 kB per DOF at 188k DOFs (the default scene's whole-skin report,
-// before mirror symmetry), growing as DOFs^(1/3) beyond (the factor's fill in 3D). Conservative today: the
-// default report on its half peaks at 1.13 GB for 88.9k DOFs, 12.7 kB per DOF.
+// Memory the chain needs per DOF, GB: 19 kB per DOF (measured at 188k DOFs, the default scene's whole-skin
+// report before mirror symmetry) up to 200k DOFs, growing as DOFs^(1/3) beyond (the factor's fill in 3D).
+// Conservative today: the default report on its half peaks at 1.13 GB for 88.9k DOFs, 12.7 kB per DOF.
 double estimated_memory_gb(double dofs);
 // MemAvailable of /proc/meminfo, GB (0 if unknown).
 double available_memory_gb();

@@ -1,4 +1,5 @@
-// What a result file says of its scene: name, source file, material, number of sensors.
+// What a result file says of its scene: name, source file, material, number of sensors, and for post
+// sensors their diameter and height (post_sensors).
 #pragma once
 
 #include <nlohmann/json.hpp>
