@@ -87,12 +87,13 @@ TEST(MeridianGreen, FlatLayerConvergesToTheExactLayer) {
   std::printf("observed order: point map mode 0 %.2f, mode 1 %.2f; disc map %.2f\n", order0, order1,
               order_disc);
   // Measured (scale 2, 1.41, 1; 12k, 24k, 47k DOFs), the point value as the limit of two disc means
-  // (meridian_reading.cpp, disc_weights): mode 0 (zz, xz) 1.4e-3, 5.9e-4, 2.0e-4 of peak (order 2.8); mode 1 (zx, xx)
-  // 2.2e-3, 9.1e-4, 2.3e-4 (order 3.2); the disc map 1.6e-3, 6.9e-4, 2.5e-4 (order 2.7); the punch reading at
-  // 0, which gives k_central, 1.5e-4, 6.3e-6, 2.4e-6, at 1, 2, 4 mm, where g is smaller, 1.1e-2, 3.8e-4,
-  // 1.4e-4 relative. The axis value of the projected trace itself (b = e_axis) gave mode 1 2.2e-2, 9.7e-3,
-  // 4.8e-3 (order 2.2) and the punch at 0 7.9e-4, 1.7e-4, 1.1e-5. Bounds: the finest level from the middle
-  // one at the observed orders, with room; the extrapolation's own remainder is 3e-6 (disc_weights).
+  // (meridian_reading.cpp, disc_weights): mode 0 (zz, xz) 1.4e-3, 5.9e-4, 2.0e-4 of peak (order 2.8); mode 1
+  // (zx, xx) 2.2e-3, 9.1e-4, 2.3e-4 (order 3.2); the disc map 1.6e-3, 6.9e-4, 2.5e-4 (order 2.7); the punch
+  // reading at 0, which gives k_central, 1.5e-4, 6.3e-6, 2.4e-6, at 1, 2, 4 mm, where g is
+  // smaller, 1.1e-2, 3.8e-4, 1.4e-4 relative. The axis value of the projected trace itself (b = e_axis) gave
+  // mode 1 2.2e-2, 9.7e-3, 4.8e-3 (order 2.2) and the punch at 0 7.9e-4, 1.7e-4, 1.1e-5. Bounds: the finest
+  // level from the middle one at the observed orders, with room; the extrapolation's own remainder is 3e-6
+  // (disc_weights).
   EXPECT_GT(order0, 2.5);
   EXPECT_GT(order1, 2.5);
   EXPECT_GT(order_disc, 2);
