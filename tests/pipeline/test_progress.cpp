@@ -6,20 +6,13 @@
 #include <string>
 #include <vector>
 
+#include "../common/progress_lines.hpp"
 #include "skinfem/pipeline/progress.hpp"
 
 namespace skinfem::pipeline {
 namespace {
 
-// Installs a sink collecting the lines for one test, and puts back whatever was there before.
-struct Collect {
-  Collect() : previous(set_progress_sink([this](const std::string& m) { lines.push_back(m); })) {}
-  ~Collect() { set_progress_sink(previous); }
-  Collect(const Collect&) = delete;
-  Collect& operator=(const Collect&) = delete;
-  std::vector<std::string> lines;
-  ProgressSink previous;
-};
+using Collect = testing::ProgressLines;
 
 TEST(Progress, ASinkReceivesEveryLineAsGiven) {
   Collect c;
@@ -45,12 +38,12 @@ TEST(Progress, SettingASinkReturnsThePreviousOne) {
 
 TEST(Progress, WithoutASinkNothingIsWritten) {
   const ProgressSink previous = set_progress_sink(nullptr);
-  testing::internal::CaptureStdout();
-  testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStderr();
   progress("meshing flat_layer");
   progress_step("factor", 1, 2, 0.5);
-  const std::string out = testing::internal::GetCapturedStdout();
-  const std::string err = testing::internal::GetCapturedStderr();
+  const std::string out = ::testing::internal::GetCapturedStdout();
+  const std::string err = ::testing::internal::GetCapturedStderr();
   EXPECT_EQ(out, "");
   EXPECT_EQ(err, "");
   // A null sink is silent too, and setting it hands back the one it replaces (here: none).

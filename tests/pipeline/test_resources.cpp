@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/progress_lines.hpp"
 #include "skinfem/mesh/size_estimate.hpp"
 #include "skinfem/pipeline/progress.hpp"
 #include "skinfem/pipeline/resources.hpp"
@@ -21,15 +22,7 @@
 namespace skinfem::pipeline {
 namespace {
 
-// Installs a sink collecting the progress lines for one test, and puts back whatever was there before.
-struct Collect {
-  Collect() : previous(set_progress_sink([this](const std::string& m) { lines.push_back(m); })) {}
-  ~Collect() { set_progress_sink(previous); }
-  Collect(const Collect&) = delete;
-  Collect& operator=(const Collect&) = delete;
-  std::vector<std::string> lines;
-  ProgressSink previous;
-};
+using Collect = testing::ProgressLines;
 
 bool names(const std::string& line, const std::string& what) { return line.find(what) != std::string::npos; }
 
