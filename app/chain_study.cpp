@@ -15,21 +15,9 @@ nlohmann::json write_chain_study(const Scene& scene, const std::vector<ChainLeve
   std::ostringstream csv;
   csv.precision(10);
   csv << "stage,level,dofs,seconds,error\n";
-  nlohmann::json extrap, jlevels = nlohmann::json::array();
-  for (const ChainLevel& c : levels) {
-    nlohmann::json jl = {
-        {"scale", c.scale}, {"dofs", c.dofs}, {"wall_s", c.wall}, {"peak_rss_mb", c.peak_rss_mb}};
-    for (size_t i = 0; i < c.names.size(); ++i) jl["values"][c.names[i]] = c.value[i];
-    if (!c.note.empty()) jl["note"] = c.note;
-    jlevels.push_back(jl);
-  }
   const auto errors = chain_errors(levels);
   for (size_t i = 0; i < errors.size(); ++i) {
     const ChainError& e = errors[i];
-    extrap[e.name] = {
-        {"observed_order", e.asymptotic ? nlohmann::json(e.order) : nlohmann::json("none: " + e.why_not)},
-        {"reference", e.reference},
-        {"reference_is", e.asymptotic ? "Richardson limit" : "finest level"}};
     std::printf("%s: %s, reference %.6g; errors", e.name.c_str(),
                 e.asymptotic
                     ? ("observed order " + std::to_string(e.order)).c_str()
@@ -50,11 +38,7 @@ nlohmann::json write_chain_study(const Scene& scene, const std::vector<ChainLeve
   std::printf("\n");
   prepare_output_dir(out_dir);
   write_text_atomic(out_dir + "/chain_study.csv", csv.str());
-  const nlohmann::json study = {{"scene", scene_json(scene)},
-                                {"levels", jlevels},
-                                {"extrapolation", extrap},
-                                {"time_vs_dofs_exponent", exponents},
-                                {"peak_rss_mb", peak_rss_mb()}};
+  const nlohmann::json study = chain_study_json(scene, levels);
   write_json(out_dir + "/chain_study.json", study);
   std::printf("  wrote %s/chain_study.csv, chain_study.json\n", out_dir.c_str());
   return study;

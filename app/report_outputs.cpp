@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "app/common.hpp"
-#include "skinfem/green/kfit.hpp"
+#include "skinfem/pipeline/kfit.hpp"
 #include "skinfem/validation/text.hpp"
 
 namespace skinfem::app {
@@ -55,31 +55,6 @@ void write_crosscheck(const validation::Crosscheck& x, const Sensors& sensors, c
   write_text_atomic(dir + "/attribution.csv", a.str());
 }
 
-nlohmann::json front_sensor_json(const validation::FrontSensorAnswer& a) {
-  nlohmann::json j;
-  std::string front;
-  for (const int k : a.front) front += (front.empty() ? "#" : ", #") + std::to_string(k + 1);
-  j["front_sensors"] = front;
-  if (!a.front.empty()) {
-    j["coupling_amplitude_factor_z"] = {a.coupling_lo[0], a.coupling_hi[0]};
-    j["coupling_amplitude_factor_x"] = {a.coupling_lo[1], a.coupling_hi[1]};
-  }
-  if (a.model_lo) {
-    j["fe_over_paper_model_amplitude_z"] = {(*a.model_lo)[0], (*a.model_hi)[0]};
-    j["fe_over_paper_model_amplitude_x"] = {(*a.model_lo)[1], (*a.model_hi)[1]};
-  }
-  j["answer"] = a.answer;
-  return j;
-}
-
-validation::KTargetAnswer k_paper_sweep(const Scene& scene, double h) {
-  validation::KProtocol base;
-  base.h = h;
-  base.nu = scene.material.nu;
-  base.punch_diameter = scene.calibration.punch_diameter;
-  return validation::k_target_answer(base, green::kPaperK);
-}
-
 void write_k_paper_answer(validation::KTargetAnswer& a, const std::vector<validation::KSweepPoint>& mesh_rows,
                           const std::string& dir, nlohmann::json& entry) {
   validation::add_points(a, mesh_rows);
@@ -89,62 +64,7 @@ void write_k_paper_answer(validation::KTargetAnswer& a, const std::vector<valida
   for (const auto& p : a.points)
     csv << p.parameter << "," << p.value << "," << p.k_central << "," << p.k_lsq_line << "\n";
   write_text_atomic(dir + "/k_sweep.csv", csv.str());
-  nlohmann::json j;
-  for (const auto& n : a.near)
-    j["within_0.01"].push_back(
-        {{"parameter", n.parameter}, {"value", n.value}, {"criterion", n.criterion}, {"k", n.k}});
-  for (const auto& c : a.crossings)
-    j["crossings"].push_back({{"parameter", c.parameter},
-                              {"criterion", c.criterion},
-                              {"value", c.value},
-                              {"linear_interpolation", c.interpolated}});
-  j["answer"] = a.answer;
-  entry = j;
-}
-
-std::vector<ErrorBar> error_bars(const std::vector<ChainError>& errors,
-                                 const std::vector<double>& coarse_scales) {
-  struct Display {
-    const char* name;
-    const char* what;
-    const char* unit;
-    double factor;
-  };
-  const Display table[] = {
-      {"k_central", "k, central criterion (sensor #1)", "", 1},
-      {"k_lsq_line", "k, line fit (sensor #1)", "", 1},
-      {"contact_radius", "contact radius (coupled friction)", "mm", 1},
-      {"contact_p0", "central pressure (coupled friction)", "kPa", 1e3},
-      {"indentation", "indentation (coupled friction)", "um", 1e3},
-      {"hole_signal", "largest sliding |varsigma_z| over sensors and hole positions", "kPa", 1e3}};
-  std::string levels;
-  for (double s : coarse_scales) levels += fmt("%g", s) + ", ";
-  levels += "1";
-  std::vector<ErrorBar> out;
-  for (const ChainError& e : errors)
-    for (const Display& d : table)
-      if (e.name == d.name)
-        out.push_back({e.name, d.what, d.unit,
-                       e.asymptotic ? "|value - Richardson limit| over mesh scales " + levels +
-                                          ", observed order " + fmt("%.2f", e.order)
-                                    : "last change between mesh scales " + fmt("%g", coarse_scales.back()) +
-                                          " and 1; no asymptotic regime over " + levels + " (" + e.why_not +
-                                          "), so an order of magnitude only",
-                       d.factor * e.value, d.factor * e.error, e.error / std::abs(e.value)});
-  return out;
-}
-
-nlohmann::json error_bars_json(const std::vector<ErrorBar>& bars) {
-  nlohmann::json j = nlohmann::json::array();
-  for (const ErrorBar& e : bars)
-    j.push_back({{"quantity", e.quantity},
-                 {"what", e.what},
-                 {"unit", e.unit},
-                 {"value", e.value},
-                 {"error", e.error},
-                 {"relative_error", e.relative_error},
-                 {"method", e.method}});
-  return j;
+  entry = k_paper_json(a);
 }
 
 }  // namespace skinfem::app

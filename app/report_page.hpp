@@ -22,11 +22,7 @@ using pipeline::ChainLevel;
 using pipeline::HoleBudget;
 using pipeline::Timings;
 
-// The chain's quantities with their error bars (pipeline/chain_level.hpp), in display units.
-struct ErrorBar {
-  std::string quantity, what, unit, method;
-  double value = 0, error = 0, relative_error = 0;
-};
+using pipeline::ErrorBar;
 
 // What index.html shows, as the stages returned it.
 struct IndexInput {

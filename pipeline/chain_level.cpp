@@ -12,8 +12,10 @@
 #include "skinfem/pipeline/clock.hpp"
 #include "skinfem/pipeline/kfit.hpp"
 #include "skinfem/pipeline/progress.hpp"
+#include "skinfem/pipeline/scene_json.hpp"
 #include "skinfem/pipeline/symmetry.hpp"
 #include "skinfem/validation/richardson.hpp"
+#include "skinfem/validation/text.hpp"
 
 namespace skinfem::pipeline {
 
@@ -147,6 +149,73 @@ std::map<std::string, double> time_vs_dofs_exponent(const std::vector<ChainLevel
     if (std::isfinite(e)) out[stage] = e;
   }
   return out;
+}
+
+nlohmann::json chain_study_json(const Scene& scene, const std::vector<ChainLevel>& levels) {
+  nlohmann::json extrap, jlevels = nlohmann::json::array();
+  for (const ChainLevel& c : levels) {
+    nlohmann::json jl = {
+        {"scale", c.scale}, {"dofs", c.dofs}, {"wall_s", c.wall}, {"peak_rss_mb", c.peak_rss_mb}};
+    for (size_t i = 0; i < c.names.size(); ++i) jl["values"][c.names[i]] = c.value[i];
+    if (!c.note.empty()) jl["note"] = c.note;
+    jlevels.push_back(jl);
+  }
+  for (const ChainError& e : chain_errors(levels))
+    extrap[e.name] = {
+        {"observed_order", e.asymptotic ? nlohmann::json(e.order) : nlohmann::json("none: " + e.why_not)},
+        {"reference", e.reference},
+        {"reference_is", e.asymptotic ? "Richardson limit" : "finest level"}};
+  return {{"scene", scene_json(scene)},
+          {"levels", jlevels},
+          {"extrapolation", extrap},
+          {"time_vs_dofs_exponent", time_vs_dofs_exponent(levels)},
+          {"peak_rss_mb", peak_rss_mb()}};
+}
+
+std::vector<ErrorBar> error_bars(const std::vector<ChainError>& errors,
+                                 const std::vector<double>& coarse_scales) {
+  struct Display {
+    const char* name;
+    const char* what;
+    const char* unit;
+    double factor;
+  };
+  const Display table[] = {
+      {"k_central", "k, central criterion (sensor #1)", "", 1},
+      {"k_lsq_line", "k, line fit (sensor #1)", "", 1},
+      {"contact_radius", "contact radius (coupled friction)", "mm", 1},
+      {"contact_p0", "central pressure (coupled friction)", "kPa", 1e3},
+      {"indentation", "indentation (coupled friction)", "um", 1e3},
+      {"hole_signal", "largest sliding |varsigma_z| over sensors and hole positions", "kPa", 1e3}};
+  std::string levels;
+  for (double s : coarse_scales) levels += validation::fmt("%g", s) + ", ";
+  levels += "1";
+  std::vector<ErrorBar> out;
+  for (const ChainError& e : errors)
+    for (const Display& d : table)
+      if (e.name == d.name)
+        out.push_back({e.name, d.what, d.unit,
+                       e.asymptotic ? "|value - Richardson limit| over mesh scales " + levels +
+                                          ", observed order " + validation::fmt("%.2f", e.order)
+                                    : "last change between mesh scales " +
+                                          validation::fmt("%g", coarse_scales.back()) +
+                                          " and 1; no asymptotic regime over " + levels + " (" + e.why_not +
+                                          "), so an order of magnitude only",
+                       d.factor * e.value, d.factor * e.error, e.error / std::abs(e.value)});
+  return out;
+}
+
+nlohmann::json error_bars_json(const std::vector<ErrorBar>& bars) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const ErrorBar& e : bars)
+    j.push_back({{"quantity", e.quantity},
+                 {"what", e.what},
+                 {"unit", e.unit},
+                 {"value", e.value},
+                 {"error", e.error},
+                 {"relative_error", e.relative_error},
+                 {"method", e.method}});
+  return j;
 }
 
 }  // namespace skinfem::pipeline

@@ -58,4 +58,19 @@ void check_error_scales(const std::vector<double>& error_scales);
 // whose fit is undefined are left out.
 std::map<std::string, double> time_vs_dofs_exponent(const std::vector<ChainLevel>& levels);
 
+// chain_study.json (`study --chain`, the report's DIR/study/): the levels, each quantity's extrapolation
+// (observed order or why none, its reference) and the stages' time-vs-DOFs exponents.
+nlohmann::json chain_study_json(const Scene& scene, const std::vector<ChainLevel>& levels);
+
+// The chain's errors as the page and report.json show them: in display units (kPa, µm as "um"), what each
+// quantity is and how its error was estimated; coarse_scales: the coarser levels' mesh scales, coarse to
+// fine.
+struct ErrorBar {
+  std::string quantity, what, unit, method;
+  double value = 0, error = 0, relative_error = 0;
+};
+std::vector<ErrorBar> error_bars(const std::vector<ChainError>& errors,
+                                 const std::vector<double>& coarse_scales);
+nlohmann::json error_bars_json(const std::vector<ErrorBar>& bars);
+
 }  // namespace skinfem::pipeline

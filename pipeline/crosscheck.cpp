@@ -30,4 +30,21 @@ validation::Crosscheck crosscheck_run(const Scene& scene, const AdjointSetup& ad
   return validation::crosscheck(in);
 }
 
+nlohmann::json front_sensor_json(const validation::FrontSensorAnswer& a) {
+  nlohmann::json j;
+  std::string front;
+  for (const int k : a.front) front += (front.empty() ? "#" : ", #") + std::to_string(k + 1);
+  j["front_sensors"] = front;
+  if (!a.front.empty()) {
+    j["coupling_amplitude_factor_z"] = {a.coupling_lo[0], a.coupling_hi[0]};
+    j["coupling_amplitude_factor_x"] = {a.coupling_lo[1], a.coupling_hi[1]};
+  }
+  if (a.model_lo) {
+    j["fe_over_paper_model_amplitude_z"] = {(*a.model_lo)[0], (*a.model_hi)[0]};
+    j["fe_over_paper_model_amplitude_x"] = {(*a.model_lo)[1], (*a.model_hi)[1]};
+  }
+  j["answer"] = a.answer;
+  return j;
+}
+
 }  // namespace skinfem::pipeline

@@ -3,6 +3,8 @@
 // sweeps of `defect` (pipeline/defect.hpp). Units: mm, N, MPa.
 #pragma once
 
+#include <nlohmann/json.hpp>
+
 #include "skinfem/pipeline/adjoint_setup.hpp"
 #include "skinfem/pipeline/contact_setup.hpp"
 #include "skinfem/pipeline/defect.hpp"
@@ -18,5 +20,8 @@ validation::Crosscheck crosscheck_run(const Scene& scene, const AdjointSetup& ad
                                       const ContactSetup& contact, const DefectRun& defect, double force_N,
                                       double k_best,
                                       const contact::MeridianContactResult* meridian = nullptr);
+
+// report.json's front_sensors entry (validation::front_sensor_answer).
+nlohmann::json front_sensor_json(const validation::FrontSensorAnswer& a);
 
 }  // namespace skinfem::pipeline

@@ -295,4 +295,26 @@ nlohmann::json kfit_json(const KfitResult& r) {
   return summary;
 }
 
+validation::KTargetAnswer k_paper_sweep(const Scene& scene, double h) {
+  validation::KProtocol base;
+  base.h = h;
+  base.nu = scene.material.nu;
+  base.punch_diameter = scene.calibration.punch_diameter;
+  return validation::k_target_answer(base, green::kPaperK);
+}
+
+nlohmann::json k_paper_json(const validation::KTargetAnswer& a) {
+  nlohmann::json j;
+  for (const auto& n : a.near)
+    j["within_0.01"].push_back(
+        {{"parameter", n.parameter}, {"value", n.value}, {"criterion", n.criterion}, {"k", n.k}});
+  for (const auto& c : a.crossings)
+    j["crossings"].push_back({{"parameter", c.parameter},
+                              {"criterion", c.criterion},
+                              {"value", c.value},
+                              {"linear_interpolation", c.interpolated}});
+  j["answer"] = a.answer;
+  return j;
+}
+
 }  // namespace skinfem::pipeline

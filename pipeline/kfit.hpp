@@ -16,6 +16,7 @@
 #include "skinfem/green/calibration.hpp"
 #include "skinfem/pipeline/clock.hpp"
 #include "skinfem/pipeline/sensor_greens.hpp"
+#include "skinfem/validation/k_sweep.hpp"
 
 namespace skinfem::pipeline {
 
@@ -73,5 +74,11 @@ KfitResult kfit(const Scene& scene, const SensorGreens& greens, green::LayerLoad
 Eigen::VectorXd paper_reading_scale(const KfitResult& r);
 // The result as kfit.json holds it.
 nlohmann::json kfit_json(const KfitResult& r);
+
+// The exact layer's k as each reading of the calibration protocol changes about the scene's (thickness h at
+// the headline sensor): which single change gives the paper's k (validation/k_sweep.hpp); and report.json's
+// k_paper entry of the answer.
+validation::KTargetAnswer k_paper_sweep(const Scene& scene, double h);
+nlohmann::json k_paper_json(const validation::KTargetAnswer& a);
 
 }  // namespace skinfem::pipeline
