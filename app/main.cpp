@@ -1,6 +1,7 @@
 // skinfem — finite-element verification toolkit for tactile sensors under an elastomer skin.
-// Subcommands: mesh, solve, study, kfit, green, contact, defect, report, sweep (see each cmd_*.cpp for what
-// it computes and writes). Exit codes: 0 success, 2 bad input (scene or arguments), 1 any other failure.
+// Subcommands: mesh, solve, study, kfit, green, contact, defect, report, sweep, with their options in the
+// command table (scene/commands.cpp); each cmd_*.cpp says what it computes and writes. Exit codes: 0 success,
+// 2 bad input (scene or arguments), 1 any other failure.
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <iostream>
