@@ -32,13 +32,13 @@ nlohmann::json write_chain_study(const Scene& scene, const std::vector<ChainLeve
     }
     std::printf("\n");
   }
-  const std::map<std::string, double> exponents = time_vs_dofs_exponent(levels);
+  const nlohmann::json study = chain_study_json(scene, levels);
   std::printf("time-vs-DOFs exponent per stage:");
-  for (const auto& [stage, e] : exponents) std::printf(" %s %.2f", stage.c_str(), e);
+  for (const auto& [stage, e] : study.at("time_vs_dofs_exponent").items())
+    std::printf(" %s %.2f", stage.c_str(), e.get<double>());
   std::printf("\n");
   prepare_output_dir(out_dir);
   write_text_atomic(out_dir + "/chain_study.csv", csv.str());
-  const nlohmann::json study = chain_study_json(scene, levels);
   write_json(out_dir + "/chain_study.json", study);
   std::printf("  wrote %s/chain_study.csv, chain_study.json\n", out_dir.c_str());
   return study;

@@ -47,7 +47,7 @@ bool ParsedOptions::has(const std::string& name) const {
   return text_.count(name) || lists_.count(name) || flags_.count(name);
 }
 bool ParsedOptions::given(const std::string& name) const {
-  return app_->count(name == "scene" || name == "spec" ? name : option_flag(name)) > 0;
+  return app_->count(positional_.count(name) ? name : option_flag(name)) > 0;
 }
 const std::string& ParsedOptions::text(const std::string& name) const { return text_.at(name); }
 double ParsedOptions::number(const std::string& name) const {
@@ -82,6 +82,7 @@ CommandLine::CommandLine(CLI::App& cli) {
         }
         case OptionKind::positional:
           option = o.app_->add_option(spec.name, o.text_[spec.name], spec.help)->required();
+          o.positional_.insert(spec.name);
           break;
         default: {
           std::string& value = o.text_[spec.name] = spec.default_value;

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,7 @@ class ParsedOptions {
   std::map<std::string, std::string> text_;
   std::map<std::string, std::vector<std::string>> lists_;
   std::map<std::string, bool> flags_;
+  std::set<std::string> positional_;  // named as such on the command line, not as --flags
 };
 
 class CommandLine {

@@ -42,7 +42,8 @@ const std::map<std::string, Handler>& handlers() {
   const auto error_scales_check = [](const ParsedOptions& o) {
     if (o.has("fast") && o.flag("fast") && o.given("error_scales"))
       throw skinfem::SceneError("--error-scales: --fast draws no error bars; give one or the other");
-    if (!error_levels(o).empty()) app::check_levels("--error-scales", error_levels(o), true);
+    if (const std::vector<double> levels = error_levels(o); !levels.empty())
+      app::check_levels("--error-scales", levels, true);
   };
   static const std::map<std::string, Handler> table{
       {"mesh",

@@ -277,16 +277,16 @@ struct Flags {
   const std::vector<char>& bilateral;
   bool is_excluded(int i) const { return !excluded.empty() && excluded[i] != 0; }
   bool is_bilateral(int i) const { return !bilateral.empty() && bilateral[i] != 0 && !is_excluded(i); }
+  bool unilateral(int i) const { return !is_excluded(i) && !is_bilateral(i); }  // complementarity holds
 };
 
 // The principal set to start from: the warm start's multipliers; cold, the rigid overlap (displacement
 // control) or the overlap of a local model (force control). Bilateral multipliers are always in.
 std::vector<char> starting_set(int n, const MatrixXd& M, const VectorXd& q, const VectorXd& m, bool force,
                                double value, const std::vector<int>& warm, const Flags& flags) {
-  const auto is_excluded = [&](int i) { return flags.is_excluded(i); };
   std::vector<char> in(n, 0);  // the current principal set S
   int allowed = 0;
-  for (int i = 0; i < n; ++i) allowed += !is_excluded(i);
+  for (int i = 0; i < n; ++i) allowed += !flags.is_excluded(i);
   if (force && allowed == 0)
     throw std::runtime_error(
         "contact LCP: every multiplier is excluded (the hole covers the zone) at pivot 0");
@@ -294,11 +294,11 @@ std::vector<char> starting_set(int n, const MatrixXd& M, const VectorXd& q, cons
     if (i < 0 || i >= n)
       throw std::invalid_argument("ContactLcp: warm-start index " + std::to_string(i) + " outside [0, " +
                                   std::to_string(n) + ")");
-    if (!is_excluded(i)) in[i] = 1;
+    if (!flags.is_excluded(i)) in[i] = 1;
   }
   const bool cold = std::find(in.begin(), in.end(), 1) == in.end();
   if (cold && !force) {  // the rigid overlap
-    for (int i = 0; i < n; ++i) in[i] = !is_excluded(i) && q[i] < value * m[i];
+    for (int i = 0; i < n; ++i) in[i] = !flags.is_excluded(i) && q[i] < value * m[i];
   } else if (cold) {
     // The overlap of the local model λ_i = (δ m_i − q_i)/M_ii, whose force Σ m_i λ_i over the overlap is
     // piecewise linear in δ: exact in one pass over q_i/m_i ascending. Without M's coupling it is stiffer
@@ -306,7 +306,7 @@ std::vector<char> starting_set(int n, const MatrixXd& M, const VectorXd& q, cons
     // → 1490 → … → 1006 in 7 exchanges, 3 of them dense).
     std::vector<int> order;
     for (int i = 0; i < n; ++i)
-      if (!is_excluded(i)) order.push_back(i);
+      if (!flags.is_excluded(i)) order.push_back(i);
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return q[a] / m[a] < q[b] / m[b]; });
     double sa = 0, sb = 0;  // Σ m_i²/M_ii, Σ m_i q_i/M_ii over the overlap
     size_t k = 0;
@@ -335,7 +335,7 @@ void judge(LcpSolution& s, const std::vector<char>& in, const Flags& flags, doub
   s.min_gap = 0;
   bool first = true;
   for (int i = 0; i < n; ++i) {
-    if (flags.is_excluded(i) || flags.is_bilateral(i)) continue;
+    if (!flags.unilateral(i)) continue;
     lambda_max = std::max(lambda_max, s.lambda[i]);
     product = std::max(product, std::abs(s.lambda[i] * s.gap[i]));
     s.min_lambda = first ? s.lambda[i] : std::min(s.min_lambda, s.lambda[i]);
@@ -470,7 +470,7 @@ LcpSolution ContactLcp::solve(bool force, double value, const std::vector<char>&
     const double tol_l = kFeasible * lambda_max, tol_g = kFeasible * g_scale;
     bad.clear();
     for (int i = 0; i < n; ++i) {
-      if (flags.is_excluded(i) || flags.is_bilateral(i)) continue;
+      if (!flags.unilateral(i)) continue;
       if (in[i] ? s.lambda[i] < -tol_l : s.gap[i] < -tol_g) bad.push_back(i);
     }
     if (bad.empty()) break;

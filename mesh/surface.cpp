@@ -399,9 +399,10 @@ void close_cut(SurfaceMesh& s) {
 // band needs both rims to be the same points; refinement splits rim chords differently on each face, so each
 // face is remeshed on the other's rim until they agree (else the base takes the top's triangulation).
 struct Faces {
-  Footprint top, base;
-  bool base_is_own = false;      // else base is the top's triangulation
-  std::vector<int> base_of_top;  // a half with posts: the base vertex of each top boundary position
+  Footprint top, base;  // base: its own triangulation, or a copy of the top's
+  // A half with posts whose base has its own triangulation: the base vertex of each top boundary position;
+  // empty otherwise (the base's boundary positions are the top's).
+  std::vector<int> base_of_top;
 };
 Faces matched_faces(const SkinShape& shape, const std::vector<Vec2>& loop, const SizingField& size,
                     const std::vector<Circle>& circles, const std::vector<Circle>& posts, bool half) {
@@ -456,9 +457,8 @@ Faces matched_faces(const SkinShape& shape, const std::vector<Vec2>& loop, const
         "rims; move the punch off the post's outline");
   if (!own_base && top_outlines.size() != outlines.size())
     top = face_footprint(shape, rim_of(top), top_size, outlines, half);
-  const bool base_is_own = own_base.has_value();
   Footprint base = own_base ? std::move(*own_base) : top;
-  return {std::move(top), std::move(base), base_is_own, std::move(base_of_top)};
+  return {std::move(top), std::move(base), std::move(base_of_top)};
 }
 }  // namespace
 
@@ -487,7 +487,6 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
     if (half && c.centre[1] != 0.0) throw MeshError("a half mesh cuts only posts centred on y = 0");
   const Faces faces = matched_faces(shape, loop, size, circles, posts, half);
   const Footprint &top = faces.top, &base = faces.base;
-  const bool own_cuts = half && !posts.empty();
   const int nvb = base.points.rows(), nvt = top.points.rows(), nb = static_cast<int>(top.boundary.size());
 
   // Side band: as many layers as the rim's sizing asks for, at least one.
@@ -507,7 +506,7 @@ SurfaceMesh layer_surface(const Scene& scene, const SizingField& size, MeshPart 
   }
   // vertex of boundary position k on side layer j (0 = base, layers = top)
   auto side_vertex = [&](int k, int j) {
-    if (j == 0) return own_cuts && faces.base_is_own ? faces.base_of_top[k % nb] : base.boundary[k % nb];
+    if (j == 0) return faces.base_of_top.empty() ? base.boundary[k % nb] : faces.base_of_top[k % nb];
     if (j == layers) return nvb + top.boundary[k % nb];
     return nvb + nvt + (j - 1) * nb + k % nb;
   };

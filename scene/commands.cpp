@@ -48,8 +48,7 @@ OptionSpec error_scales(const std::string& what) {
 std::vector<CommandSpec> table() {
   const std::string kfit_path =
       "Green tensor solver: meridian (2D axisymmetric; flat layers and a cap's apex sensor), 3d, or auto "
-      "(the "
-      "meridian where it applies)";
+      "(the meridian where it applies)";
   return {
       {"mesh", "mesh the scene's skin (writes mesh.vtu, boundary.vtu, summary.json)", on_scene({})},
       {"solve", "solve the scene's loads (writes fields.vtu, sensors.csv, summary.json)",

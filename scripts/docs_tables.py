@@ -5,7 +5,8 @@
     scripts/docs_tables.py RUN_DIR --check    exit 1, naming the table, where a doc differs from RUN_DIR
 
 RUN_DIR is the output folder of `skinfem report scenes/candelier2011.json` (`scripts/run` writes it to
-out/candelier2011): its report.json and crosscheck/readings.csv. A generated table sits between two marker lines in a Markdown file under docs/:
+out/candelier2011): its report.json and crosscheck/readings.csv. A generated table sits between two marker
+lines in a Markdown file under docs/:
 
     <!-- generated: NAME (scripts/docs_tables.py from skinfem report scenes/candelier2011.json) -->
     | ... the table ... |
@@ -15,6 +16,7 @@ NAME is one of TABLES below. --check compares numbers, not times: the cost table
 belong to the machine that ran and are left out of the comparison (COMPARED).
 The test `docs.tables` (label study) runs the report and checks.
 """
+import csv
 import json
 import math
 import os
@@ -33,21 +35,18 @@ def cell(text):
     return text.replace("|", "\\|")
 
 
-def sig(x, digits):
-    return "%.*g" % (digits, x)
+ERROR_DIGITS = 2  # significant digits of an error bar; its value is given to the same decimal place
 
 
 def headline(run):
     """report.json error_bars: each headline number with its error bar and how it was obtained."""
-    units = {"um": "µm", "": ""}
     rows = ["| quantity | value | error | how |", "|---|---:|---:|---|"]
     for e in run["report"]["error_bars"]:
-        unit = units.get(e["unit"], e["unit"])
-        # As many digits as the error bar resolves, one more than its leading digit.
-        err_digits = 2
-        decimals = max(0, err_digits - 1 - math.floor(math.log10(e["error"])))
+        unit = {"um": "µm"}.get(e["unit"], e["unit"])
+        decimals = max(0, ERROR_DIGITS - 1 - math.floor(math.log10(e["error"])))
         value = "%.*f" % (decimals, e["value"]) + (" " + unit if unit else "")
-        rows.append("| %s | %s | ± %s | %s |" % (cell(e["what"]), value, sig(e["error"], 2), cell(e["method"])))
+        rows.append("| %s | %s | ± %.*g | %s |"
+                    % (cell(e["what"]), value, ERROR_DIGITS, e["error"], cell(e["method"])))
     return rows
 
 
@@ -95,8 +94,6 @@ def levels(run):
 def readings(run):
     """crosscheck/readings.csv: σ_z of sensors #6 and #10, at rest and sliding, under every variant of the
     paper's model (kPa)."""
-    import csv
-
     with open(os.path.join(run["dir"], "crosscheck", "readings.csv"), newline="") as f:
         table = list(csv.DictReader(f))
     value = {(r["case"], r["variant"], r["sensor"]): float(r["sigma_z_kPa"]) for r in table}
