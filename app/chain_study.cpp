@@ -9,8 +9,8 @@
 
 namespace skinfem::app {
 
-nlohmann::json write_chain_study(const Scene& scene, const std::vector<ChainLevel>& levels,
-                                 const std::string& out_dir) {
+void write_chain_study(const std::vector<ChainLevel>& levels, const nlohmann::json& study,
+                       const std::string& out_dir) {
   const size_t n = levels.size();
   std::ostringstream csv;
   csv.precision(10);
@@ -32,7 +32,6 @@ nlohmann::json write_chain_study(const Scene& scene, const std::vector<ChainLeve
     }
     std::printf("\n");
   }
-  const nlohmann::json study = chain_study_json(scene, levels);
   std::printf("time-vs-DOFs exponent per stage:");
   for (const auto& [stage, e] : study.at("time_vs_dofs_exponent").items())
     std::printf(" %s %.2f", stage.c_str(), e.get<double>());
@@ -41,7 +40,6 @@ nlohmann::json write_chain_study(const Scene& scene, const std::vector<ChainLeve
   write_text_atomic(out_dir + "/chain_study.csv", csv.str());
   write_json(out_dir + "/chain_study.json", study);
   std::printf("  wrote %s/chain_study.csv, chain_study.json\n", out_dir.c_str());
-  return study;
 }
 
 }  // namespace skinfem::app

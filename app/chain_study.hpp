@@ -10,10 +10,10 @@
 
 namespace skinfem::app {
 
-// Prints each quantity's order and errors and each stage's time-vs-DOFs exponent, writes
-// DIR/chain_study.csv (stage,level,dofs,seconds,error; the Pareto plot of scripts/figures.py) and
-// DIR/chain_study.json (levels, extrapolation, time_vs_dofs_exponent), and returns the latter.
-nlohmann::json write_chain_study(const Scene& scene, const std::vector<pipeline::ChainLevel>& levels,
-                                 const std::string& out_dir);
+// Prints each quantity's order and errors and each stage's time-vs-DOFs exponent (from study,
+// pipeline::chain_study_json's), writes DIR/chain_study.csv (stage,level,dofs,seconds,error; the Pareto plot
+// of scripts/figures.py) and DIR/chain_study.json (study).
+void write_chain_study(const std::vector<pipeline::ChainLevel>& levels, const nlohmann::json& study,
+                       const std::string& out_dir);
 
 }  // namespace skinfem::app

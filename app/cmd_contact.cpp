@@ -64,12 +64,9 @@ void write_readings(const std::string& out_dir, const Scene& scene, FrictionMode
 }
 }  // namespace
 
-StageOutput<ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const ContactSetup> shared,
-                                      const std::string& out_dir, FrictionMode chosen,
-                                      const std::string& not_meridian,
-                                      const pipeline::MeridianContactRun* frictionless) {
-  ContactRun run = contact_run(scene, std::move(shared), chosen, frictionless);
-  run.not_meridian = not_meridian;
+void write_contact(const Scene& scene, const ContactRun& run, nlohmann::json& summary,
+                   const std::string& out_dir) {
+  const FrictionMode chosen = run.chosen;
   const ContactSetup& setup = *run.setup;
   const TetMesh& mesh = setup.mesh();
   const contact::ContactSolver& solver = *setup.solver;
@@ -78,7 +75,6 @@ StageOutput<ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const 
   const contact::ContactMetrics& m = run.metric();
   const MixedSolution& x = run.solution;
   Stopwatch clock;
-  contact::check_hole_clearance(mesh, solver, r, scene.contact->holes, "contact.holes");
   prepare_output_dir(out_dir);
   write_fields_vtu(out_dir + "/fields.vtu", mesh, setup.model->lame(),
                    setup.whole ? mirrored_solution(mesh, setup.source, x) : x);
@@ -86,15 +82,13 @@ StageOutput<ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const 
   std::map<FrictionMode, Eigen::VectorXd> readings;
   for (const auto& [mode, res] : run.results) readings[mode] = res.readings;
   write_readings(out_dir, scene, chosen, readings);
-  run.wall["write"] = clock.seconds();
-  nlohmann::json summary = contact_json(scene, run);
-  const Timings& wall = run.wall;
+  add_write_seconds(summary, clock.seconds());
+  write_json(out_dir + "/summary.json", summary);
   const Interface& interface = scene.contact->interface;
   const Vec2 t = scene.contact->direction;
   const auto& cu = run.metrics.at(FrictionMode::coupled);
   const auto& un = run.metrics.at(FrictionMode::uncoupled);
   const auto& shift = run.coupling_shift;
-  write_json(out_dir + "/summary.json", summary);
 
   char p0[64];
   std::snprintf(p0, sizeof p0, m.p0_in_hole ? "p0 - (the first-touch point is in a hole)" : "p0 = %.2f kPa",
@@ -123,18 +117,17 @@ StageOutput<ContactRun> contact_stage(const Scene& scene, std::shared_ptr<const 
   std::printf(
       "  %d DOFs, %d multipliers (%s); mesh %.2f s, assemble %.2f s, factor %.2f s, "
       "condense %.2f s (%s), contact %.3f s; peak %.0f MB\n",
-      setup.model->solver().free_dofs(), c.zone.size(), symmetry_used(scene, setup).c_str(), wall.at("mesh"),
-      wall.at("assemble"), wall.at("factor"), wall.at("condense"), condensation_said(setup).c_str(),
-      wall.at("contact_solves"), peak_rss_mb());
+      setup.model->solver().free_dofs(), c.zone.size(), symmetry_used(scene, setup).c_str(),
+      run.wall.at("mesh"), run.wall.at("assemble"), run.wall.at("factor"), run.wall.at("condense"),
+      condensation_said(setup).c_str(), run.wall.at("contact_solves"), peak_rss_mb());
   if (const auto& mc = run.meridian_check)
     std::printf(
         "  against the meridian (frictionless and uncoupled, exact in 2D, %d DOFs, %.2f s): readings within "
         "%.1e of the largest; a %+.1e, p0 %+.1e, indentation %+.1e\n",
         mc->dofs, mc->seconds, mc->readings_rel, mc->a_rel, mc->p0_rel, mc->indentation_rel);
-  if (!not_meridian.empty())
-    std::printf("  3D path: the meridian does not apply: %s\n", not_meridian.c_str());
+  if (!run.not_meridian.empty())
+    std::printf("  3D path: the meridian does not apply: %s\n", run.not_meridian.c_str());
   std::printf("  wrote %s/pressure.vtp, fields.vtu, sensors.csv, modes.csv, summary.json\n", out_dir.c_str());
-  return {std::move(run), std::move(summary)};
 }
 
 namespace {
@@ -192,7 +185,10 @@ int run_contact(const Scene& scene, const std::string& out_dir, const std::strin
     meridian_contact_stage(scene, out_dir, chosen);
     return 0;
   }
-  contact_stage(scene, contact_setup(scene, nullptr, HolePath::none), out_dir, chosen, why);
+  ContactRun run = contact_run(scene, contact_setup(scene, nullptr, HolePath::none), chosen);
+  run.not_meridian = why;
+  nlohmann::json summary = contact_json(scene, run);
+  write_contact(scene, run, summary, out_dir);
   return 0;
 }
 

@@ -33,10 +33,8 @@ namespace skinfem::app {
 
 using validation::fmt;
 
-DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> shared,
-                       const std::string& out_dir, std::vector<pipeline::ChainLevel> coarse,
-                       pipeline::DefectFrames keep, bool write_frames) {
-  DefectRun run = defect_run(scene, std::move(shared), std::move(coarse), keep);
+void write_defect(const Scene& scene, const DefectRun& run, nlohmann::json& summary,
+                  const std::string& out_dir, bool write_frames) {
   const ContactSetup& setup = *run.setup;
   const HoleSweep& sweep = *scene.contact->sweep;
   const auto& results = run.sweeps;
@@ -92,10 +90,9 @@ DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> s
     std::filesystem::remove(out_dir + "/defect.pvd");
     std::filesystem::remove(out_dir + "/frames", ignored);
   }
-  run.wall["write"] = clock.seconds();
-  const nlohmann::json summary = defect_json(scene, run);
-  const Timings& wall = run.wall;
+  add_write_seconds(summary, clock.seconds());
   write_json(out_dir + "/summary.json", summary);
+  const Timings& wall = run.wall;
 
   std::printf("defect %s: %zu cases x %d positions; %d DOFs, %d multipliers (%d solved%s)\n",
               scene.name.c_str(), run.cases.size(), sweep.positions, setup.model->solver().free_dofs(),
@@ -106,7 +103,7 @@ DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> s
   for (size_t ci = 0; ci < run.cases.size(); ++ci)
     std::printf(" %s %.2f s (%.2f ms/position)", run.cases[ci].c_str(), results[ci].seconds,
                 1e3 * results[ci].seconds / sweep.positions);
-  std::printf("; total %.1f s, peak %.0f MB\n", wall.total(), peak_rss_mb());
+  std::printf("; total %.1f s, peak %.0f MB\n", summary.at("wall_total_s").get<double>(), peak_rss_mb());
   for (size_t ci = 0; ci < run.cases.size(); ++ci) {
     const int col = run.max_roughness_column[ci];
     std::printf("  %s: largest second difference along u %.1f %% of its curve's peak (#%d varsigma_%c)\n",
@@ -129,7 +126,6 @@ DefectRun defect_stage(const Scene& scene, std::shared_ptr<const ContactSetup> s
   }
   std::printf("  wrote %s/defect.csv, %ssummary.json\n", out_dir.c_str(),
               write_frames ? "defect.pvd (+ frames/), " : "");
-  return run;
 }
 
 int run_defect(const Scene& scene, const std::string& out_dir, const std::vector<double>& error_scales) {
@@ -138,7 +134,10 @@ int run_defect(const Scene& scene, const std::string& out_dir, const std::vector
   check_output_dir(out_dir);
   // The coarser levels first, each freed before the next: the scene's own level sets the peak memory.
   std::vector<pipeline::ChainLevel> coarse = pipeline::largest_sliding_levels(scene, error_scales);
-  defect_stage(scene, contact_setup(scene), out_dir, std::move(coarse), pipeline::DefectFrames::written);
+  const DefectRun run =
+      defect_run(scene, contact_setup(scene), std::move(coarse), pipeline::DefectFrames::written);
+  nlohmann::json summary = defect_json(scene, run);
+  write_defect(scene, run, summary, out_dir);
   return 0;
 }
 

@@ -29,10 +29,8 @@
 
 namespace skinfem::app {
 
-StageOutput<GreenRun> green_stage(const Scene& scene, const SensorGreens& greens, const AdjointSetup* setup,
-                                  const std::string& out_dir, double grid_dx,
-                                  const pipeline::MeridianScan* axis_scan, std::string* lines) {
-  GreenRun run = green_run(scene, greens, setup, grid_dx, axis_scan);
+void write_green(const Scene& scene, const SensorGreens& greens, const GreenRun& run,
+                 const nlohmann::json& summary, const std::string& out_dir, std::string* lines) {
   std::ostringstream csv;
   csv.precision(10);
   csv << "sensor,component,offset_x_mm,offset_y_mm,g_point_per_mm2,g_disc_per_mm2"
@@ -63,7 +61,6 @@ StageOutput<GreenRun> green_stage(const Scene& scene, const SensorGreens& greens
     green::write_kernel_h5(out_dir + "/kernel.h5", *run.grid, scene.name);
     green::write_kernel_vti(out_dir + "/kernel.vti", *run.grid);
   }
-  const nlohmann::json summary = green_json(scene, greens, run, grid_dx);
   write_json(out_dir + "/summary.json", summary);
   say(lines,
       "green %s: %zu sensors × 4 components, %s path (%s): %d adjoint solves on %d DOFs; %.1f s (factor "
@@ -83,19 +80,19 @@ StageOutput<GreenRun> green_stage(const Scene& scene, const SensorGreens& greens
   if (run.grid) {
     const green::KernelGrid& grid = *run.grid;
     say(lines, "  kernel grid: %zu × %zu points at %g mm over x [%g, %g], y [%g, %g] mm (%ld on the skin)\n",
-        grid.x.size(), grid.y.size(), grid_dx, grid.x.front(), grid.x.back(), grid.y.front(), grid.y.back(),
+        grid.x.size(), grid.y.size(), grid.dx, grid.x.front(), grid.x.back(), grid.y.front(), grid.y.back(),
         static_cast<long>(std::count(grid.on_skin.begin(), grid.on_skin.end(), 1)));
   }
   say(lines, "  wrote %s/green.csv, green_maps.vtp, %ssummary.json\n", out_dir.c_str(),
       run.grid ? "kernel.h5, kernel.vti, " : "");
-  return {std::move(run), std::move(summary)};
 }
 
 int run_green(const Scene& scene, const std::string& out_dir, double grid_dx, GreenPath path) {
   check_output_dir(out_dir);
   if (grid_dx > 0) check_kernel_grid(scene, grid_dx);
   const SensorGreens greens = green_path(scene, path);
-  green_stage(scene, greens, greens.adjoints.get(), out_dir, grid_dx);
+  const GreenRun run = green_run(scene, greens, greens.adjoints.get(), grid_dx);
+  write_green(scene, greens, run, green_json(scene, greens, run, grid_dx), out_dir);
   return 0;
 }
 

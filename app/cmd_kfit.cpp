@@ -24,27 +24,10 @@ namespace skinfem::app {
 
 using green::LayerLoad;
 
-StageOutput<KfitResult> kfit_stage(const Scene& scene, const SensorGreens& greens, const std::string& out_dir,
-                                   const std::string& load_name, const MeridianCheck* axis_check) {
-  return kfit_stage(
-      scene, kfit(scene, greens, load_name == "point" ? LayerLoad::point : LayerLoad::punch, axis_check),
-      out_dir);
-}
-
-StageOutput<KfitResult> kfit_stage(const Scene& scene, KfitResult r, const std::string& out_dir) {
-  nlohmann::json summary = kfit_json(r);
+void write_kfit(const Scene& scene, const KfitResult& r, const std::string& out_dir) {
   prepare_output_dir(out_dir);
-  write_json(out_dir + "/kfit.json", summary);
+  write_json(out_dir + "/kfit.json", kfit_json(r));
   const KfitSensor& first = r.sensors.at(0);
-  double kc_lo = 1e300, kc_hi = -1e300, kl_lo = 1e300, kl_hi = -1e300;
-  for (const KfitSensor& k : r.sensors) {
-    kc_lo = std::min(kc_lo, k.fe.k_central);
-    kc_hi = std::max(kc_hi, k.fe.k_central);
-    kl_lo = std::min(kl_lo, k.fe.k_lsq_line);
-    kl_hi = std::max(kl_hi, k.fe.k_lsq_line);
-  }
-  summary["k_central_range_over_sensors"] = {kc_lo, kc_hi};
-  summary["k_lsq_line_range_over_sensors"] = {kl_lo, kl_hi};
   std::printf(
       "kfit %s, headline sensor #1 of %zu: h %.3f mm, nu %.3g, %s load; %s path (%s): %d DOFs, %.2f s (mesh "
       "%.2f, "
@@ -66,18 +49,21 @@ StageOutput<KfitResult> kfit_stage(const Scene& scene, KfitResult r, const std::
                 d[0], d[1], d[2], d[3]);
   }
   std::printf("\n  %s\n", r.verdict.c_str());
-  if (r.sensors.size() > 1)
+  if (r.sensors.size() > 1) {
+    const KfitRanges k = k_ranges(r);
     std::printf("  over all %zu sensors: k_central %.4f–%.4f, k_lsq_line %.4f–%.4f\n", r.sensors.size(),
-                kc_lo, kc_hi, kl_lo, kl_hi);
+                k.k_central[0], k.k_central[1], k.k_lsq_line[0], k.k_lsq_line[1]);
+  }
   if (r.meridian_check) std::printf("  %s\n", meridian_check_line(*r.meridian_check).c_str());
   if (!r.explanation.empty()) std::printf("  %s\n", r.explanation.c_str());
   std::printf("  wrote %s/kfit.json\n", out_dir.c_str());
-  return {std::move(r), std::move(summary)};
 }
 
 int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& load_name, GreenPath path) {
   check_output_dir(out_dir);
-  kfit_stage(scene, green_path(scene, path), out_dir, load_name);
+  write_kfit(scene,
+             kfit(scene, green_path(scene, path), load_name == "point" ? LayerLoad::point : LayerLoad::punch),
+             out_dir);
   return 0;
 }
 

@@ -16,71 +16,29 @@
 #include "app/common.hpp"
 #include "app/stages.hpp"
 #include "skinfem/mesh/build.hpp"
-#include "skinfem/mesh/quality.hpp"
-#include "skinfem/mesh/shape.hpp"
 #include "skinfem/mesh/vtu.hpp"
+#include "skinfem/pipeline/mesh_summary.hpp"
 #include "skinfem/pipeline/resources.hpp"
 
 namespace skinfem::app {
 
-namespace {
-// The skin's exact volume where its shape is known: the generated layer's, less its post sensors' cavities.
-std::optional<double> exact_volume(const Scene& scene) {
-  const SkinShape shape(scene.geometry);
-  if (!shape.exact()) return std::nullopt;
-  double v = shape.volume();
-  if (scene.sensors.model == SensorModel::post) {
-    const PostSensor& p = scene.sensors.post;
-    v -= static_cast<double>(scene.sensors.positions.size()) * M_PI * 0.25 * p.diameter * p.diameter *
-         p.height;
-  }
-  return v;
-}
-}  // namespace
-
-nlohmann::json quality_json(const MeshQuality& q, const Scene& scene) {
-  nlohmann::json j = {{"nodes", q.nodes},
-                      {"vertices", q.vertices},
-                      {"elements", q.elements},
-                      {"boundary_faces", q.boundary_faces},
-                      {"min_dihedral_deg", q.min_dihedral_deg},
-                      {"max_dihedral_deg", q.max_dihedral_deg},
-                      {"max_radius_edge", q.max_radius_edge},
-                      {"min_edge_mm", q.min_edge_mm},
-                      {"max_edge_mm", q.max_edge_mm},
-                      {"min_jacobian_ratio", q.min_jacobian_ratio},
-                      {"volume_mm3", q.volume_mm3}};
-  if (const auto exact = exact_volume(scene)) {
-    j["exact_volume_mm3"] = *exact;
-    j["volume_rel_error"] = q.volume_mm3 / *exact - 1;
-  }
-  return j;
-}
-
-nlohmann::json mesh_stage(const Scene& scene, const TetMesh& mesh, double mesh_s, const std::string& out_dir,
-                          std::string* lines) {
-  const MeshQuality q = assess_quality(mesh);
-
+void write_mesh(const Scene& scene, const TetMesh& mesh, const pipeline::MeshSummary& s,
+                const nlohmann::json& summary, const std::string& out_dir, std::string* lines) {
+  const MeshQuality& q = s.quality;
   prepare_output_dir(out_dir);
   write_vtu(out_dir + "/mesh.vtu", mesh);
   write_boundary_vtu(out_dir + "/boundary.vtu", mesh);
-  nlohmann::json summary = quality_json(q, scene);
-  summary["scene"] = scene_json(scene);
-  summary["straightened_elements"] = mesh.straightened;
-  summary["wall_s"] = mesh_s;
-  summary["peak_rss_mb"] = peak_rss_mb();
   write_json(out_dir + "/summary.json", summary);
 
   say(lines, "mesh %s: %d nodes (%d vertices), %d tets; dihedral %.1f–%.1f°, max radius-edge %.2f, ",
       scene.name.c_str(), q.nodes, q.vertices, q.elements, q.min_dihedral_deg, q.max_dihedral_deg,
       q.max_radius_edge);
   say(lines, "min det J ratio %.3f; volume %.4f mm³", q.min_jacobian_ratio, q.volume_mm3);
-  if (const auto exact = exact_volume(scene))
+  if (const auto exact = s.exact_volume_mm3)
     say(lines, " (exact %.4f, rel. error %.1e)", *exact, q.volume_mm3 / *exact - 1);
-  if (mesh.straightened > 0)
-    say(lines, "; %d elements folded by their curved edges were given straight ones", mesh.straightened);
-  say(lines, "; %.2f s\n  wrote %s/mesh.vtu, boundary.vtu, summary.json\n", mesh_s, out_dir.c_str());
-  return summary;
+  if (s.straightened > 0)
+    say(lines, "; %d elements folded by their curved edges were given straight ones", s.straightened);
+  say(lines, "; %.2f s\n  wrote %s/mesh.vtu, boundary.vtu, summary.json\n", s.seconds, out_dir.c_str());
 }
 
 int run_mesh(const Scene& scene, const std::string& out_dir) {
@@ -88,12 +46,13 @@ int run_mesh(const Scene& scene, const std::string& out_dir) {
   Stopwatch clock;
   MeshEstimate estimate;
   const TetMesh mesh = guarded_mesh(scene, MeshPart::whole, &estimate);
-  nlohmann::json summary = mesh_stage(scene, mesh, clock.seconds(), out_dir);
+  const pipeline::MeshSummary s = pipeline::mesh_summary(scene, mesh, clock.seconds());
+  nlohmann::json summary = pipeline::mesh_json(scene, s);
   if (estimate.known) {
     summary["estimated_tets"] = estimate.tets;
     summary["estimated_over_actual_tets"] = estimate.tets / mesh.num_tets();
-    write_json(out_dir + "/summary.json", summary);
   }
+  write_mesh(scene, mesh, s, summary, out_dir);
   return 0;
 }
 

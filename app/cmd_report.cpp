@@ -5,16 +5,16 @@
 //   report candelier2011: 95898 DOFs, one factorization for the chain and 2 coarser for the error bars;
 //   25.9 s, peak 1185 MB
 //
-// The stages run in order on the main thread. Beside it, on threads: kfit's scans and fits, the k sweep and
-// the mesh's files (no MUMPS), and in a fast report the meridian checks (their MUMPS calls take turns with
-// the 3D ones). The figures are drawn by background processes as their inputs become final.
+// The chain is pipeline::report_run's (pipeline/report.hpp); this command writes each stage's results as
+// they become final (app/report_writer.hpp), and the figures are drawn by background processes as their
+// inputs do.
 //
 // A scene mirror-symmetric about y = 0, contact included (pipeline/symmetry.hpp), is solved on its half y ≥ 0
 // and every output is written for the whole skin (mesh.vtu, maps, pressure, fields).
 //
 // Stages, each writing its own folder under DIR (default out/<scene name>): mesh/ (mesh.vtu, boundary.vtu),
 // green/ (green.csv, green_maps.vtp, post_design.csv: an isolated post against a disc at the skin's axis and
-// a design sweep, app/post_design_stage.cpp), kfit/ (kfit.json, and k_sweep.csv: the exact layer's k as each
+// a design sweep, pipeline/post_design.hpp), kfit/ (kfit.json, and k_sweep.csv: the exact layer's k as each
 // reading of the calibration protocol changes, validation/k_sweep.hpp), and with a contact: contact/
 // (pressure.vtp, fields.vtu, sensors.csv, modes.csv), defect/ (defect.csv, defect.pvd + frames/) and
 // crosscheck/ (readings.csv, defect.csv, pressure.csv, attribution.csv with columns
@@ -26,7 +26,7 @@
 
 #include "app/commands.hpp"
 #include "app/common.hpp"
-#include "app/report_run.hpp"
+#include "app/report_writer.hpp"
 #include "skinfem/pipeline/chain_level.hpp"
 
 namespace skinfem::app {
@@ -35,15 +35,10 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
                bool fast) {
   pipeline::check_error_scales(error_scales);
   check_output_dir(out_dir);
-  ReportRun run(scene, out_dir, error_scales, fast);
-  run.factor_chain();
-  run.green();
-  if (scene.contact) run.contact_chain();
-  run.error_levels();
-  run.post_design();
-  if (const int stopped = run.figures(); stopped != 0) return stopped;
-  run.write_and_print();
-  return 0;
+  const pipeline::ReportOptions options{error_scales, fast};
+  ReportWriter writer(scene, out_dir, options);
+  pipeline::ReportResult run = pipeline::report_run(scene, options, writer);
+  return writer.finish(run);
 }
 
 }  // namespace skinfem::app

@@ -85,6 +85,11 @@ void write_json(const std::string& path, const nlohmann::json& j) {
   write_text_atomic(path, j.dump(2) + "\n");
 }
 
+void add_write_seconds(nlohmann::json& summary, double seconds) {
+  summary["wall_s"]["write"] = seconds;
+  summary["wall_total_s"] = summary.at("wall_total_s").get<double>() + seconds;
+}
+
 namespace {
 volatile sig_atomic_t child_group = 0;
 volatile sig_atomic_t child_signal = 0;

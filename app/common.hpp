@@ -27,6 +27,8 @@ void prepare_output_dir(const std::string& dir);
 // Writes text to path through a temporary file and a rename: never a half-written file.
 void write_text_atomic(const std::string& path, const std::string& text);
 void write_json(const std::string& path, const nlohmann::json& j);
+// A stage's summary built before its files were written gains their time: wall_s's "write" and the total.
+void add_write_seconds(nlohmann::json& summary, double seconds);
 
 // Runs argv[0] (found on PATH unless it has a slash) with these arguments, no shell in between (nothing in
 // them is ever parsed as a command), its stdout sent to our stderr so that stdout stays the summary; waits

@@ -4,7 +4,6 @@
 #include <sstream>
 
 #include "app/common.hpp"
-#include "skinfem/pipeline/kfit.hpp"
 #include "skinfem/validation/text.hpp"
 
 namespace skinfem::app {
@@ -55,16 +54,13 @@ void write_crosscheck(const validation::Crosscheck& x, const Sensors& sensors, c
   write_text_atomic(dir + "/attribution.csv", a.str());
 }
 
-void write_k_paper_answer(validation::KTargetAnswer& a, const std::vector<validation::KSweepPoint>& mesh_rows,
-                          const std::string& dir, nlohmann::json& entry) {
-  validation::add_points(a, mesh_rows);
+void write_k_sweep(const validation::KTargetAnswer& a, const std::string& dir) {
   std::ostringstream csv;
   csv.precision(10);
   csv << "parameter,value,k_central,k_lsq_line\n";
   for (const auto& p : a.points)
     csv << p.parameter << "," << p.value << "," << p.k_central << "," << p.k_lsq_line << "\n";
   write_text_atomic(dir + "/k_sweep.csv", csv.str());
-  entry = k_paper_json(a);
 }
 
 }  // namespace skinfem::app

@@ -109,7 +109,7 @@ std::vector<std::pair<std::string, std::string>> figure_captions(const std::stri
 }
 
 // The page up to its first table: scene, units, size, time and memory, and what a fast report left out.
-void page_head(std::ostream& h, const Scene& scene, const IndexInput& in) {
+void page_head(std::ostream& h, const Scene& scene, const ReportResult& in) {
   h << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>skinfem report: "
     << html_escape(scene.name)
     << "</"
@@ -122,13 +122,13 @@ void page_head(std::ostream& h, const Scene& scene, const IndexInput& in) {
   h << "<h1>skinfem report: " << html_escape(scene.name) << "</h1>\n<p>Units: mm, N, MPa (stresses in kPa). "
     << in.dofs << " DOFs, one factorization for the chain"
     << (in.error_bars.empty() ? "" : " (and one per coarser level for the error bars)") << "; total "
-    << fmt("%.1f", in.wall_total_s) << " s, peak memory " << fmt("%.0f", in.peak_rss_mb) << " MB.</p>\n";
+    << fmt("%.1f", in.seconds) << " s, peak memory " << fmt("%.0f", in.peak_rss_mb) << " MB.</p>\n";
   if (!in.left_out.empty())
     h << "<p><b>A fast report</b> (<code>--fast</code>): it leaves out the " << html_escape(in.left_out)
       << ". Run <code>skinfem report</code> without it for them.</p>\n";
 }
 
-void headline_numbers(std::ostream& h, const IndexInput& in) {
+void headline_numbers(std::ostream& h, const ReportResult& in) {
   if (!in.error_bars.empty()) {
     h << "<h2>Headline numbers and their discretization error</h2><table><tr><th>quantity</th><th>value</th>"
          "<th>error</th><th>unit</th><th>how the error is estimated</th></tr>\n";
@@ -142,9 +142,9 @@ void headline_numbers(std::ostream& h, const IndexInput& in) {
   }
 }
 
-void error_levels(std::ostream& h, const IndexInput& in) {
-  if (in.levels) {
-    const std::vector<ChainLevel>& levels = *in.levels;
+void error_levels(std::ostream& h, const ReportResult& in) {
+  if (!in.levels.empty()) {
+    const std::vector<ChainLevel>& levels = in.levels;
     std::vector<std::string> stages;
     for (const auto& [stage, t] : levels.back().wall) stages.push_back(stage);
     // The quantities in name order, as chain_study.json lists them.
@@ -178,14 +178,13 @@ void error_levels(std::ostream& h, const IndexInput& in) {
   }
 }
 
-void stage_times_and_k(std::ostream& h, const IndexInput& in) {
+void stage_times_and_k(std::ostream& h, const ReportResult& in) {
   h << "<h2>Time per stage</h2><table><tr><th>stage</th><th>seconds</th></tr>\n";
-  for (const auto& [stage, sec] : *in.wall)
+  for (const auto& [stage, sec] : in.wall)
     h << "<tr><td style=\"text-align:left\">" << stage << "</td><td>" << fmt("%.2f", sec) << "</td></tr>\n";
-  if (in.wall_beside)
-    for (const auto& [stage, sec] : *in.wall_beside)
-      h << "<tr><td style=\"text-align:left\">" << stage << " (on another thread, beside the others)</td><td>"
-        << fmt("%.2f", sec) << "</td></tr>\n";
+  for (const auto& [stage, sec] : in.beside)
+    h << "<tr><td style=\"text-align:left\">" << stage << " (on another thread, beside the others)</td><td>"
+      << fmt("%.2f", sec) << "</td></tr>\n";
   h << "</table>\n";
   h << "<h2>k</h2><p>" << html_escape(in.kfit_verdict) << "</p>\n";
   if (!in.k_paper_answer.empty())
@@ -193,8 +192,8 @@ void stage_times_and_k(std::ostream& h, const IndexInput& in) {
       << " (<a href=\"kfit/k_sweep.csv\">kfit/k_sweep.csv</a>)</p>\n";
 }
 
-void post_design(std::ostream& h, const IndexInput& in) {
-  if (const pipeline::PostDesign* p = in.post) {
+void post_design(std::ostream& h, const ReportResult& in) {
+  if (const pipeline::PostDesign* p = in.post ? &*in.post : nullptr) {
     h << "<h2>What a post changes: the paper's sensor against a disc</h2><p>" << html_escape(in.post_answer)
       << " A post reads the force on it over its cross-section.</p>\n"
          "<table><tr><th>sensor</th><th>diameter mm</th><th>height mm</th><th>g_zz peak /mm²</th><th>half "
@@ -231,13 +230,13 @@ void post_design(std::ostream& h, const IndexInput& in) {
   }
 }
 
-void front_sensors(std::ostream& h, const IndexInput& in) {
+void front_sensors(std::ostream& h, const ReportResult& in) {
   if (in.front)
     h << "<h2>Does friction-pressure coupling explain the front sensors?</h2><p>"
       << html_escape(in.front->answer) << "</p>\n";
 }
 
-void hole_budget(std::ostream& h, const Scene& scene, const IndexInput& in) {
+void hole_budget(std::ostream& h, const Scene& scene, const ReportResult& in) {
   if (in.budget && !in.budget->results.empty()) {
     const HoleBudget& b = *in.budget;
     const auto scale_sentence = [](const Eigen::VectorXd& s) {
@@ -304,8 +303,8 @@ void hole_budget(std::ostream& h, const Scene& scene, const IndexInput& in) {
   }
 }
 
-void crosscheck(std::ostream& h, const Scene& scene, const IndexInput& in) {
-  if (const validation::Crosscheck* x = in.x) {
+void crosscheck(std::ostream& h, const Scene& scene, const ReportResult& in) {
+  if (const validation::Crosscheck* x = in.crosscheck ? &*in.crosscheck : nullptr) {
     const int ns = static_cast<int>(scene.sensors.positions.size());
     h << "<h2>Mean sensor stresses (kPa), each variant swaps one assumption into full FE</h2>\n";
     for (int c = 0; c < 2; ++c) {
@@ -348,7 +347,7 @@ void crosscheck(std::ostream& h, const Scene& scene, const IndexInput& in) {
   }
 }
 
-void figures(std::ostream& h, const std::string& dir, const Scene& scene, const IndexInput& in) {
+void figures(std::ostream& h, const std::string& dir, const Scene& scene, const ReportResult& in) {
   h << "<h2>Figures</h2>\n";
   std::vector<std::string> drawn;  // PNG stems, sorted: the directory's own order is the file system's
   if (std::filesystem::is_directory(dir + "/figures"))
@@ -389,7 +388,7 @@ std::string with_error(double value, double error) {
   return e.empty() ? v : v + " +- " + e;
 }
 
-void write_index(const std::string& dir, const Scene& scene, const IndexInput& in) {
+void write_index(const std::string& dir, const Scene& scene, const ReportResult& in) {
   std::ostringstream h;
   page_head(h, scene, in);
   headline_numbers(h, in);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "skinfem/contact/holes/cover.hpp"
+#include "skinfem/contact/pressure_map.hpp"
 #include "skinfem/pipeline/clock.hpp"
 #include "skinfem/pipeline/meridian_contact.hpp"
 #include "skinfem/pipeline/scene_json.hpp"
@@ -156,7 +157,7 @@ ContactRun contact_run(const Scene& scene, std::shared_ptr<const ContactSetup> s
   shift.zone_xy_mm = {cu.zone_centroid[0] - un.zone_centroid[0], cu.zone_centroid[1] - un.zone_centroid[1]};
   shift.pressure_mm = shift.pressure_xy_mm[0] * t[0] + shift.pressure_xy_mm[1] * t[1];
   shift.zone_mm = shift.zone_xy_mm[0] * t[0] + shift.zone_xy_mm[1] * t[1];
-
+  contact::check_hole_clearance(mesh, solver, run.result(), scene.contact->holes, "contact.holes");
   return run;
 }
 

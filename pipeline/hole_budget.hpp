@@ -4,6 +4,7 @@
 // Units: mm, N, MPa.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -32,5 +33,8 @@ struct HoleBudget {
 // reading_scale: validation::FactsInput's (post sensors: from pipeline::paper_reading_scale).
 HoleBudget hole_budget(const Scene& scene, const ContactSetup& setup, const validation::Crosscheck& x,
                        const Eigen::VectorXd& reading_scale = {});
+// report.json's hole_budget entry: noise, rules, units, each hypothesis's facts and peaks, the answer; or
+// {"skipped": why}.
+nlohmann::json hole_budget_json(const Scene& scene, const HoleBudget& b);
 
 }  // namespace skinfem::pipeline

@@ -1,5 +1,6 @@
 #include "skinfem/pipeline/kfit.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -242,6 +243,24 @@ nlohmann::json sensor_json(const KfitResult& r, const KfitSensor& k) {
   return js;
 }
 }  // namespace
+
+KfitRanges k_ranges(const KfitResult& r) {
+  KfitRanges out{{1e300, -1e300}, {1e300, -1e300}};
+  for (const KfitSensor& k : r.sensors) {
+    out.k_central = {std::min(out.k_central[0], k.fe.k_central), std::max(out.k_central[1], k.fe.k_central)};
+    out.k_lsq_line = {std::min(out.k_lsq_line[0], k.fe.k_lsq_line),
+                      std::max(out.k_lsq_line[1], k.fe.k_lsq_line)};
+  }
+  return out;
+}
+
+nlohmann::json kfit_report_json(const KfitResult& r) {
+  nlohmann::json j = kfit_json(r);
+  const KfitRanges k = k_ranges(r);
+  j["k_central_range_over_sensors"] = k.k_central;
+  j["k_lsq_line_range_over_sensors"] = k.k_lsq_line;
+  return j;
+}
 
 nlohmann::json kfit_json(const KfitResult& r) {
   nlohmann::json sensors = nlohmann::json::array();

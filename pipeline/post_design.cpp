@@ -7,8 +7,11 @@
 #include "skinfem/pipeline/clock.hpp"
 #include "skinfem/pipeline/sensor_greens.hpp"
 #include "skinfem/scene/parallel.hpp"
+#include "skinfem/validation/text.hpp"
 
 namespace skinfem::pipeline {
+
+using validation::fmt;
 
 namespace {
 // The scene with one sensor on its skin's axis.
@@ -95,6 +98,80 @@ PostDesign post_design(const Scene& scene, const std::vector<double>& diameters,
   for (size_t i = 2; i < jobs.size(); ++i) p.sweep.push_back(from_values(designs[i]));
   p.seconds = clock.seconds();
   return p;
+}
+
+namespace {
+
+nlohmann::json design_json(const pipeline::SensorDesign& d) {
+  const auto shape = [](const MeridianGreen::Shape& s) {
+    return nlohmann::json{{"peak_per_mm2", s.peak},
+                          {"peak_at_mm", s.peak_at},
+                          {"half_width_mm", s.half_width},
+                          {"integral", s.integral}};
+  };
+  return {{"diameter_mm", d.diameter},
+          {"height_mm", d.height},
+          {"g_zz", shape(d.zz)},
+          {"g_xx", shape(d.xx)},
+          {"peak_change", d.peak_change},
+          {"half_width_change", d.half_width_change},
+          {"integral_change", d.integral_change}};
+}
+
+// The heights of the sweep a skin of thickness h takes (a post stays below 0.9 h, the scene rule).
+std::vector<double> sweep_heights(double h) {
+  std::vector<double> out;
+  for (double t : {0.0, 0.2, 0.4, 0.6, 0.8, 1.0})
+    if (t < 0.9 * h) out.push_back(t);
+  return out;
+}
+}  // namespace
+PostDesign report_post_design(const Scene& scene) {
+  const double h = scene.geometry.kind == GeometryKind::flat ? scene.geometry.flat.h : scene.geometry.cap.h;
+  return post_design(scene, {0.1, 0.2, 0.3, 0.4}, sweep_heights(h));
+}
+
+nlohmann::json post_design_json(const PostDesign& p) {
+  // The sentence, from the numbers: the scene's post against its disc, then the sweep's ranges.
+  const pipeline::SensorDesign &post = p.post, &disc = p.disc;
+  double gain_lo = 1e300, gain_hi = -1e300, width_lo = 1e300, width_hi = -1e300, change = 0;
+  double t_lo = 1e300, t_hi = 0, d_lo = 1e300, d_hi = 0;
+  for (const auto& d : p.sweep) {
+    t_lo = std::min(t_lo, d.height), t_hi = std::max(t_hi, d.height);
+    d_lo = std::min(d_lo, d.diameter), d_hi = std::max(d_hi, d.diameter);
+    gain_lo = std::min(gain_lo, d.zz.integral), gain_hi = std::max(gain_hi, d.zz.integral);
+    width_lo = std::min(width_lo, d.zz.half_width), width_hi = std::max(width_hi, d.zz.half_width);
+    change = std::max({change, d.peak_change, d.half_width_change, d.integral_change});
+  }
+  const std::string answer =
+      "At the skin's axis (" + p.skin + "), an isolated post " + fmt("%.3g", post.diameter) +
+      " mm wide and " + fmt("%.3g", post.height) +
+      " mm high against the disc of its diameter: g_zz peaks at " + fmt("%.4g", post.zz.peak) + " against " +
+      fmt("%.4g", disc.zz.peak) + " /mm² (" + fmt("%.2f", post.zz.peak / disc.zz.peak) + "×), half width " +
+      fmt("%.3g", post.zz.half_width) + " against " + fmt("%.3g", disc.zz.half_width) + " mm, ∫ g_zz dA " +
+      fmt("%.3g", post.zz.integral) + " against " + fmt("%.3g", disc.zz.integral) + "; g_xx peaks at " +
+      fmt("%.4g", post.xx.peak) + " against " + fmt("%.4g", disc.xx.peak) + " /mm² (" +
+      fmt("%.2f", post.xx.peak / disc.xx.peak) + "×), half width " + fmt("%.3g", post.xx.half_width) +
+      " against " + fmt("%.3g", disc.xx.half_width) + " mm, ∫ g_xx dA " + fmt("%.3g", post.xx.integral) +
+      " against " + fmt("%.3g", disc.xx.integral) + " (largest change from the mesh twice as coarse: " +
+      fmt("%.2g", 100 * std::max({post.peak_change, post.half_width_change, post.integral_change})) +
+      " %). Over the sweep (heights " + fmt("%g", t_lo) + "–" + fmt("%g", t_hi) + " mm, diameters " +
+      fmt("%g", d_lo) + "–" + fmt("%g", d_hi) + " mm) ∫ g_zz dA runs " + fmt("%.3g", gain_lo) + "–" +
+      fmt("%.3g", gain_hi) + " and its half width " + fmt("%.3g", width_lo) + "–" + fmt("%.3g", width_hi) +
+      " mm (mesh change up to " + fmt("%.2g", 100 * change) +
+      " %). The integrals are the readings under a uniform vertical load (or shear) per unit base area over "
+      "the "
+      "whole top, on a curved top not a pressure; under a uniform pressure a post reads it exactly "
+      "(hydrostatic).";
+  nlohmann::json j = {{"skin", p.skin},
+                      {"post", design_json(post)},
+                      {"disc", design_json(disc)},
+                      {"sweep_mesh_scale", p.sweep_scale},
+                      {"dofs", p.dofs},
+                      {"seconds", p.seconds},
+                      {"answer", answer}};
+  for (const auto& d : p.sweep) j["sweep"].push_back(design_json(d));
+  return j;
 }
 
 }  // namespace skinfem::pipeline

@@ -6,6 +6,7 @@
 // from the level at twice every mesh size as its error.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -40,5 +41,10 @@ std::string post_design_unavailable(const Scene& scene);
 // post_design_unavailable is not empty.
 PostDesign post_design(const Scene& scene, const std::vector<double>& diameters,
                        const std::vector<double>& heights, double sweep_scale = 1.41);
+// The report's: diameters 0.1–0.4 mm, heights 0–1 mm below 0.9 h (the scene's rule for a post).
+PostDesign report_post_design(const Scene& scene);
+// report.json's post_design entry: each design's shapes and changes, and `answer`, the scene's post against
+// its disc and the sweep's ranges in one paragraph from the numbers.
+nlohmann::json post_design_json(const PostDesign& p);
 
 }  // namespace skinfem::pipeline

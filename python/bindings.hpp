@@ -65,5 +65,7 @@ void bind_green(py::module_& m);
 void bind_paper_model(py::module_& m);
 // The paper's model against FE, assumption by assumption (validation/crosscheck.hpp).
 void bind_crosscheck(py::module_& m);
+// The main job (pipeline/report.hpp).
+void bind_report(py::module_& m);
 
 }  // namespace skinfem::python

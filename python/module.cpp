@@ -51,4 +51,5 @@ PYBIND11_MODULE(_skinfem, m) {
   bind_green(m);
   bind_paper_model(m);
   bind_crosscheck(m);
+  bind_report(m);
 }

@@ -21,6 +21,7 @@ SRC = os.environ["SKINFEM_SOURCE_DIR"]
 EXE = os.environ["SKINFEM_EXE"]
 FLAT = os.path.join(SRC, "scenes", "flat_layer.json")
 HERTZ = os.path.join(SRC, "scenes", "hertz_layer.json")
+COARSE_CAP = os.path.join(SRC, "tests", "app", "data", "coarse_cap.json")
 # Timing and memory differ from run to run; everything else must agree.
 VOLATILE = re.compile(r"(wall|peak_rss|seconds|ms_per_position)")
 
@@ -134,6 +135,23 @@ def test_defect_reproduces_the_command(tmp_path, sweep_path):
         d.varsigma_kPa("rolling")
     with pytest.raises(skinfem.SceneError, match="contact.sweep: missing"):
         skinfem.defect(skinfem.scene(HERTZ))
+
+
+def test_report_reproduces_the_command(tmp_path):
+    # The main job through the library's one call (pipeline/report.hpp), as `skinfem report` runs it: the
+    # dict is the command's report.json but for the figures, which only the command draws.
+    r = run_cli("report", COARSE_CAP, "--fast", "--out", str(tmp_path / "out"))
+    assert r.returncode == 0, r.stderr
+    with open(tmp_path / "out" / "report.json") as f:
+        cli = json.load(f)
+    cli.pop("figures_exit_code")
+    d = skinfem.report(skinfem.scene(COARSE_CAP), fast=True)
+    assert_same(cli, d)
+    assert "left_out" in d["fast"] and "crosscheck" not in os.listdir(tmp_path)  # the library wrote nothing
+    with pytest.raises(skinfem.SceneError, match="^error_scales: fast=True draws no error bars"):
+        skinfem.report(skinfem.scene(COARSE_CAP), error_scales=[2, 1.41], fast=True)
+    with pytest.raises(skinfem.SceneError, match=r"^--error-scales: 0\.5"):
+        skinfem.report(skinfem.scene(COARSE_CAP), error_scales=[0.5, 2])
 
 
 def test_scene_from_dict_is_the_scene_from_its_file():
