@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "skinfem/fem/sparse_pattern.hpp"
 #include "skinfem/mesh/p2_tet.hpp"
 #include "skinfem/mesh/quality.hpp"
 #include "skinfem/mesh/surface_quadrature.hpp"
@@ -19,57 +20,12 @@ bool is_affine(const TetMesh& m, int t) {
   return true;
 }
 
-namespace {
-// Node adjacency (sorted, including the node itself): the sparsity pattern of every P2 block.
-std::vector<std::vector<int>> node_adjacency(const TetMesh& m) {
-  std::vector<std::vector<int>> adj(m.num_nodes());
-  for (int t = 0; t < m.num_tets(); ++t)
-    for (int a = 0; a < 10; ++a)
-      for (int b = 0; b < 10; ++b) adj[m.tets(t, a)].push_back(m.tets(t, b));
-  for (auto& row : adj) {
-    std::sort(row.begin(), row.end());
-    row.erase(std::unique(row.begin(), row.end()), row.end());
-  }
-  return adj;
-}
-
-// Column-major matrix with rows_per_node × 3 blocks: column 3j + c holds rows
-// rows_per_node·i + r for every i in adj[j] (restricted to i < row_limit).
-SparseMatrixd block_pattern(const std::vector<std::vector<int>>& adj, int rows, int rows_per_node,
-                            int row_limit) {
-  const int n = static_cast<int>(adj.size());
-  std::vector<int> outer(3 * n + 1, 0);
-  std::vector<int> inner;
-  for (int j = 0; j < n; ++j) {
-    const auto end = std::lower_bound(adj[j].begin(), adj[j].end(), row_limit);
-    for (int c = 0; c < 3; ++c) {
-      for (auto it = adj[j].begin(); it != end; ++it)
-        for (int r = 0; r < rows_per_node; ++r) inner.push_back(rows_per_node * *it + r);
-      outer[3 * j + c + 1] = static_cast<int>(inner.size());
-    }
-  }
-  SparseMatrixd M(rows, 3 * n);
-  M.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
-  std::copy(outer.begin(), outer.end(), M.outerIndexPtr());
-  std::copy(inner.begin(), inner.end(), M.innerIndexPtr());
-  std::fill(M.valuePtr(), M.valuePtr() + inner.size(), 0.0);
-  return M;
-}
-
-// Position of row index `row` in column `col` of a compressed matrix.
-inline int slot(const SparseMatrixd& M, int row, int col) {
-  const int* begin = M.innerIndexPtr() + M.outerIndexPtr()[col];
-  const int* end = M.innerIndexPtr() + M.outerIndexPtr()[col + 1];
-  return static_cast<int>(std::lower_bound(begin, end, row) - M.innerIndexPtr());
-}
-}  // namespace
-
 MixedMatrices assemble_mixed(const TetMesh& m, const Lame& lame) {
   const int n = m.num_nodes(), nv = m.num_vertices;
-  const auto adj = node_adjacency(m);
+  const auto adj = pattern::node_adjacency(m);
   MixedMatrices out;
-  out.A = block_pattern(adj, 3 * n, 3, n);
-  out.B = block_pattern(adj, nv, 1, nv);
+  out.A = pattern::block_pattern(adj, 3 * n, 3, n);
+  out.B = pattern::block_pattern(adj, nv, 1, nv);
   std::vector<Eigen::Triplet<double>> mp;
   mp.reserve(16 * m.num_tets());
 
@@ -101,17 +57,7 @@ MixedMatrices assemble_mixed(const TetMesh& m, const Lame& lame) {
         for (int s = 0; s < 4; ++s) Me(r, s) += w * L[r] * L[s];
       }
     }
-    for (int b = 0; b < 10; ++b) {
-      const int nb = m.tets(t, b);
-      for (int j = 0; j < 3; ++j) {
-        const int col = 3 * nb + j;
-        for (int a = 0; a < 10; ++a) {
-          const int k = slot(out.A, 3 * m.tets(t, a), col);
-          for (int i = 0; i < 3; ++i) out.A.valuePtr()[k + i] += Ae(3 * a + i, 3 * b + j);
-        }
-        for (int r = 0; r < 4; ++r) out.B.valuePtr()[slot(out.B, m.tets(t, r), col)] += Be(r, 3 * b + j);
-      }
-    }
+    pattern::add_element(m, t, Ae, Be, out.A, out.B);
     for (int r = 0; r < 4; ++r)
       for (int s = 0; s < 4; ++s) mp.emplace_back(m.tets(t, r), m.tets(t, s), Me(r, s));
   }

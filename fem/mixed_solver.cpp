@@ -237,10 +237,11 @@ double MixedSolver::factor_flops() const {
 int MixedSolver::free_dofs() const { return impl_->nf + impl_->np; }
 int MixedSolver::pinned_pressures() const { return impl_->pinned_pressures; }
 
-MixedSolution MixedSolver::solve(const Eigen::VectorXd& f, const Eigen::VectorXd& u_fixed) const {
+MixedSolution MixedSolver::solve(const Eigen::VectorXd& f, const Eigen::VectorXd& u_fixed,
+                                 const Eigen::VectorXd& g_given) const {
   const Impl& s = *impl_;
   const int n3 = s.M.A.rows();
-  // Lift the prescribed values: b_f = f_f − A_fc u_c, g = −B_c u_c.
+  // Lift the prescribed values: b_f = f_f − A_fc u_c, g = g_given − B_c u_c.
   Eigen::VectorXd uc = Eigen::VectorXd::Zero(n3);
   if (u_fixed.size())
     for (int d = 0; d < n3; ++d)
@@ -250,7 +251,7 @@ MixedSolution MixedSolver::solve(const Eigen::VectorXd& f, const Eigen::VectorXd
   for (int i = 0; i < s.nf; ++i) bf[i] = f[s.free_dofs[i]] - Au[s.free_dofs[i]];
   Eigen::VectorXd g(s.np);
   for (size_t q = 0; q < s.p_index.size(); ++q)
-    if (s.p_index[q] >= 0) g[s.p_index[q]] = -Bu[q];
+    if (s.p_index[q] >= 0) g[s.p_index[q]] = g_given.size() ? g_given[q] - Bu[q] : -Bu[q];
 
   MixedSolution out;
   Eigen::VectorXd uf, p;

@@ -69,6 +69,9 @@ class MixedSolver {
   MixedSolver(const MixedMatrices& matrices, const Lame& lame, const std::vector<bool>& fixed,
               SolverKind kind, double tolerance = 1e-10, const FactorProgress& progress = {},
               const Coupling* coupling = nullptr);
+  // It keeps a reference to the matrices, which must outlive it (a temporary does not compile).
+  MixedSolver(MixedMatrices&&, const Lame&, const std::vector<bool>&, SolverKind, double = 1e-10,
+              const FactorProgress& = {}, const Coupling* = nullptr) = delete;
 
   // The coupling's products, m × m (empty without a coupling): G(i, j) = F.col(i) · u_j over the free DOFs,
   // u_j = solve_block(F.col(j), U_fixed.col(j)). Between two loads it is their compliance, symmetric by
@@ -80,8 +83,11 @@ class MixedSolver {
   ~MixedSolver();
 
   // f: 3N load vector (entries at fixed DOFs ignored); u_fixed: 3N prescribed values (only fixed DOFs
-  // read; pass an empty vector for zero). Throws SolverError if the relative residual exceeds the tolerance.
-  MixedSolution solve(const Eigen::VectorXd& f, const Eigen::VectorXd& u_fixed = {}) const;
+  // read; pass an empty vector for zero); g: Nv right-hand side of the pressure rows, B u − C p = g (empty:
+  // zero; a Newton step's constraint residual, fem/finite_strain.hpp). Throws SolverError if the relative
+  // residual exceeds the tolerance.
+  MixedSolution solve(const Eigen::VectorXd& f, const Eigen::VectorXd& u_fixed = {},
+                      const Eigen::VectorXd& g = {}) const;
 
   // Displacements (3N×k) for k load vectors F (3N×k) and prescribed values U_fixed (3N×k, only fixed
   // DOFs read; empty for zero), solved as one block (direct_ldlt; schur_cg goes column by column).
