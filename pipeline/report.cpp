@@ -305,6 +305,8 @@ ReportResult Chain::finish() {
 
 ReportResult report_run(const Scene& scene, const ReportOptions& options, ReportSink& sink) {
   check_error_scales(options.error_scales);
+  if (options.fast && !options.error_scales.empty())
+    throw SceneError("error_scales: a fast report draws no error bars; give one or the other");
   Chain chain(scene, options, sink);
   chain.factor();
   chain.green();

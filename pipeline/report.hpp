@@ -40,9 +40,11 @@ struct ReportOptions {
 };
 
 // What a front end does with each stage's results as they become final. The calls come in the order
-// declared, each once at most (a scene without a contact has no contact, defect, crosscheck or budget), on
-// the thread that called report_run, except mesh(), which comes from a thread of its own beside the Green
-// stage's computation and has returned before green() is called. The defaults do nothing.
+// declared, each once at most (a scene without a contact has no contact, defect, crosscheck or budget),
+// except kfit(), whose fits run on a thread beside the contact and the hole sweep: it comes after green()
+// and before crosscheck() and chain_done(). They come on the thread that called report_run, except mesh(),
+// which comes from a thread of its own beside the Green stage's computation and has returned before green()
+// is called. The defaults do nothing.
 class ReportSink {
  public:
   virtual ~ReportSink() = default;
@@ -85,8 +87,8 @@ struct ReportResult {
   double peak_rss_mb = 0;  // the process's peak resident memory at its end
 };
 
-// Throws SceneError on bad options (check_error_scales) or a scene the chain cannot take, SolverError when
-// a solve fails; the sink's calls made by then stand.
+// Throws SceneError on bad options (check_error_scales; error scales with fast) before any stage, or on a
+// scene the chain cannot take; SolverError when a solve fails. The sink's calls made by then stand.
 ReportResult report_run(const Scene& scene, const ReportOptions& options, ReportSink& sink);
 
 }  // namespace skinfem::pipeline

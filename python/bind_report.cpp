@@ -31,8 +31,6 @@ void bind_report(py::module_& m) {
   m.def(
       "report",
       [](const Scene& scene, std::optional<std::vector<double>> error_scales, bool fast) {
-        if (fast && error_scales && !error_scales->empty())
-          throw SceneError("error_scales: fast=True draws no error bars; give one or the other");
         pipeline::ReportOptions options;
         options.fast = fast;
         if (!fast) options.error_scales = error_scales ? *error_scales : default_error_scales();
