@@ -12,6 +12,7 @@
 #include <memory>
 #include <string>
 
+#include "scenes.hpp"
 #include "skinfem/pipeline/crosscheck.hpp"
 
 namespace skinfem::pipeline {
@@ -22,31 +23,6 @@ namespace {
 constexpr double kRoundOff = 1e-9;
 constexpr int kPositions = 5;
 
-Scene swept_layer() {
-  Scene s;
-  s.name = "crosscheck_layer";
-  s.source_path = "crosscheck_layer.json";
-  s.geometry.kind = GeometryKind::flat;
-  s.geometry.flat = {2.0, 5.0};
-  s.sensors.positions = {{-1, 0}, {0, 0}, {1, 0}};
-  s.mesh.h_min = 0.5;
-  s.mesh.growth = 1.7;
-  s.mesh.h_max = 1.5;
-  s.mesh.sensor_h = 0.5;
-  ContactLoad c;
-  c.indenter = IndenterKind::sphere;
-  c.sphere_R = 20;
-  c.force = 0.3;
-  c.zone_radius = 2.2;
-  c.h = 0.35;
-  c.mu = 0.5;
-  c.static_ratio = 0.1;
-  c.friction = FrictionMode::coupled;
-  c.sweep = HoleSweep{{-1.5, 0}, {1.5, 0}, kPositions, 0.4};
-  s.contact = c;
-  return s;
-}
-
 int variant(const std::vector<validation::Variant>& v, const std::string& name) {
   for (size_t i = 0; i < v.size(); ++i)
     if (v[i].name == name) return static_cast<int>(i);
@@ -56,7 +32,7 @@ int variant(const std::vector<validation::Variant>& v, const std::string& name) 
 class Crosscheck : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    scene_ = new Scene(swept_layer());
+    scene_ = new Scene(testing::swept_layer("crosscheck_layer", kPositions));
     ContactSkin skin = chain_skin(*scene_);
     adjoints_ = adjoint_setup(*scene_, skin.skin).release();
     contact_ = std::shared_ptr<const ContactSetup>(contact_setup(*scene_, std::move(skin)));

@@ -12,6 +12,7 @@
 #include <memory>
 #include <string>
 
+#include "scenes.hpp"
 #include "skinfem/pipeline/defect.hpp"
 
 namespace skinfem::pipeline {
@@ -23,40 +24,15 @@ constexpr double kRoundOff = 1e-9;
 constexpr double kH = 2.0, kHole = 0.4;
 constexpr int kPositions = 7;
 
-Scene swept_layer() {
-  Scene s;
-  s.name = "defect_layer";
-  s.source_path = "defect_layer.json";
-  s.geometry.kind = GeometryKind::flat;
-  s.geometry.flat = {kH, 5.0};
-  s.sensors.positions = {{-1, 0}, {0, 0}, {1, 0}};
-  s.mesh.h_min = 0.5;
-  s.mesh.growth = 1.7;
-  s.mesh.h_max = 1.5;
-  s.mesh.sensor_h = 0.5;
-  ContactLoad c;
-  c.indenter = IndenterKind::sphere;
-  c.sphere_R = 20;
-  c.force = 0.3;
-  c.zone_radius = 2.2;
-  c.h = 0.35;
-  c.mu = 0.5;
-  c.static_ratio = 0.1;
-  c.friction = FrictionMode::coupled;
-  HoleSweep sweep;
-  sweep.from = {-1.8, 0};  // both ends outside the contact (its radius is about 1 mm here)
-  sweep.to = {1.8, 0};
-  sweep.positions = kPositions;
-  sweep.hole_diameter = kHole;
-  c.sweep = sweep;
-  s.contact = c;
-  return s;
+// Both ends of the sweep outside the contact (its radius is about 1 mm here).
+Scene defect_layer() {
+  return testing::swept_layer("defect_layer", kPositions, {-1.8, 0}, {1.8, 0}, kH, kHole);
 }
 
 class Defect : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    scene_ = new Scene(swept_layer());
+    scene_ = new Scene(defect_layer());
     setup_ = std::shared_ptr<const ContactSetup>(contact_setup(*scene_));
     // Two synthetic coarser levels for the error bar: it needs only their values (chain_errors).
     std::vector<ChainLevel> coarse(2);
@@ -214,10 +190,10 @@ TEST_F(Defect, TheSummarySaysTheTypedRun) {
 }
 
 TEST_F(Defect, AStageWithoutASweepIsRefusedNamingIt) {
-  Scene s = swept_layer();
+  Scene s = defect_layer();
   s.contact->sweep.reset();
   for (const Scene& bad : {s, [] {
-                             Scene t = swept_layer();
+                             Scene t = defect_layer();
                              t.contact.reset();
                              return t;
                            }()}) {

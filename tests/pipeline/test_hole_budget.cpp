@@ -13,6 +13,7 @@
 #include <memory>
 #include <string>
 
+#include "scenes.hpp"
 #include "skinfem/contact/metrics.hpp"
 #include "skinfem/pipeline/crosscheck.hpp"
 #include "skinfem/pipeline/hole_budget.hpp"
@@ -26,35 +27,10 @@ constexpr int kPositions = 5;
 
 bool has(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
 
-Scene swept_layer() {
-  Scene s;
-  s.name = "budget_layer";
-  s.source_path = "budget_layer.json";
-  s.geometry.kind = GeometryKind::flat;
-  s.geometry.flat = {2.0, 5.0};
-  s.sensors.positions = {{-1, 0}, {0, 0}, {1, 0}};
-  s.mesh.h_min = 0.5;
-  s.mesh.growth = 1.7;
-  s.mesh.h_max = 1.5;
-  s.mesh.sensor_h = 0.5;
-  ContactLoad c;
-  c.indenter = IndenterKind::sphere;
-  c.sphere_R = 20;
-  c.force = 0.3;
-  c.zone_radius = 2.2;
-  c.h = 0.35;
-  c.mu = 0.5;
-  c.static_ratio = 0.1;
-  c.friction = FrictionMode::coupled;
-  c.sweep = HoleSweep{{-1.5, 0}, {1.5, 0}, kPositions, 0.4};
-  s.contact = c;
-  return s;
-}
-
 class HoleBudgetStage : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    scene_ = new Scene(swept_layer());
+    scene_ = new Scene(testing::swept_layer("budget_layer", kPositions));
     ContactSkin skin = chain_skin(*scene_, HolePath::always);  // the report's: interface hypotheses cut holes
     adjoints_ = adjoint_setup(*scene_, skin.skin).release();
     contact_ = std::shared_ptr<const ContactSetup>(contact_setup(*scene_, std::move(skin)));
