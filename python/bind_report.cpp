@@ -33,7 +33,11 @@ void bind_report(py::module_& m) {
       [](const Scene& scene, std::optional<std::vector<double>> error_scales, bool fast) {
         pipeline::ReportOptions options;
         options.fast = fast;
-        if (!fast) options.error_scales = error_scales ? *error_scales : default_error_scales();
+        // Given levels go to the library, which refuses them with fast; the default only without fast.
+        if (error_scales)
+          options.error_scales = *error_scales;
+        else if (!fast)
+          options.error_scales = default_error_scales();
         pipeline::ReportSink keep_only;  // no files: the result is the report
         pipeline::ReportResult r;
         {
