@@ -76,7 +76,12 @@ int PlanarFaceIndex::find(double x, double y, double& s, double& t) const {
 
 double skin_thickness(const Geometry& geometry, const TetMesh& mesh, double x, double y) {
   const SkinShape shape(geometry);
-  if (shape.exact()) return shape.mean_top_z(x, y);
+  if (shape.exact()) {
+    if (!shape.covers(x, y))
+      throw std::out_of_range("no skin above (" + std::to_string(x) + ", " + std::to_string(y) +
+                              "): the point is off the skin's footprint");
+    return shape.mean_top_z(x, y);
+  }
   return meshed_thickness(mesh, x, y);
 }
 

@@ -49,6 +49,15 @@ double SkinShape::mean_top_z(double x, double y) const {
   return cap_.h - c + c * std::sqrt(1 - u * u - v * v);
 }
 
+bool SkinShape::covers(double x, double y) const {
+  if (kind_ == GeometryKind::surface) return true;
+  if (kind_ == GeometryKind::flat) {
+    const double w = flat_.half_width * (1 + 1e-9);
+    return std::abs(x) <= w && std::abs(y) <= w;
+  }
+  return std::hypot(x - cap_.apex_x, y - cap_.apex_y) <= cap_.truncation_radius * (1 + 1e-9);
+}
+
 Vec3 SkinShape::on_side(const Vec3& p) const {
   if (kind_ != GeometryKind::cap) return p;
   const double dx = p[0] - cap_.apex_x, dy = p[1] - cap_.apex_y;

@@ -17,6 +17,9 @@ class SkinShape {
   double top_z(double x, double y) const { return mean_top_z(x, y) + ridge_z(x, y); }
   // The top without its ridges: the skin's mean thickness, which ridged and smooth skins are compared at.
   double mean_top_z(double x, double y) const;
+  // Whether the skin stands above the base point (x, y): the flat layer's square, the cap's truncation disc
+  // (edges included, to 1e-9 of the size). An imported surface's footprint is its mesh's: always true here.
+  bool covers(double x, double y) const;
   // The ridges' height above the mean top, mm (0 off the pattern or without ridges).
   double ridge_z(double x, double y) const;
   // Point on the exact top surface above (x, y).

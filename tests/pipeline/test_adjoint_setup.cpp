@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <tuple>
 
 #include "skinfem/mesh/build.hpp"
 #include "skinfem/pipeline/adjoint_setup.hpp"
@@ -104,6 +105,18 @@ TEST(AdjointSetup, ThicknessIsTheShapesOwnHeight) {
     const double exact = 2 - 40 + std::sqrt(40 * 40 - r2);
     EXPECT_NEAR(thickness_at(c, cap_mesh, p), exact, kRoundOff * exact);
   }
+  // Off the exact shapes' footprints (the flat layer's half-width 4; the cap's truncation radius around its
+  // apex, where beyond its rim the sphere's formula has no real value) there is no skin: a scene error.
+  for (const auto& [scene, mesh, p] :
+       {std::tuple{&flat, &flat_mesh, Vec2{100, 0}}, std::tuple{&flat, &flat_mesh, Vec2{0, -4.5}},
+        std::tuple{&c, &cap_mesh, Vec2{0.5 + c.geometry.cap.truncation_radius + 1, 0}},
+        std::tuple{&c, &cap_mesh, Vec2{50, 0}}})
+    try {
+      thickness_at(*scene, *mesh, p);
+      ADD_FAILURE() << "a point off the footprint has a thickness: (" << p[0] << ", " << p[1] << ")";
+    } catch (const SceneError& e) {
+      EXPECT_TRUE(has(e.what(), "footprint")) << e.what();
+    }
   // An imported box: its meshed top, 1 mm above the base (planar faces: exact), and no skin beyond it.
   const Scene box = box_scene("thickness");
   const TetMesh box_mesh = build_mesh(box);
