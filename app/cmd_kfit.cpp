@@ -24,9 +24,10 @@ namespace skinfem::app {
 
 using green::LayerLoad;
 
-void write_kfit(const Scene& scene, const KfitResult& r, const std::string& out_dir) {
+void write_kfit(const Scene& scene, const KfitResult& r, const nlohmann::json& file,
+                const std::string& out_dir) {
   prepare_output_dir(out_dir);
-  write_json(out_dir + "/kfit.json", kfit_json(r));
+  write_json(out_dir + "/kfit.json", file);
   const KfitSensor& first = r.sensors.at(0);
   std::printf(
       "kfit %s, headline sensor #1 of %zu: h %.3f mm, nu %.3g, %s load; %s path (%s): %d DOFs, %.2f s (mesh "
@@ -61,9 +62,9 @@ void write_kfit(const Scene& scene, const KfitResult& r, const std::string& out_
 
 int run_kfit(const Scene& scene, const std::string& out_dir, const std::string& load_name, GreenPath path) {
   check_output_dir(out_dir);
-  write_kfit(scene,
-             kfit(scene, green_path(scene, path), load_name == "point" ? LayerLoad::point : LayerLoad::punch),
-             out_dir);
+  const KfitResult r =
+      kfit(scene, green_path(scene, path), load_name == "point" ? LayerLoad::point : LayerLoad::punch);
+  write_kfit(scene, r, kfit_json(r), out_dir);
   return 0;
 }
 

@@ -13,6 +13,7 @@
 #include "skinfem/mesh/surface.hpp"
 #include "skinfem/pipeline/progress.hpp"
 #include "skinfem/pipeline/resources.hpp"
+#include "skinfem/pipeline/skin_setup.hpp"
 #include "skinfem/scene/load.hpp"
 
 namespace {
@@ -129,6 +130,7 @@ int main(int argc, char** argv) {
     const Handler& handler = handlers().at(command);
     handler.check(o);
     Scene scene = skinfem::load_scene(o.text("scene"));
+    if (command != "mesh" && command != "solve") skinfem::pipeline::require_linear(scene, command);
     scene.limits.max_dofs = o.number("max_dofs");
     // An --out without a default is out/<scene name>.
     const std::string out = o.given("out") || !o.text("out").empty() ? o.text("out") : "out/" + scene.name;

@@ -37,8 +37,8 @@ void ReportWriter::green(const SensorGreens& greens, const pipeline::GreenRun& r
 // kfit's end: its outputs, and the calibration's figures drawn beside the stages still to come. The
 // contact's are drawn after the crosscheck (and the budget), by an interpreter started now that waits for
 // the word; the rest at the end.
-void ReportWriter::kfit(const pipeline::KfitResult& r) {
-  write_kfit(scene_, r, out_ + "/kfit");
+void ReportWriter::kfit(const pipeline::KfitResult& r, const nlohmann::json& file) {
+  write_kfit(scene_, r, file, out_ + "/kfit");
   const std::vector<std::string> calibration{"fig1_calibration.png", "green_vs_halfspace.png"};
   figures_.draw_now(calibration);
   if (scene_.contact) {

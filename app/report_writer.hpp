@@ -18,7 +18,7 @@ class ReportWriter : public pipeline::ReportSink {
   void mesh(const TetMesh& mesh, const pipeline::MeshSummary& s, const nlohmann::json& summary) override;
   void green(const SensorGreens& greens, const pipeline::GreenRun& run,
              const nlohmann::json& summary) override;
-  void kfit(const pipeline::KfitResult& r) override;
+  void kfit(const pipeline::KfitResult& r, const nlohmann::json& file) override;
   void contact(const pipeline::ContactRun& run, nlohmann::json& summary) override;
   void defect(const pipeline::DefectRun& run, nlohmann::json& summary) override;
   void crosscheck(const validation::Crosscheck& x) override;

@@ -26,8 +26,9 @@ void write_mesh(const Scene& scene, const TetMesh& mesh, const pipeline::MeshSum
 // green.csv, green_maps.vtp, summary.json (pipeline::green_json's), and kernel.h5, kernel.vti with a grid.
 void write_green(const Scene& scene, const SensorGreens& greens, const pipeline::GreenRun& run,
                  const nlohmann::json& summary, const std::string& out_dir, std::string* lines = nullptr);
-// kfit.json (pipeline::kfit_json).
-void write_kfit(const Scene& scene, const pipeline::KfitResult& r, const std::string& out_dir);
+// kfit.json (file: pipeline::kfit_json's).
+void write_kfit(const Scene& scene, const pipeline::KfitResult& r, const nlohmann::json& file,
+                const std::string& out_dir);
 // pressure.vtp, fields.vtu, sensors.csv, modes.csv, summary.json (pipeline::contact_json's, given the
 // writing's seconds).
 void write_contact(const Scene& scene, const pipeline::ContactRun& run, nlohmann::json& summary,

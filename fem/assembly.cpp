@@ -26,16 +26,11 @@ MixedMatrices assemble_mixed(const TetMesh& m, const Lame& lame) {
   MixedMatrices out;
   out.A = pattern::block_pattern(adj, 3 * n, 3, n);
   out.B = pattern::block_pattern(adj, nv, 1, nv);
-  std::vector<Eigen::Triplet<double>> mp;
-  mp.reserve(16 * m.num_tets());
-
   Eigen::Matrix<double, 30, 30> Ae;
   Eigen::Matrix<double, 4, 30> Be;
-  Eigen::Matrix4d Me;
   for (int t = 0; t < m.num_tets(); ++t) {
     Ae.setZero();
     Be.setZero();
-    Me.setZero();
     Eigen::Matrix<double, 10, 3> X;
     for (int a = 0; a < 10; ++a) X.row(a) = m.nodes.row(m.tets(t, a));
     const auto& rule = is_affine(m, t) ? p2::quadrature_degree2() : p2::quadrature_degree5();
@@ -51,19 +46,37 @@ MixedMatrices assemble_mixed(const TetMesh& m, const Lame& lame) {
           for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 3; ++j)  // 2μ ε(φ_a e_i):ε(φ_b e_j) = μ(δ_ij ∇φ_a·∇φ_b + ∂_jφ_a ∂_iφ_b)
               Ae(3 * a + i, 3 * b + j) += w * lame.mu * ((i == j ? GG(a, b) : 0.0) + G(a, j) * G(b, i));
-      for (int r = 0; r < 4; ++r) {
+      for (int r = 0; r < 4; ++r)
         for (int a = 0; a < 10; ++a)
           for (int i = 0; i < 3; ++i) Be(r, 3 * a + i) -= w * L[r] * G(a, i);
-        for (int s = 0; s < 4; ++s) Me(r, s) += w * L[r] * L[s];
-      }
     }
     pattern::add_element(m, t, Ae, Be, out.A, out.B);
+  }
+  out.Mp = pressure_mass(m);
+  return out;
+}
+
+SparseMatrixd pressure_mass(const TetMesh& m) {
+  std::vector<Eigen::Triplet<double>> mp;
+  mp.reserve(16 * m.num_tets());
+  for (int t = 0; t < m.num_tets(); ++t) {
+    Eigen::Matrix<double, 10, 3> X;
+    for (int a = 0; a < 10; ++a) X.row(a) = m.nodes.row(m.tets(t, a));
+    Eigen::Matrix4d Me = Eigen::Matrix4d::Zero();
+    for (const auto& q : is_affine(m, t) ? p2::quadrature_degree2() : p2::quadrature_degree5()) {
+      const p2::Grad10 dref = p2::shape_gradient(q.xi);
+      const Eigen::Matrix3d J = X.transpose() * dref;
+      const double w = q.weight * J.determinant();
+      const auto L = p2::barycentric(q.xi);
+      for (int r = 0; r < 4; ++r)
+        for (int s = 0; s < 4; ++s) Me(r, s) += w * L[r] * L[s];
+    }
     for (int r = 0; r < 4; ++r)
       for (int s = 0; s < 4; ++s) mp.emplace_back(m.tets(t, r), m.tets(t, s), Me(r, s));
   }
-  out.Mp.resize(nv, nv);
-  out.Mp.setFromTriplets(mp.begin(), mp.end());
-  return out;
+  SparseMatrixd Mp(m.num_vertices, m.num_vertices);
+  Mp.setFromTriplets(mp.begin(), mp.end());
+  return Mp;
 }
 
 Eigen::VectorXd body_load(const TetMesh& m, const VectorField& f) {
@@ -73,7 +86,9 @@ Eigen::VectorXd body_load(const TetMesh& m, const VectorField& f) {
     for (int a = 0; a < 10; ++a) X.row(a) = m.nodes.row(m.tets(t, a));
     for (const auto& q : p2::quadrature_degree5()) {
       const p2::Vec10 N = p2::shape(q.xi);
-      const double w = q.weight * (X.transpose() * p2::shape_gradient(q.xi)).determinant();
+      const p2::Grad10 dref = p2::shape_gradient(q.xi);
+      const Eigen::Matrix3d J = X.transpose() * dref;
+      const double w = q.weight * J.determinant();
       const Eigen::Vector3d fx = f(X.transpose() * N);
       for (int a = 0; a < 10; ++a) F.segment<3>(3 * m.tets(t, a)) += w * N[a] * fx;
     }

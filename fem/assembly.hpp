@@ -27,6 +27,9 @@ struct MixedMatrices {
 
 MixedMatrices assemble_mixed(const TetMesh& mesh, const Lame& lame);
 
+// The pressure mass M_p = ∫ p q over the reference mesh (Nv×Nv, mm³), on the same rules as assemble_mixed.
+SparseMatrixd pressure_mass(const TetMesh& mesh);
+
 // ∫ f·v over the volume for a body force density f(x) (N/mm³): a 3N load vector.
 using VectorField = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
 Eigen::VectorXd body_load(const TetMesh& mesh, const VectorField& f);

@@ -9,50 +9,16 @@
 
 namespace skinfem {
 
-std::vector<int> punch_nodes(const TetMesh& m, const Punch& punch) {
-  // Corner nodes of the top inside the disc (the footprint mesh follows the punch circle), then the
-  // mid-edge nodes of top edges between two of them: exactly the nodes of the polygonal contact area.
-  const double r = 0.5 * punch.diameter * (1 + 1e-9);
-  std::vector<bool> held(m.num_nodes(), false);
-  for (int i = 0; i < m.num_vertices; ++i)
-    held[i] = (m.node_marker(i) & kTop) && !(m.node_marker(i) & (kBase | kSide)) &&
-              std::hypot(m.nodes(i, 0) - punch.center[0], m.nodes(i, 1) - punch.center[1]) <= r;
-  for (int f = 0; f < m.faces.rows(); ++f)
-    if (m.face_marker(f) == kTop)
-      for (int e = 0; e < 3; ++e)
-        if (held[m.faces(f, e)] && held[m.faces(f, (e + 1) % 3)]) held[m.faces(f, 3 + e)] = true;
-  std::vector<int> nodes;
-  for (int i = 0; i < m.num_nodes(); ++i)
-    if (held[i]) nodes.push_back(i);
-  if (nodes.empty())
-    throw std::invalid_argument("punch at (" + std::to_string(punch.center[0]) + ", " +
-                                std::to_string(punch.center[1]) +
-                                ") holds no top node: refine the mesh there");
-  return nodes;
-}
-
 ElasticModel::ElasticModel(const TetMesh& mesh, const Material& material, SideCondition side,
                            const std::vector<Punch>& punches, ModelOptions options)
     : mesh_(mesh), lame_(Lame::from(material.E, material.nu)) {
   const auto start = std::chrono::steady_clock::now();
   matrices_ = assemble_mixed(mesh, lame_);
   assemble_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const int n = mesh.num_nodes();
-  fixed_.assign(3 * n, false);
-  support_.assign(3 * n, false);
-  const int held = kBase | kPost | (side == SideCondition::fixed ? kSide : 0);
-  for (int i = 0; i < n; ++i)
-    if (mesh.node_marker(i) & held)
-      for (int c = 0; c < 3; ++c) fixed_[3 * i + c] = support_[3 * i + c] = true;
-  // A half mesh's cut y = 0: the mirror-symmetric solution has u_y = 0 there and no shear across it. The
-  // constraint takes no reaction of its own (support_ stays false): it is the other half's pull, not a
-  // support.
-  for (int i = 0; i < n; ++i)
-    if (mesh.node_marker(i) & kSymmetry) fixed_[3 * i + 1] = true;
-  for (const auto& p : punches) {
-    punch_nodes_.push_back(punch_nodes(mesh, p));
-    for (int i : punch_nodes_.back()) fixed_[3 * i + 2] = true;
-  }
+  Supports held = skin_supports(mesh, side, punches);
+  fixed_ = std::move(held.fixed);
+  support_ = std::move(held.support);
+  punch_nodes_ = std::move(held.punch_nodes);
   top_index_ = std::make_unique<PlanarFaceIndex>(mesh, kTop);
   solver_ = std::make_unique<MixedSolver>(matrices_, lame_, fixed_, options.solver, options.tolerance,
                                           options.factor_progress, options.coupling);
@@ -104,40 +70,15 @@ LoadCaseResult ElasticModel::solve(const Eigen::VectorXd& f, const std::vector<P
   out.reactions = r;
   for (int d = 0; d < r.size(); ++d)
     if (!support_[d]) out.reactions[d] = 0;
-  // External force on the skin: nodal loads plus punch reactions.
-  for (int i = 0; i < mesh_.num_nodes(); ++i)
-    for (int c = 0; c < 3; ++c) {
-      const int d = 3 * i + c;
-      out.applied_force_N[c] += (fixed_[d] && !support_[d]) ? r[d] : (support_[d] ? 0.0 : f[d]);
-    }
+  // External force on the skin: nodal loads (but at supports, which take them) plus punch reactions (a load
+  // on a punch's node is part of what the punch holds).
+  for (int d = 0; d < r.size(); ++d)
+    if (!support_[d]) out.applied_force_N[d % 3] += f[d] + (fixed_[d] ? r[d] : 0.0);
   return out;
 }
 
 Eigen::VectorXd ElasticModel::patch_load(const TractionPatch& patch) const {
-  // Face by face over the part of each top face inside the disc (projected on the base plane), so the load
-  // is the consistent one of a uniform traction: a uniform pressure over a flat layer is then the hydrostatic
-  // state's load exactly (issue 57: a rule over the disc whose points fell into whatever face held them read
-  // 1.1 % high at a post 1 mm from a 20 mm patch's centre). Only the faces its edge cuts are refined; the
-  // density is the force over the area found, so the total force is exact.
-  const double a = 0.5 * patch.diameter;
-  const Eigen::Vector2d centre(patch.center[0], patch.center[1]);
-  const Eigen::Vector3d dir =
-      Eigen::Vector3d(patch.direction[0], patch.direction[1], patch.direction[2]).normalized();
-  Eigen::VectorXd F = Eigen::VectorXd::Zero(3 * mesh_.num_nodes());
-  double area = 0;
-  for (int f = 0; f < mesh_.faces.rows(); ++f) {
-    if (mesh_.face_marker(f) != kTop) continue;
-    // Summed per face first: fewer round-offs in the total.
-    Eigen::Matrix<double, 6, 1> w = Eigen::Matrix<double, 6, 1>::Zero();
-    for (const FacePoint& q : face_quadrature_in_disc(mesh_, f, centre, a, kPatchEdgeResolution * a))
-      w += q.weight_xy * q.N;
-    area += w.sum();
-    for (int k = 0; k < 6; ++k) F.segment<3>(3 * mesh_.faces(f, k)) += w[k] * dir;
-  }
-  if (!(area > 0.5 * M_PI * a * a))
-    throw std::out_of_range("traction patch at (" + std::to_string(centre.x()) + ", " +
-                            std::to_string(centre.y()) + ") is off the top surface");
-  return (patch.force / area) * F;
+  return skinfem::patch_load(mesh_, patch);
 }
 
 Eigen::VectorXd ElasticModel::point_load(double x, double y, const Eigen::Vector3d& force) const {

@@ -10,6 +10,7 @@
 #include "skinfem/fem/base_traction.hpp"
 #include "skinfem/fem/face_index.hpp"
 #include "skinfem/fem/mixed_solver.hpp"
+#include "skinfem/fem/supports.hpp"
 #include "skinfem/scene/scene.hpp"
 
 namespace skinfem {
@@ -23,12 +24,6 @@ struct ModelOptions {
   const MixedSolver::Coupling* coupling = nullptr;
 };
 
-// The nodes a rigid flat punch holds: top corner nodes with (x, y) within its radius and the mid-edge
-// nodes between them (the mesh follows the punch circle, so this is the inscribed polygon).
-// The punch is frictionless: it prescribes u_z only (at ν = 0.5 a half-space does not couple normal
-// and tangential contact, so friction would not change its pressure; see docs/theory.md §References).
-std::vector<int> punch_nodes(const TetMesh& mesh, const Punch& punch);
-
 struct PunchResult {
   double force_N = 0;          // pressing force (positive when pushing into the skin)
   double displacement_mm = 0;  // indentation depth (positive downward)
@@ -40,10 +35,6 @@ struct LoadCaseResult {
   std::vector<PunchResult> punches;
   double applied_force_N[3] = {0, 0, 0};  // total external force on the skin (punch + patches)
 };
-
-// Where a traction patch's edge cuts top faces, they are split down to pieces of this fraction of its radius
-// (ElasticModel::patch_load).
-inline constexpr double kPatchEdgeResolution = 1e-3;
 
 class ElasticModel {
  public:
@@ -66,9 +57,7 @@ class ElasticModel {
   // displacement as given in `punches` (same order as at construction).
   LoadCaseResult solve(const Eigen::VectorXd& f, const std::vector<Punch>& punches) const;
 
-  // Load vector of a uniform traction patch on the top surface: total force `force` along `direction`,
-  // spread evenly over the disc (per unit area of its projection on the base plane), integrated face by face
-  // (mesh/surface_quadrature.hpp, face_quadrature_in_disc).
+  // fem/supports.hpp's patch_load on the model's mesh.
   Eigen::VectorXd patch_load(const TractionPatch& patch) const;
   // Load vector of a point force at the top-surface point above (x, y): f = N(x) F. Throws off the top.
   Eigen::VectorXd point_load(double x, double y, const Eigen::Vector3d& force) const;

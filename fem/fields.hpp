@@ -1,4 +1,7 @@
-// Post-processing of a mixed solution: stresses σ = 2μ ε(u) − p I, probes anywhere, VTK fields.
+// Post-processing of a mixed solution: stresses, probes anywhere, VTK fields. The stress is Cauchy's: σ = 2μ
+// ε(u) − p I for the linear skin; for the finite-strain skin σ = J⁻¹ P Fᵀ = μ (B − I)/J − p I (B = F Fᵀ, F =
+// I + ∇u, fem/neo_hookean.hpp), at the material point, fields on the reference mesh (warp by displacement_mm
+// for the deformed skin).
 #pragma once
 
 #include <string>
@@ -11,15 +14,18 @@
 
 namespace skinfem {
 
+enum class StressMeasure { small_strain, neo_hookean };
+
 // Stress (MPa) in element `tet` at reference point xi.
 Eigen::Matrix3d element_stress(const TetMesh& mesh, const Lame& lame, const MixedSolution& x, int tet,
-                               const Eigen::Vector3d& xi);
+                               const Eigen::Vector3d& xi,
+                               StressMeasure measure = StressMeasure::small_strain);
 
 // Nodal stress by averaging the element values at each node over the elements sharing it: N×9, row-major
 // components (xx, xy, xz, yx, …).
-Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::RowMajor> recover_stress(const TetMesh& mesh,
-                                                                         const Lame& lame,
-                                                                         const MixedSolution& x);
+Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::RowMajor> recover_stress(
+    const TetMesh& mesh, const Lame& lame, const MixedSolution& x,
+    StressMeasure measure = StressMeasure::small_strain);
 
 struct Probe {
   Eigen::Vector3d u;      // mm
@@ -31,7 +37,8 @@ Probe probe(const TetMesh& mesh, const PointLocator& locator, const Lame& lame, 
             const Eigen::Vector3d& point);
 
 // fields.vtu: point data displacement_mm, pressure_MPa, stress_MPa (9), cell data von_mises_MPa.
-void write_fields_vtu(const std::string& path, const TetMesh& mesh, const Lame& lame, const MixedSolution& x);
+void write_fields_vtu(const std::string& path, const TetMesh& mesh, const Lame& lame, const MixedSolution& x,
+                      StressMeasure measure = StressMeasure::small_strain);
 
 // The solution of a mirror-symmetric load on a half_y mesh, seen on the whole mesh mirror_half(half, &source)
 // (mesh/mirror.hpp): u_y odd in y, u_x, u_z and p even.

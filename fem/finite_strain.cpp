@@ -1,7 +1,5 @@
 #include "skinfem/fem/finite_strain.hpp"
 
-#include <vector>
-
 #include "skinfem/fem/neo_hookean.hpp"
 #include "skinfem/fem/sparse_pattern.hpp"
 #include "skinfem/mesh/p2_tet.hpp"
@@ -9,24 +7,24 @@
 namespace skinfem {
 
 FiniteStrainSystem assemble_finite_strain(const TetMesh& m, double mu, const Eigen::VectorXd& u,
-                                          const Eigen::VectorXd& p) {
+                                          const Eigen::VectorXd& p, FiniteStrainParts parts) {
   const int n = m.num_nodes(), nv = m.num_vertices;
-  const auto adj = pattern::node_adjacency(m);
+  const bool tangent = parts == FiniteStrainParts::residual_and_tangent;
   FiniteStrainSystem out;
-  out.tangent.A = pattern::block_pattern(adj, 3 * n, 3, n);
-  out.tangent.B = pattern::block_pattern(adj, nv, 1, nv);
+  if (tangent) {
+    const auto adj = pattern::node_adjacency(m);
+    out.tangent.A = pattern::block_pattern(adj, 3 * n, 3, n);
+    out.tangent.B = pattern::block_pattern(adj, nv, 1, nv);
+    out.tangent.Mp = pressure_mass(m);
+  }
   out.internal_force = Eigen::VectorXd::Zero(3 * n);
   out.constraint = Eigen::VectorXd::Zero(nv);
-  std::vector<Eigen::Triplet<double>> mp;
-  mp.reserve(16 * m.num_tets());
 
   Eigen::Matrix<double, 30, 30> Ae;
   Eigen::Matrix<double, 4, 30> Be;
-  Eigen::Matrix4d Me;
   for (int t = 0; t < m.num_tets(); ++t) {
     Ae.setZero();
     Be.setZero();
-    Me.setZero();
     Eigen::Matrix<double, 10, 3> X, U;
     for (int a = 0; a < 10; ++a) {
       X.row(a) = m.nodes.row(m.tets(t, a));
@@ -47,28 +45,23 @@ FiniteStrainSystem assemble_finite_strain(const TetMesh& m, double mu, const Eig
       out.energy += w * pt.energy;
       // ∇φ_a e_i : T = Σ_J T_iJ ∂φ_a/∂X_J, so a node's rows of P : ∇φ are P G_aᵀ.
       const Eigen::Matrix<double, 10, 3> PG = G * pt.P.transpose();  // (a, i) = Σ_J P_iJ G_aJ
-      const Eigen::Matrix<double, 10, 3> dPG = G * pt.dP_dp.transpose();
       for (int a = 0; a < 10; ++a)
         out.internal_force.segment<3>(3 * m.tets(t, a)) += w * PG.row(a).transpose();
+      for (int r = 0; r < 4; ++r) out.constraint[m.tets(t, r)] -= w * L[r] * (pt.J - 1);
+      if (!tangent) continue;
+      const Eigen::Matrix<double, 10, 3> dPG = G * pt.dP_dp.transpose();
       // 𝔸 contracted with the gradients: for each node a and component i, the row (3i+J) of 𝔸 times G_aJ.
       Eigen::Matrix<double, 30, 9> GA;  // (3a + i, 3k + L) = Σ_J G_aJ 𝔸(3i + J, 3k + L)
       for (int a = 0; a < 10; ++a)
         for (int i = 0; i < 3; ++i) GA.row(3 * a + i) = G.row(a) * pt.A.block<3, 9>(3 * i, 0);
       for (int b = 0; b < 10; ++b)
         for (int k = 0; k < 3; ++k) Ae.col(3 * b + k) += w * GA.middleCols<3>(3 * k) * G.row(b).transpose();
-      for (int r = 0; r < 4; ++r) {
-        out.constraint[m.tets(t, r)] -= w * L[r] * (pt.J - 1);
+      for (int r = 0; r < 4; ++r)
         for (int b = 0; b < 10; ++b)
           for (int k = 0; k < 3; ++k) Be(r, 3 * b + k) += w * L[r] * dPG(b, k);
-        for (int s = 0; s < 4; ++s) Me(r, s) += w * L[r] * L[s];
-      }
     }
-    pattern::add_element(m, t, Ae, Be, out.tangent.A, out.tangent.B);
-    for (int r = 0; r < 4; ++r)
-      for (int s = 0; s < 4; ++s) mp.emplace_back(m.tets(t, r), m.tets(t, s), Me(r, s));
+    if (tangent) pattern::add_element(m, t, Ae, Be, out.tangent.A, out.tangent.B);
   }
-  out.tangent.Mp.resize(nv, nv);
-  out.tangent.Mp.setFromTriplets(mp.begin(), mp.end());
   return out;
 }
 

@@ -17,8 +17,13 @@
 
 namespace skinfem {
 
+// What an assembly builds: the tangent costs several times the residual, which a line search's trial states
+// need alone.
+enum class FiniteStrainParts { residual, residual_and_tangent };
+
 struct FiniteStrainSystem {
-  MixedMatrices tangent;           // A: A_t (3N×3N), B: B_t (Nv×3N), Mp: the pressure mass (Nv×Nv)
+  MixedMatrices tangent;           // A: A_t (3N×3N), B: B_t (Nv×3N), Mp: the pressure mass (Nv×Nv); empty
+                                   // when only the residual was asked for
   Eigen::VectorXd internal_force;  // 3N, N
   Eigen::VectorXd constraint;      // Nv, mm³
   double energy = 0;               // ∫ W dV, N·mm (the stored energy less ∫ p (J − 1))
@@ -27,6 +32,7 @@ struct FiniteStrainSystem {
 // u: 3N displacements (mm), p: Nv pressures (MPa), mu: shear modulus (MPa). Throws std::domain_error when
 // a quadrature point inverts (det F ≤ 0).
 FiniteStrainSystem assemble_finite_strain(const TetMesh& mesh, double mu, const Eigen::VectorXd& u,
-                                          const Eigen::VectorXd& p);
+                                          const Eigen::VectorXd& p,
+                                          FiniteStrainParts parts = FiniteStrainParts::residual_and_tangent);
 
 }  // namespace skinfem

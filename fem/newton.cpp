@@ -23,8 +23,9 @@ struct Residual {
 };
 
 Residual residual_at(const TetMesh& mesh, double mu, const std::vector<bool>& fixed, const State& s,
-                     const Eigen::VectorXd& f, double force_scale, double volume) {
-  Residual r{assemble_finite_strain(mesh, mu, s.u, s.p), {}, {}, 0};
+                     const Eigen::VectorXd& f, double force_scale, double volume,
+                     FiniteStrainParts parts = FiniteStrainParts::residual_and_tangent) {
+  Residual r{assemble_finite_strain(mesh, mu, s.u, s.p, parts), {}, {}, 0};
   r.r_u = f - r.system.internal_force;
   for (size_t d = 0; d < fixed.size(); ++d)
     if (fixed[d]) r.r_u[d] = 0;
@@ -33,11 +34,16 @@ Residual residual_at(const TetMesh& mesh, double mu, const std::vector<bool>& fi
   return r;
 }
 
+struct Converged {
+  NewtonStep step;
+  FiniteStrainSystem system;  // at the converged state (its tangent may be empty)
+};
+
 // One step's Newton iteration from `s` to the load factor `lambda`; nullopt when it fails.
-std::optional<NewtonStep> newton(const TetMesh& mesh, double mu, const std::vector<bool>& fixed,
-                                 const Eigen::VectorXd& f_full, const Eigen::VectorXd& u_fixed_full,
-                                 double lambda, double force_scale, double volume, const NewtonOptions& o,
-                                 State& s) {
+std::optional<Converged> newton(const TetMesh& mesh, double mu, const std::vector<bool>& fixed,
+                                const Eigen::VectorXd& f_full, const Eigen::VectorXd& u_fixed_full,
+                                double lambda, double force_scale, double volume, const NewtonOptions& o,
+                                State& s) {
   const Eigen::VectorXd f = lambda * f_full;
   // The prescribed values are imposed by the first iteration's increment; the state moves there through
   // the solve, not by a jump that could fold the elements next to the held DOFs.
@@ -56,7 +62,7 @@ std::optional<NewtonStep> newton(const TetMesh& mesh, double mu, const std::vect
   const Lame incompressible{mu, 0.0};
   for (int it = 0; it <= o.max_iterations; ++it) {
     step.residuals.push_back(r->norm);
-    if (r->norm <= o.tolerance && du_fixed.isZero()) return step;
+    if (r->norm <= o.tolerance && du_fixed.isZero()) return Converged{std::move(step), std::move(r->system)};
     if (it == o.max_iterations) return std::nullopt;
     MixedSolution dx;
     try {
@@ -67,12 +73,15 @@ std::optional<NewtonStep> newton(const TetMesh& mesh, double mu, const std::vect
     }
     // Backtracking: the full step unless it folds an element or raises the residual. The prescribed
     // increment is taken whole on the first try only; later halvings keep it (it is part of the load).
+    // The full step is usually taken, so it is assembled with its tangent; shorter trials with their
+    // residual alone, and the tangent of the one taken is assembled when the iteration goes on.
     double alpha = 1;
     std::optional<Residual> next;
     for (int cut = 0; cut < 6 && !next; ++cut, alpha *= 0.5) {
       const State trial{s.u + alpha * dx.u, s.p + alpha * dx.p};
       try {
-        Residual t = residual_at(mesh, mu, fixed, trial, f, force_scale, volume);
+        const auto parts = cut == 0 ? FiniteStrainParts::residual_and_tangent : FiniteStrainParts::residual;
+        Residual t = residual_at(mesh, mu, fixed, trial, f, force_scale, volume, parts);
         if (!du_fixed.isZero() || t.norm < r->norm) {
           s = trial;
           next = std::move(t);
@@ -86,6 +95,8 @@ std::optional<NewtonStep> newton(const TetMesh& mesh, double mu, const std::vect
     step.line_steps.push_back(alpha);
     du_fixed.setZero();
     r = std::move(next);
+    if (alpha < 1 && r->norm > o.tolerance && it + 1 < o.max_iterations)
+      r = residual_at(mesh, mu, fixed, s, f, force_scale, volume);
   }
   return std::nullopt;
 }
@@ -116,6 +127,7 @@ FiniteStrainResult solve_finite_strain(const TetMesh& mesh, double mu, const std
 
   FiniteStrainResult out;
   State s{Eigen::VectorXd::Zero(3 * mesh.num_nodes()), Eigen::VectorXd::Zero(mesh.num_vertices)};
+  FiniteStrainSystem at;
   double reached = 0, step = o.first_step;
   const double smallest = o.first_step / std::pow(2.0, o.max_halvings);
   while (reached < 1) {
@@ -124,7 +136,8 @@ FiniteStrainResult solve_finite_strain(const TetMesh& mesh, double mu, const std
     if (auto done = newton(mesh, mu, fixed, f_free, u_fixed, target, force_scale, volume, o, trial)) {
       s = std::move(trial);
       reached = target;
-      out.steps.push_back(std::move(*done));
+      out.steps.push_back(std::move(done->step));
+      at = std::move(done->system);
       // A step that converged quickly lets the next one grow back.
       if (out.steps.back().residuals.size() <= 5) step = std::min(1.0, 2 * step);
       continue;
@@ -135,7 +148,6 @@ FiniteStrainResult solve_finite_strain(const TetMesh& mesh, double mu, const std
       throw SolverError("finite strain: Newton failed to converge beyond load factor " +
                         std::to_string(reached) + " (steps down to " + std::to_string(2 * step) + ")");
   }
-  const FiniteStrainSystem at = assemble_finite_strain(mesh, mu, s.u, s.p);
   out.solution.u = s.u;
   out.solution.p = s.p;
   out.solution.residual = out.steps.back().residuals.back();

@@ -254,12 +254,10 @@ KfitRanges k_ranges(const KfitResult& r) {
   return out;
 }
 
-nlohmann::json kfit_report_json(const KfitResult& r) {
-  nlohmann::json j = kfit_json(r);
+void add_k_ranges(const KfitResult& r, nlohmann::json& j) {
   const KfitRanges k = k_ranges(r);
   j["k_central_range_over_sensors"] = k.k_central;
   j["k_lsq_line_range_over_sensors"] = k.k_lsq_line;
-  return j;
 }
 
 nlohmann::json kfit_json(const KfitResult& r) {

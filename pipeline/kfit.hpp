@@ -74,13 +74,13 @@ KfitResult kfit(const Scene& scene, const SensorGreens& greens, green::LayerLoad
 Eigen::VectorXd paper_reading_scale(const KfitResult& r);
 // The result as kfit.json holds it.
 nlohmann::json kfit_json(const KfitResult& r);
-// The range of each k over the sensors; report.json's kfit entry is kfit_json plus these two as
-// k_central_range_over_sensors and k_lsq_line_range_over_sensors.
+// The range of each k over the sensors; report.json's kfit entry is kfit_json plus these two
+// (add_k_ranges: k_central_range_over_sensors and k_lsq_line_range_over_sensors).
 struct KfitRanges {
   std::array<double, 2> k_central, k_lsq_line;  // lowest, highest
 };
 KfitRanges k_ranges(const KfitResult& r);
-nlohmann::json kfit_report_json(const KfitResult& r);
+void add_k_ranges(const KfitResult& r, nlohmann::json& kfit_entry);
 
 // The exact layer's k as each reading of the calibration protocol changes about the scene's (thickness h at
 // the headline sensor): which single change gives the paper's k (validation/k_sweep.hpp); and report.json's

@@ -12,6 +12,7 @@
 #include "skinfem/pipeline/meridian_contact.hpp"
 #include "skinfem/pipeline/progress.hpp"
 #include "skinfem/pipeline/scene_json.hpp"
+#include "skinfem/pipeline/skin_setup.hpp"
 #include "skinfem/scene/parallel.hpp"
 #include "skinfem/validation/text.hpp"
 
@@ -155,8 +156,10 @@ void Chain::finish_kfit() {
   if (kfit_) return;
   const Stopwatch own;
   kfit_ = kfit_run_.get();
-  sink_.kfit(*kfit_);
-  report_["kfit"] = kfit_report_json(*kfit_);
+  nlohmann::json entry = kfit_json(*kfit_);
+  sink_.kfit(*kfit_, entry);
+  add_k_ranges(*kfit_, entry);
+  report_["kfit"] = std::move(entry);
   out_.kfit_verdict = kfit_->verdict;
   out_.beside["kfit"] = kfit_seconds_;
   out_.wall["kfit_wait"] = own.seconds();
@@ -304,6 +307,7 @@ ReportResult Chain::finish() {
 }  // namespace
 
 ReportResult report_run(const Scene& scene, const ReportOptions& options, ReportSink& sink) {
+  require_linear(scene, "report");
   check_error_scales(options.error_scales);
   if (options.fast && !options.error_scales.empty())
     throw SceneError("error_scales: a fast report draws no error bars; give one or the other");

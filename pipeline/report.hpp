@@ -51,7 +51,7 @@ class ReportSink {
   // The whole skin's mesh (mirrored from the half solved, if so) and its summary (report.json's "mesh").
   virtual void mesh(const TetMesh&, const MeshSummary&, const nlohmann::json& /*summary*/) {}
   virtual void green(const SensorGreens&, const GreenRun&, const nlohmann::json& /*summary*/) {}
-  virtual void kfit(const KfitResult&) {}
+  virtual void kfit(const KfitResult&, const nlohmann::json& /*file*/) {}  // file: kfit_json's
   // summary: contact_json's and defect_json's; a sink may add to it (its writing's seconds), and
   // report.json keeps the contact's as the sink leaves it.
   virtual void contact(const ContactRun&, nlohmann::json& /*summary*/) {}

@@ -7,6 +7,7 @@ nlohmann::json scene_json(const Scene& scene) {
                       {"source", scene.source_path},
                       {"E_MPa", scene.material.E},
                       {"nu", scene.material.nu},
+                      {"material_model", to_string(scene.material.model)},
                       {"sensors", scene.sensors.positions.size()}};
   if (scene.sensors.model == SensorModel::post)
     j["post_sensors"] = {{"diameter_mm", scene.sensors.post.diameter},

@@ -9,6 +9,7 @@
 #include "skinfem/pipeline/clock.hpp"
 #include "skinfem/pipeline/kfit.hpp"
 #include "skinfem/pipeline/progress.hpp"
+#include "skinfem/pipeline/skin_setup.hpp"
 
 namespace skinfem::pipeline {
 
@@ -109,6 +110,7 @@ struct MeridianPair {
 }  // namespace
 
 MeridianSkin meridian_skin(const Scene& scene) {
+  require_linear(scene, "the meridian (axisymmetric) skin");
   const Geometry& geo = scene.geometry;
   MeridianSkin m;
   m.flat = geo.kind == GeometryKind::flat;

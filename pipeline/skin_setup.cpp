@@ -8,7 +8,14 @@
 
 namespace skinfem::pipeline {
 
+void require_linear(const Scene& scene, const std::string& stage) {
+  if (scene.material.model != MaterialModel::linear)
+    throw SceneError(scene.source_path + ": material.model = \"" + to_string(scene.material.model) +
+                     "\": " + stage + " takes \"linear\" only (the finite-strain skin runs in solve)");
+}
+
 std::shared_ptr<Skin> skin_setup(const Scene& scene, MeshPart part, const Border& border) {
+  require_linear(scene, "the factored linear skin");
   Stopwatch clock;
   TetMesh mesh = guarded_mesh(scene, part);
   check_sensors_on_skin(scene, mesh);
@@ -17,6 +24,7 @@ std::shared_ptr<Skin> skin_setup(const Scene& scene, MeshPart part, const Border
 
 std::shared_ptr<Skin> factored_skin(const Scene& scene, TetMesh mesh, double mesh_seconds,
                                     const Border& border) {
+  require_linear(scene, "the factored linear skin");
   auto s = std::make_shared<Skin>();
   s->mesh = std::move(mesh);
   s->wall["mesh"] = mesh_seconds;

@@ -19,6 +19,10 @@ struct Skin {
   Timings wall;                         // seconds: mesh, assemble, factor
 };
 
+// The stages built on the linear skin (every one but solve so far) refuse a finite-strain scene: throws
+// SceneError naming material.model, its value and what `stage` takes.
+void require_linear(const Scene& scene, const std::string& stage);
+
 // Given the skin's mesh before it is factored, columns to border the factorization with
 // (MixedSolver::Coupling: their products come with it), or null; what it returns must outlive the call.
 using Border = std::function<const MixedSolver::Coupling*(const TetMesh&)>;

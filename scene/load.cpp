@@ -13,7 +13,8 @@
 //                 (scene.hpp's Ridges)
 //               | {"type": "surface", "path", "side"*}      path: .stl/.obj/.off, relative to the scene file
 //                 side: "free" (default) | "fixed"
-//   material      {"E", "nu"}
+//   material      {"E", "nu", "model"*: "linear" (default) | "neo_hookean" (finite strain, incompressible:
+//                  nu must be 0.5)}
 //   sensors       {"positions": [[x, y], ...]} or {"line": {"start": [x, y], "step": [dx, dy], "count"}},
 //                 plus "model"*: "disc" (default, with "disc_diameter") | "post" with "post"*: {"diameter"*
 //                 (0.2), "height"* (0.4, below the skin's top), "support"*: "rigid" (default) | {"k_normal"
@@ -443,11 +444,27 @@ Geometry read_geometry(const Reader& r, const json& g, const fs::path& base_dir)
 
 Material read_material(const Reader& r, const json& m) {
   const std::string P = "material";
-  r.object(m, P, {"E", "nu"});
+  r.object(m, P, {"E", "nu", "model"});
   Material mat;
   mat.E = r.number(m, P, "E",
                    Rule{"a Young's modulus in (0, 1e12] MPa", [](double x) { return x > 0 && x <= 1e12; }});
   mat.nu = r.number(m, P, "nu", closed_interval(0, 0.5));
+  if (const json* model = Reader::find(m, "model")) {
+    const std::vector<std::string> names{to_string(MaterialModel::linear),
+                                         to_string(MaterialModel::neo_hookean)};
+    if (*model == names[0]) {
+      mat.model = MaterialModel::linear;
+    } else if (*model == names[1]) {
+      mat.model = MaterialModel::neo_hookean;
+      if (mat.nu != 0.5)
+        r.fail(sub(P, "nu"), m.at("nu"),
+               "must be 0.5 with \"model\": \"neo_hookean\" (the incompressible neo-Hookean solid; a "
+               "compressible "
+               "one is not modelled)");
+    } else {
+      r.fail(sub(P, "model"), *model, "must be one of " + choice_list(names));
+    }
+  }
   return mat;
 }
 
@@ -1119,7 +1136,7 @@ Scene parse_scene(const std::string& json_text, const std::string& source_path) 
     else
       r.fail("symmetry", *sym, R"(must be "auto" or "none")");
   }
-  scene.material = read_material(r, r.need(root, "", "material", "an object {\"E\", \"nu\"}"));
+  scene.material = read_material(r, r.need(root, "", "material", "an object {\"E\", \"nu\", \"model\"*}"));
   std::vector<SensorSource> sources;
   scene.sensors = read_sensors(r, r.need(root, "", "sensors", "an object"), sources);
   check_sensor_footprint(r, scene.geometry, scene.sensors, sources);

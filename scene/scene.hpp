@@ -97,10 +97,18 @@ struct Geometry {
   SideCondition side = SideCondition::free;
 };
 
+// The skin's constitutive law: linear elasticity at small strain, or the incompressible neo-Hookean solid at
+// finite strain (shear modulus E/3; fem/neo_hookean.hpp), which needs nu = 0.5.
+enum class MaterialModel { linear, neo_hookean };
+
 struct Material {
   double E = 3.0;   // MPa
   double nu = 0.5;  // 0 ≤ nu ≤ 0.5; 0.5 exactly is incompressible
+  MaterialModel model = MaterialModel::linear;
 };
+inline const char* to_string(MaterialModel m) {
+  return m == MaterialModel::linear ? "linear" : "neo_hookean";
+}
 
 // Sensors sit on the base z = 0. A disc reads the mean base traction over it; a post (the paper's sensor: a
 // rigid cylinder standing on the base, bonded to the skin around it) reads the force the skin exerts on it,

@@ -79,6 +79,10 @@ bad E_negative 'd["material"]["E"] = -3' 'material.E = -3: must be a Young.s mod
 bad E_huge 'd["material"]["E"] = 1e200' 'material.E = 1e\+200: must be a Young.s modulus'
 bad nu_high 'd["material"]["nu"] = 0.7' 'material.nu = 0.7: must be a number in \[0, 0.5\]'
 bad nu_negative 'd["material"]["nu"] = -0.1' 'material.nu = -0.1: must be a number in \[0, 0.5\]'
+bad model_unknown 'd["material"]["model"] = "mooney"' 'material.model = "mooney": must be one of "linear", "neo_hookean"'
+bad model_neo_hookean_compressible 'd["material"].update(model="neo_hookean", nu=0.45)' 'material.nu = 0.45: must be 0.5 with "model": "neo_hookean"'
+bad model_neo_hookean_punch_force 'd["material"]["model"] = "neo_hookean"' 'loads.punches\[0\].force: with material.model "neo_hookean" a punch is driven by its "displacement"'
+bad model_neo_hookean_kfit 'd["material"]["model"] = "neo_hookean"' 'material.model = "neo_hookean": kfit takes "linear" only \(the finite-strain skin runs in solve\)' kfit
 bad cap_h_ge_R 'd["geometry"] = {"type": "cap", "R": 3, "h": 3, "apex": [0, 0], "truncation_radius": 2}' 'geometry.h = 3: must be a number in \(0, R\)'
 bad cap_truncation 'd["geometry"] = {"type": "cap", "R": 129.7, "h": 3.04, "apex": [0, 0], "truncation_radius": 40}' 'geometry.truncation_radius = 40: .*where the cap thins to zero'
 bad no_sensors 'd["sensors"]["positions"] = []' 'sensors.positions = \[\]: must be a non-empty array'

@@ -36,8 +36,9 @@ class Recorder : public ReportSink {
     add("green");
     green_scans = static_cast<int>(run.scans.size());
   }
-  void kfit(const KfitResult& r) override {
+  void kfit(const KfitResult& r, const nlohmann::json& file) override {
     add("kfit");
+    kfit_file = file;
     k_central = r.sensors.at(0).fe.k_central;
     k_lsq_line = r.sensors.at(0).fe.k_lsq_line;
   }
@@ -61,7 +62,7 @@ class Recorder : public ReportSink {
   bool mesh_half = true;
   double mesh_volume = 0, k_central = 0, k_lsq_line = 0, contact_force = 0, largest_sliding = 0;
   int green_scans = 0;
-  nlohmann::json mesh_summary;
+  nlohmann::json mesh_summary, kfit_file;
 
  private:
   void add(const char* name) {
@@ -138,6 +139,12 @@ TEST(Report, AFastReportWithAContactCallsTheSinkInOrderAndKeepsWhatItWasGiven) {
   const double box = 14.0 * 14.0 * 2.0;
   EXPECT_NEAR(sink.mesh_volume, box, kRoundOff * box);
   EXPECT_EQ(r.json.at("mesh"), sink.mesh_summary);
+  // report.json's kfit entry is kfit.json's object and the ranges over the sensors.
+  nlohmann::json kfit_entry = r.json.at("kfit");
+  ASSERT_EQ(
+      kfit_entry.erase("k_central_range_over_sensors") + kfit_entry.erase("k_lsq_line_range_over_sensors"),
+      2u);
+  EXPECT_EQ(kfit_entry, sink.kfit_file);
   EXPECT_NEAR(r.json.at("mesh").at("exact_volume_mm3").get<double>(), box, kRoundOff * box);
   EXPECT_EQ(sink.green_scans, 3);
   // report.json's entries are the typed results' the sink saw.

@@ -4,7 +4,10 @@
 // exact scaling with Young's modulus at ν = 0.5 under force control (stresses unchanged, displacements ∝
 // 1/E), the punch's force and displacement controls as inverses of one linear map, the second solver (CG on
 // the Schur complement against the direct factorization, to CG's tolerance), and the refusal of a scene
-// without loads.
+// without loads. The neo-Hookean skin (material.model): equilibrium to Newton's tolerance, and the small-load
+// limit: the finite solution's readings tend to the linear ones with a difference of first order in the
+// load (the expansion u = s u₁ + s² u₂ + … about rest, u₁ the linear solution), the observed order fitted
+// over four loads.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -160,6 +163,79 @@ TEST(Solve, ASceneWithoutLoadsIsRefusedNamingThem) {
     EXPECT_NE(what.find("solve_layer.json"), std::string::npos) << what;
     EXPECT_NE(what.find("loads"), std::string::npos) << what;
   }
+}
+
+// Loads of every kind the finite-strain skin takes, scaled by s: two dead patches (normal and tangential) and
+// a punch driven by its displacement.
+Scene finite_layer(double s) {
+  Scene sc = layer();
+  sc.material.model = MaterialModel::neo_hookean;
+  Punch p = punch(0);
+  p.force.reset();
+  p.displacement = 0.04 * s;
+  sc.loads.punches = {p};
+  sc.loads.patches = {patch({-1, 0.5}, {0, 0, -1}, 0.4 * s), patch({1, -1}, {1, 0, 0}, 0.3 * s)};
+  return sc;
+}
+
+// Newton's tolerance is 1e-10 on the residual relative to the load: the base carries the dead patches and the
+// punch's reaction to that bound, component by component.
+void expect_finite_equilibrium(const SolveRun& r, double s) {
+  ASSERT_FALSE(r.newton_steps.empty());
+  EXPECT_LE(r.newton_steps.back().residuals.back(), 1e-10);
+  const Eigen::Vector3d applied(r.result.applied_force_N[0], r.result.applied_force_N[1],
+                                r.result.applied_force_N[2]);
+  EXPECT_NEAR(applied[0], 0.3 * s, 1e-12);
+  EXPECT_NEAR(applied[2], -0.4 * s - r.result.punches.at(0).force_N, 1e-12);
+  EXPECT_GT(r.result.punches.at(0).force_N, 0);
+  EXPECT_LT((r.base_force_N + applied).norm(), 1e-8 * applied.norm()) << s;
+  EXPECT_EQ(r.readings.size(), 3u);
+}
+
+TEST(Solve, TheNeoHookeanSkinIsInEquilibrium) {
+  const SolveRun r = solve_run(finite_layer(1), SolverKind::direct_ldlt);
+  expect_finite_equilibrium(r, 1);
+  EXPECT_EQ(r.model, nullptr);
+  for (const char* stage : {"mesh", "assemble", "newton"}) EXPECT_TRUE(r.wall.contains(stage)) << stage;
+}
+
+TEST(Solve, TheNeoHookeanSkinTendsToTheLinearOneAtFirstOrderInTheLoad) {
+  Scene linear_scene = finite_layer(1);
+  linear_scene.material.model = MaterialModel::linear;
+  const SolveRun linear = solve_run(linear_scene, SolverKind::direct_ldlt);
+  std::vector<double> loads, differences;
+  for (double s : {1.0, 0.5, 0.25, 0.125}) {
+    const SolveRun r = solve_run(finite_layer(s), SolverKind::direct_ldlt);
+    expect_finite_equilibrium(r, s);
+    // The linear readings scale with s exactly.
+    double diff = 0, scale = 0;
+    for (size_t k = 0; k < r.readings.size(); ++k) {
+      const SensorReading& a = r.readings[k];
+      const SensorReading& b = linear.readings[k];
+      diff = std::max({diff, std::abs(a.sigma_z - s * b.sigma_z), std::abs(a.sigma_x - s * b.sigma_x)});
+      scale = std::max({scale, std::abs(s * b.sigma_z), std::abs(s * b.sigma_x)});
+    }
+    loads.push_back(s);
+    differences.push_back(diff / scale);
+    int iterations = 0;
+    for (const NewtonStep& step : r.newton_steps) iterations += static_cast<int>(step.residuals.size()) - 1;
+    std::printf("s %.3f: %d DOFs, %zu load steps, %d Newton iterations, %.2f s\n", s, r.dofs,
+                r.newton_steps.size(), iterations, r.wall.at("newton"));
+  }
+  // The local order between consecutive loads is 1 + c s + O(s²) (the expansion's next term): its distance
+  // from 1 halves with each halving of the load (at most 0.6× the previous one here, round-off aside), and at
+  // the smallest loads it is within 0.1 of 1.
+  std::vector<double> order;
+  for (size_t i = 0; i + 1 < loads.size(); ++i)
+    order.push_back(std::log(differences[i] / differences[i + 1]) / std::log(loads[i] / loads[i + 1]));
+  std::printf(
+      "relative difference finite − linear at s = 1, 1/2, 1/4, 1/8: %.3e %.3e %.3e %.3e; local orders "
+      "%.3f %.3f %.3f\n",
+      differences[0], differences[1], differences[2], differences[3], order[0], order[1], order[2]);
+  EXPECT_LT(differences[0], 0.2);  // a moderate load: the expansion's regime
+  for (size_t i = 0; i + 1 < order.size(); ++i)
+    EXPECT_LT(std::abs(order[i + 1] - 1), 0.6 * std::abs(order[i] - 1));
+  EXPECT_NEAR(order.back(), 1.0, 0.1);
 }
 
 }  // namespace

@@ -378,6 +378,16 @@ TEST(SceneLoad, Material) {
   EXPECT_SCENE_ERROR(with(&Doc::material, R"({"E": 3, "nu": -0.1})"),
                      "material.nu = -0.1: must be a number in [0, 0.5]");
   EXPECT_NO_THROW(parse_scene(with(&Doc::material, R"({"E": 3, "nu": 0})"), kSource));
+  // The law: linear unless asked; the neo-Hookean skin is incompressible only.
+  EXPECT_EQ(parse_scene(with(&Doc::material, R"({"E": 3, "nu": 0.4})"), kSource).material.model,
+            MaterialModel::linear);
+  EXPECT_EQ(parse_scene(with(&Doc::material, R"({"E": 3, "nu": 0.5, "model": "neo_hookean"})"), kSource)
+                .material.model,
+            MaterialModel::neo_hookean);
+  EXPECT_SCENE_ERROR(with(&Doc::material, R"({"E": 3, "nu": 0.45, "model": "neo_hookean"})"),
+                     "material.nu = 0.45: must be 0.5 with \"model\": \"neo_hookean\"");
+  EXPECT_SCENE_ERROR(with(&Doc::material, R"({"E": 3, "nu": 0.5, "model": 1})"),
+                     "material.model = 1: must be one of \"linear\", \"neo_hookean\"");
 }
 
 TEST(SceneLoad, CapGeometry) {
