@@ -15,32 +15,25 @@ ElasticModel::ElasticModel(const TetMesh& mesh, const Material& material, SideCo
   const auto start = std::chrono::steady_clock::now();
   matrices_ = assemble_mixed(mesh, lame_);
   assemble_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  Supports held = skin_supports(mesh, side, punches);
-  fixed_ = std::move(held.fixed);
-  support_ = std::move(held.support);
-  punch_nodes_ = std::move(held.punch_nodes);
+  held_ = skin_supports(mesh, side, punches);
   top_index_ = std::make_unique<PlanarFaceIndex>(mesh, kTop);
-  solver_ = std::make_unique<MixedSolver>(matrices_, lame_, fixed_, options.solver, options.tolerance,
+  solver_ = std::make_unique<MixedSolver>(matrices_, lame_, held_.fixed, options.solver, options.tolerance,
                                           options.factor_progress, options.coupling);
 }
 
 LoadCaseResult ElasticModel::solve(const Eigen::VectorXd& f, const std::vector<Punch>& punches) const {
-  if (punches.size() != punch_nodes_.size())
+  if (punches.size() != held_.punch_nodes.size())
     throw std::invalid_argument("punch count differs from the model's");
   const int np = punches.size();
   // Linear in the punch depths: x = x_0 + Σ δ_k x_k, with x_0 the load alone (punches held at 0)
   // and x_k a unit depth of punch k. Force-driven punches fix δ through their reaction.
-  auto punch_force = [&](const Eigen::VectorXd& r, int k) {
-    double fz = 0;
-    for (int i : punch_nodes_[k]) fz += r[3 * i + 2];
-    return -fz;  // the punch pushes down on the skin: reaction −z is a positive pressing force
-  };
+  auto force = [&](const Eigen::VectorXd& r, int k) { return punch_force(held_.punch_nodes[k], r); };
   std::vector<MixedSolution> unit;
   std::vector<Eigen::VectorXd> unit_r;
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(3 * mesh_.num_nodes());
   for (int k = 0; k < np; ++k) {
     Eigen::VectorXd g = zero;
-    for (int i : punch_nodes_[k]) g[3 * i + 2] = -1.0;
+    for (int i : held_.punch_nodes[k]) g[3 * i + 2] = -1.0;
     unit.push_back(solver_->solve(zero, g));
     unit_r.push_back(solver_->reactions(unit.back(), {}));
   }
@@ -55,8 +48,8 @@ LoadCaseResult ElasticModel::solve(const Eigen::VectorXd& f, const std::vector<P
       M(k, k) = 1;
       rhs[k] = *punches[k].displacement;
     } else {
-      for (int j = 0; j < np; ++j) M(k, j) = punch_force(unit_r[j], k);
-      rhs[k] = punches[k].force.value_or(0.0) - punch_force(r, k);
+      for (int j = 0; j < np; ++j) M(k, j) = force(unit_r[j], k);
+      rhs[k] = punches[k].force.value_or(0.0) - force(r, k);
     }
   }
   const Eigen::VectorXd delta = np ? Eigen::VectorXd(M.fullPivLu().solve(rhs)) : Eigen::VectorXd();
@@ -66,14 +59,10 @@ LoadCaseResult ElasticModel::solve(const Eigen::VectorXd& f, const std::vector<P
     r += delta[k] * unit_r[k];
     out.solution.residual = std::max(out.solution.residual, unit[k].residual);
   }
-  for (int k = 0; k < np; ++k) out.punches.push_back({punch_force(r, k), delta[k]});
-  out.reactions = r;
-  for (int d = 0; d < r.size(); ++d)
-    if (!support_[d]) out.reactions[d] = 0;
-  // External force on the skin: nodal loads (but at supports, which take them) plus punch reactions (a load
-  // on a punch's node is part of what the punch holds).
-  for (int d = 0; d < r.size(); ++d)
-    if (!support_[d]) out.applied_force_N[d % 3] += f[d] + (fixed_[d] ? r[d] : 0.0);
+  for (int k = 0; k < np; ++k) out.punches.push_back({force(r, k), delta[k]});
+  out.reactions = support_reactions(held_, r);
+  const Eigen::Vector3d applied = applied_force(held_, r, f);
+  for (int c = 0; c < 3; ++c) out.applied_force_N[c] = applied[c];
   return out;
 }
 

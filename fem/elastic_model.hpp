@@ -66,16 +66,14 @@ class ElasticModel {
   void add_point_load(Eigen::VectorXd& F, double x, double y, const Eigen::Vector3d& force) const;
 
   // Base-constrained DOF flags (3N) and punch constraint groups.
-  const std::vector<bool>& fixed() const { return fixed_; }
-  const std::vector<std::vector<int>>& punch_groups() const { return punch_nodes_; }
+  const std::vector<bool>& fixed() const { return held_.fixed; }
+  const std::vector<std::vector<int>>& punch_groups() const { return held_.punch_nodes; }
 
  private:
   const TetMesh& mesh_;
   Lame lame_;
   MixedMatrices matrices_;
-  std::vector<bool> fixed_;
-  std::vector<bool> support_;  // base/side DOFs (reactions reported), not punches
-  std::vector<std::vector<int>> punch_nodes_;
+  Supports held_;
   std::unique_ptr<MixedSolver> solver_;
   std::unique_ptr<PlanarFaceIndex> top_index_;
   double assemble_seconds_ = 0;

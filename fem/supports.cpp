@@ -49,6 +49,26 @@ Supports skin_supports(const TetMesh& mesh, SideCondition side, const std::vecto
   return s;
 }
 
+double punch_force(const std::vector<int>& punch_nodes, const Eigen::VectorXd& r) {
+  double fz = 0;
+  for (int i : punch_nodes) fz += r[3 * i + 2];
+  return -fz;
+}
+
+Eigen::VectorXd support_reactions(const Supports& held, const Eigen::VectorXd& r) {
+  Eigen::VectorXd out = r;
+  for (int d = 0; d < r.size(); ++d)
+    if (!held.support[d]) out[d] = 0;
+  return out;
+}
+
+Eigen::Vector3d applied_force(const Supports& held, const Eigen::VectorXd& r, const Eigen::VectorXd& f) {
+  Eigen::Vector3d a = Eigen::Vector3d::Zero();
+  for (int d = 0; d < r.size(); ++d)
+    if (!held.support[d]) a[d % 3] += f[d] + (held.fixed[d] ? r[d] : 0.0);
+  return a;
+}
+
 Eigen::VectorXd patch_load(const TetMesh& mesh, const TractionPatch& patch) {
   // Face by face over the part of each top face inside the disc (projected on the base plane), so the load
   // is the consistent one of a uniform traction: a uniform pressure over a flat layer is then the hydrostatic

@@ -26,6 +26,16 @@ std::vector<int> punch_nodes(const TetMesh& mesh, const Punch& punch);
 // A half mesh's cut y = 0 holds u_y (the mirror-symmetric solution), with no reaction reported.
 Supports skin_supports(const TetMesh& mesh, SideCondition side, const std::vector<Punch>& punches);
 
+// From a solution's r (3N: internal force − f at the held DOFs, the force the skin puts on what holds it;
+// free DOFs ignored) and its load f (3N), for either law:
+// a punch's pressing force, −Σ r_z over its nodes (N; the skin pushes the punch up);
+double punch_force(const std::vector<int>& punch_nodes, const Eigen::VectorXd& r);
+// the supports' reactions alone (3N, zero elsewhere: the base's, which the sensors read);
+Eigen::VectorXd support_reactions(const Supports& held, const Eigen::VectorXd& r);
+// the external force on the skin (N): f but at supports, which take it, plus r at the other held DOFs
+// (punches, a mirror plane): a load on a punch's node is part of what the punch holds.
+Eigen::Vector3d applied_force(const Supports& held, const Eigen::VectorXd& r, const Eigen::VectorXd& f);
+
 // Where a traction patch's edge cuts top faces, they are split down to pieces of this fraction of its radius.
 inline constexpr double kPatchEdgeResolution = 1e-3;
 

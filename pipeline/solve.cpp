@@ -47,17 +47,11 @@ void solve_finite_strain_run(const Scene& scene, SolveRun& run) {
   LoadCaseResult& out = run.result;
   out.solution = fs.solution;
   const Eigen::VectorXd r = fs.internal_force - f;  // at held DOFs: the force the skin puts on its holder
-  out.reactions = Eigen::VectorXd::Zero(r.size());
-  for (int d = 0; d < r.size(); ++d)
-    if (held.support[d]) out.reactions[d] = r[d];
-  for (size_t k = 0; k < held.punch_nodes.size(); ++k) {
-    double fz = 0;
-    for (int i : held.punch_nodes[k]) fz += r[3 * i + 2];
-    out.punches.push_back({-fz, *scene.loads.punches[k].displacement});
-  }
-  // The external force on the skin: the loads (but at supports, which take them) and the punches' reactions.
-  for (int d = 0; d < r.size(); ++d)
-    if (!held.support[d]) out.applied_force_N[d % 3] += f[d] + (held.fixed[d] ? r[d] : 0.0);
+  out.reactions = support_reactions(held, r);
+  for (size_t k = 0; k < held.punch_nodes.size(); ++k)
+    out.punches.push_back({punch_force(held.punch_nodes[k], r), *scene.loads.punches[k].displacement});
+  const Eigen::Vector3d applied = applied_force(held, r, f);
+  for (int c = 0; c < 3; ++c) out.applied_force_N[c] = applied[c];
   run.newton_steps = std::move(fs.steps);
   run.rejected_steps = fs.rejected_steps;
 }
