@@ -16,6 +16,7 @@ class Indenter {
              double y) const;  // mm, ≥ 0: how far the indenter's surface rises above its lowest point
   double z_touch() const { return z_touch_; }
   const Vec2& center() const { return center_; }
+  IndenterKind kind() const { return kind_; }
 
  private:
   IndenterKind kind_;

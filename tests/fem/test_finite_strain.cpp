@@ -1,14 +1,15 @@
 // The finite-strain skin (fem/finite_strain.hpp, fem/newton.hpp) against: the linear Taylor–Hood system it
 // must equal at rest (fem/assembly.hpp, exactly), its own residual by central differences (the tangent is
 // consistent), the exact homogeneous simple shear of a neo-Hookean block (u = γ z eₓ, p = 0, shear force
-// μ γ A whatever γ: Ogden, Non-linear Elastic Deformations, §5.3; docs/theory.md §References), and the
-// linear solution as the load vanishes (first-order consistency).
+// μ γ A whatever γ: Ogden, Non-linear Elastic Deformations, §5.3; docs/theory.md §References) and its Cauchy
+// stress (fem/fields.hpp), and the linear solution as the load vanishes (first-order consistency).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
 #include "fixtures.hpp"
+#include "skinfem/fem/fields.hpp"
 #include "skinfem/fem/finite_strain.hpp"
 #include "skinfem/fem/mixed_solver.hpp"
 #include "skinfem/fem/neo_hookean.hpp"
@@ -101,6 +102,26 @@ TEST(FiniteStrain, HomogeneousSimpleShearIsExactAtLargeStrain) {
       if ((m.node_marker[i] & kTop) && !(m.node_marker[i] & kBase)) top_force_x += r.internal_force[3 * i];
     EXPECT_NEAR(top_force_x, kMu * gamma * 4.0, 1e-8) << "gamma " << gamma;
   }
+}
+
+TEST(FiniteStrain, CauchyStressOfSimpleShearIsThePoyntingClosedForm) {
+  // u = γ z eₓ with a uniform pressure p: B = F Fᵀ has B_xx = 1 + γ², B_xz = γ, so σ = μ (B − I) − p I gives
+  // the shear stress μγ, the Poynting normal stress σ_xx = μγ² − p against σ_yy = σ_zz = −p (Ogden §5.3),
+  // in every element and at every point (P2 holds the field exactly).
+  const TetMesh& m = block();
+  const double gamma = 0.8, p = 0.25;
+  MixedSolution x;
+  x.u = Eigen::VectorXd::Zero(3 * m.num_nodes());
+  for (int i = 0; i < m.num_nodes(); ++i) x.u[3 * i] = gamma * m.nodes(i, 2);
+  x.p = Eigen::VectorXd::Constant(m.num_vertices, p);
+  Eigen::Matrix3d exact = -p * Eigen::Matrix3d::Identity();
+  exact(0, 0) += kMu * gamma * gamma;
+  exact(0, 2) = exact(2, 0) = kMu * gamma;
+  for (int t = 0; t < m.num_tets(); t += 7)
+    for (const Eigen::Vector3d& xi : {Eigen::Vector3d(0.25, 0.25, 0.25), Eigen::Vector3d(0.1, 0.6, 0.2)}) {
+      const Eigen::Matrix3d sigma = element_stress(m, {kMu, 0.0}, x, t, xi, StressMeasure::neo_hookean);
+      EXPECT_LT((sigma - exact).cwiseAbs().maxCoeff(), 1e-13) << "tet " << t;
+    }
 }
 
 TEST(FiniteStrain, UniaxialStretchIsTreloarsAndNewtonConvergesQuadratically) {

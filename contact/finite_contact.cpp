@@ -1,0 +1,232 @@
+#include "skinfem/contact/finite_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iterator>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "skinfem/contact/lcp.hpp"
+#include "skinfem/fem/finite_strain.hpp"
+
+namespace skinfem::contact {
+
+namespace {
+
+constexpr int kFiniteBlock = 64;   // right-hand sides per block solve where the plain factorization is chosen
+constexpr double kRoundOff = 1e3;  // how far above the tolerance a stalled residual is taken as round-off
+
+struct FiniteState {
+  Eigen::VectorXd u, p, lambda;
+  std::vector<int> active;
+  double depth = 0, complementarity = 0;
+  FiniteStrainSystem system;  // assembled at (u, p), with its tangent
+};
+
+// What every iteration shares: the multipliers' load columns, the gaps at rest and the residual's scales.
+struct FiniteProblem {
+  const TetMesh& mesh;
+  double mu;
+  const std::vector<bool>& fixed;
+  const MortarZone& zone;
+  Eigen::Vector2d t;
+  MixedSolver::Coupling columns;  // [a | b]: the multipliers' pressures −D_zᵀ e_j, their tractions D_tᵀ e_j
+  Eigen::VectorXd gap0;
+  double volume = 0;
+
+  int nc() const { return zone.size(); }
+  // D u_z: the multipliers' weighted downward displacements, mm³.
+  Eigen::VectorXd weighted_uz(const Eigen::VectorXd& u) const {
+    Eigen::VectorXd uz(u.size() / 3);
+    for (int i = 0; i < uz.size(); ++i) uz[i] = u[3 * i + 2];
+    return zone.D * uz;
+  }
+};
+
+// C_zz and C_zt on the tangent the solver factored (condensed.hpp's definitions): from the bordered
+// factorization's products, or by block solves of the pressure columns where MUMPS chose the plain one.
+std::pair<Eigen::MatrixXd, Eigen::MatrixXd> compliances(const FiniteProblem& P, const MixedSolver& solver) {
+  const int nc = P.nc();
+  const Eigen::MatrixXd& G = solver.coupling_products();
+  if (G.size() > 0)
+    return {0.5 * (G.topLeftCorner(nc, nc) + G.topLeftCorner(nc, nc).transpose()), G.topRightCorner(nc, nc)};
+  Eigen::MatrixXd zz(nc, nc), zt(nc, nc);
+  const Eigen::SparseMatrix<double> Ft = P.columns.F.transpose();
+  for (int j0 = 0; j0 < nc; j0 += kFiniteBlock) {
+    const int k = std::min(kFiniteBlock, nc - j0);
+    const Eigen::MatrixXd U = solver.solve_block(Eigen::MatrixXd(P.columns.F.middleCols(j0, k)));
+    const Eigen::MatrixXd R = Ft * U;  // (2 n_c) × k: the readouts a and b of sources a
+    zz.middleCols(j0, k) = R.topRows(nc);
+    zt.middleRows(j0, k) = R.bottomRows(nc).transpose();  // Maxwell–Betti: C_zt(j, i) = b_i · u(a_j)
+  }
+  return {0.5 * (zz + zz.transpose()), zt};
+}
+
+double residual_norm(const FiniteProblem& P, const FiniteStrainSystem& sys, const Eigen::VectorXd& f) {
+  Eigen::VectorXd r = f - sys.internal_force;
+  for (size_t d = 0; d < P.fixed.size(); ++d)
+    if (P.fixed[d]) r[d] = 0;
+  return std::hypot(r.norm() / f.norm(), sys.constraint.norm() / P.volume);
+}
+
+// One load step's Newton iteration from `s` to (force, ratio); nullopt when it fails (s is then undefined).
+std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double force, double ratio,
+                                                const NewtonOptions& o, FiniteState& s, int& factorizations) {
+  FiniteContactStep step{force, ratio, {}, {}, {}};
+  const Lame incompressible{P.mu, 0.0};
+  for (int it = 0; it < o.max_iterations; ++it) {
+    Eigen::VectorXd minus_internal = -s.system.internal_force;
+    for (size_t d = 0; d < P.fixed.size(); ++d)
+      if (P.fixed[d]) minus_internal[d] = 0;
+    LcpSolution lcp;
+    MixedSolution dx;
+    try {
+      const MixedSolver solver(s.system.tangent, incompressible, P.fixed, SolverKind::direct_ldlt, 1e-9, {},
+                               &P.columns);
+      ++factorizations;
+      const auto [zz, zt] = compliances(P, solver);
+      const MixedSolution rest = solver.solve(minus_internal, {}, -s.system.constraint);
+      const Eigen::VectorXd q = P.gap0 - P.weighted_uz(s.u + rest.u);
+      lcp = ContactLcp(zz + ratio * zt, q, P.zone.area).solve_force(force, {}, s.active);
+      dx = solver.solve(P.zone.load(lcp.lambda, P.t, ratio) + minus_internal, {}, -s.system.constraint);
+    } catch (const std::runtime_error&) {  // SolverError, or an LCP without a consistent set
+      return std::nullopt;
+    }
+    std::vector<int> changed;
+    std::set_symmetric_difference(lcp.active.begin(), lcp.active.end(), s.active.begin(), s.active.end(),
+                                  std::back_inserter(changed));
+    s.u += dx.u;
+    s.p += dx.p;
+    s.lambda = lcp.lambda;
+    s.active = lcp.active;
+    s.depth = lcp.delta;
+    s.complementarity = lcp.complementarity;
+    try {
+      s.system = assemble_finite_strain(P.mesh, P.mu, s.u, s.p);
+    } catch (const std::domain_error&) {  // an element folded
+      return std::nullopt;
+    }
+    step.residuals.push_back(residual_norm(P, s.system, P.zone.load(s.lambda, P.t, ratio)));
+    step.active_sizes.push_back(static_cast<int>(s.active.size()));
+    step.set_changes.push_back(static_cast<int>(changed.size()));
+    const bool same_set = changed.empty();
+    // Converged: the set repeats and the residual is below the tolerance, or has reached round-off (below
+    // kRoundOff times it and no longer halving: a load on a few vertices leaves a floor above 1e-10).
+    const std::vector<double>& r = step.residuals;
+    if (same_set && (r.back() <= o.tolerance || (r.size() > 1 && r.back() <= kRoundOff * o.tolerance &&
+                                                 r.back() > 0.5 * r[r.size() - 2])))
+      return step;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const std::vector<bool>& fixed,
+                                         const MortarZone& zone, const Indenter& indenter,
+                                         const FiniteContactLoad& load, const NewtonOptions& o) {
+  if (indenter.kind() != IndenterKind::plane)
+    throw std::invalid_argument("solve_finite_contact: only a plane indenter (its gap is linear in u)");
+  if (!(load.force > 0) || !(load.ratio >= 0))
+    throw std::invalid_argument("solve_finite_contact: force must be > 0 and ratio ≥ 0");
+  if (!(o.first_step > 0 && o.first_step <= 1))
+    throw std::invalid_argument("NewtonOptions::first_step must be in (0, 1]");
+  FiniteProblem P{mesh, mu, fixed, zone, load.direction.normalized(), {}, {}, 0};
+  const int nc = zone.size();
+  std::vector<Eigen::Triplet<double>> f;
+  using RowSparse = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+  for (int i = 0; i < nc; ++i)
+    for (RowSparse::InnerIterator it(zone.D, i); it; ++it) {
+      const int n = static_cast<int>(it.col());
+      if (!fixed[3 * n + 2]) f.emplace_back(3 * n + 2, i, -it.value());
+      if (!fixed[3 * n]) f.emplace_back(3 * n, nc + i, P.t.x() * it.value());
+      if (!fixed[3 * n + 1]) f.emplace_back(3 * n + 1, nc + i, P.t.y() * it.value());
+    }
+  P.columns.F.resize(3 * mesh.num_nodes(), 2 * nc);
+  P.columns.F.setFromTriplets(f.begin(), f.end());
+  P.columns.solves_instead = nc;
+  P.gap0 = zone.weighted(mesh, [&](const Eigen::Vector3d& x) {
+    return indenter.z_touch() + indenter.phi(x.x(), x.y()) - x.z();
+  });
+  P.volume = pressure_mass(mesh).sum();
+
+  FiniteContactResult out;
+  FiniteState s;
+  s.u = Eigen::VectorXd::Zero(3 * mesh.num_nodes());
+  s.p = Eigen::VectorXd::Zero(mesh.num_vertices);
+  s.lambda = Eigen::VectorXd::Zero(nc);
+  s.system = assemble_finite_strain(mesh, mu, s.u, s.p);
+  // The path s ∈ (0, 1]: the force to F without friction; s ∈ (1, 2]: the ratio to its value at F.
+  const double end = load.ratio > 0 ? 2 : 1;
+  const auto force_at = [&](double x) { return load.force * std::min(x, 1.0); };
+  const auto ratio_at = [&](double x) { return load.ratio * std::max(x - 1, 0.0); };
+  double reached = 0, step = o.first_step;
+  const double smallest = o.first_step / std::pow(2.0, o.max_halvings);
+  while (reached < end) {
+    // A step stops at the end of the force ramp, so that friction starts from the full frictionless contact.
+    const double target = std::min(reached < 1 ? 1.0 : end, reached + step);
+    FiniteState trial = s;
+    if (auto done = contact_newton(P, force_at(target), ratio_at(target), o, trial, out.factorizations)) {
+      s = std::move(trial);
+      reached = target;
+      out.steps.push_back(std::move(*done));
+      if (out.steps.back().residuals.size() <= 5) step = std::min(1.0, 2 * step);
+      continue;
+    }
+    ++out.rejected_steps;
+    step *= 0.5;
+    if (step < smallest) {
+      char buf[200];
+      std::snprintf(buf, sizeof buf,
+                    "finite-strain contact: Newton failed beyond %.4g N and friction ratio %.4g (steps down "
+                    "to %.3g of the load path)",
+                    force_at(reached), ratio_at(reached), 2 * step);
+      throw SolverError(buf);
+    }
+  }
+  out.solution.u = s.u;
+  out.solution.p = s.p;
+  out.solution.residual = out.steps.back().residuals.back();
+  out.internal_force = s.system.internal_force;
+  out.load = zone.load(s.lambda, P.t, load.ratio);
+  out.lambda = s.lambda;
+  out.depth_mm = s.depth;
+  out.gap = P.gap0 - s.depth * zone.area - P.weighted_uz(s.u);
+  out.active = s.active;
+  out.complementarity = s.complementarity;
+  return out;
+}
+
+ContactZoneFrame zone_frame(const TetMesh& mesh, const MortarZone& zone, const FiniteContactResult& r,
+                            const Vec2& center, const Eigen::Vector2d& direction, bool current) {
+  const Eigen::Vector2d t = direction.normalized(), n(-t.y(), t.x()), c(center[0], center[1]);
+  ContactZoneFrame z;
+  double force = 0;
+  Eigen::Vector2d zone_sum = Eigen::Vector2d::Zero(), force_sum = Eigen::Vector2d::Zero();
+  z.front_mm = -1e300;
+  z.back_mm = 1e300;
+  for (int i : r.active) {
+    const int v = zone.vertices[i];
+    Eigen::Vector2d x(mesh.nodes(v, 0), mesh.nodes(v, 1));
+    if (current) x += Eigen::Vector2d(r.solution.u[3 * v], r.solution.u[3 * v + 1]);
+    const double a = zone.area[i], along = (x - c).dot(t);
+    z.area_mm2 += a;
+    zone_sum += a * x;
+    force += r.lambda[i] * a;
+    force_sum += r.lambda[i] * a * x;
+    z.front_mm = std::max(z.front_mm, along);
+    z.back_mm = std::min(z.back_mm, along);
+    z.half_width_mm = std::max(z.half_width_mm, std::abs((x - c).dot(n)));
+  }
+  if (r.active.empty()) return ContactZoneFrame{};
+  z.back_mm = -z.back_mm;
+  const Eigen::Vector2d zc = zone_sum / z.area_mm2, fc = force_sum / force;
+  z.zone_centroid = {zc.x(), zc.y()};
+  z.force_centroid = {fc.x(), fc.y()};
+  return z;
+}
+
+}  // namespace skinfem::contact

@@ -1,0 +1,78 @@
+// Contact of a rigid plane with the finite-strain skin (fem/finite_strain.hpp), frictionless or in steady
+// Coulomb sliding, force controlled: the plate meets the deformed surface x = X + u.
+//
+// Mortar multipliers on the reference top (contact/mortar.hpp): λ_i is the nodal pressure per unit of the
+// hat's reference horizontal area, pushing along −e_z with the friction traction ratio·λ along the sliding
+// direction t (dead directions: the plate's normal and its sliding direction do not turn). Because the
+// plate is flat, the weighted gap is exactly linear in u, g_i = gap0_i − δ·area_i − (D u_z)_i, whatever
+// the lateral motion; the nonlinearity is the skin's alone. Each Newton iterate solves, on the tangent at
+// (u_k, p_k), the condensed complementarity problem of contact/lcp.hpp:
+//   M = C_zz + ratio·C_zt (the tangent's compliances, condensed.hpp's definitions),
+//   q = gap0 − D_z (u_k + du_r),  du_r the tangent's answer to the residual alone,
+// then steps to u_k + du_r + (the multipliers' answer). This is Newton's method on the whole complementarity
+// system (Josephy-Newton): once the active set stops changing it is Newton on a smooth system, quadratic.
+// The first iterate from rest is the linear contact exactly. Load path: the normal force ramps to F
+// frictionless, then the ratio ramps to its value at F, in adaptive steps (a step that fails is halved).
+// Units: mm, N, MPa.
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "skinfem/contact/indenter.hpp"
+#include "skinfem/contact/mortar.hpp"
+#include "skinfem/fem/mixed_solver.hpp"
+#include "skinfem/fem/newton.hpp"
+
+namespace skinfem::contact {
+
+struct FiniteContactLoad {
+  double force = 0;                 // N, the plate's total normal force on the solved skin (> 0)
+  double ratio = 0;                 // Coulomb p_t / p acting while the contact is solved (coupled), ≥ 0
+  Eigen::Vector2d direction{1, 0};  // unit sliding direction in the (x, y) plane
+};
+
+struct FiniteContactStep {
+  double force = 0, ratio = 0;    // what this step reached
+  std::vector<double> residuals;  // relative equilibrium residual after each iteration
+  std::vector<int> active_sizes;  // the LCP's active set size at each iteration
+  std::vector<int> set_changes;   // multipliers that entered or left the set at each iteration (0: repeated)
+};
+
+// A contact zone seen in one frame: the active multipliers' vertices at their reference positions X or their
+// current ones X + u (both horizontal).
+struct ContactZoneFrame {
+  double area_mm2 = 0;               // Σ ∫ψ_i over the active multipliers (reference hats in both frames)
+  Vec2 zone_centroid{0, 0};          // the active hats' area-weighted centroid, mm
+  Vec2 force_centroid{0, 0};         // Σ λ_i area_i x_i / Σ λ_i area_i: where the plate's force acts, mm
+  double front_mm = 0, back_mm = 0;  // farthest active vertex ahead of / behind `center` along t
+  double half_width_mm = 0;          // largest |offset across t| of an active vertex from `center`
+};
+
+struct FiniteContactResult {
+  MixedSolution solution;          // u (3N, mm), p (Nv, MPa)
+  Eigen::VectorXd internal_force;  // 3N at the solution: at held DOFs the supports' reactions (N)
+  Eigen::VectorXd load;            // 3N: the plate's load on the skin at the solution (N)
+  Eigen::VectorXd lambda;          // n_c nodal pressures, MPa
+  Eigen::VectorXd gap;             // n_c weighted gaps, mm³ (exact: linear in u)
+  double depth_mm = 0;             // the plate's approach from first touch
+  std::vector<int> active;         // multipliers in contact, ascending
+  double complementarity = 0;      // of the last LCP (contact/lcp.hpp's measure)
+  std::vector<FiniteContactStep> steps;
+  int rejected_steps = 0;
+  int factorizations = 0;  // tangents factored (one per iteration)
+};
+
+// mesh: the skin (a half mesh's cut held by `fixed`); fixed: 3N held DOFs (base, cut), not moved;
+// zone: the candidate multipliers; indenter: a plane (a sphere throws std::invalid_argument); mu: shear
+// modulus, MPa. Throws SolverError (one line: the force and ratio reached, and why) when no step converges.
+FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const std::vector<bool>& fixed,
+                                         const MortarZone& zone, const Indenter& indenter,
+                                         const FiniteContactLoad& load, const NewtonOptions& options = {});
+
+// The zone of `r` in the reference frame (u = 0) or the current one (u = r.solution.u), about `center`
+// along the sliding direction t.
+ContactZoneFrame zone_frame(const TetMesh& mesh, const MortarZone& zone, const FiniteContactResult& r,
+                            const Vec2& center, const Eigen::Vector2d& t, bool current);
+
+}  // namespace skinfem::contact
