@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <memory>
+#include <string>
 
 #include "skinfem/contact/condensed.hpp"
 #include "skinfem/contact/finite_contact.hpp"
@@ -137,6 +138,23 @@ TEST(FiniteContact, NewtonConvergesQuadraticallyOnceTheContactSetSettles) {
         ++pairs;
       }
   EXPECT_GE(pairs, 2);
+}
+
+TEST(FiniteContact, ALoadNewtonCannotCarryIsAOneLineErrorNamingWhereItStopped) {
+  // Two iterations per step and no halving: the first step (the force, from rest) needs three, so the solve
+  // stops at the start of its path and says so, instead of returning an unconverged state.
+  Cap& c = cap();
+  NewtonOptions o;
+  o.max_iterations = 2;
+  o.max_halvings = 0;
+  try {
+    solve_finite_contact(c.mesh, c.mu_shear, c.held.fixed, *c.zone, *c.indenter, {0.3, 3.0, {1, 0}}, o);
+    FAIL() << "no error";
+  } catch (const SolverError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.find('\n'), std::string::npos);
+    EXPECT_NE(what.find("Newton failed beyond 0 N and friction ratio 0"), std::string::npos) << what;
+  }
 }
 
 }  // namespace
