@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "skinfem/contact/condensed.hpp"
 #include "skinfem/contact/lcp.hpp"
 #include "skinfem/fem/finite_strain.hpp"
 
@@ -136,18 +137,9 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
     throw std::invalid_argument("NewtonOptions::first_step must be in (0, 1]");
   FiniteProblem P{mesh, mu, fixed, zone, load.direction.normalized(), {}, {}, 0};
   const int nc = zone.size();
-  std::vector<Eigen::Triplet<double>> f;
-  using RowSparse = Eigen::SparseMatrix<double, Eigen::RowMajor>;
-  for (int i = 0; i < nc; ++i)
-    for (RowSparse::InnerIterator it(zone.D, i); it; ++it) {
-      const int n = static_cast<int>(it.col());
-      if (!fixed[3 * n + 2]) f.emplace_back(3 * n + 2, i, -it.value());
-      if (!fixed[3 * n]) f.emplace_back(3 * n, nc + i, P.t.x() * it.value());
-      if (!fixed[3 * n + 1]) f.emplace_back(3 * n + 1, nc + i, P.t.y() * it.value());
-    }
-  P.columns.F.resize(3 * mesh.num_nodes(), 2 * nc);
-  P.columns.F.setFromTriplets(f.begin(), f.end());
-  P.columns.solves_instead = nc;
+  // condense's columns without watched nodes or sensors: [a | b], solves_instead = n_c.
+  P.columns =
+      condense_columns(mesh, zone, Eigen::MatrixXd(3 * mesh.num_nodes(), 0), {P.t.x(), P.t.y()}, {}).coupling;
   P.gap0 = zone.weighted(mesh, [&](const Eigen::Vector3d& x) {
     return indenter.z_touch() + indenter.phi(x.x(), x.y()) - x.z();
   });
