@@ -5,7 +5,9 @@
 // mirror-symmetric scene (pipeline/symmetry.hpp) is solved on its half y ≥ 0 at half the force and written
 // whole. Where the skin is a body of revolution about the indenter (pipeline/meridian_contact.hpp) the
 // contact is solved on its meridian instead (`--path meridian`, or `auto` where every reported mode is
-// exact there), and a 3D run checks itself against it (meridian_check).
+// exact there), and a 3D run checks itself against it (meridian_check). On the neo-Hookean skin
+// (material.model) a plate, frictionless or in coupled sliding, by Newton on the deformed skin
+// (pipeline/finite_contact.hpp), its zone in the reference and the current frame.
 //
 //   $ skinfem contact scenes/hertz_layer.json --out out/hertz
 //   contact hertz_layer (none), meridian path: 0.8000 N normal, 0.0000 N tangential; a = 2.4878 mm, ...
@@ -22,7 +24,9 @@
 // pressure_centroid_x_mm, complementarity, every mode's metrics, coupled − uncoupled differences (centroid
 // shifts along the sliding direction and as (x, y) vectors), meridian_check, not_meridian, dofs, wall_s per
 // stage, peak_rss_mb); on the meridian DIR/pressure.csv (r_mm,pressure_kPa,weighted_gap_mm3), sensors.csv,
-// modes.csv (the modes solved) and summary.json (path, model, left_out, the modes' readings). The
+// modes.csv (the modes solved) and summary.json (path, model, left_out, the modes' readings); neo-Hookean:
+// pressure.vtp (with displacement_mm), fields.vtu (Cauchy's stress), sensors.csv and summary.json (both
+// frames, each load step's Newton residuals). The
 // computations and summaries are pipeline/contact.hpp's and pipeline/meridian_contact.hpp's; this file
 // writes and prints them.
 #include <cmath>
@@ -38,6 +42,7 @@
 #include "skinfem/fem/fields.hpp"
 #include "skinfem/pipeline/contact.hpp"
 #include "skinfem/pipeline/contact_setup.hpp"
+#include "skinfem/pipeline/finite_contact.hpp"
 #include "skinfem/pipeline/meridian_contact.hpp"
 
 namespace skinfem::app {
@@ -177,9 +182,75 @@ void meridian_contact_stage(const Scene& scene, const std::string& out_dir, Fric
 }
 }  // namespace
 
+namespace {
+void print_frame(const char* name, const contact::ContactZoneFrame& f) {
+  std::printf(
+      "  %s frame: area %.4f mm2, force centroid (%.4f, %.4f) mm, zone centroid (%.4f, %.4f) mm, front %.4f "
+      "and back %.4f mm, half width %.4f mm\n",
+      name, f.area_mm2, f.force_centroid[0], f.force_centroid[1], f.zone_centroid[0], f.zone_centroid[1],
+      f.front_mm, f.back_mm, f.half_width_mm);
+}
+
+int finite_contact_stage(const Scene& scene, const std::string& out_dir, FrictionMode chosen) {
+  const FiniteContactRun run = finite_contact_run(scene, chosen);
+  const contact::FiniteContactResult& r = run.result;
+  nlohmann::json summary = finite_contact_json(scene, run);
+  Stopwatch clock;
+  prepare_output_dir(out_dir);
+  write_fields_vtu(out_dir + "/fields.vtu", *run.mesh, Lame::from(scene.material.E, scene.material.nu),
+                   r.solution, StressMeasure::neo_hookean);
+  const Eigen::Vector2d t(scene.contact->direction[0], scene.contact->direction[1]);
+  contact::write_finite_pressure_vtp(out_dir + "/pressure.vtp", *run.mesh, run.zone, r, t,
+                                     summary["ratio"].get<double>());
+  std::ostringstream csv;
+  csv.precision(10);
+  csv << "sensor,x_mm,y_mm,sigma_z_kPa,sigma_x_kPa\n";
+  for (size_t k = 0; k < run.readings.size(); ++k) {
+    const auto& q = scene.sensors.positions[k];
+    csv << k + 1 << "," << q[0] << "," << q[1] << "," << 1e3 * run.readings[k].sigma_z << ","
+        << 1e3 * run.readings[k].sigma_x << "\n";
+  }
+  write_text_atomic(out_dir + "/sensors.csv", csv.str());
+  add_write_seconds(summary, clock.seconds());
+  write_json(out_dir + "/summary.json", summary);
+
+  std::printf(
+      "contact %s (%s), neo-Hookean skin: %.4f N normal, %.4f N tangential; indentation %.3f um, p0 %.2f "
+      "kPa, "
+      "largest pressure %.2f kPa, %zu multipliers in contact\n",
+      scene.name.c_str(), to_string(chosen), run.force_N, run.tangential_force_N, 1e3 * r.depth_mm,
+      1e3 * run.p0_MPa, 1e3 * run.p_max_MPa, r.active.size());
+  print_frame("reference", run.reference);
+  print_frame("current", run.current);
+  std::printf(
+      "  largest tangential displacement in the zone %.4f mm (%.2f x the indentation); base force balance "
+      "%.1e, "
+      "complementarity %.1e, max pointwise penetration %.3g um\n",
+      run.max_tangential_mm, run.max_tangential_mm / r.depth_mm, run.balance_rel, r.complementarity,
+      1e3 * run.max_penetration_mm);
+  const double share = run.mirrored ? 0.5 : 1.0;
+  for (const contact::FiniteContactStep& s : r.steps) {
+    std::printf("  step to %.4g N, ratio %.3g: residuals", s.force / share, s.ratio);
+    for (double x : s.residuals) std::printf(" %.1e", x);
+    std::printf("\n");
+  }
+  std::printf(
+      "  %d DOFs (%s); mesh %.2f s, Newton %.2f s (%d factorizations, %d steps halved); peak %.0f MB\n",
+      run.dofs, symmetry_said(scene, run.mirrored).c_str(), run.wall.at("mesh"), run.wall.at("newton"),
+      r.factorizations, r.rejected_steps, peak_rss_mb());
+  std::printf("  wrote %s/pressure.vtp, fields.vtu, sensors.csv, summary.json\n", out_dir.c_str());
+  return 0;
+}
+}  // namespace
+
 int run_contact(const Scene& scene, const std::string& out_dir, const std::string& friction, GreenPath path) {
   const FrictionMode chosen = friction_mode_named(scene, friction);  // or a SceneError without a contact
   check_output_dir(out_dir);
+  if (scene.material.model == MaterialModel::neo_hookean) {
+    if (path == GreenPath::meridian)
+      throw SceneError("--path meridian: with material.model \"neo_hookean\" the contact is solved in 3D");
+    return finite_contact_stage(scene, out_dir, chosen);
+  }
   std::string why;
   if (contact_on_meridian(scene, chosen, path, &why)) {
     meridian_contact_stage(scene, out_dir, chosen);

@@ -128,7 +128,8 @@ std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double f
 
 FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const std::vector<bool>& fixed,
                                          const MortarZone& zone, const Indenter& indenter,
-                                         const FiniteContactLoad& load, const NewtonOptions& o) {
+                                         const FiniteContactLoad& load, const NewtonOptions& o,
+                                         const FiniteContactStepSink& on_step) {
   if (indenter.kind() != IndenterKind::plane)
     throw std::invalid_argument("solve_finite_contact: only a plane indenter (its gap is linear in u)");
   if (!(load.force > 0) || !(load.ratio >= 0))
@@ -165,6 +166,7 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
       s = std::move(trial);
       reached = target;
       out.steps.push_back(std::move(*done));
+      if (on_step) on_step(out.steps.back());
       if (out.steps.back().residuals.size() <= 5) step = std::min(1.0, 2 * step);
       continue;
     }

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <functional>
 #include <vector>
 
 #include "skinfem/contact/indenter.hpp"
@@ -63,12 +64,16 @@ struct FiniteContactResult {
   int factorizations = 0;  // tangents factored (one per iteration)
 };
 
+// Called with each load step as it converges.
+using FiniteContactStepSink = std::function<void(const FiniteContactStep&)>;
+
 // mesh: the skin (a half mesh's cut held by `fixed`); fixed: 3N held DOFs (base, cut), not moved;
 // zone: the candidate multipliers; indenter: a plane (a sphere throws std::invalid_argument); mu: shear
 // modulus, MPa. Throws SolverError (one line: the force and ratio reached, and why) when no step converges.
 FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const std::vector<bool>& fixed,
                                          const MortarZone& zone, const Indenter& indenter,
-                                         const FiniteContactLoad& load, const NewtonOptions& options = {});
+                                         const FiniteContactLoad& load, const NewtonOptions& options = {},
+                                         const FiniteContactStepSink& on_step = {});
 
 // The zone of `r` in the reference frame (u = 0) or the current one (u = r.solution.u), about `center`
 // along the sliding direction t.

@@ -9,6 +9,28 @@
 namespace skinfem::contact {
 
 namespace {
+// The zone's faces with every corner a multiplier: elsewhere the gap is not a constraint and is not known.
+std::vector<int> corner_faces(const TetMesh& m, const MortarZone& zone) {
+  std::vector<char> in_zone(m.num_nodes(), 0);
+  for (int v : zone.vertices) in_zone[v] = 1;
+  std::vector<int> faces;
+  for (int f : zone.faces)
+    if (in_zone[m.faces(f, 0)] && in_zone[m.faces(f, 1)] && in_zone[m.faces(f, 2)]) faces.push_back(f);
+  return faces;
+}
+
+// A P1 field's values at the faces' mid-edge nodes: the mean of the edge's two vertices.
+void mid_edge_means(const TetMesh& m, const std::vector<int>& faces, std::vector<double>& v) {
+  for (int f : faces)
+    for (int e = 0; e < 3; ++e) v[m.faces(f, 3 + e)] = 0.5 * (v[m.faces(f, e)] + v[m.faces(f, (e + 1) % 3)]);
+}
+
+// A 0/1 flag at the mid-edge nodes: 1 where both vertices have it.
+void mid_edge_both(const TetMesh& m, const std::vector<int>& faces, std::vector<double>& v) {
+  for (int f : faces)
+    for (int e = 0; e < 3; ++e) v[m.faces(f, 3 + e)] = v[m.faces(f, e)] * v[m.faces(f, (e + 1) % 3)];
+}
+
 // Multiplier i's mean gap over its hat to the indenter's face, mm (a bulge's solve holds the weighted gap
 // to the receded surface: its opening is taken back out).
 double face_gap(const ContactResult& r, const MortarZone& zone, int i) {
@@ -59,21 +81,9 @@ void write_pressure_vtp(const std::string& path, const TetMesh& m, const Contact
       in_hole[v] = 1;
     }
   }
-  // Faces with every corner in the zone: elsewhere the gap is not a constraint and is not known here.
-  std::vector<char> in_zone(N, 0);
-  for (int v : zone.vertices) in_zone[v] = 1;
-  std::vector<int> faces;
-  for (int f : zone.faces)
-    if (in_zone[m.faces(f, 0)] && in_zone[m.faces(f, 1)] && in_zone[m.faces(f, 2)]) faces.push_back(f);
-  for (int f : faces)
-    for (int e = 0; e < 3; ++e) {
-      const int a = m.faces(f, e), b = m.faces(f, (e + 1) % 3), mid = m.faces(f, 3 + e);
-      p[mid] = 0.5 * (p[a] + p[b]);
-      pt[mid] = 0.5 * (pt[a] + pt[b]);
-      gap[mid] = 0.5 * (gap[a] + gap[b]);
-      in[mid] = in[a] * in[b];
-      in_hole[mid] = in_hole[a] * in_hole[b];
-    }
+  const std::vector<int> faces = corner_faces(m, zone);
+  for (auto* values : {&p, &pt, &gap}) mid_edge_means(m, faces, *values);
+  for (auto* flags : {&in, &in_hole}) mid_edge_both(m, faces, *flags);
   DataArray traction{"traction_kPa", 3, std::vector<double>(3 * N, 0.0)};
   for (int j = 0; j < N; ++j) {
     traction.values[3 * j] = solver.direction().x() * pt[j];
@@ -82,6 +92,33 @@ void write_pressure_vtp(const std::string& path, const TetMesh& m, const Contact
   write_faces_vtp(
       path, m, faces,
       {{"pressure_kPa", 1, p}, traction, {"gap_um", 1, gap}, {"in_hole", 1, in_hole}, {"in_contact", 1, in}});
+}
+
+void write_finite_pressure_vtp(const std::string& path, const TetMesh& m, const MortarZone& zone,
+                               const FiniteContactResult& r, const Eigen::Vector2d& direction, double ratio) {
+  const int N = m.num_nodes();
+  std::vector<double> p(N, 0.0), gap(N, 0.0), in(N, 0.0);
+  for (int i : r.active) in[zone.vertices[i]] = 1.0;
+  for (int i = 0; i < zone.size(); ++i) {
+    const int v = zone.vertices[i];
+    p[v] = 1e3 * std::max(0.0, r.lambda[i]);
+    gap[v] = 1e3 * r.gap[i] / zone.area[i];
+  }
+  const std::vector<int> faces = corner_faces(m, zone);
+  mid_edge_means(m, faces, p);
+  mid_edge_means(m, faces, gap);
+  mid_edge_both(m, faces, in);
+  const Eigen::Vector2d t = direction.normalized();
+  DataArray traction{"traction_kPa", 3, std::vector<double>(3 * N, 0.0)};
+  for (int j = 0; j < N; ++j) {
+    traction.values[3 * j] = t.x() * ratio * p[j];
+    traction.values[3 * j + 1] = t.y() * ratio * p[j];
+  }
+  const DataArray displacement{"displacement_mm", 3,
+                               std::vector<double>(r.solution.u.data(), r.solution.u.data() + 3 * N)};
+  write_faces_vtp(
+      path, m, faces,
+      {{"pressure_kPa", 1, p}, traction, {"gap_um", 1, gap}, {"in_contact", 1, in}, displacement});
 }
 
 }  // namespace skinfem::contact

@@ -12,12 +12,19 @@
 #include <vector>
 
 #include "skinfem/contact/contact_solver.hpp"
+#include "skinfem/contact/finite_contact.hpp"
 
 namespace skinfem::contact {
 
 // mesh: the mesh of solver.zone() (the whole one under a mirror view); holes: the indenter's, where it is.
 void write_pressure_vtp(const std::string& path, const TetMesh& mesh, const ContactSolver& solver,
                         const ContactResult& r, const std::vector<Hole>& holes = {});
+
+// pressure.vtp of a plate on the finite-strain skin (contact/finite_contact.hpp): the same faces on the
+// reference mesh with pressure_kPa, traction_kPa (ratio·p along direction), gap_um, in_contact and
+// displacement_mm (ParaView's Warp By Vector shows the zone in the current frame).
+void write_finite_pressure_vtp(const std::string& path, const TetMesh& mesh, const MortarZone& zone,
+                               const FiniteContactResult& r, const Eigen::Vector2d& direction, double ratio);
 
 // The hole whose bottom the skin comes closest to, and the clearance left, mm (the mean gap of the hats of
 // the vertices inside it, to its bottom; +inf without holes). A clearance ≤ 0 means the skin touches a

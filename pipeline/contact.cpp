@@ -162,7 +162,11 @@ ContactRun contact_run(const Scene& scene, std::shared_ptr<const ContactSetup> s
 }
 
 std::string symmetry_used(const Scene& scene, const ContactSetup& setup) {
-  if (setup.whole) return "mirror y = 0: the half y >= 0 solved";
+  return symmetry_said(scene, setup.whole != nullptr);
+}
+
+std::string symmetry_said(const Scene& scene, bool half_solved) {
+  if (half_solved) return "mirror y = 0: the half y >= 0 solved";
   const std::string why_whole = scene.symmetry == SymmetryUse::none  ? "\"symmetry\": \"none\""
                                 : !mirror_unavailable(scene).empty() ? mirror_unavailable(scene)
                                                                      : contact_mirror_unavailable(scene);

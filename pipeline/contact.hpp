@@ -63,6 +63,8 @@ ContactRun contact_run(const Scene& scene, std::shared_ptr<const ContactSetup> s
                        const MeridianContactRun* frictionless = nullptr);
 // How the contact was solved: on the half (mirror symmetry) or whole, and why whole.
 std::string symmetry_used(const Scene& scene, const ContactSetup& setup);
+// The same for a skin solved on its half (half_solved) or whole.
+std::string symmetry_said(const Scene& scene, bool half_solved);
 // summary.json of `skinfem contact`.
 nlohmann::json contact_json(const Scene& scene, const ContactRun& run);
 // The friction mode named as the command line names it (none, static, uncoupled, coupled), or the

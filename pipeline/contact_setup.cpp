@@ -175,12 +175,17 @@ void check_zone(const Scene& scene, const ContactSetup& s, const contact::Contac
   }
   double reach = 0;
   for (int i : r.active) reach = std::max(reach, distance(i));
+  check_zone_reach(scene, s.zone_radius, s.zone_h, reach, r.mode);
+}
+
+void check_zone_reach(const Scene& scene, double zone_radius, double zone_h, double reach,
+                      FrictionMode mode) {
   // Contact reaching the outer ring may be cut short by the zone.
-  if (reach > ring)
-    throw SceneError(scene.source_path + ": contact.zone_radius = " + std::to_string(s.zone_radius) +
-                     ": the contact (friction " + to_string(r.mode) + ") reaches " + std::to_string(reach) +
-                     " mm from the centre, within one element (contact.h = " + std::to_string(s.zone_h) +
-                     ")" + " mm of the zone's edge; give a larger contact.zone_radius");
+  if (reach > zone_radius - zone_h)
+    throw SceneError(scene.source_path + ": contact.zone_radius = " + std::to_string(zone_radius) +
+                     ": the contact (friction " + to_string(mode) + ") reaches " + std::to_string(reach) +
+                     " mm from the centre, within one element (contact.h = " + std::to_string(zone_h) + ")" +
+                     " mm of the zone's edge; give a larger contact.zone_radius");
 }
 
 }  // namespace skinfem::pipeline

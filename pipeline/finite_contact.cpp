@@ -1,0 +1,246 @@
+#include "skinfem/pipeline/finite_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "skinfem/contact/contact_solver.hpp"
+#include "skinfem/contact/indenter.hpp"
+#include "skinfem/fem/fields.hpp"
+#include "skinfem/fem/supports.hpp"
+#include "skinfem/mesh/build.hpp"
+#include "skinfem/mesh/mirror.hpp"
+#include "skinfem/pipeline/contact.hpp"
+#include "skinfem/pipeline/contact_setup.hpp"
+#include "skinfem/pipeline/progress.hpp"
+#include "skinfem/pipeline/resources.hpp"
+#include "skinfem/pipeline/scene_json.hpp"
+#include "skinfem/pipeline/symmetry.hpp"
+#include "skinfem/scene/laws.hpp"
+
+namespace skinfem::pipeline {
+
+namespace {
+
+SceneError finite_refusal(const Scene& scene, const std::string& field, const std::string& why) {
+  return SceneError(scene.source_path + ": " + field + ": with material.model \"neo_hookean\" " + why);
+}
+
+// The half's result seen on the whole skin: u and p mirrored, each whole multiplier taking its half one's λ
+// and its gap scaled by the hats' areas (a hat on the plane y = 0 is twice its half; the others are equal).
+contact::FiniteContactResult mirrored_result(const contact::FiniteContactResult& half,
+                                             const contact::MortarZone& half_zone, const TetMesh& whole,
+                                             const std::vector<int>& source,
+                                             const contact::MirrorView& view) {
+  contact::FiniteContactResult r = half;
+  r.solution = mirrored_solution(whole, source, half.solution);
+  const int n = view.zone.size();
+  r.lambda.resize(n);
+  r.gap.resize(n);
+  std::vector<char> active(half_zone.size(), 0);
+  for (int i : half.active) active[i] = 1;
+  r.active.clear();
+  for (int i = 0; i < n; ++i) {
+    const int h = view.half[i];
+    r.lambda[i] = half.lambda[h];
+    r.gap[i] = half.gap[h] * view.zone.area[i] / half_zone.area[h];
+    if (active[h]) r.active.push_back(i);
+  }
+  r.internal_force.resize(0);  // the half's alone is meaningful (its reactions are read there)
+  r.load.resize(0);
+  return r;
+}
+
+}  // namespace
+
+void check_finite_contact(const Scene& scene, FrictionMode mode) {
+  require_contact(scene);
+  const ContactLoad& c = *scene.contact;
+  if (!c.force)
+    throw finite_refusal(scene, "contact.depth", "the contact is force controlled: give contact.force");
+  if (!c.holes.empty())
+    throw finite_refusal(scene, "contact.holes",
+                         "the plate has no holes (" + std::to_string(c.holes.size()) + " given)");
+  if (c.law != FrictionLaw::coulomb)
+    throw finite_refusal(scene, std::string("contact.friction.law = \"") + to_string(c.law) + "\"",
+                         "friction is Coulomb's");
+  if (c.interface.law != InterfaceLaw::hard)
+    throw finite_refusal(scene, std::string("contact.interface.law = \"") + to_string(c.interface.law) + "\"",
+                         "the interface is hard");
+  if (scene.sensors.model == SensorModel::post && !scene.sensors.post.support.rigid())
+    throw finite_refusal(scene, "sensors.post.support", "posts are held rigid (\"support\": \"rigid\")");
+  if (mode != FrictionMode::none && mode != FrictionMode::coupled)
+    throw SceneError(scene.source_path + ": friction mode '" + to_string(mode) +
+                     "' (--friction or contact.friction.mode): with material.model \"neo_hookean\" the "
+                     "contact is frictionless ('none') or in "
+                     "coupled sliding ('coupled')");
+  if (c.indenter != IndenterKind::plane)
+    throw finite_refusal(
+        scene, "contact.indenter = \"sphere\"",
+        "the indenter is a plane (a sphere's gap on the deformed surface is not modelled yet)");
+}
+
+FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode) {
+  check_finite_contact(scene, mode);
+  const ContactLoad& c = *scene.contact;
+  FiniteContactRun run;
+  run.mode = mode;
+  run.zone_radius = contact_zone_radius(scene);
+  run.zone_h = contact_zone_h(scene);
+  const Vec2 centre = contact_center(scene);
+  Stopwatch clock;
+  TetMesh solved = guarded_mesh(scene, contact_mesh_part(scene));
+  check_sensors_on_skin(scene, solved);
+  run.wall["mesh"] = clock.seconds();
+
+  clock = Stopwatch();
+  const Supports held = skin_supports(solved, scene.geometry.side, {});
+  const contact::Indenter indenter(scene, solved);
+  const contact::MortarZone zone = contact::mortar_zone(solved, centre, run.zone_radius);
+  run.mirrored = is_half_y(solved);
+  const double share = run.mirrored ? 0.5 : 1.0;  // the solved skin's part of the force
+  const double ratio = mode == FrictionMode::coupled ? c.mu : 0.0;
+  run.force_N = *c.force;
+  run.tangential_force_N = ratio * *c.force;
+  const Eigen::Vector2d t(c.direction[0], c.direction[1]);
+  const Lame lame = Lame::from(scene.material.E, scene.material.nu);
+  progress("Newton on the neo-Hookean skin under the plate (" + std::to_string(solved.num_nodes()) +
+           " nodes, " + std::to_string(zone.size()) + " multipliers)");
+  contact::FiniteContactResult r = contact::solve_finite_contact(
+      solved, lame.mu, held.fixed, zone, indenter, {share * *c.force, ratio, t}, {},
+      [&](const contact::FiniteContactStep& s) {
+        char buf[200];
+        std::snprintf(buf, sizeof buf, "  step to %.4g N, friction ratio %.3g: %zu iterations, residual %.1e",
+                      s.force / share, s.ratio, s.residuals.size(), s.residuals.back());
+        progress(buf);
+      });
+  run.wall["newton"] = clock.seconds();
+  run.dofs = static_cast<int>(std::count(held.fixed.begin(), held.fixed.end(), false)) + solved.num_vertices;
+
+  // What the base feels: its reactions (the internal force at its DOFs; the plate loads none of them), read
+  // over each sensor's reference disc.
+  const Eigen::VectorXd reactions = support_reactions(held, r.internal_force - r.load);
+  const SensorReadings readings(solved, reading_sites(scene.sensors));
+  for (int k = 0; k < readings.size(); ++k) run.readings.push_back(readings.read(k, reactions));
+  for (int i = 0; i < solved.num_nodes(); ++i) run.base_force_N += reactions.segment<3>(3 * i);
+  if (run.mirrored) run.base_force_N = {2 * run.base_force_N.x(), 0.0, 2 * run.base_force_N.z()};
+  // At equilibrium the base takes back the plate's whole force, friction included (the internal force's
+  // test functions sum to one).
+  const Eigen::Vector3d plate(run.tangential_force_N * t.x(), run.tangential_force_N * t.y(), -run.force_N);
+  run.balance_rel = (run.base_force_N + plate).norm() / plate.norm();
+
+  if (run.mirrored) {
+    run.mesh = std::make_unique<TetMesh>(mirror_half(solved, &run.source));
+    contact::MirrorView view = contact::mirror_view(*run.mesh, run.source, zone, centre, run.zone_radius);
+    run.result = mirrored_result(r, zone, *run.mesh, run.source, view);
+    run.zone = std::move(view.zone);
+  } else {
+    run.mesh = std::make_unique<TetMesh>(std::move(solved));
+    run.result = std::move(r);
+    run.zone = zone;
+  }
+  const TetMesh& mesh = *run.mesh;
+  const contact::FiniteContactResult& w = run.result;
+  run.reference = contact::zone_frame(mesh, run.zone, w, centre, t, false);
+  run.current = contact::zone_frame(mesh, run.zone, w, centre, t, true);
+
+  // The contact may not reach the zone's outer element ring (it would be cut short there).
+  double reach = 0, nearest = 1e300;
+  for (int i : w.active) {
+    const int v = run.zone.vertices[i];
+    reach = std::max(reach, std::hypot(mesh.nodes(v, 0) - centre[0], mesh.nodes(v, 1) - centre[1]));
+  }
+  check_zone_reach(scene, run.zone_radius, run.zone_h, reach, mode);
+  for (int i = 0; i < run.zone.size(); ++i) {
+    const int v = run.zone.vertices[i];
+    const double d = std::hypot(mesh.nodes(v, 0) - centre[0], mesh.nodes(v, 1) - centre[1]);
+    if (d < nearest) nearest = d, run.p0_MPa = w.lambda[i];
+    run.max_tangential_mm = std::max(run.max_tangential_mm,
+                                     std::abs(w.solution.u[3 * v] * t.x() + w.solution.u[3 * v + 1] * t.y()));
+  }
+  run.p_max_MPa = w.lambda.maxCoeff();
+  // Pointwise: each zone face node's current height against the plate at its current (x, y).
+  for (int face : run.zone.faces)
+    for (int k = 0; k < 6; ++k) {
+      const int n = mesh.faces(face, k);
+      const Eigen::Vector3d x = mesh.nodes.row(n).transpose() + w.solution.u.segment<3>(3 * n);
+      const double gap = indenter.z_touch() - w.depth_mm + indenter.phi(x.x(), x.y()) - x.z();
+      run.max_penetration_mm = std::max(run.max_penetration_mm, -gap);
+    }
+  return run;
+}
+
+namespace {
+nlohmann::json frame_json(const contact::ContactZoneFrame& f) {
+  const double anisotropy = f.half_width_mm > 0 ? (f.front_mm + f.back_mm) / (2 * f.half_width_mm) : 0.0;
+  return {{"area_mm2", f.area_mm2},
+          {"equivalent_radius_mm", std::sqrt(f.area_mm2 / M_PI)},
+          {"zone_centroid_mm", {f.zone_centroid[0], f.zone_centroid[1]}},
+          {"force_centroid_mm", {f.force_centroid[0], f.force_centroid[1]}},
+          {"front_edge_mm", f.front_mm},
+          {"back_edge_mm", f.back_mm},
+          {"half_width_mm", f.half_width_mm},
+          {"anisotropy", anisotropy}};
+}
+}  // namespace
+
+nlohmann::json finite_contact_json(const Scene& scene, const FiniteContactRun& run) {
+  const contact::FiniteContactResult& r = run.result;
+  const double share = run.mirrored ? 0.5 : 1.0;
+  nlohmann::json steps = nlohmann::json::array();
+  for (const contact::FiniteContactStep& s : r.steps)
+    steps.push_back({{"force_N", s.force / share},
+                     {"ratio", s.ratio},
+                     {"residuals", s.residuals},
+                     {"active_multipliers", s.active_sizes},
+                     {"set_changes", s.set_changes}});
+  nlohmann::json sensors = nlohmann::json::array();
+  for (size_t k = 0; k < run.readings.size(); ++k)
+    sensors.push_back({{"sensor", k + 1},
+                       {"x_mm", scene.sensors.positions[k][0]},
+                       {"y_mm", scene.sensors.positions[k][1]},
+                       {"sigma_z_kPa", 1e3 * run.readings[k].sigma_z},
+                       {"sigma_x_kPa", 1e3 * run.readings[k].sigma_x}});
+  const auto shift = [&](const Vec2& a, const Vec2& b) { return nlohmann::json{a[0] - b[0], a[1] - b[1]}; };
+  return {{"scene", scene_json(scene)},
+          {"material_model", "neo_hookean"},
+          {"path", "3d"},
+          {"indenter", "plane"},
+          {"friction", to_string(run.mode)},
+          {"friction_law", "coulomb"},
+          {"ratio", run.mode == FrictionMode::coupled ? scene.contact->mu : 0.0},
+          {"direction", {scene.contact->direction[0], scene.contact->direction[1]}},
+          {"force_N", run.force_N},
+          {"tangential_force_N", run.tangential_force_N},
+          {"indentation_um", 1e3 * r.depth_mm},
+          {"p0_kPa", 1e3 * run.p0_MPa},
+          {"p_max_kPa", 1e3 * run.p_max_MPa},
+          {"reference_frame", frame_json(run.reference)},
+          {"current_frame", frame_json(run.current)},
+          {"frame_shift_mm",
+           {{"zone_centroid", shift(run.current.zone_centroid, run.reference.zone_centroid)},
+            {"force_centroid", shift(run.current.force_centroid, run.reference.force_centroid)}}},
+          {"max_tangential_displacement_mm", run.max_tangential_mm},
+          {"tangential_displacement_over_indentation", run.max_tangential_mm / r.depth_mm},
+          {"min_pressure_kPa", 1e3 * r.lambda.minCoeff()},
+          {"min_weighted_gap_mm3", r.gap.minCoeff()},
+          {"complementarity", r.complementarity},
+          {"max_penetration_um", 1e3 * run.max_penetration_mm},
+          {"active_multipliers", r.active.size()},
+          {"base_force_N", {run.base_force_N.x(), run.base_force_N.y(), run.base_force_N.z()}},
+          {"base_force_balance_rel", run.balance_rel},
+          {"sensors", sensors},
+          {"newton",
+           {{"steps", steps}, {"rejected_steps", r.rejected_steps}, {"factorizations", r.factorizations}}},
+          {"residual", r.solution.residual},
+          {"zone", {{"radius_mm", run.zone_radius}, {"h_mm", run.zone_h}, {"multipliers", run.zone.size()}}},
+          {"symmetry", symmetry_said(scene, run.mirrored)},
+          {"dofs", run.dofs},
+          {"nodes", run.mesh->num_nodes()},
+          {"elements", run.mesh->num_tets()},
+          {"wall_s", run.wall},
+          {"wall_total_s", run.wall.total()},
+          {"peak_rss_mb", peak_rss_mb()}};
+}
+
+}  // namespace skinfem::pipeline

@@ -1,0 +1,58 @@
+// `skinfem contact` on the neo-Hookean skin (material.model "neo_hookean"): the scene's plate pressed with
+// its force, frictionless or in steady Coulomb sliding (the coupled mode), against the deformed surface
+// x = X + u (contact/finite_contact.hpp: Josephy–Newton, the condensed complementarity problem on each
+// iterate's tangent). A mirror-symmetric scene (pipeline/symmetry.hpp) is solved on its half y ≥ 0 at half
+// the force; everything here is reported for the whole skin. The sensors read the base's reaction over their
+// reference discs (the base does not move). Units: mm, N, MPa.
+#pragma once
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "skinfem/contact/finite_contact.hpp"
+#include "skinfem/contact/mortar.hpp"
+#include "skinfem/fem/sensor_reading.hpp"
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/scene/scene.hpp"
+
+namespace skinfem::pipeline {
+
+struct FiniteContactRun {
+  FrictionMode mode = FrictionMode::none;  // none or coupled
+  double force_N = 0, tangential_force_N = 0;
+  // The whole skin: the solved one, or the half's mirror image with each node's half node (source).
+  std::unique_ptr<TetMesh> mesh;
+  std::vector<int> source;  // empty unless mirrored
+  bool mirrored = false;
+  contact::MortarZone zone;  // the whole skin's candidate multipliers
+  // On the whole skin: u, p, λ, gaps, the active set; steps and counts as solved (forces of the half where
+  // mirrored: half the force).
+  contact::FiniteContactResult result;
+  contact::ContactZoneFrame reference, current;  // the zone in the material (X) and the spatial (X + u) frame
+  double p0_MPa = 0;              // λ at the multiplier nearest the first-touch point (reference)
+  double p_max_MPa = 0;           // largest λ
+  double max_penetration_mm = 0;  // pointwise: every zone face node's current height against the plate
+  double max_tangential_mm = 0;   // largest |u_t| (along the sliding direction) over the zone's vertices
+  // Σ the base's reactions: the force the base holds the skin with, the plate's reversed at equilibrium.
+  Eigen::Vector3d base_force_N = Eigen::Vector3d::Zero();
+  double balance_rel = 0;               // |base force + the plate's force| / |the plate's force|
+  std::vector<SensorReading> readings;  // per sensor, MPa
+  int dofs = 0;                         // free displacements + pressures of the solved skin
+  double zone_radius = 0, zone_h = 0;
+  Timings wall;  // mesh, newton
+};
+
+// Throws SceneError (one line naming the field or option, its value and what is allowed) for what the
+// finite-strain contact does not model: a sphere, a depth instead of a force, holes, a friction law other
+// than Coulomb, a compliant interface, posts on springs, and the static and uncoupled modes.
+void check_finite_contact(const Scene& scene, FrictionMode mode);
+
+// Throws SceneError as check_finite_contact, beyond the resource guard (before meshing), when the contact
+// reaches the zone's outer element ring, and SolverError when Newton cannot carry the load.
+FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode);
+
+// summary.json of `skinfem contact` on the neo-Hookean skin.
+nlohmann::json finite_contact_json(const Scene& scene, const FiniteContactRun& run);
+
+}  // namespace skinfem::pipeline

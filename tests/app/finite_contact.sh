@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# `skinfem contact` on the neo-Hookean skin: a plate on a small strongly curved cap (R = 20 mm), solved on its
+# half and reported whole. Checks what the command adds to the library's solve (contact/finite_contact.hpp,
+# whose physics tests/contact/test_finite_contact.cpp checks): the mirror image's forces, frames and files.
+# - Global balance: the base takes back the whole plate's force, friction included, to Newton's tolerance
+#   (1e-10 relative): a half counted once, or a sign, would be off by 50 % or 200 %.
+# - Symmetry: the whole zone's centroids lie on y = 0.
+# - The files: fields.vtu on the whole mesh, pressure.vtp, sensors.csv.
+# With --against-linear (Release): coupled sliding at mu = 1, against `skinfem contact` on the linear skin (an
+# independent path: condensation and the complementarity solve on the small-strain skin, readings by adjoint
+# solves). Finite strain changes the contact at first order in the strain scale a/R (the library's
+# SmallForcesTendToTheLinearContactAtFirstOrder), so the indentation and every reading must agree within
+# a/R relative (a = the contact's area-equivalent radius, 0.96 mm: 4.8 %); the surface moves ahead under the
+# traction, so the current frame's force centroid lies ahead of the reference one by at most the largest
+# tangential displacement. The sanitizer pass runs the frictionless contact alone (the same code).
+set -u
+skinfem=$1
+against=${2:-}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+mode=none
+[ "$against" = --against-linear ] && mode=coupled
+scene() {  # MODEL FILE
+  cat >"$2" <<JSON
+{"name": "plate_cap", "geometry": {"type": "cap", "R": 20.0, "h": 3.0, "apex": [0.0, 0.0], "truncation_radius": 6.0},
+ "material": {"E": 3.0, "nu": 0.5, "model": "$1"},
+ "sensors": {"positions": [[0.0, 0.0], [1.0, 0.0]], "disc_diameter": 0.2},
+ "mesh": {"h_min": 0.5, "growth": 1.8, "h_max": 1.5, "refine_sensors": false},
+ "contact": {"indenter": {"type": "plane"}, "force": 0.3, "zone_radius": 2.0, "h": 0.5,
+             "friction": {"mode": "$mode", "mu": 1.0, "direction": [1.0, 0.0]}}}
+JSON
+}
+scene neo_hookean "$tmp/neo.json"
+"$skinfem" contact "$tmp/neo.json" --out "$tmp/neo" >"$tmp/neo.out" 2>"$tmp/err" || { echo "FAIL neo_hookean contact:"; cat "$tmp/err"; exit 1; }
+cat "$tmp/neo.out"
+if [ -n "$against" ]; then
+  scene linear "$tmp/lin.json"
+  "$skinfem" contact "$tmp/lin.json" --out "$tmp/lin" >"$tmp/lin.out" 2>"$tmp/err" || { echo "FAIL linear contact:"; cat "$tmp/err"; exit 1; }
+fi
+/usr/bin/python3 - "$tmp" "$against" <<'PY'
+import csv, json, os, re, sys
+tmp, against = sys.argv[1], sys.argv[2]
+s = json.load(open(f"{tmp}/neo/summary.json"))
+bad = []
+F, T = s["force_N"], s["tangential_force_N"]
+base = s["base_force_N"]
+held = [-T, 0.0, F]  # the base holds the skin against the plate's (T, 0, -F)
+err = sum((b - h) ** 2 for b, h in zip(base, held)) ** 0.5 / (F * F + T * T) ** 0.5
+print(f"base force {base} against {held}: {err:.1e}")
+if not err < 1e-9: bad.append(f"global balance {err:.1e}")
+for frame in ("reference_frame", "current_frame"):
+    for key in ("zone_centroid_mm", "force_centroid_mm"):
+        if abs(s[frame][key][1]) > 1e-12: bad.append(f"{frame}.{key} off y = 0: {s[frame][key]}")
+for step in s["newton"]["steps"]:
+    if not step["residuals"][-1] < 1e-7: bad.append(f"a step ended at residual {step['residuals'][-1]}")
+vtu = open(f"{tmp}/neo/fields.vtu", "rb").read(4000).decode("latin-1")
+m = re.search(r'NumberOfPoints="(\d+)"', vtu)
+if not m or int(m.group(1)) != s["nodes"]: bad.append(f"fields.vtu points {m and m.group(1)} against {s['nodes']} nodes")
+if not os.path.getsize(f"{tmp}/neo/pressure.vtp") > 0: bad.append("pressure.vtp empty")
+if against:
+    lin = json.load(open(f"{tmp}/lin/summary.json"))
+    bound = s["reference_frame"]["equivalent_radius_mm"] / 20.0
+    d = s["indentation_um"] / lin["indentation_um"] - 1
+    print(f"a/R = {bound:.4f}; indentation {s['indentation_um']:.4f} against {lin['indentation_um']:.4f} um ({d:+.2e})")
+    if not abs(d) < bound: bad.append(f"indentation {d:+.2e} beyond a/R")
+    rows = lambda k: list(csv.DictReader(open(f"{tmp}/{k}/sensors.csv")))
+    scale = max(abs(float(r[c])) for r in rows("lin") for c in ("sigma_z_kPa", "sigma_x_kPa"))
+    for a, b in zip(rows("neo"), rows("lin")):
+        for c in ("sigma_z_kPa", "sigma_x_kPa"):
+            g = (float(a[c]) - float(b[c])) / scale
+            print(f"sensor {a['sensor']} {c}: {float(a[c]):.4f} against {float(b[c]):.4f} ({g:+.2e} of the largest)")
+            if not abs(g) < bound: bad.append(f"sensor {a['sensor']} {c} beyond a/R")
+    ahead = s["frame_shift_mm"]["force_centroid"][0]
+    print(f"force centroid ahead in the current frame by {ahead:.4f} mm, largest u_t {s['max_tangential_displacement_mm']:.4f} mm")
+    if not 0 < ahead <= s["max_tangential_displacement_mm"]: bad.append(f"frame shift {ahead}")
+for b in bad: print("FAIL", b)
+sys.exit(1 if bad else 0)
+PY
