@@ -130,7 +130,7 @@ int main(int argc, char** argv) {
     const Handler& handler = handlers().at(command);
     handler.check(o);
     Scene scene = skinfem::load_scene(o.text("scene"));
-    if (command != "mesh" && command != "solve" && command != "contact")
+    if (command != "mesh" && command != "solve" && command != "contact" && command != "defect")
       skinfem::pipeline::require_linear(scene, command);
     scene.limits.max_dofs = o.number("max_dofs");
     // An --out without a default is out/<scene name>.

@@ -58,8 +58,16 @@ CondensedContact condense(const ElasticModel& model, const MortarZone& zone, con
                           const SensorReadings& readings, const Vec2& direction,
                           const std::function<void(double, const std::string&)>& progress,
                           const std::vector<int>& watch_faces, const CondenseColumns* bordered) {
+  return condense(model.mesh(), model.solver(), model.fixed(), zone, indenter, readings, direction, progress,
+                  watch_faces, bordered);
+}
+
+CondensedContact condense(const TetMesh& m, const MixedSolver& solver, const std::vector<bool>& fixed,
+                          const MortarZone& zone, const Indenter& indenter, const SensorReadings& readings,
+                          const Vec2& direction,
+                          const std::function<void(double, const std::string&)>& progress,
+                          const std::vector<int>& watch_faces, const CondenseColumns* bordered) {
   const auto start = std::chrono::steady_clock::now();
-  const TetMesh& m = model.mesh();
   CondensedContact c;
   c.zone = zone;
   c.direction = Eigen::Vector2d(direction[0], direction[1]).normalized();
@@ -142,8 +150,8 @@ CondensedContact condense(const ElasticModel& model, const MortarZone& zone, con
       {adjoint, nread, nr, "adjoint solves for " + std::to_string(readings.size()) + " sensors"},
       {multiplier, 0, nc, "condensing onto " + std::to_string(nc) + " contact multipliers"},
       {watched, 2 * nc, nw, "compliance of the " + std::to_string(nw) + " nodes a swept hole can reach"}};
-  if (bordered && model.solver().coupling_products().size() > 0) {
-    const Eigen::MatrixXd& G = model.solver().coupling_products();
+  if (bordered && solver.coupling_products().size() > 0) {
+    const Eigen::MatrixXd& G = solver.coupling_products();
     if (G.rows() != cols.size())
       throw std::logic_error("condense: the model was not factored with these columns");
     if (progress) progress(0.0, "condensing onto " + std::to_string(nc) + " contact multipliers (bordered)");
@@ -152,7 +160,7 @@ CondensedContact condense(const ElasticModel& model, const MortarZone& zone, con
   } else {
     // Readouts on the free DOFs only (the products' definition), as sparse rows.
     Eigen::SparseMatrix<double> R = cols.coupling.F.leftCols(nread);
-    R.prune([&](int row, int, double) { return !model.fixed()[row]; });
+    R.prune([&](int row, int, double) { return !fixed[row]; });
     const Eigen::SparseMatrix<double, Eigen::RowMajor> Rt = R.transpose();
     for (const auto& s : sources)
       for (int j0 = 0; j0 < s.count; j0 += kBlock) {
@@ -162,7 +170,7 @@ CondensedContact condense(const ElasticModel& model, const MortarZone& zone, con
         const Eigen::MatrixXd U = s.src == adjoint
                                       ? Eigen::MatrixXd(cols.coupling.U_fixed.middleCols(s.first + j0, k))
                                       : Eigen::MatrixXd();
-        place(s.src, j0, Rt * model.solver().solve_block(F, U));
+        place(s.src, j0, Rt * solver.solve_block(F, U));
         c.block_solves += k;
         if (s.src == watched) c.path->block_solves += k;
       }

@@ -67,6 +67,15 @@ CondensedContact condense(const ElasticModel& model, const MortarZone& zone, con
                           const std::vector<int>& watch_faces = {},
                           const CondenseColumns* bordered = nullptr);
 
+// The same on any factored skin: solver, the skin's (or a finite-strain tangent's,
+// contact/finite_contact.hpp) factorization on mesh m with its held DOFs `fixed` (3N).
+CondensedContact condense(const TetMesh& m, const MixedSolver& solver, const std::vector<bool>& fixed,
+                          const MortarZone& zone, const Indenter& indenter, const SensorReadings& readings,
+                          const Vec2& direction,
+                          const std::function<void(double, const std::string&)>& progress = {},
+                          const std::vector<int>& watch_faces = {},
+                          const CondenseColumns* bordered = nullptr);
+
 // The condensed problem with a hole that cuts the hats (holes/cut.hpp): the hole-free one with the rows and
 // columns of the multipliers the hole touches (T) replaced. Shapes: |T| × n for rows, 2·sensors × |T| for
 // reading columns; C_zz' is symmetric, so its columns T are its rows T transposed. zt* only when

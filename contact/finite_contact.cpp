@@ -129,7 +129,8 @@ std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double f
 FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const std::vector<bool>& fixed,
                                          const MortarZone& zone, const Indenter& indenter,
                                          const FiniteContactLoad& load, const NewtonOptions& o,
-                                         const FiniteContactStepSink& on_step) {
+                                         const FiniteContactStepSink& on_step,
+                                         const FiniteContactResult* from) {
   if (indenter.kind() != IndenterKind::plane)
     throw std::invalid_argument("solve_finite_contact: only a plane indenter (its gap is linear in u)");
   if (!(load.force > 0) || !(load.ratio >= 0))
@@ -144,6 +145,13 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
   P.gap0 = zone.weighted(mesh, [&](const Eigen::Vector3d& x) {
     return indenter.z_touch() + indenter.phi(x.x(), x.y()) - x.z();
   });
+  if (load.opening.size() > 0) {
+    if (load.opening.size() != nc)
+      throw std::invalid_argument("solve_finite_contact: an opening of " +
+                                  std::to_string(load.opening.size()) + " gaps for " + std::to_string(nc) +
+                                  " multipliers");
+    P.gap0 += load.opening;
+  }
   P.volume = pressure_mass(mesh).sum();
 
   FiniteContactResult out;
@@ -151,12 +159,22 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
   s.u = Eigen::VectorXd::Zero(3 * mesh.num_nodes());
   s.p = Eigen::VectorXd::Zero(mesh.num_vertices);
   s.lambda = Eigen::VectorXd::Zero(nc);
-  s.system = assemble_finite_strain(mesh, mu, s.u, s.p);
   // The path s ∈ (0, 1]: the force to F without friction; s ∈ (1, 2]: the ratio to its value at F.
   const double end = load.ratio > 0 ? 2 : 1;
   const auto force_at = [&](double x) { return load.force * std::min(x, 1.0); };
   const auto ratio_at = [&](double x) { return load.ratio * std::max(x - 1, 0.0); };
   double reached = 0, step = o.first_step;
+  if (from) {  // a converged state of this force and ratio: one step to the new gaps
+    if (from->solution.u.size() != s.u.size() || from->lambda.size() != nc)
+      throw std::invalid_argument("solve_finite_contact: the starting state is not of this mesh and zone");
+    s.u = from->solution.u;
+    s.p = from->solution.p;
+    s.lambda = from->lambda;
+    s.active = from->active;
+    reached = std::nextafter(end, 0.0);
+    step = 1;
+  }
+  s.system = assemble_finite_strain(mesh, mu, s.u, s.p);
   const double smallest = o.first_step / std::pow(2.0, o.max_halvings);
   while (reached < end) {
     // A step stops at the end of the force ramp, so that friction starts from the full frictionless contact.
@@ -221,6 +239,22 @@ ContactZoneFrame zone_frame(const TetMesh& mesh, const MortarZone& zone, const F
   z.zone_centroid = {zc.x(), zc.y()};
   z.force_centroid = {fc.x(), fc.y()};
   return z;
+}
+
+CondensedContact tangent_contact(const TetMesh& mesh, double mu, const std::vector<bool>& fixed,
+                                 const MortarZone& zone, const Indenter& indenter,
+                                 const SensorReadings& readings, const FiniteContactLoad& load,
+                                 const FiniteContactResult& r) {
+  const Eigen::Vector2d t = load.direction.normalized();
+  const FiniteStrainSystem system = assemble_finite_strain(mesh, mu, r.solution.u, r.solution.p);
+  const CondenseColumns columns = condense_columns(mesh, zone, readings.weight_block(), {t.x(), t.y()}, {});
+  const MixedSolver solver(system.tangent, Lame{mu, 0.0}, fixed, SolverKind::direct_ldlt, 1e-9, {},
+                           &columns.coupling);
+  CondensedContact c =
+      condense(mesh, solver, fixed, zone, indenter, readings, {t.x(), t.y()}, {}, {}, &columns);
+  // g = r.gap + (δ_r − δ)·area + M (λ − λ_r) with M = C_zz + ratio·C_zt.
+  c.gap0 = r.gap + r.depth_mm * zone.area - (c.C_zz + load.ratio * c.C_zt) * r.lambda;
+  return c;
 }
 
 }  // namespace skinfem::contact

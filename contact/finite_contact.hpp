@@ -20,6 +20,7 @@
 #include <functional>
 #include <vector>
 
+#include "skinfem/contact/condensed.hpp"
 #include "skinfem/contact/indenter.hpp"
 #include "skinfem/contact/mortar.hpp"
 #include "skinfem/fem/mixed_solver.hpp"
@@ -31,6 +32,9 @@ struct FiniteContactLoad {
   double force = 0;                 // N, the plate's total normal force on the solved skin (> 0)
   double ratio = 0;                 // Coulomb p_t / p acting while the contact is solved (coupled), ≥ 0
   Eigen::Vector2d direction{1, 0};  // unit sliding direction in the (x, y) plane
+  // n_c weighted gaps opened where the plate's face recedes (a hole's dimple, contact/holes/dimple.hpp), mm³;
+  // empty for none.
+  Eigen::VectorXd opening;
 };
 
 struct FiniteContactStep {
@@ -70,10 +74,24 @@ using FiniteContactStepSink = std::function<void(const FiniteContactStep&)>;
 // mesh: the skin (a half mesh's cut held by `fixed`); fixed: 3N held DOFs (base, cut), not moved;
 // zone: the candidate multipliers; indenter: a plane (a sphere throws std::invalid_argument); mu: shear
 // modulus, MPa. Throws SolverError (one line: the force and ratio reached, and why) when no step converges.
+// from: null to start at rest and follow the load path; or a converged state of the same force and ratio
+// (another opening), from which one step goes straight to `load`.
 FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const std::vector<bool>& fixed,
                                          const MortarZone& zone, const Indenter& indenter,
                                          const FiniteContactLoad& load, const NewtonOptions& options = {},
-                                         const FiniteContactStepSink& on_step = {});
+                                         const FiniteContactStepSink& on_step = {},
+                                         const FiniteContactResult* from = nullptr);
+
+// The contact linearized about r's converged state (a solve of `load`): the condensed skin of
+// contact/condensed.hpp on the tangent at (u, p), its compliances C_zz, C_zt and readings S_p, S_t (sensor
+// readings of the base's reactions, `readings` on mesh), with gap0 set so that the weighted gaps are
+// g = gap0 − δ·area + (C_zz + ratio·C_zt) λ to first order about (λ, δ) of r: the complementarity problem on
+// it has r's λ and δ as its solution, and a small change of the gaps (a hole's opening) moves the contact
+// and the readings by its derivative. One factorization of the tangent, bordered by the columns.
+CondensedContact tangent_contact(const TetMesh& mesh, double mu, const std::vector<bool>& fixed,
+                                 const MortarZone& zone, const Indenter& indenter,
+                                 const SensorReadings& readings, const FiniteContactLoad& load,
+                                 const FiniteContactResult& r);
 
 // The zone of `r` in the reference frame (u = 0) or the current one (u = r.solution.u), about `center`
 // along the sliding direction t.

@@ -127,10 +127,24 @@ DefectRun defect_run(const Scene& scene, std::shared_ptr<const ContactSetup> sha
   return run;
 }
 
+nlohmann::json sweep_peaks_json(const contact::SweepResult& res) {
+  nlohmann::json sensors = nlohmann::json::array();
+  for (int k = 0; 2 * k < res.varsigma.cols(); ++k) {
+    Eigen::Index iz, ix;
+    const double z = res.varsigma.col(2 * k).cwiseAbs().maxCoeff(&iz);
+    const double x = res.varsigma.col(2 * k + 1).cwiseAbs().maxCoeff(&ix);
+    sensors.push_back({{"sensor", k + 1},
+                       {"peak_abs_varsigma_z_kPa", 1e3 * z},
+                       {"u_at_peak_z_mm", res.centers[iz][0]},
+                       {"peak_abs_varsigma_x_kPa", 1e3 * x},
+                       {"u_at_peak_x_mm", res.centers[ix][0]}});
+  }
+  return sensors;
+}
+
 nlohmann::json defect_json(const Scene& scene, const DefectRun& run) {
   const ContactSetup& setup = *run.setup;
   const HoleSweep& sweep = *scene.contact->sweep;
-  const int ns = static_cast<int>(scene.sensors.positions.size());
   nlohmann::json summary;
   for (size_t ci = 0; ci < run.cases.size(); ++ci) {
     const auto& res = run.sweeps[ci];
@@ -149,16 +163,7 @@ nlohmann::json defect_json(const Scene& scene, const DefectRun& run) {
     c["max_roughness"] = rough;
     c["max_roughness_curve"] =
         "#" + std::to_string(rough_col / 2 + 1) + (rough_col % 2 ? " varsigma_x" : " varsigma_z");
-    for (int k = 0; k < ns; ++k) {
-      Eigen::Index iz, ix;
-      const double z = res.varsigma.col(2 * k).cwiseAbs().maxCoeff(&iz);
-      const double x = res.varsigma.col(2 * k + 1).cwiseAbs().maxCoeff(&ix);
-      c["sensors"].push_back({{"sensor", k + 1},
-                              {"peak_abs_varsigma_z_kPa", 1e3 * z},
-                              {"u_at_peak_z_mm", res.centers[iz][0]},
-                              {"peak_abs_varsigma_x_kPa", 1e3 * x},
-                              {"u_at_peak_x_mm", res.centers[ix][0]}});
-    }
+    c["sensors"] = sweep_peaks_json(res);
     summary["cases"][run.cases[ci]] = c;
   }
   summary["scene"] = scene_json(scene);

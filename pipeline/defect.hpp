@@ -63,5 +63,7 @@ DefectRun defect_run(const Scene& scene, std::shared_ptr<const ContactSetup> set
 // max_roughness (the largest second difference along u over its curve's peak, validation::roughness); with
 // levels, largest_sliding: the value, its error bar and how it was obtained, and the levels.
 nlohmann::json defect_json(const Scene& scene, const DefectRun& run);
+// Per sensor, a sweep's peak |ς_z| and |ς_x| (kPa) and the hole's x there (mm).
+nlohmann::json sweep_peaks_json(const contact::SweepResult& sweep);
 
 }  // namespace skinfem::pipeline

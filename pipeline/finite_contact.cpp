@@ -89,37 +89,43 @@ FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode) {
   run.zone_h = contact_zone_h(scene);
   const Vec2 centre = contact_center(scene);
   Stopwatch clock;
-  TetMesh solved = guarded_mesh(scene, contact_mesh_part(scene));
+  auto solved_mesh = std::make_shared<TetMesh>(guarded_mesh(scene, contact_mesh_part(scene)));
+  const TetMesh& solved = *solved_mesh;
+  run.solved = solved_mesh;
   check_sensors_on_skin(scene, solved);
   run.wall["mesh"] = clock.seconds();
 
   clock = Stopwatch();
-  const Supports held = skin_supports(solved, scene.geometry.side, {});
-  const contact::Indenter indenter(scene, solved);
-  const contact::MortarZone zone = contact::mortar_zone(solved, centre, run.zone_radius);
+  run.held = skin_supports(solved, scene.geometry.side, {});
+  run.indenter = std::make_unique<contact::Indenter>(scene, solved);
+  run.solved_zone = contact::mortar_zone(solved, centre, run.zone_radius);
+  const contact::MortarZone& zone = run.solved_zone;
   run.mirrored = is_half_y(solved);
   const double share = run.mirrored ? 0.5 : 1.0;  // the solved skin's part of the force
   const double ratio = mode == FrictionMode::coupled ? c.mu : 0.0;
   run.force_N = *c.force;
   run.tangential_force_N = ratio * *c.force;
   const Eigen::Vector2d t(c.direction[0], c.direction[1]);
+  run.load = {share * *c.force, ratio, t, {}};
   const Lame lame = Lame::from(scene.material.E, scene.material.nu);
   progress("Newton on the neo-Hookean skin under the plate (" + std::to_string(solved.num_nodes()) +
            " nodes, " + std::to_string(zone.size()) + " multipliers)");
-  contact::FiniteContactResult r = contact::solve_finite_contact(
-      solved, lame.mu, held.fixed, zone, indenter, {share * *c.force, ratio, t}, {},
+  run.solved_result = contact::solve_finite_contact(
+      solved, lame.mu, run.held.fixed, zone, *run.indenter, run.load, {},
       [&](const contact::FiniteContactStep& s) {
         char buf[200];
         std::snprintf(buf, sizeof buf, "  step to %.4g N, friction ratio %.3g: %zu iterations, residual %.1e",
                       s.force / share, s.ratio, s.residuals.size(), s.residuals.back());
         progress(buf);
       });
+  const contact::FiniteContactResult& r = run.solved_result;
   run.wall["newton"] = clock.seconds();
-  run.dofs = static_cast<int>(std::count(held.fixed.begin(), held.fixed.end(), false)) + solved.num_vertices;
+  run.dofs =
+      static_cast<int>(std::count(run.held.fixed.begin(), run.held.fixed.end(), false)) + solved.num_vertices;
 
   // What the base feels: its reactions (the internal force at its DOFs; the plate loads none of them), read
   // over each sensor's reference disc.
-  const Eigen::VectorXd reactions = support_reactions(held, r.internal_force - r.load);
+  const Eigen::VectorXd reactions = support_reactions(run.held, r.internal_force - r.load);
   const SensorReadings readings(solved, reading_sites(scene.sensors));
   for (int k = 0; k < readings.size(); ++k) run.readings.push_back(readings.read(k, reactions));
   for (int i = 0; i < solved.num_nodes(); ++i) run.base_force_N += reactions.segment<3>(3 * i);
@@ -130,13 +136,14 @@ FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode) {
   run.balance_rel = (run.base_force_N + plate).norm() / plate.norm();
 
   if (run.mirrored) {
-    run.mesh = std::make_unique<TetMesh>(mirror_half(solved, &run.source));
-    contact::MirrorView view = contact::mirror_view(*run.mesh, run.source, zone, centre, run.zone_radius);
-    run.result = mirrored_result(r, zone, *run.mesh, run.source, view);
-    run.zone = std::move(view.zone);
+    auto whole = std::make_shared<TetMesh>(mirror_half(solved, &run.source));
+    run.mirror = contact::mirror_view(*whole, run.source, zone, centre, run.zone_radius);
+    run.result = mirrored_result(r, zone, *whole, run.source, *run.mirror);
+    run.zone = run.mirror->zone;
+    run.mesh = std::move(whole);
   } else {
-    run.mesh = std::make_unique<TetMesh>(std::move(solved));
-    run.result = std::move(r);
+    run.mesh = run.solved;
+    run.result = r;
     run.zone = zone;
   }
   const TetMesh& mesh = *run.mesh;
@@ -164,7 +171,7 @@ FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode) {
     for (int k = 0; k < 6; ++k) {
       const int n = mesh.faces(face, k);
       const Eigen::Vector3d x = mesh.nodes.row(n).transpose() + w.solution.u.segment<3>(3 * n);
-      const double gap = indenter.z_touch() - w.depth_mm + indenter.phi(x.x(), x.y()) - x.z();
+      const double gap = run.indenter->z_touch() - w.depth_mm + run.indenter->phi(x.x(), x.y()) - x.z();
       run.max_penetration_mm = std::max(run.max_penetration_mm, -gap);
     }
   return run;

@@ -8,11 +8,14 @@
 
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <vector>
 
+#include "skinfem/contact/contact_solver.hpp"
 #include "skinfem/contact/finite_contact.hpp"
 #include "skinfem/contact/mortar.hpp"
 #include "skinfem/fem/sensor_reading.hpp"
+#include "skinfem/fem/supports.hpp"
 #include "skinfem/pipeline/clock.hpp"
 #include "skinfem/scene/scene.hpp"
 
@@ -21,10 +24,20 @@ namespace skinfem::pipeline {
 struct FiniteContactRun {
   FrictionMode mode = FrictionMode::none;  // none or coupled
   double force_N = 0, tangential_force_N = 0;
-  // The whole skin: the solved one, or the half's mirror image with each node's half node (source).
-  std::unique_ptr<TetMesh> mesh;
+  // What was solved: the skin (its half under mirror symmetry), its supports, its zone, the indenter and the
+  // load, and the solution there (the half's force where mirrored).
+  std::shared_ptr<const TetMesh> solved;
+  Supports held;
+  contact::MortarZone solved_zone;
+  std::unique_ptr<contact::Indenter> indenter;
+  contact::FiniteContactLoad load;
+  contact::FiniteContactResult solved_result;
+  // The whole skin: the solved one, or the half's mirror image with each node's half node (source) and the
+  // whole zone's view of the half's multipliers.
+  std::shared_ptr<const TetMesh> mesh;
   std::vector<int> source;  // empty unless mirrored
   bool mirrored = false;
+  std::optional<contact::MirrorView> mirror;
   contact::MortarZone zone;  // the whole skin's candidate multipliers
   // On the whole skin: u, p, λ, gaps, the active set; steps and counts as solved (forces of the half where
   // mirrored: half the force).

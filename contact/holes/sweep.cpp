@@ -52,11 +52,14 @@ std::optional<HoleCuts> hole_cuts(const CondensedContact& condensed, const HoleS
 
 SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const HoleSweep& sweep,
                        FrictionMode mode, const HoleDimples* dimples,
-                       const std::function<void(int, const ContactResult&)>& frame, const HoleCuts* cuts) {
+                       const std::function<void(int, const ContactResult&)>& frame, const HoleCuts* cuts,
+                       const std::function<Vec2(const Vec2&)>& material_point) {
   if (cuts && static_cast<int>(cuts->at.size()) != sweep.positions)
     throw std::invalid_argument("hole_sweep: the cuts are another sweep's");
   if (sweep.model == HoleModel::bulge && !dimples)
     throw std::invalid_argument("hole_sweep: a bulge sweep needs the hole's dimples");
+  if (material_point && sweep.model != HoleModel::bulge)
+    throw std::invalid_argument("hole_sweep: a material point map is for bulge sweeps");
   const auto start = std::chrono::steady_clock::now();
   SweepResult out;
   out.mode = mode;
@@ -71,7 +74,8 @@ SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const H
     const std::vector<Hole> hole{Hole{c, sweep.hole_diameter}};
     ContactResult r;
     if (sweep.model == HoleModel::bulge) {
-      r = solver.solve(mode, (*dimples)(hole[0], out.baseline.lambda));
+      const Hole at{material_point ? material_point(c) : c, sweep.hole_diameter};
+      r = solver.solve(mode, (*dimples)(at, out.baseline.lambda));
     } else if (cuts) {
       r = solver.solve(mode, cuts->at[i], warm);
     } else if (const auto& path = solver.condensed().path) {
