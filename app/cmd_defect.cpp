@@ -156,7 +156,7 @@ int finite_defect_stage(const Scene& scene, const std::string& out_dir) {
               1e3 * res.seconds / scene.contact->sweep->positions, peak_rss_mb());
   std::printf(
       "  the tangent's own hole-free contact against the finite one: %.1e of the largest pressure; the holes "
-      "act on material up to %.4f mm behind their centres\n",
+      "act on material up to %.4f mm from their centres\n",
       run.baseline_rel, summary["largest_material_shift_mm"].get<double>());
   const int col = run.max_roughness_column;
   std::printf("  sliding: largest second difference along u %.1f %% of its curve's peak (#%d varsigma_%c)\n",

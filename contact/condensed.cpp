@@ -71,8 +71,7 @@ CondensedContact condense(const TetMesh& m, const MixedSolver& solver, const std
   CondensedContact c;
   c.zone = zone;
   c.direction = Eigen::Vector2d(direction[0], direction[1]).normalized();
-  c.gap0 = zone.weighted(
-      m, [&](const Eigen::Vector3d& x) { return indenter.z_touch() + indenter.phi(x.x(), x.y()) - x.z(); });
+  c.gap0 = zone.weighted(m, [&](const Eigen::Vector3d& x) { return indenter.gap_at_rest(x); });
   std::optional<CondenseColumns> own;
   if (!bordered) own = condense_columns(m, zone, readings.weight_block(), direction, watch_faces);
   const CondenseColumns& cols = bordered ? *bordered : *own;

@@ -142,9 +142,7 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
   // condense's columns without watched nodes or sensors: [a | b], solves_instead = n_c.
   P.columns =
       condense_columns(mesh, zone, Eigen::MatrixXd(3 * mesh.num_nodes(), 0), {P.t.x(), P.t.y()}, {}).coupling;
-  P.gap0 = zone.weighted(mesh, [&](const Eigen::Vector3d& x) {
-    return indenter.z_touch() + indenter.phi(x.x(), x.y()) - x.z();
-  });
+  P.gap0 = zone.weighted(mesh, [&](const Eigen::Vector3d& x) { return indenter.gap_at_rest(x); });
   if (load.opening.size() > 0) {
     if (load.opening.size() != nc)
       throw std::invalid_argument("solve_finite_contact: an opening of " +

@@ -15,6 +15,8 @@ class Indenter {
   double phi(double x,
              double y) const;  // mm, ≥ 0: how far the indenter's surface rises above its lowest point
   double z_touch() const { return z_touch_; }
+  // The vertical gap from point x (mm) up to the indenter at first touch: z_touch + φ(x, y) − z.
+  double gap_at_rest(const Eigen::Vector3d& x) const { return z_touch_ + phi(x.x(), x.y()) - x.z(); }
   const Vec2& center() const { return center_; }
   IndenterKind kind() const { return kind_; }
 

@@ -72,8 +72,7 @@ void check_finite_contact(const Scene& scene, FrictionMode mode) {
   if (mode != FrictionMode::none && mode != FrictionMode::coupled)
     throw SceneError(scene.source_path + ": friction mode '" + to_string(mode) +
                      "' (--friction or contact.friction.mode): with material.model \"neo_hookean\" the "
-                     "contact is frictionless ('none') or in "
-                     "coupled sliding ('coupled')");
+                     "contact is frictionless ('none') or in coupled sliding ('coupled')");
   if (c.indenter != IndenterKind::plane)
     throw finite_refusal(
         scene, "contact.indenter = \"sphere\"",
@@ -171,7 +170,7 @@ FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode) {
     for (int k = 0; k < 6; ++k) {
       const int n = mesh.faces(face, k);
       const Eigen::Vector3d x = mesh.nodes.row(n).transpose() + w.solution.u.segment<3>(3 * n);
-      const double gap = run.indenter->z_touch() - w.depth_mm + run.indenter->phi(x.x(), x.y()) - x.z();
+      const double gap = run.indenter->gap_at_rest(x) - w.depth_mm;
       run.max_penetration_mm = std::max(run.max_penetration_mm, -gap);
     }
   return run;

@@ -18,7 +18,7 @@ namespace skinfem::pipeline {
 namespace {
 
 // The reference point X under the spatial point c on the top: X + u_h(X) = c, u_h the top's horizontal
-// displacement, by fixed-point iteration (a contraction while |∇u_h| < 1; on the paper's skin it is ~0.05).
+// displacement, by fixed-point iteration (a contraction while |∇u_h| < 1).
 Vec2 material_point(const TetMesh& mesh, const PlanarFaceIndex& top, const Eigen::VectorXd& u,
                     const Vec2& c) {
   Vec2 X = c;

@@ -90,7 +90,7 @@ HoleCut hole_cut(const PathCompliance& path, int n_c, const Hole& hole) {
         }
         const double w = q.w * sub * std::abs(xs.x() * xt.y() - xs.y() * xt.x()) / std::abs(det);
         const double psi[3] = {1 - s - tt, s, tt};
-        const double gap = indenter.z_touch() + indenter.phi(x.x(), x.y()) - x.z();
+        const double gap = indenter.gap_at_rest(x);
         for (int a = 0; a < 3; ++a) {
           const int i = f.multiplier[a];
           if (i < 0) continue;
