@@ -48,23 +48,31 @@
 namespace skinfem::app {
 
 namespace {
-// sensors.csv (the chosen mode) and modes.csv (every mode solved); readings: 2·sensors per mode, MPa.
-void write_readings(const std::string& out_dir, const Scene& scene, FrictionMode chosen,
-                    const std::map<FrictionMode, Eigen::VectorXd>& readings) {
-  std::ostringstream csv, modes;
+// sensors.csv; r: 2·sensors readings (σ_z of sensor k at 2k, σ_x at 2k + 1), MPa.
+void write_sensors_csv(const std::string& out_dir, const Scene& scene, const Eigen::VectorXd& r) {
+  std::ostringstream csv;
   csv.precision(10);
-  modes.precision(10);
   csv << "sensor,x_mm,y_mm,sigma_z_kPa,sigma_x_kPa\n";
-  modes << "sensor,x_mm,y_mm,friction,sigma_z_kPa,sigma_x_kPa\n";
-  const Eigen::VectorXd& r = readings.at(chosen);
   for (size_t k = 0; k < scene.sensors.positions.size(); ++k) {
     const auto& p = scene.sensors.positions[k];
     csv << k + 1 << "," << p[0] << "," << p[1] << "," << 1e3 * r[2 * k] << "," << 1e3 * r[2 * k + 1] << "\n";
+  }
+  write_text_atomic(out_dir + "/sensors.csv", csv.str());
+}
+
+// sensors.csv (the chosen mode) and modes.csv (every mode solved); readings: 2·sensors per mode, MPa.
+void write_readings(const std::string& out_dir, const Scene& scene, FrictionMode chosen,
+                    const std::map<FrictionMode, Eigen::VectorXd>& readings) {
+  std::ostringstream modes;
+  modes.precision(10);
+  modes << "sensor,x_mm,y_mm,friction,sigma_z_kPa,sigma_x_kPa\n";
+  write_sensors_csv(out_dir, scene, readings.at(chosen));
+  for (size_t k = 0; k < scene.sensors.positions.size(); ++k) {
+    const auto& p = scene.sensors.positions[k];
     for (const auto& [mode, v] : readings)
       modes << k + 1 << "," << p[0] << "," << p[1] << "," << to_string(mode) << "," << 1e3 * v[2 * k] << ","
             << 1e3 * v[2 * k + 1] << "\n";
   }
-  write_text_atomic(out_dir + "/sensors.csv", csv.str());
   write_text_atomic(out_dir + "/modes.csv", modes.str());
 }
 }  // namespace
@@ -202,15 +210,10 @@ int finite_contact_stage(const Scene& scene, const std::string& out_dir, Frictio
   const Eigen::Vector2d t(scene.contact->direction[0], scene.contact->direction[1]);
   contact::write_finite_pressure_vtp(out_dir + "/pressure.vtp", *run.mesh, run.zone, r, t,
                                      summary["ratio"].get<double>());
-  std::ostringstream csv;
-  csv.precision(10);
-  csv << "sensor,x_mm,y_mm,sigma_z_kPa,sigma_x_kPa\n";
-  for (size_t k = 0; k < run.readings.size(); ++k) {
-    const auto& q = scene.sensors.positions[k];
-    csv << k + 1 << "," << q[0] << "," << q[1] << "," << 1e3 * run.readings[k].sigma_z << ","
-        << 1e3 * run.readings[k].sigma_x << "\n";
-  }
-  write_text_atomic(out_dir + "/sensors.csv", csv.str());
+  Eigen::VectorXd readings(2 * run.readings.size());
+  for (size_t k = 0; k < run.readings.size(); ++k)
+    readings[2 * k] = run.readings[k].sigma_z, readings[2 * k + 1] = run.readings[k].sigma_x;
+  write_sensors_csv(out_dir, scene, readings);
   add_write_seconds(summary, clock.seconds());
   write_json(out_dir + "/summary.json", summary);
 
