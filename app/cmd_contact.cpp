@@ -231,7 +231,7 @@ int finite_contact_stage(const Scene& scene, const std::string& out_dir, Frictio
       "complementarity %.1e, max pointwise penetration %.3g um\n",
       run.max_tangential_mm, run.max_tangential_mm / r.depth_mm, run.balance_rel, r.complementarity,
       1e3 * run.max_penetration_mm);
-  const double share = run.mirrored ? 0.5 : 1.0;
+  const double share = run.share();
   for (const contact::FiniteContactStep& s : r.steps) {
     std::printf("  step to %.4g N, ratio %.3g: residuals", s.force / share, s.ratio);
     for (double x : s.residuals) std::printf(" %.1e", x);

@@ -66,16 +66,11 @@ std::pair<Eigen::MatrixXd, Eigen::MatrixXd> compliances(const FiniteProblem& P, 
   return {0.5 * (zz + zz.transpose()), zt};
 }
 
-double residual_norm(const FiniteProblem& P, const FiniteStrainSystem& sys, const Eigen::VectorXd& f) {
-  Eigen::VectorXd r = f - sys.internal_force;
-  for (size_t d = 0; d < P.fixed.size(); ++d)
-    if (P.fixed[d]) r[d] = 0;
-  return std::hypot(r.norm() / f.norm(), sys.constraint.norm() / P.volume);
-}
-
-// One load step's Newton iteration from `s` to (force, ratio); nullopt when it fails (s is then undefined).
+// One load step's Newton iteration from `s` to (force, ratio); nullopt when it fails (s is then undefined),
+// with why it failed in `why`.
 std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double force, double ratio,
-                                                const NewtonOptions& o, FiniteState& s, int& factorizations) {
+                                                const NewtonOptions& o, FiniteState& s, int& factorizations,
+                                                std::string& why) {
   FiniteContactStep step{force, ratio, {}, {}, {}};
   const Lame incompressible{P.mu, 0.0};
   for (int it = 0; it < o.max_iterations; ++it) {
@@ -93,7 +88,8 @@ std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double f
       const Eigen::VectorXd q = P.gap0 - P.weighted_uz(s.u + rest.u);
       lcp = ContactLcp(zz + ratio * zt, q, P.zone.area).solve_force(force, {}, s.active);
       dx = solver.solve(P.zone.load(lcp.lambda, P.t, ratio) + minus_internal, {}, -s.system.constraint);
-    } catch (const std::runtime_error&) {  // SolverError, or an LCP without a consistent set
+    } catch (const std::runtime_error& e) {  // SolverError, or an LCP without a consistent set
+      why = e.what();
       return std::nullopt;
     }
     std::vector<int> changed;
@@ -107,10 +103,12 @@ std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double f
     s.complementarity = lcp.complementarity;
     try {
       s.system = assemble_finite_strain(P.mesh, P.mu, s.u, s.p);
-    } catch (const std::domain_error&) {  // an element folded
+    } catch (const std::domain_error&) {
+      why = "an element folded (det F <= 0)";
       return std::nullopt;
     }
-    step.residuals.push_back(residual_norm(P, s.system, P.zone.load(s.lambda, P.t, ratio)));
+    const Eigen::VectorXd f = P.zone.load(s.lambda, P.t, ratio);  // the plate's load on the skin
+    step.residuals.push_back(equilibrium_residual(s.system, f, P.fixed, f.norm(), P.volume));
     step.active_sizes.push_back(static_cast<int>(s.active.size()));
     step.set_changes.push_back(static_cast<int>(changed.size()));
     const bool same_set = changed.empty();
@@ -121,6 +119,10 @@ std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double f
                                                  r.back() > 0.5 * r[r.size() - 2])))
       return step;
   }
+  char buf[120];
+  std::snprintf(buf, sizeof buf, "no convergence in %d iterations (residual %.1e)", o.max_iterations,
+                step.residuals.empty() ? 0.0 : step.residuals.back());
+  why = buf;
   return std::nullopt;
 }
 
@@ -174,11 +176,13 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
   }
   s.system = assemble_finite_strain(mesh, mu, s.u, s.p);
   const double smallest = o.first_step / std::pow(2.0, o.max_halvings);
+  std::string why;  // the last step's failure
   while (reached < end) {
     // A step stops at the end of the force ramp, so that friction starts from the full frictionless contact.
     const double target = std::min(reached < 1 ? 1.0 : end, reached + step);
     FiniteState trial = s;
-    if (auto done = contact_newton(P, force_at(target), ratio_at(target), o, trial, out.factorizations)) {
+    if (auto done =
+            contact_newton(P, force_at(target), ratio_at(target), o, trial, out.factorizations, why)) {
       s = std::move(trial);
       reached = target;
       out.steps.push_back(std::move(*done));
@@ -192,9 +196,9 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
       char buf[200];
       std::snprintf(buf, sizeof buf,
                     "finite-strain contact: Newton failed beyond %.4g N and friction ratio %.4g (steps down "
-                    "to %.3g of the load path)",
+                    "to %.3g of the load path; the last: ",
                     force_at(reached), ratio_at(reached), 2 * step);
-      throw SolverError(buf);
+      throw SolverError(buf + why + ")");
     }
   }
   out.solution.u = s.u;

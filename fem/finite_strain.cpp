@@ -1,5 +1,7 @@
 #include "skinfem/fem/finite_strain.hpp"
 
+#include <cmath>
+
 #include "skinfem/fem/neo_hookean.hpp"
 #include "skinfem/fem/sparse_pattern.hpp"
 #include "skinfem/mesh/p2_tet.hpp"
@@ -63,6 +65,17 @@ FiniteStrainSystem assemble_finite_strain(const TetMesh& m, double mu, const Eig
     if (tangent) pattern::add_element(m, t, Ae, Be, out.tangent.A, out.tangent.B);
   }
   return out;
+}
+
+double equilibrium_residual(const FiniteStrainSystem& s, const Eigen::VectorXd& f,
+                            const std::vector<bool>& fixed, double force_scale, double volume,
+                            Eigen::VectorXd* r_u) {
+  Eigen::VectorXd r = f - s.internal_force;
+  for (size_t d = 0; d < fixed.size(); ++d)
+    if (fixed[d]) r[d] = 0;
+  const double norm = std::hypot(r.norm() / force_scale, s.constraint.norm() / volume);
+  if (r_u) *r_u = std::move(r);
+  return norm;
 }
 
 }  // namespace skinfem

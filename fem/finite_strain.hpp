@@ -12,6 +12,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <vector>
 
 #include "skinfem/fem/assembly.hpp"
 
@@ -34,5 +35,12 @@ struct FiniteStrainSystem {
 FiniteStrainSystem assemble_finite_strain(const TetMesh& mesh, double mu, const Eigen::VectorXd& u,
                                           const Eigen::VectorXd& p,
                                           FiniteStrainParts parts = FiniteStrainParts::residual_and_tangent);
+
+// The residual of equilibrium under the load f (3N, N), scaled to be dimensionless: the free rows of
+// f − internal force over force_scale (N) and the constraint over the skin's volume (mm³), in quadrature.
+// r_u, when given, receives f − internal force with the fixed rows zeroed (3N, N).
+double equilibrium_residual(const FiniteStrainSystem& s, const Eigen::VectorXd& f,
+                            const std::vector<bool>& fixed, double force_scale, double volume,
+                            Eigen::VectorXd* r_u = nullptr);
 
 }  // namespace skinfem

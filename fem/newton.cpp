@@ -18,19 +18,15 @@ struct State {
 // scale, and the constraint over the skin's volume (both dimensionless).
 struct Residual {
   FiniteStrainSystem system;
-  Eigen::VectorXd r_u, c;
+  Eigen::VectorXd r_u;
   double norm = 0;
 };
 
 Residual residual_at(const TetMesh& mesh, double mu, const std::vector<bool>& fixed, const State& s,
                      const Eigen::VectorXd& f, double force_scale, double volume,
                      FiniteStrainParts parts = FiniteStrainParts::residual_and_tangent) {
-  Residual r{assemble_finite_strain(mesh, mu, s.u, s.p, parts), {}, {}, 0};
-  r.r_u = f - r.system.internal_force;
-  for (size_t d = 0; d < fixed.size(); ++d)
-    if (fixed[d]) r.r_u[d] = 0;
-  r.c = r.system.constraint;
-  r.norm = std::hypot(r.r_u.norm() / force_scale, r.c.norm() / volume);
+  Residual r{assemble_finite_strain(mesh, mu, s.u, s.p, parts), {}, 0};
+  r.norm = equilibrium_residual(r.system, f, fixed, force_scale, volume, &r.r_u);
   return r;
 }
 
@@ -67,7 +63,7 @@ std::optional<Converged> newton(const TetMesh& mesh, double mu, const std::vecto
     MixedSolution dx;
     try {
       const MixedSolver solver(r->system.tangent, incompressible, fixed, SolverKind::direct_ldlt, 1e-9);
-      dx = solver.solve(r->r_u, du_fixed, -r->c);
+      dx = solver.solve(r->r_u, du_fixed, -r->system.constraint);
     } catch (const SolverError&) {
       return std::nullopt;
     }

@@ -100,7 +100,7 @@ FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode) {
   run.solved_zone = contact::mortar_zone(solved, centre, run.zone_radius);
   const contact::MortarZone& zone = run.solved_zone;
   run.mirrored = is_half_y(solved);
-  const double share = run.mirrored ? 0.5 : 1.0;  // the solved skin's part of the force
+  const double share = run.share();
   const double ratio = mode == FrictionMode::coupled ? c.mu : 0.0;
   run.force_N = *c.force;
   run.tangential_force_N = ratio * *c.force;
@@ -125,7 +125,8 @@ FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode) {
   // What the base feels: its reactions (the internal force at its DOFs; the plate loads none of them), read
   // over each sensor's reference disc.
   const Eigen::VectorXd reactions = support_reactions(run.held, r.internal_force - r.load);
-  const SensorReadings readings(solved, reading_sites(scene.sensors));
+  run.sensor_sites = std::make_shared<const SensorReadings>(solved, reading_sites(scene.sensors));
+  const SensorReadings& readings = *run.sensor_sites;
   for (int k = 0; k < readings.size(); ++k) run.readings.push_back(readings.read(k, reactions));
   for (int i = 0; i < solved.num_nodes(); ++i) run.base_force_N += reactions.segment<3>(3 * i);
   if (run.mirrored) run.base_force_N = {2 * run.base_force_N.x(), 0.0, 2 * run.base_force_N.z()};
@@ -192,7 +193,7 @@ nlohmann::json frame_json(const contact::ContactZoneFrame& f) {
 
 nlohmann::json finite_contact_json(const Scene& scene, const FiniteContactRun& run) {
   const contact::FiniteContactResult& r = run.result;
-  const double share = run.mirrored ? 0.5 : 1.0;
+  const double share = run.share();
   nlohmann::json steps = nlohmann::json::array();
   for (const contact::FiniteContactStep& s : r.steps)
     steps.push_back({{"force_N", s.force / share},

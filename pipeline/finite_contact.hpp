@@ -51,9 +51,14 @@ struct FiniteContactRun {
   Eigen::Vector3d base_force_N = Eigen::Vector3d::Zero();
   double balance_rel = 0;               // |base force + the plate's force| / |the plate's force|
   std::vector<SensorReading> readings;  // per sensor, MPa
-  int dofs = 0;                         // free displacements + pressures of the solved skin
+  // The sensors' reading weights on the solved skin (a reference to *solved): the hole sweep's condensation
+  // reads through them too.
+  std::shared_ptr<const SensorReadings> sensor_sites;
+  int dofs = 0;  // free displacements + pressures of the solved skin
   double zone_radius = 0, zone_h = 0;
   Timings wall;  // mesh, newton
+  // The solved skin's part of the scene's force: ½ on a mirrored half.
+  double share() const { return mirrored ? 0.5 : 1.0; }
 };
 
 // Throws SceneError (one line naming the field or option, its value and what is allowed) for what the

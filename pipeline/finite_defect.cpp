@@ -60,9 +60,9 @@ FiniteDefectRun finite_defect_run(const Scene& scene) {
   Stopwatch clock;
   progress("the contact condensed on the tangent at the deformed sliding state");
   const double mu = Lame::from(scene.material.E, scene.material.nu).mu;
-  const SensorReadings readings(*st.solved, reading_sites(scene.sensors));
-  const contact::CondensedContact tangent = contact::tangent_contact(
-      *st.solved, mu, st.held.fixed, st.solved_zone, *st.indenter, readings, st.load, st.solved_result);
+  const contact::CondensedContact tangent =
+      contact::tangent_contact(*st.solved, mu, st.held.fixed, st.solved_zone, *st.indenter, *st.sensor_sites,
+                               st.load, st.solved_result);
   const contact::ContactSolver solver(tangent, *scene.contact, st.mirror ? &*st.mirror : nullptr);
   run.wall["tangent"] = clock.seconds();
 
