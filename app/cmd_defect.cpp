@@ -133,37 +133,46 @@ namespace {
 int finite_defect_stage(const Scene& scene, const std::string& out_dir) {
   const pipeline::FiniteDefectRun run = pipeline::finite_defect_run(scene);
   nlohmann::json summary = pipeline::finite_defect_json(scene, run);
-  const contact::SweepResult& res = run.sliding;
   Stopwatch clock;
   prepare_output_dir(out_dir);
   std::ostringstream csv;
   csv.precision(10);
   csv << "case,u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa\n";
   const int ns = static_cast<int>(scene.sensors.positions.size());
-  for (size_t i = 0; i < res.centers.size(); ++i)
-    for (int k = 0; k < ns; ++k)
-      csv << "sliding," << res.centers[i][0] << "," << k + 1 << "," << 1e3 * res.varsigma(i, 2 * k) << ","
-          << 1e3 * res.varsigma(i, 2 * k + 1) << "\n";
+  for (const pipeline::FiniteDefectCase& c : run.cases)
+    for (size_t i = 0; i < c.sweep.centers.size(); ++i)
+      for (int k = 0; k < ns; ++k)
+        csv << c.name << "," << c.sweep.centers[i][0] << "," << k + 1 << ","
+            << 1e3 * c.sweep.varsigma(i, 2 * k) << "," << 1e3 * c.sweep.varsigma(i, 2 * k + 1) << "\n";
   write_text_atomic(out_dir + "/defect.csv", csv.str());
   add_write_seconds(summary, clock.seconds());
   write_json(out_dir + "/summary.json", summary);
-  const Timings& wall = run.wall;
-  std::printf("defect %s, neo-Hookean skin: sliding x %d positions about the deformed state; %d DOFs%s\n",
-              scene.name.c_str(), scene.contact->sweep->positions, run.state.dofs,
-              run.state.mirrored ? " on the half y >= 0, mirror-symmetric" : "");
-  std::printf("  mesh %.2f s, Newton %.2f s, tangent %.2f s, sweep %.2f s (%.2f ms/position); peak %.0f MB\n",
-              wall.at("mesh"), wall.at("newton"), wall.at("tangent"), res.seconds,
-              1e3 * res.seconds / scene.contact->sweep->positions, peak_rss_mb());
-  std::printf(
-      "  the tangent's own hole-free contact against the finite one: %.1e of the largest pressure; the holes "
-      "act on material up to %.4f mm from their centres\n",
-      run.baseline_rel, summary["largest_material_shift_mm"].get<double>());
-  const int col = run.max_roughness_column;
-  std::printf("  sliding: largest second difference along u %.1f %% of its curve's peak (#%d varsigma_%c)\n",
-              100 * run.max_roughness, col / 2 + 1, col % 2 ? 'x' : 'z');
-  std::printf("  sliding: peak |varsigma_z| per sensor (kPa):");
-  for (int k = 0; k < ns; ++k) std::printf(" %.2f", 1e3 * res.varsigma.col(2 * k).cwiseAbs().maxCoeff());
-  std::printf("\n  left out: %s\n", summary["left_out"].get<std::string>().c_str());
+  const pipeline::FiniteContactRun& first = run.cases.front().state;
+  std::printf("defect %s, neo-Hookean skin: %zu x %d positions about the deformed states; %d DOFs%s\n",
+              scene.name.c_str(), run.cases.size(), scene.contact->sweep->positions, first.dofs,
+              first.mirrored ? " on the half y >= 0, mirror-symmetric" : "");
+  for (const pipeline::FiniteDefectCase& c : run.cases) {
+    const Timings& wall = run.wall;
+    const std::string& n = c.name;
+    std::printf(
+        "  %s (friction ratio %.3g): mesh %.2f s, Newton %.2f s, tangent %.2f s, sweep %.2f s (%.2f "
+        "ms/position)\n",
+        n.c_str(), summary["cases"][n]["ratio"].get<double>(), wall.at("mesh_" + n), wall.at("newton_" + n),
+        wall.at("tangent_" + n), c.sweep.seconds, 1e3 * c.sweep.seconds / scene.contact->sweep->positions);
+    std::printf(
+        "    the tangent's own hole-free contact against the finite one: %.1e of the largest pressure; the "
+        "holes act on material up to %.4f mm from their centres\n",
+        c.baseline_rel, c.largest_material_shift_mm);
+    const int col = c.max_roughness_column;
+    std::printf("    largest second difference along u %.1f %% of its curve's peak (#%d varsigma_%c)\n",
+                100 * c.max_roughness, col / 2 + 1, col % 2 ? 'x' : 'z');
+    std::printf("    peak |varsigma_z| per sensor (kPa):");
+    for (int k = 0; k < ns; ++k)
+      std::printf(" %.2f", 1e3 * c.sweep.varsigma.col(2 * k).cwiseAbs().maxCoeff());
+    std::printf("\n");
+  }
+  std::printf("  peak %.0f MB; left out: %s\n", peak_rss_mb(),
+              summary["left_out"].get<std::string>().c_str());
   std::printf("  wrote %s/defect.csv, summary.json\n", out_dir.c_str());
   return 0;
 }

@@ -53,6 +53,12 @@ contact::FiniteContactResult mirrored_result(const contact::FiniteContactResult&
 
 }  // namespace
 
+double friction_ratio(const Scene& scene, FrictionMode mode) {
+  if (mode == FrictionMode::coupled) return scene.contact->mu;
+  if (mode == FrictionMode::static_residual) return scene.contact->static_ratio;
+  return 0.0;
+}
+
 void check_finite_contact(const Scene& scene, FrictionMode mode) {
   require_contact(scene);
   const ContactLoad& c = *scene.contact;
@@ -69,10 +75,11 @@ void check_finite_contact(const Scene& scene, FrictionMode mode) {
                          "the interface is hard");
   if (scene.sensors.model == SensorModel::post && !scene.sensors.post.support.rigid())
     throw finite_refusal(scene, "sensors.post.support", "posts are held rigid (\"support\": \"rigid\")");
-  if (mode != FrictionMode::none && mode != FrictionMode::coupled)
+  if (mode == FrictionMode::uncoupled)
     throw SceneError(scene.source_path + ": friction mode '" + to_string(mode) +
                      "' (--friction or contact.friction.mode): with material.model \"neo_hookean\" the "
-                     "contact is frictionless ('none') or in coupled sliding ('coupled')");
+                     "contact is frictionless ('none'), at rest with its residual traction ('static') or in "
+                     "coupled sliding ('coupled')");
   if (c.indenter != IndenterKind::plane)
     throw finite_refusal(
         scene, "contact.indenter = \"sphere\"",
@@ -101,7 +108,7 @@ FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode) {
   const contact::MortarZone& zone = run.solved_zone;
   run.mirrored = is_half_y(solved);
   const double share = run.share();
-  const double ratio = mode == FrictionMode::coupled ? c.mu : 0.0;
+  const double ratio = friction_ratio(scene, mode);
   run.force_N = *c.force;
   run.tangential_force_N = ratio * *c.force;
   const Eigen::Vector2d t(c.direction[0], c.direction[1]);
@@ -215,7 +222,7 @@ nlohmann::json finite_contact_json(const Scene& scene, const FiniteContactRun& r
           {"indenter", "plane"},
           {"friction", to_string(run.mode)},
           {"friction_law", "coulomb"},
-          {"ratio", run.mode == FrictionMode::coupled ? scene.contact->mu : 0.0},
+          {"ratio", friction_ratio(scene, run.mode)},
           {"direction", {scene.contact->direction[0], scene.contact->direction[1]}},
           {"force_N", run.force_N},
           {"tangential_force_N", run.tangential_force_N},

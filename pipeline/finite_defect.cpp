@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "skinfem/contact/holes/dimple.hpp"
 #include "skinfem/fem/face_index.hpp"
@@ -41,11 +44,60 @@ Vec2 material_point(const TetMesh& mesh, const PlanarFaceIndex& top, const Eigen
   return X;
 }
 
+FiniteDefectCase finite_defect_case(const Scene& scene, FrictionMode mode) {
+  const HoleSweep& sweep = *scene.contact->sweep;
+  FiniteDefectCase out;
+  out.mode = mode;
+  out.name = mode == FrictionMode::coupled ? "sliding" : "static";
+  out.state = finite_contact_run(scene, mode);
+  const FiniteContactRun& st = out.state;
+
+  progress("the contact condensed on the tangent at the deformed " + out.name + " state");
+  const double mu = Lame::from(scene.material.E, scene.material.nu).mu;
+  const contact::CondensedContact tangent =
+      contact::tangent_contact(*st.solved, mu, st.held.fixed, st.solved_zone, *st.indenter, *st.sensor_sites,
+                               st.load, st.solved_result);
+  const contact::ContactSolver solver(tangent, *scene.contact, st.mirror ? &*st.mirror : nullptr);
+
+  const PlanarFaceIndex top(*st.mesh, kTop);
+  const contact::HoleDimples dimples(solver, *st.mesh, top, scene.material.E, scene.material.nu);
+  const Eigen::VectorXd& u = st.result.solution.u;
+  out.sweep = contact::hole_sweep(
+      solver, *st.mesh, sweep, mode, &dimples,
+      [&](int i, const contact::ContactResult&) {
+        if ((i + 1) % 50 == 0 || i + 1 == sweep.positions)
+          progress("sweep " + out.name + ": " + std::to_string(i + 1) + "/" +
+                   std::to_string(sweep.positions) + " positions");
+      },
+      nullptr,
+      [&](const Vec2& c) {
+        const Vec2 X = material_point(*st.mesh, top, u, c);
+        out.material_centres.push_back(X);
+        return X;
+      });
+  const Eigen::VectorXd& lam = out.sweep.baseline.lambda;
+  out.baseline_rel = (lam - st.result.lambda).cwiseAbs().maxCoeff() / st.result.lambda.maxCoeff();
+  const Eigen::MatrixXd& v = out.sweep.varsigma;
+  for (int col = 0; col < v.cols(); ++col)
+    if (const double r = validation::roughness(v.col(col)); r > out.max_roughness)
+      out.max_roughness = r, out.max_roughness_column = col;
+  for (size_t i = 0; i < out.material_centres.size(); ++i)
+    out.largest_material_shift_mm = std::max(
+        out.largest_material_shift_mm, std::hypot(out.sweep.centers[i][0] - out.material_centres[i][0],
+                                                  out.sweep.centers[i][1] - out.material_centres[i][1]));
+  return out;
+}
+
 }  // namespace
 
-FiniteDefectRun finite_defect_run(const Scene& scene) {
+FiniteDefectRun finite_defect_run(const Scene& scene, const std::vector<FrictionMode>& modes) {
   require_sweep(scene);
-  check_finite_contact(scene, FrictionMode::coupled);
+  if (modes.empty()) throw std::invalid_argument("finite_defect_run: no case asked for");
+  for (FrictionMode m : modes) {
+    if (m != FrictionMode::static_residual && m != FrictionMode::coupled)
+      throw std::invalid_argument("finite_defect_run: the cases are static_residual and coupled");
+    check_finite_contact(scene, m);
+  }
   const HoleSweep& sweep = *scene.contact->sweep;
   if (sweep.model != HoleModel::bulge)
     throw SceneError(
@@ -53,78 +105,54 @@ FiniteDefectRun finite_defect_run(const Scene& scene) {
         ": contact.sweep.hole_model = \"resolved\": with material.model \"neo_hookean\" the hole "
         "is the bulge (\"bulge\"), a small change about the deformed state");
   FiniteDefectRun run;
-  run.state = finite_contact_run(scene, FrictionMode::coupled);
-  const FiniteContactRun& st = run.state;
-  run.wall = st.wall;
-
-  Stopwatch clock;
-  progress("the contact condensed on the tangent at the deformed sliding state");
-  const double mu = Lame::from(scene.material.E, scene.material.nu).mu;
-  const contact::CondensedContact tangent =
-      contact::tangent_contact(*st.solved, mu, st.held.fixed, st.solved_zone, *st.indenter, *st.sensor_sites,
-                               st.load, st.solved_result);
-  const contact::ContactSolver solver(tangent, *scene.contact, st.mirror ? &*st.mirror : nullptr);
-  run.wall["tangent"] = clock.seconds();
-
-  clock = Stopwatch();
-  const PlanarFaceIndex top(*st.mesh, kTop);
-  const contact::HoleDimples dimples(solver, *st.mesh, top, scene.material.E, scene.material.nu);
-  const Eigen::VectorXd& u = st.result.solution.u;
-  run.sliding = contact::hole_sweep(
-      solver, *st.mesh, sweep, FrictionMode::coupled, &dimples,
-      [&](int i, const contact::ContactResult&) {
-        if ((i + 1) % 50 == 0 || i + 1 == sweep.positions)
-          progress("sweep sliding: " + std::to_string(i + 1) + "/" + std::to_string(sweep.positions) +
-                   " positions");
-      },
-      nullptr,
-      [&](const Vec2& c) {
-        const Vec2 X = material_point(*st.mesh, top, u, c);
-        run.material_centres.push_back(X);
-        return X;
-      });
-  run.wall["sweep_sliding"] = clock.seconds();
-  const Eigen::VectorXd& lam = run.sliding.baseline.lambda;
-  run.baseline_rel = (lam - st.result.lambda).cwiseAbs().maxCoeff() / st.result.lambda.maxCoeff();
-  const Eigen::MatrixXd& v = run.sliding.varsigma;
-  for (int col = 0; col < v.cols(); ++col)
-    if (const double r = validation::roughness(v.col(col)); r > run.max_roughness)
-      run.max_roughness = r, run.max_roughness_column = col;
+  for (FrictionMode m : modes) {
+    Stopwatch clock;
+    run.cases.push_back(finite_defect_case(scene, m));
+    const FiniteDefectCase& c = run.cases.back();
+    const double stages = c.state.wall.total() + c.sweep.seconds;
+    for (const auto& [stage, seconds] : c.state.wall) run.wall[stage + "_" + c.name] = seconds;
+    run.wall["sweep_" + c.name] = c.sweep.seconds;
+    run.wall["tangent_" + c.name] = clock.seconds() - stages;  // the condensation and the bulges' set-up
+  }
   return run;
 }
 
 nlohmann::json finite_defect_json(const Scene& scene, const FiniteDefectRun& run) {
   const HoleSweep& sweep = *scene.contact->sweep;
-  const contact::SweepResult& res = run.sliding;
-  nlohmann::json c;
-  c["friction"] = to_string(FrictionMode::coupled);
-  c["ratio"] = scene.contact->mu;
-  c["seconds"] = res.seconds;
-  c["ms_per_position"] = 1e3 * res.seconds / sweep.positions;
-  c["max_complementarity"] = res.max_complementarity;
-  c["max_roughness"] = run.max_roughness;
-  c["max_roughness_curve"] = "#" + std::to_string(run.max_roughness_column / 2 + 1) +
-                             (run.max_roughness_column % 2 ? " varsigma_x" : " varsigma_z");
-  c["sensors"] = sweep_peaks_json(res);
-  double shift = 0;
-  for (size_t i = 0; i < run.material_centres.size(); ++i)
-    shift = std::max(shift, std::hypot(res.centers[i][0] - run.material_centres[i][0],
-                                       res.centers[i][1] - run.material_centres[i][1]));
   nlohmann::json summary;
-  summary["cases"]["sliding"] = c;
+  double baseline = 0, shift = 0;
+  for (const FiniteDefectCase& fc : run.cases) {
+    const contact::SweepResult& res = fc.sweep;
+    nlohmann::json c;
+    c["friction"] = to_string(fc.mode);
+    c["ratio"] = friction_ratio(scene, fc.mode);
+    c["seconds"] = res.seconds;
+    c["ms_per_position"] = 1e3 * res.seconds / sweep.positions;
+    c["max_complementarity"] = res.max_complementarity;
+    c["max_roughness"] = fc.max_roughness;
+    c["max_roughness_curve"] = "#" + std::to_string(fc.max_roughness_column / 2 + 1) +
+                               (fc.max_roughness_column % 2 ? " varsigma_x" : " varsigma_z");
+    c["sensors"] = sweep_peaks_json(res);
+    c["tangent_baseline_rel"] = fc.baseline_rel;
+    c["largest_material_shift_mm"] = fc.largest_material_shift_mm;
+    c["state"] = finite_contact_json(scene, fc.state);
+    c["state"].erase("scene");
+    summary["cases"][fc.name] = c;
+    baseline = std::max(baseline, fc.baseline_rel);
+    shift = std::max(shift, fc.largest_material_shift_mm);
+  }
   summary["scene"] = scene_json(scene);
   summary["material_model"] = "neo_hookean";
   summary["friction_law"] = to_string(scene.contact->law);
-  summary["left_out"] = "the static case (its state at rest needs a finite solve of its own), error bars";
+  summary["left_out"] = "error bars (the finite solve on coarser meshes)";
   summary["positions"] = sweep.positions;
   summary["hole_diameter_mm"] = sweep.hole_diameter;
   summary["hole_model"] = "bulge";
   summary["from_mm"] = {sweep.from[0], sweep.from[1]};
   summary["to_mm"] = {sweep.to[0], sweep.to[1]};
   summary["largest_material_shift_mm"] = shift;
-  summary["tangent_baseline_rel"] = run.baseline_rel;
-  summary["state"] = finite_contact_json(scene, run.state);
-  summary["dofs"] = run.state.dofs;
+  summary["tangent_baseline_rel"] = baseline;
+  summary["dofs"] = run.cases.front().state.dofs;
   summary["wall_s"] = run.wall;
   summary["wall_total_s"] = run.wall.total();
   summary["peak_rss_mb"] = peak_rss_mb();

@@ -42,24 +42,25 @@ Eigen::VectorXd readings_of(const FiniteContactRun& st, const SensorReadings& re
 
 TEST(FiniteDefect, TheSweepsSignalIsTheFullSolvesAtFirstOrderInTheOpening) {
   const Scene scene = swept_cap();
-  const FiniteDefectRun run = finite_defect_run(scene);
+  const FiniteDefectRun defect = finite_defect_run(scene, {FrictionMode::coupled});
+  const FiniteDefectCase& run = defect.cases.at(0);
   const FiniteContactRun& st = run.state;
   ASSERT_TRUE(st.mirrored);
   EXPECT_LT(run.baseline_rel, 1e-9);
   // The hole at the middle position (the apex), its opening on the tangent as the sweep made it.
   const int i = 1;
   const double mu = Lame::from(scene.material.E, scene.material.nu).mu;
-  const SensorReadings readings(*st.solved, reading_sites(scene.sensors));
+  const SensorReadings& readings = *st.sensor_sites;
   const contact::CondensedContact k = contact::tangent_contact(
       *st.solved, mu, st.held.fixed, st.solved_zone, *st.indenter, readings, st.load, st.solved_result);
   const contact::ContactSolver solver(k, *scene.contact, &*st.mirror);
   const PlanarFaceIndex top(*st.mesh, kTop);
   const contact::HoleDimples dimples(solver, *st.mesh, top, scene.material.E, scene.material.nu);
   const contact::HoleDimple hole = dimples(
-      Hole{run.material_centres.at(i), scene.contact->sweep->hole_diameter}, run.sliding.baseline.lambda);
+      Hole{run.material_centres.at(i), scene.contact->sweep->hole_diameter}, run.sweep.baseline.lambda);
   const contact::ContactResult whole = solver.solve(FrictionMode::coupled, hole);
-  const Eigen::VectorXd sweep_signal = run.sliding.varsigma.row(i).transpose();
-  EXPECT_LT((whole.readings - run.sliding.baseline.readings - sweep_signal).norm(),
+  const Eigen::VectorXd sweep_signal = run.sweep.varsigma.row(i).transpose();
+  EXPECT_LT((whole.readings - run.sweep.baseline.readings - sweep_signal).norm(),
             1e-12 * sweep_signal.norm());
 
   const Eigen::VectorXd base = readings_of(st, readings, st.solved_result);
@@ -70,7 +71,7 @@ TEST(FiniteDefect, TheSweepsSignalIsTheFullSolvesAtFirstOrderInTheOpening) {
     contact::HoleDimple scaled = hole;
     scaled.opening *= s;
     const Eigen::VectorXd tangent =
-        solver.solve(FrictionMode::coupled, scaled).readings - run.sliding.baseline.readings;
+        solver.solve(FrictionMode::coupled, scaled).readings - run.sweep.baseline.readings;
     contact::FiniteContactLoad load = st.load;
     load.opening = scaled.opening;
     const contact::FiniteContactResult f = contact::solve_finite_contact(
