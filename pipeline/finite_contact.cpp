@@ -53,12 +53,6 @@ contact::FiniteContactResult mirrored_result(const contact::FiniteContactResult&
 
 }  // namespace
 
-double friction_ratio(const Scene& scene, FrictionMode mode) {
-  if (mode == FrictionMode::coupled) return scene.contact->mu;
-  if (mode == FrictionMode::static_residual) return scene.contact->static_ratio;
-  return 0.0;
-}
-
 void check_finite_contact(const Scene& scene, FrictionMode mode) {
   require_contact(scene);
   const ContactLoad& c = *scene.contact;
@@ -108,7 +102,7 @@ FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode) {
   const contact::MortarZone& zone = run.solved_zone;
   run.mirrored = is_half_y(solved);
   const double share = run.share();
-  const double ratio = friction_ratio(scene, mode);
+  const double ratio = solved_ratio(c, mode);
   run.force_N = *c.force;
   run.tangential_force_N = ratio * *c.force;
   const Eigen::Vector2d t(c.direction[0], c.direction[1]);
@@ -222,7 +216,7 @@ nlohmann::json finite_contact_json(const Scene& scene, const FiniteContactRun& r
           {"indenter", "plane"},
           {"friction", to_string(run.mode)},
           {"friction_law", "coulomb"},
-          {"ratio", friction_ratio(scene, run.mode)},
+          {"ratio", solved_ratio(*scene.contact, run.mode)},
           {"direction", {scene.contact->direction[0], scene.contact->direction[1]}},
           {"force_N", run.force_N},
           {"tangential_force_N", run.tangential_force_N},

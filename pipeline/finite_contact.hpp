@@ -62,10 +62,6 @@ struct FiniteContactRun {
   double share() const { return mirrored ? 0.5 : 1.0; }
 };
 
-// The plate's tangential traction over its pressure in a mode: μ sliding (coupled), static_ratio at rest
-// (static_residual), 0 frictionless.
-double friction_ratio(const Scene& scene, FrictionMode mode);
-
 // Throws SceneError (one line naming the field or option, its value and what is allowed) for what the
 // finite-strain contact does not model: a sphere, a depth instead of a force, holes, a friction law other
 // than Coulomb, a compliant interface, posts on springs, and the uncoupled mode.

@@ -30,6 +30,7 @@ struct FiniteDefectCase {
   double max_roughness = 0;  // the jaggedest curve's validation::roughness
   int max_roughness_column = 0;
   double largest_material_shift_mm = 0;  // max |hole centre − the material point under it|
+  double tangent_seconds = 0;            // the condensation on the tangent and the bulges' set-up
 };
 
 struct FiniteDefectRun {

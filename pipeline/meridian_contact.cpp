@@ -12,13 +12,6 @@
 namespace skinfem::pipeline {
 
 namespace {
-// The Coulomb ratio a mode applies while the pressure is solved (the uncoupled mode's comes after it).
-double solved_ratio(const ContactLoad& c, FrictionMode m) {
-  const FrictionModeKind& k = kind(m);
-  if (!k.traction || !k.coupled) return 0.0;
-  return k.at_rest ? c.static_ratio : c.mu;
-}
-
 std::string not_exact(const ContactLoad& c, FrictionMode m) {
   char buf[300];
   std::snprintf(

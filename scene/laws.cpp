@@ -76,4 +76,10 @@ std::string choice_list(const std::vector<std::string>& names, bool quote) {
   return s;
 }
 
+double solved_ratio(const ContactLoad& c, FrictionMode mode) {
+  const FrictionModeKind& k = kind(mode);
+  if (!k.traction || !k.coupled) return 0.0;
+  return k.at_rest ? c.static_ratio : c.mu;
+}
+
 }  // namespace skinfem
