@@ -26,6 +26,7 @@
 
 #include "app/commands.hpp"
 #include "app/common.hpp"
+#include "app/report_page.hpp"
 #include "app/report_writer.hpp"
 #include "skinfem/pipeline/chain_level.hpp"
 
@@ -35,6 +36,7 @@ int run_report(const Scene& scene, const std::string& out_dir, const std::vector
                bool fast) {
   pipeline::check_error_scales(error_scales);
   check_output_dir(out_dir);
+  remove_earlier_report(out_dir);
   const pipeline::ReportOptions options{error_scales, fast};
   ReportWriter writer(scene, out_dir, options);
   pipeline::ReportResult run = pipeline::report_run(scene, options, writer);

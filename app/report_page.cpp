@@ -368,19 +368,57 @@ void figures(std::ostream& h, const std::string& dir, const Scene& scene, const 
     }
 }
 
+// Every file a report writes but its figures and the defect frames, in the page's order.
+constexpr const char* kReportFiles[] = {"mesh/mesh.vtu",
+                                        "mesh/boundary.vtu",
+                                        "mesh/summary.json",
+                                        "green/green_maps.vtp",
+                                        "green/green.csv",
+                                        "green/summary.json",
+                                        "kfit/kfit.json",
+                                        "kfit/k_sweep.csv",
+                                        "contact/pressure.vtp",
+                                        "contact/fields.vtu",
+                                        "contact/modes.csv",
+                                        "contact/sensors.csv",
+                                        "contact/summary.json",
+                                        "defect/defect.pvd",
+                                        "green/post_design.csv",
+                                        "defect/defect.csv",
+                                        "defect/summary.json",
+                                        "crosscheck/readings.csv",
+                                        "crosscheck/defect.csv",
+                                        "crosscheck/pressure.csv",
+                                        "crosscheck/attribution.csv",
+                                        "crosscheck/hole_budget.csv",
+                                        "crosscheck/hole_budget_signals.csv",
+                                        "study/chain_study.csv",
+                                        "study/chain_study.json",
+                                        "report.json"};
+
 void files(std::ostream& h, const std::string& dir) {
   h << "<h2>Files</h2><ul>\n";
-  for (const char* f :
-       {"mesh/mesh.vtu", "mesh/boundary.vtu", "green/green_maps.vtp", "green/green.csv", "kfit/kfit.json",
-        "contact/pressure.vtp", "contact/fields.vtu", "contact/modes.csv", "defect/defect.pvd",
-        "green/post_design.csv", "defect/defect.csv", "crosscheck/readings.csv", "crosscheck/defect.csv",
-        "crosscheck/pressure.csv", "crosscheck/attribution.csv", "crosscheck/hole_budget.csv",
-        "crosscheck/hole_budget_signals.csv", "study/chain_study.csv", "report.json"})
+  for (const char* f : kReportFiles)
     if (std::filesystem::exists(dir + "/" + f)) h << "<li><a href=\"" << f << "\">" << f << "</a></li>\n";
   h << "</ul></body></html>\n";
 }
 
 }  // namespace
+
+void remove_earlier_report(const std::string& dir) {
+  namespace fs = std::filesystem;
+  for (const char* f : kReportFiles) fs::remove(dir + "/" + f);
+  fs::remove(dir + "/index.html");
+  fs::remove_all(dir + "/defect/frames");
+  std::vector<fs::path> figures;
+  if (fs::is_directory(dir + "/figures"))
+    for (const auto& e : fs::directory_iterator(dir + "/figures"))
+      if (e.path().extension() == ".png") figures.push_back(e.path());
+  for (const fs::path& f : figures) fs::remove(f);
+  std::error_code not_empty;  // a folder holding anything else stays
+  for (const char* sub : {"mesh", "green", "kfit", "contact", "defect", "crosscheck", "study", "figures"})
+    fs::remove(dir + "/" + sub, not_empty);
+}
 
 // "value +- error" (the terminal's ASCII).
 std::string with_error(double value, double error) {

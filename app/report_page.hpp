@@ -19,6 +19,11 @@ using pipeline::ReportResult;
 // whole command's (the figures' included).
 void write_index(const std::string& dir, const Scene& scene, const pipeline::ReportResult& in);
 
+// Removes what an earlier report wrote in DIR (its files, figures/*.png, the defect frames), so that a
+// report leaving a stage out (--fast, --no-error-bars, a scene without a contact) shows and links none of
+// that stage's files from before. Only the report's own names go; anything else in DIR stays.
+void remove_earlier_report(const std::string& dir);
+
 // "value +- error", the value rounded to the error's second significant digit (the terminal's ASCII).
 std::string with_error(double value, double error);
 

@@ -73,9 +73,13 @@ import matplotlib
 matplotlib.use("Agg")  # before pyplot: no display
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
+import matplotlib.transforms  # noqa: E402
 import numpy as np  # noqa: E402
 
-plt.rcParams.update({"axes.grid": True, "grid.alpha": 0.3, "legend.fontsize": 9, "figure.dpi": 120})
+# Titles at the top of their axes: placed automatically, each one measures its axes' decorations at every
+# draw, a tenth of the figures' time; fig. 2, whose top row has a second x axis above, keeps it.
+plt.rcParams.update({"axes.grid": True, "grid.alpha": 0.3, "legend.fontsize": 9, "figure.dpi": 120,
+                     "axes.titley": 1.0})
 COMPONENTS = ("zz", "zx", "xz", "xx")
 COMPONENT_TEXT = {"zz": "normal force → σ_z", "zx": "normal force → σ_x",
                   "xz": "tangential force (x) → σ_z", "xx": "tangential force (x) → σ_x"}
@@ -303,6 +307,11 @@ def variant_style(v, i):
 
 
 def fig2_static_sliding(d):
+    with plt.rc_context({"axes.titley": None}):  # titles above the secondary x axes
+        return _fig2_static_sliding(d)
+
+
+def _fig2_static_sliding(d):
     r = read_readings(d)
     variants = in_order(r["variant"])
     others = [v for v in variants if v not in ("fe", "paper_model")]
@@ -551,10 +560,31 @@ def budget_tables(d):
     return _BUDGET_TABLES[d]
 
 
+def budget_axes(n):
+    """A figure of 2 × n axes for the budget figures, emptied: one per worker process, drawn over again for
+    each hypothesis (creating the twenty axes and their ticks was half of each figure's time)."""
+    if n not in _BUDGET_AXES:
+        fig, axes = plt.subplots(2, n, figsize=(2.3 * n + 1, 5.4), squeeze=False, sharex=True)
+        _BUDGET_AXES[n] = fig, axes
+    fig, axes = _BUDGET_AXES[n]
+    for ax in axes.flat:
+        for artist in ax.lines[:] + ax.texts[:]:
+            artist.remove()
+        if ax.get_legend():
+            ax.get_legend().remove()
+        ax.set_title("")
+        # Limits as a new axes has them: (0, 1) until a line comes, then the data's.
+        ax.dataLim.set(matplotlib.transforms.Bbox.null())
+        ax.ignore_existing_data_limits = True
+        ax.set_xlim(0, 1, auto=True)
+        ax.set_ylim(0, 1, auto=True)
+    return fig, axes
+
+
 def fig_budget(d, hypothesis):
     t, m = budget_tables(d)
     sensors = sorted(set(t["sensor"].tolist()))
-    fig, axes = plt.subplots(2, len(sensors), figsize=(2.3 * len(sensors) + 1, 5.4), squeeze=False, sharex=True)
+    fig, axes = budget_axes(len(sensors))
     for row, comp in enumerate(("z", "x")):
         col = f"varsigma_{comp}_kPa"
         for i, s in enumerate(sensors):
@@ -717,6 +747,7 @@ def main(argv):
 
 
 _FIGURES, _DIR = [], ""
+_BUDGET_AXES = {}  # per process: budget_axes's figures, by number of sensors
 
 
 def draw_figure(i):

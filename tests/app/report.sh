@@ -157,7 +157,10 @@ PY
 /usr/bin/python3 "$(dirname "$0")/page_check.py" "$out" || fail=1
 # --fast leaves out the error bars, the hypothesis budget, the post design, the k sweep, the cap's
 # effective-thickness fits and the defect's VTK frames, and says so on the page, in report.json and on the
-# terminal; what it keeps (the headline numbers, the crosscheck) is the full report's.
+# terminal; what it keeps (the headline numbers, the crosscheck) is the full report's. It runs in a copy of
+# the full report's folder: what it leaves out must not be left there from before either (files, figures,
+# links on the page).
+cp -r "$out" "$tmp/fast"
 if "$skinfem" report "$tmp/scene.json" --fast --out "$tmp/fast" >"$tmp/fast_stdout" 2>"$tmp/stderr"; then
   /usr/bin/python3 - "$out" "$tmp/fast" "$tmp/fast_stdout" <<'PY' || fail=1
 import json, os, sys
@@ -169,7 +172,10 @@ for key in ("error_bars", "hole_budget", "post_design", "chain_study", "k_paper"
 if any("effective_thickness_mm" in s for s in fast["kfit"]["sensors"]): bad.append("--fast fitted thicknesses")
 for f in ("crosscheck/hole_budget.csv", "green/post_design.csv", "study/chain_study.csv", "defect/defect.pvd",
           "defect/frames", "kfit/k_sweep.csv", "figures/k_sweep.png"):
-    if os.path.exists(os.path.join(sys.argv[2], f)): bad.append(f"--fast wrote {f}")
+    if os.path.exists(os.path.join(sys.argv[2], f)): bad.append(f"--fast wrote or left {f}")
+    if f'href="{f}"' in html: bad.append(f"index.html links {f}")
+stale = [f for f in os.listdir(os.path.join(sys.argv[2], "figures")) if f.startswith(("budget_", "pareto", "post_design"))]
+if stale: bad.append(f"figures/ keeps {stale}")
 left = fast.get("fast", {}).get("left_out", "")
 if any(w not in left for w in ("error bars", "budget", "frames", "k sweep", "effective-thickness")):
     bad.append(f"report.json fast.left_out = {left!r}")
