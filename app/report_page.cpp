@@ -183,7 +183,7 @@ void stage_times_and_k(std::ostream& h, const ReportResult& in) {
   for (const auto& [stage, sec] : in.wall)
     h << "<tr><td style=\"text-align:left\">" << stage << "</td><td>" << fmt("%.2f", sec) << "</td></tr>\n";
   for (const auto& [stage, sec] : in.beside)
-    h << "<tr><td style=\"text-align:left\">" << stage << " (on another thread, beside the others)</td><td>"
+    h << "<tr><td style=\"text-align:left\">" << stage << " (beside the others: a thread or process)</td><td>"
       << fmt("%.2f", sec) << "</td></tr>\n";
   h << "</table>\n";
   h << "<h2>k</h2><p>" << html_escape(in.kfit_verdict) << "</p>\n";

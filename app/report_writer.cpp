@@ -127,7 +127,7 @@ int ReportWriter::finish(pipeline::ReportResult& run) {
   std::printf("  seconds per stage: %s\n", line.c_str());
   line.clear();
   for (const auto& [stage, t] : run.beside) line += (line.empty() ? "" : ", ") + stage + " " + fmt("%.1f", t);
-  if (!line.empty()) std::printf("  beside them, on another thread: %s\n", line.c_str());
+  if (!line.empty()) std::printf("  beside them, on other threads or processes: %s\n", line.c_str());
   std::printf("  wrote %s/index.html, report.json\n", out_.c_str());
   return 0;
 }

@@ -44,16 +44,24 @@ SensorDesign design(const MeridianSkin& skin, double nu, double diameter, double
       std::max(relative_change(d.zz.integral, czz.integral), relative_change(d.xx.integral, cxx.integral));
   return d;
 }
-// A design as the doubles a worker process hands back (scene/parallel.hpp), its DOFs last.
-constexpr std::size_t kDesignValues = 14;
-std::vector<double> to_values(const SensorDesign& d, int dofs) {
-  return {d.diameter,        d.height,
-          d.zz.peak,         d.zz.peak_at,
-          d.zz.half_width,   d.zz.integral,
-          d.xx.peak,         d.xx.peak_at,
-          d.xx.half_width,   d.xx.integral,
-          d.peak_change,     d.half_width_change,
-          d.integral_change, static_cast<double>(dofs)};
+// A design as the doubles a worker process hands back (scene/parallel.hpp), its DOFs and seconds last.
+constexpr std::size_t kDesignValues = 15;
+std::vector<double> to_values(const SensorDesign& d, int dofs, double seconds) {
+  return {d.diameter,
+          d.height,
+          d.zz.peak,
+          d.zz.peak_at,
+          d.zz.half_width,
+          d.zz.integral,
+          d.xx.peak,
+          d.xx.peak_at,
+          d.xx.half_width,
+          d.xx.integral,
+          d.peak_change,
+          d.half_width_change,
+          d.integral_change,
+          static_cast<double>(dofs),
+          seconds};
 }
 SensorDesign from_values(const std::vector<double>& v, int* dofs = nullptr) {
   SensorDesign d;
@@ -67,37 +75,63 @@ SensorDesign from_values(const std::vector<double>& v, int* dofs = nullptr) {
 
 std::string post_design_unavailable(const Scene& scene) { return meridian_unavailable(on_axis(scene)); }
 
-PostDesign post_design(const Scene& scene, const std::vector<double>& diameters,
-                       const std::vector<double>& heights, double sweep_scale) {
-  const Scene axis = on_axis(scene);
-  if (const std::string why = meridian_unavailable(axis); !why.empty())
-    throw SceneError(scene.source_path + ": no meridian to compare a post with a disc on: " + why);
-  Stopwatch clock;
-  const MeridianSkin skin = meridian_skin(axis);
-  const double nu = scene.material.nu, d = scene.sensors.post.diameter;
-  PostDesign p;
-  p.skin = skin.model;
-  p.sweep_scale = sweep_scale;
-  // Every design is independent: the disc, the post, then the sweep, on the machine's cores in separate
-  // processes (MUMPS instances are not shared between threads), each with one BLAS thread (the 2D fronts
-  // are too small for more; and the numbers then do not depend on how many processes ran).
+struct PostDesignRun::Jobs {
   struct Job {
     double diameter, height, scale;
   };
-  std::vector<Job> jobs = {{d, 0, 1}, {d, scene.sensors.post.height, 1}};
-  for (double diameter : diameters)
-    for (double height : heights) jobs.push_back({diameter, height, sweep_scale});
-  const BlasThreads one(1);
-  const auto designs = map_in_processes(jobs.size(), kDesignValues, [&](std::size_t i) {
+  std::vector<Job> list;
+  MeridianSkin skin;
+  double nu = 0;
+  std::vector<double> run(std::size_t i) const {
+    // One BLAS thread per design, set where it runs (a child process, or here with no other work beside):
+    // the 2D fronts are too small for more, and the numbers then do not depend on how many processes ran.
+    const BlasThreads one(1);
+    const Stopwatch clock;
     int dofs = 0;
-    const SensorDesign design_i = design(skin, nu, jobs[i].diameter, jobs[i].height, jobs[i].scale, &dofs);
-    return to_values(design_i, dofs);
-  });
+    const SensorDesign d = design(skin, nu, list[i].diameter, list[i].height, list[i].scale, &dofs);
+    return to_values(d, dofs, clock.seconds());
+  }
+};
+
+PostDesignRun::PostDesignRun(const Scene& scene, const std::vector<double>& diameters,
+                             const std::vector<double>& heights, double sweep_scale, int processes) {
+  const Scene axis = on_axis(scene);
+  if (const std::string why = meridian_unavailable(axis); !why.empty())
+    throw SceneError(scene.source_path + ": no meridian to compare a post with a disc on: " + why);
+  auto jobs = std::make_shared<Jobs>(Jobs{{}, meridian_skin(axis), scene.material.nu});
+  // Every design is independent: the disc, the post, then the sweep.
+  const double d = scene.sensors.post.diameter;
+  jobs->list = {{d, 0, 1}, {d, scene.sensors.post.height, 1}};
+  for (double diameter : diameters)
+    for (double height : heights) jobs->list.push_back({diameter, height, sweep_scale});
+  jobs_ = jobs;
+  skin_ = jobs->skin.model;
+  sweep_scale_ = sweep_scale;
+  if (processes > 0)
+    designs_ = std::make_unique<ProcessMap>(
+        jobs->list.size(), kDesignValues, [jobs](std::size_t i) { return jobs->run(i); }, processes, 19);
+}
+
+PostDesignRun::PostDesignRun(PostDesignRun&&) noexcept = default;
+PostDesignRun::~PostDesignRun() = default;
+
+PostDesign PostDesignRun::finish() {
+  const auto designs = designs_ ? designs_->get()
+                                : map_in_processes(jobs_->list.size(), kDesignValues,
+                                                   [this](std::size_t i) { return jobs_->run(i); });
+  PostDesign p;
+  p.skin = skin_;
+  p.sweep_scale = sweep_scale_;
   p.disc = from_values(designs[0]);
   p.post = from_values(designs[1], &p.dofs);
-  for (size_t i = 2; i < jobs.size(); ++i) p.sweep.push_back(from_values(designs[i]));
-  p.seconds = clock.seconds();
+  for (size_t i = 2; i < designs.size(); ++i) p.sweep.push_back(from_values(designs[i]));
+  for (const std::vector<double>& v : designs) p.seconds += v[kDesignValues - 1];
   return p;
+}
+
+PostDesign post_design(const Scene& scene, const std::vector<double>& diameters,
+                       const std::vector<double>& heights, double sweep_scale) {
+  return PostDesignRun(scene, diameters, heights, sweep_scale, 0).finish();
 }
 
 namespace {
@@ -126,9 +160,9 @@ std::vector<double> sweep_heights(double h) {
   return out;
 }
 }  // namespace
-PostDesign report_post_design(const Scene& scene) {
+PostDesignRun report_post_design(const Scene& scene, int processes) {
   const double h = scene.geometry.kind == GeometryKind::flat ? scene.geometry.flat.h : scene.geometry.cap.h;
-  return post_design(scene, {0.1, 0.2, 0.3, 0.4}, sweep_heights(h));
+  return PostDesignRun(scene, {0.1, 0.2, 0.3, 0.4}, sweep_heights(h), 1.41, processes);
 }
 
 nlohmann::json post_design_json(const PostDesign& p) {

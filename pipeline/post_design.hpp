@@ -6,11 +6,13 @@
 // from the level at twice every mesh size as its error.
 #pragma once
 
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "skinfem/green/meridian.hpp"
+#include "skinfem/scene/parallel.hpp"
 #include "skinfem/scene/scene.hpp"
 
 namespace skinfem::pipeline {
@@ -30,7 +32,7 @@ struct PostDesign {
   std::vector<SensorDesign> sweep;  // every (diameter, height) of the sweep, diameters outer
   double sweep_scale = 0;           // the sweep's mesh scale (MeridianSizes::for_thickness)
   int dofs = 0;                     // the scene's post at scale 1, both modes
-  double seconds = 0;
+  double seconds = 0;               // the designs' own, summed (their work, however many processes ran it)
 };
 
 // Why the scene's skin has no meridian to compare on (empty: it has one).
@@ -41,8 +43,29 @@ std::string post_design_unavailable(const Scene& scene);
 // post_design_unavailable is not empty.
 PostDesign post_design(const Scene& scene, const std::vector<double>& diameters,
                        const std::vector<double>& heights, double sweep_scale = 1.41);
+
+// post_design's work, computed from construction on by `processes` child processes at the lowest priority
+// (scene/parallel.hpp's ProcessMap, nice 19: they take the cores the caller leaves idle) while the caller
+// goes on with its own; or (processes 0) by finish() on the machine's cores. The numbers are the same either
+// way: each design runs alone with one BLAS thread.
+class PostDesignRun {
+ public:
+  PostDesignRun(const Scene& scene, const std::vector<double>& diameters, const std::vector<double>& heights,
+                double sweep_scale, int processes);
+  PostDesignRun(PostDesignRun&&) noexcept;
+  ~PostDesignRun();
+  // Waits for the designs (once).
+  PostDesign finish();
+
+ private:
+  struct Jobs;
+  std::shared_ptr<const Jobs> jobs_;
+  std::string skin_;
+  double sweep_scale_ = 0;
+  std::unique_ptr<ProcessMap> designs_;
+};
 // The report's: diameters 0.1–0.4 mm, heights 0–1 mm below 0.9 h (the scene's rule for a post).
-PostDesign report_post_design(const Scene& scene);
+PostDesignRun report_post_design(const Scene& scene, int processes);
 // report.json's post_design entry: each design's shapes and changes, and `answer`, the scene's post against
 // its disc and the sweep's ranges in one paragraph from the numbers.
 nlohmann::json post_design_json(const PostDesign& p);

@@ -4,6 +4,7 @@
 #include <signal.h>
 #include <sys/mman.h>
 #include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -87,45 +88,36 @@ constexpr std::size_t kMessage = 512;
 enum : int { kPending = 0, kDone = 1, kThrew = 2 };
 }  // namespace
 
-std::vector<std::vector<double>> map_in_processes(std::size_t n, std::size_t width,
-                                                  const std::function<std::vector<double>(std::size_t)>& f) {
-  const std::size_t workers = std::min<std::size_t>(n, static_cast<std::size_t>(worker_threads()));
-  std::vector<std::vector<double>> out(n);
-  const auto here = [&] {
-    for (std::size_t i = 0; i < n; ++i) {
-      out[i] = f(i);
-      if (out[i].size() != width)
-        throw std::logic_error("map_in_processes: an item returned the wrong width");
-    }
-    return out;
-  };
-  if (workers <= 1) return here();
+ProcessMap::ProcessMap(std::size_t n, std::size_t width, std::function<std::vector<double>(std::size_t)> f,
+                       int workers, int nice)
+    : n_(n), width_(width), f_(std::move(f)) {
+  workers = static_cast<int>(std::min<std::size_t>(n, static_cast<std::size_t>(std::max(1, workers))));
+  if (n == 0) return;
   static_assert(std::atomic<long>::is_always_lock_free,
                 "a counter shared between processes must be lock-free");
-  const std::size_t status_at = sizeof(Shared), message_at = status_at + n * sizeof(int),
-                    values_at = (message_at + n * kMessage + 7) / 8 * 8,
-                    bytes = values_at + n * width * sizeof(double);
-  void* map = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+  status_at_ = sizeof(Shared), message_at_ = status_at_ + n * sizeof(int);
+  values_at_ = (message_at_ + n * kMessage + 7) / 8 * 8, bytes_ = values_at_ + n * width * sizeof(double);
+  void* map = mmap(nullptr, bytes_, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
   if (map == MAP_FAILED) throw std::runtime_error("map_in_processes: cannot map shared memory");
-  char* base = static_cast<char*>(map);
-  auto* shared = new (base) Shared{{0}};
-  auto* status = reinterpret_cast<int*>(base + status_at);
-  char* messages = base + message_at;
-  auto* values = reinterpret_cast<double*>(base + values_at);
+  map_ = static_cast<char*>(map);
+  auto* shared = new (map_) Shared{{0}};
+  auto* status = reinterpret_cast<int*>(map_ + status_at_);
+  char* messages = map_ + message_at_;
+  auto* values = reinterpret_cast<double*>(map_ + values_at_);
   const pid_t parent = getpid();
-  std::vector<pid_t> children;
-  for (std::size_t w = 0; w < workers; ++w) {
+  for (int w = 0; w < workers; ++w) {
     const pid_t pid = fork();
     if (pid < 0) break;  // the children started take every item
     if (pid == 0) {
       // A child: never outlives this process, never returns into the caller's stack, no exit handlers.
       prctl(PR_SET_PDEATHSIG, SIGKILL);
       if (getppid() != parent) _exit(1);
+      if (nice > 0) setpriority(PRIO_PROCESS, 0, nice);
       int rc = 0;
       try {
         for (long i; (i = shared->next.fetch_add(1)) < static_cast<long>(n);) {
           try {
-            const std::vector<double> v = f(static_cast<std::size_t>(i));
+            const std::vector<double> v = f_(static_cast<std::size_t>(i));
             if (v.size() != width)
               throw std::logic_error("map_in_processes: an item returned the wrong width");
             std::memcpy(values + i * width, v.data(), width * sizeof(double));
@@ -140,14 +132,19 @@ std::vector<std::vector<double>> map_in_processes(std::size_t n, std::size_t wid
       }
       _exit(rc);
     }
-    children.push_back(pid);
+    children_.push_back(pid);
   }
-  if (children.empty()) {  // no process could start: the work is done here
-    munmap(map, bytes);
-    return here();
-  }
+}
+
+ProcessMap::~ProcessMap() {
+  for (const pid_t pid : children_) kill(pid, SIGKILL);
+  reap();
+  if (map_) munmap(map_, bytes_);
+}
+
+std::string ProcessMap::reap() {
   std::string ended;
-  for (const pid_t pid : children) {
+  for (const pid_t pid : children_) {
     int st = 0;
     while (waitpid(pid, &st, 0) < 0 && errno == EINTR) {
     }
@@ -155,18 +152,51 @@ std::vector<std::vector<double>> map_in_processes(std::size_t n, std::size_t wid
       ended = "a worker process ended by signal " + std::to_string(WTERMSIG(st)) + " (" +
               strsignal(WTERMSIG(st)) + ")";
   }
+  children_.clear();
+  return ended;
+}
+
+std::vector<std::vector<double>> ProcessMap::get() {
+  std::vector<std::vector<double>> out(n_);
+  if (n_ == 0) return out;
+  if (children_.empty()) {  // no process could start: the work is done here
+    for (std::size_t i = 0; i < n_; ++i) {
+      out[i] = f_(i);
+      if (out[i].size() != width_)
+        throw std::logic_error("map_in_processes: an item returned the wrong width");
+    }
+    return out;
+  }
+  const std::string ended = reap();
+  const auto* status = reinterpret_cast<const int*>(map_ + status_at_);
+  const char* messages = map_ + message_at_;
+  const auto* values = reinterpret_cast<const double*>(map_ + values_at_);
   std::string error;
-  for (std::size_t i = 0; i < n && error.empty(); ++i) {
+  for (std::size_t i = 0; i < n_ && error.empty(); ++i) {
     if (status[i] == kThrew)
       error = std::string(messages + i * kMessage);
     else if (status[i] != kDone)
       error = ended.empty() ? "a worker process ended before its item " + std::to_string(i) : ended;
     else
-      out[i].assign(values + i * width, values + (i + 1) * width);
+      out[i].assign(values + i * width_, values + (i + 1) * width_);
   }
-  munmap(map, bytes);
   if (!error.empty()) throw std::runtime_error(error);
   return out;
+}
+
+std::vector<std::vector<double>> map_in_processes(std::size_t n, std::size_t width,
+                                                  const std::function<std::vector<double>(std::size_t)>& f) {
+  const std::size_t workers = std::min<std::size_t>(n, static_cast<std::size_t>(worker_threads()));
+  if (workers <= 1) {
+    std::vector<std::vector<double>> out(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      out[i] = f(i);
+      if (out[i].size() != width)
+        throw std::logic_error("map_in_processes: an item returned the wrong width");
+    }
+    return out;
+  }
+  return ProcessMap(n, width, f, static_cast<int>(workers)).get();
 }
 
 }  // namespace skinfem

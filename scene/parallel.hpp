@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace skinfem {
@@ -39,5 +40,31 @@ void for_each_index(std::size_t n, const std::function<void(std::size_t)>& f, bo
 // that ended a child; a child dies with this process.
 std::vector<std::vector<double>> map_in_processes(std::size_t n, std::size_t width,
                                                   const std::function<std::vector<double>(std::size_t)>& f);
+
+// The same work started now in `workers` child processes (at least one, even for one item) and waited for
+// by get(), while the caller goes on: for work beside this process's own (the report's post design beside
+// its chain). A `nice` above 0 lowers the children's priority by it (19: they take what the caller's threads
+// leave idle). The children are forked here: make this call where no other thread of ours is inside the
+// BLAS or MUMPS, and set what the children need (their BLAS's threads) inside f, which runs in them only
+// (here only if no process could start, at get()). A map not waited for kills its children when it goes.
+class ProcessMap {
+ public:
+  ProcessMap(std::size_t n, std::size_t width, std::function<std::vector<double>(std::size_t)> f, int workers,
+             int nice = 0);
+  ~ProcessMap();
+  ProcessMap(const ProcessMap&) = delete;
+  ProcessMap& operator=(const ProcessMap&) = delete;
+  // Every item's doubles, in index order; throws as map_in_processes. Once.
+  std::vector<std::vector<double>> get();
+
+ private:
+  std::string reap();  // waits for every child; the first signal that ended one, as a sentence
+
+  std::size_t n_, width_;
+  std::function<std::vector<double>(std::size_t)> f_;
+  char* map_ = nullptr;  // the shared memory: a Shared, then statuses, messages and values
+  std::size_t status_at_ = 0, message_at_ = 0, values_at_ = 0, bytes_ = 0;
+  std::vector<int> children_;  // pids
+};
 
 }  // namespace skinfem

@@ -27,7 +27,7 @@ SOURCE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # The stages in the order the report runs them (report_run), for a table whose rows do not move between runs.
 STAGE_ORDER = ["mesh", "assemble", "factor", "green_adjoints", "green_profiles", "condense", "contact",
                "defect", "kfit_wait", "crosscheck", "hole_budget", "k_sweep_wait", "error_levels",
-               "post_design", "figures"]
+               "post_design_wait", "figures"]
 
 
 def cell(text):
@@ -112,7 +112,7 @@ def cost(run):
     stages = [s for s in STAGE_ORDER if s in wall] + sorted(s for s in wall if s not in STAGE_ORDER)
     rows = ["| stage | seconds (the machine's) |", "|---|---:|"]
     rows += ["| %s | %.1f |" % (stage, wall[stage]) for stage in stages]
-    rows += ["| %s, on a thread beside the stages | %.1f |" % (stage, seconds)
+    rows += ["| %s, beside the stages (a thread or process) | %.1f |" % (stage, seconds)
              for stage, seconds in sorted(report["wall_beside_s"].items())]
     rows.append("| total: {:,} DOFs, peak {:,.0f} MB | {:.1f} |".format(report["dofs"], report["peak_rss_mb"],
                                                                    report["wall_total_s"]))

@@ -1,5 +1,6 @@
 // The post design sweep (pipeline/post_design.hpp) gives the same numbers however its designs are spread:
-// in worker processes, or in this one (OMP_NUM_THREADS=1), bit for bit, in the order asked.
+// in worker processes, in this one (OMP_NUM_THREADS=1), or in one low-priority process started beside this
+// thread (the report's way), bit for bit, in the order asked.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -37,6 +38,9 @@ TEST(PostDesign, TheSameNumbersInWorkerProcessesAndInOne) {
   setenv("OMP_NUM_THREADS", "1", 1);
   const PostDesign here = post_design(scene, {0.2, 0.3}, {0.0, 0.4}, 2.0);
   unsetenv("OMP_NUM_THREADS");
+  // As the report runs it: one low-priority process from the start, beside this thread's own work.
+  PostDesignRun beside(scene, {0.2, 0.3}, {0.0, 0.4}, 2.0, 1);
+  const PostDesign started = beside.finish();
   EXPECT_EQ(spread.dofs, here.dofs);
   EXPECT_GT(spread.dofs, 0);
   expect_same(spread.disc, here.disc);
@@ -44,6 +48,11 @@ TEST(PostDesign, TheSameNumbersInWorkerProcessesAndInOne) {
   ASSERT_EQ(spread.sweep.size(), 4u);
   ASSERT_EQ(here.sweep.size(), 4u);
   for (int i = 0; i < 4; ++i) expect_same(spread.sweep[i], here.sweep[i]);
+  EXPECT_EQ(started.dofs, here.dofs);
+  expect_same(started.disc, here.disc);
+  expect_same(started.post, here.post);
+  ASSERT_EQ(started.sweep.size(), 4u);
+  for (int i = 0; i < 4; ++i) expect_same(started.sweep[i], here.sweep[i]);
   // Diameters outer, heights inner, as asked.
   EXPECT_EQ(spread.sweep[1].diameter, 0.2);
   EXPECT_EQ(spread.sweep[1].height, 0.4);

@@ -1,10 +1,14 @@
 // Work spread over threads and processes (scene/parallel.hpp): results in index order whoever computed them,
-// an item's failure reported as a loop in one thread would report it, and a worker process that dies named.
+// an item's failure reported as a loop in one thread would report it, and a worker process that dies named;
+// work started in low-priority processes beside the caller's (ProcessMap), and its children gone with it.
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/mman.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -100,6 +104,53 @@ TEST(MapInProcesses, AWorkerKilledIsNamed) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("signal 9"), std::string::npos) << e.what();
   }
+}
+
+// A ProcessMap's items run in children at the priority asked, while the caller goes on; the results come
+// back in index order at get(), even with one worker (always a child: work beside the caller's own).
+TEST(ProcessMap, ItemsInLowPriorityChildrenWhileTheCallerGoesOn) {
+  const pid_t here = getpid();
+  ProcessMap map(
+      5, 3,
+      [here](std::size_t i) {
+        errno = 0;
+        const int nice = getpriority(PRIO_PROCESS, 0);
+        return std::vector<double>{static_cast<double>(i), getpid() != here ? 1.0 : 0.0,
+                                   errno == 0 ? nice : -100.0};
+      },
+      1, 19);
+  double caller = 0;
+  for (int i = 1; i <= 1000; ++i) caller += 1.0 / i;  // the caller's own work, meanwhile
+  const auto out = map.get();
+  EXPECT_GT(caller, 7.0);
+  ASSERT_EQ(out.size(), 5u);
+  for (std::size_t i = 0; i < 5; ++i) {
+    EXPECT_EQ(out[i][0], static_cast<double>(i));
+    EXPECT_EQ(out[i][1], 1.0) << "item " << i << " ran in the caller";
+    EXPECT_EQ(out[i][2], 19.0) << "item " << i;
+  }
+}
+
+// A map dropped before get() kills and reaps its children: none outlives it.
+TEST(ProcessMap, DroppedUnwaitedItKillsItsChildren) {
+  auto* pid = static_cast<std::atomic<int>*>(
+      mmap(nullptr, sizeof(std::atomic<int>), PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0));
+  ASSERT_NE(pid, MAP_FAILED);
+  new (pid) std::atomic<int>(0);
+  {
+    ProcessMap map(
+        1, 1,
+        [pid](std::size_t) {
+          pid->store(getpid());
+          pause();  // until killed
+          return std::vector<double>{0.0};
+        },
+        1);
+    while (pid->load() == 0) usleep(1000);
+  }
+  EXPECT_EQ(kill(pid->load(), 0), -1);
+  EXPECT_EQ(errno, ESRCH);
+  munmap(pid, sizeof(std::atomic<int>));
 }
 
 }  // namespace
