@@ -10,6 +10,7 @@
 #include "app/command_line.hpp"
 #include "app/commands.hpp"
 #include "app/common.hpp"
+#include "skinfem/fem/blas_threads.hpp"
 #include "skinfem/mesh/surface.hpp"
 #include "skinfem/pipeline/progress.hpp"
 #include "skinfem/pipeline/resources.hpp"
@@ -97,6 +98,7 @@ const std::map<std::string, Handler>& handlers() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  skinfem::blas_threads_sleep_when_idle();
   skinfem::pipeline::set_progress_sink(skinfem::app::progress);
   CLI::App cli{"skinfem: FE verification toolkit for biomimetic tactile sensors (units: mm, N, MPa)"};
   cli.require_subcommand(1);
