@@ -349,10 +349,8 @@ def _fig2_static_sliding(d):
 
 
 def fig_varsigma(d, comp):
-    path = os.path.join(d, "crosscheck/defect.csv")
     col = f"varsigma_{comp}_kPa"
-    t = read_csv(path, {"case": one_of(*CASES), "variant": text, "u_mm": number, "sensor": sensor_number,
-                        "varsigma_z_kPa": number, "varsigma_x_kPa": number})
+    t = defect_table(d)
     r = read_readings(d)
     xpos = {}
     for s, xs in zip(r["sensor"].tolist(), r["x_mm"].tolist()):
@@ -544,6 +542,17 @@ def pareto(d):
 
 
 _BUDGET_TABLES = {}
+_DEFECT_TABLES = {}
+
+
+def defect_table(d):
+    """crosscheck/defect.csv, read once for figs. 3 and 4 and the budget figures (main() reads it before the
+    workers fork, which then share it)."""
+    if d not in _DEFECT_TABLES:
+        _DEFECT_TABLES[d] = read_csv(os.path.join(d, "crosscheck/defect.csv"),
+                                     {"case": one_of(*CASES), "variant": text, "u_mm": number,
+                                      "sensor": sensor_number, "varsigma_z_kPa": number, "varsigma_x_kPa": number})
+    return _DEFECT_TABLES[d]
 
 
 def budget_tables(d):
@@ -554,9 +563,7 @@ def budget_tables(d):
             read_csv(os.path.join(d, "crosscheck/hole_budget_signals.csv"),
                      {"hypothesis": text, "case": one_of(*CASES), "u_mm": number, "sensor": sensor_number,
                       "varsigma_z_kPa": number, "varsigma_x_kPa": number}),
-            read_csv(os.path.join(d, "crosscheck/defect.csv"),
-                     {"case": one_of(*CASES), "variant": text, "u_mm": number, "sensor": sensor_number,
-                      "varsigma_z_kPa": number, "varsigma_x_kPa": number}))
+            defect_table(d))
     return _BUDGET_TABLES[d]
 
 
@@ -719,12 +726,15 @@ def main(argv):
         if name.endswith(".png") and (selection is None or name in chosen):
             os.remove(os.path.join(out, name))
     budget = [f for f in _FIGURES if f[0].startswith("budget_")]
-    if budget and all(os.path.isfile(os.path.join(d, f)) for f in budget[0][1]):
-        try:
+    signals = any("crosscheck/defect.csv" in f[1] for f in _FIGURES)
+    try:
+        if budget and all(os.path.isfile(os.path.join(d, f)) for f in budget[0][1]):
             budget_tables(d)
-        except InputError as e:
-            print(f"figures: error: {e}", file=sys.stderr)
-            return 2
+        elif signals and os.path.isfile(os.path.join(d, "crosscheck/defect.csv")):
+            defect_table(d)
+    except InputError as e:
+        print(f"figures: error: {e}", file=sys.stderr)
+        return 2
     # Each figure is independent: drawn on the machine's cores in forked workers, reported in list order.
     workers = min(len(os.sched_getaffinity(0)), len(_FIGURES))
     if workers > 1:
