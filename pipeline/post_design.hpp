@@ -32,7 +32,7 @@ struct PostDesign {
   std::vector<SensorDesign> sweep;  // every (diameter, height) of the sweep, diameters outer
   double sweep_scale = 0;           // the sweep's mesh scale (MeridianSizes::for_thickness)
   int dofs = 0;                     // the scene's post at scale 1, both modes
-  double seconds = 0;               // the designs' own, summed (their work, however many processes ran it)
+  double seconds = 0;               // the designs' CPU seconds, summed (however many processes ran them)
 };
 
 // Why the scene's skin has no meridian to compare on (empty: it has one).
