@@ -86,6 +86,17 @@ struct Shared {
 };
 constexpr std::size_t kMessage = 512;
 enum : int { kPending = 0, kDone = 1, kThrew = 2 };
+
+// Every item in order on this thread.
+std::vector<std::vector<double>> map_here(std::size_t n, std::size_t width,
+                                          const std::function<std::vector<double>(std::size_t)>& f) {
+  std::vector<std::vector<double>> out(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    out[i] = f(i);
+    if (out[i].size() != width) throw std::logic_error("map_in_processes: an item returned the wrong width");
+  }
+  return out;
+}
 }  // namespace
 
 ProcessMap::ProcessMap(std::size_t n, std::size_t width, std::function<std::vector<double>(std::size_t)> f,
@@ -93,18 +104,19 @@ ProcessMap::ProcessMap(std::size_t n, std::size_t width, std::function<std::vect
     : n_(n), width_(width), f_(std::move(f)) {
   workers = static_cast<int>(std::min<std::size_t>(n, static_cast<std::size_t>(std::max(1, workers))));
   if (n == 0) return;
-  static_assert(std::atomic<long>::is_always_lock_free,
-                "a counter shared between processes must be lock-free");
+  static_assert(std::atomic<long>::is_always_lock_free && std::atomic<int>::is_always_lock_free,
+                "a counter and flags shared between processes must be lock-free");
   status_at_ = sizeof(Shared), message_at_ = status_at_ + n * sizeof(int);
   values_at_ = (message_at_ + n * kMessage + 7) / 8 * 8, bytes_ = values_at_ + n * width * sizeof(double);
   void* map = mmap(nullptr, bytes_, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
   if (map == MAP_FAILED) throw std::runtime_error("map_in_processes: cannot map shared memory");
   map_ = static_cast<char*>(map);
   auto* shared = new (map_) Shared{{0}};
-  auto* status = reinterpret_cast<int*>(map_ + status_at_);
+  auto* status = reinterpret_cast<std::atomic<int>*>(map_ + status_at_);
   char* messages = map_ + message_at_;
   auto* values = reinterpret_cast<double*>(map_ + values_at_);
   const pid_t parent = getpid();
+  help_ = nice > 0;
   for (int w = 0; w < workers; ++w) {
     const pid_t pid = fork();
     if (pid < 0) break;  // the children started take every item
@@ -121,10 +133,10 @@ ProcessMap::ProcessMap(std::size_t n, std::size_t width, std::function<std::vect
             if (v.size() != width)
               throw std::logic_error("map_in_processes: an item returned the wrong width");
             std::memcpy(values + i * width, v.data(), width * sizeof(double));
-            status[i] = kDone;
+            status[i].store(kDone, std::memory_order_release);
           } catch (const std::exception& e) {
             std::strncpy(messages + i * kMessage, e.what(), kMessage - 1);
-            status[i] = kThrew;
+            status[i].store(kThrew, std::memory_order_release);
           }
         }
       } catch (...) {
@@ -157,25 +169,46 @@ std::string ProcessMap::reap() {
 }
 
 std::vector<std::vector<double>> ProcessMap::get() {
+  if (children_.empty()) return map_here(n_, width_, f_);  // none could start (or no item): done here
   std::vector<std::vector<double>> out(n_);
-  if (n_ == 0) return out;
-  if (children_.empty()) {  // no process could start: the work is done here
-    for (std::size_t i = 0; i < n_; ++i) {
-      out[i] = f_(i);
-      if (out[i].size() != width_)
-        throw std::logic_error("map_in_processes: an item returned the wrong width");
-    }
-    return out;
+  std::vector<std::string> failed_here(n_);
+  auto* status = reinterpret_cast<std::atomic<int>*>(map_ + status_at_);
+  std::string ended;
+  if (help_) {
+    // Low-priority children may wait long for a core on a busy machine: the items none has taken, then
+    // those none has finished, are computed here too, and the children go. One item's numbers do not depend
+    // on where it ran.
+    const auto here = [&](std::size_t i) {
+      try {
+        out[i] = f_(i);
+        if (out[i].size() != width_)
+          throw std::logic_error("map_in_processes: an item returned the wrong width");
+      } catch (const std::exception& e) {
+        out[i].clear();
+        failed_here[i] = e.what();
+      }
+    };
+    auto* shared = reinterpret_cast<Shared*>(map_);
+    for (long i; (i = shared->next.fetch_add(1)) < static_cast<long>(n_);) here(static_cast<std::size_t>(i));
+    for (std::size_t i = 0; i < n_; ++i)
+      if (status[i].load(std::memory_order_acquire) == kPending) here(i);
+    for (const pid_t pid : children_) kill(pid, SIGKILL);
+    reap();  // killed by us: not an error
+  } else {
+    ended = reap();
   }
-  const std::string ended = reap();
-  const auto* status = reinterpret_cast<const int*>(map_ + status_at_);
   const char* messages = map_ + message_at_;
   const auto* values = reinterpret_cast<const double*>(map_ + values_at_);
   std::string error;
   for (std::size_t i = 0; i < n_ && error.empty(); ++i) {
-    if (status[i] == kThrew)
+    const int st = status[i].load(std::memory_order_acquire);
+    if (!failed_here[i].empty())
+      error = failed_here[i];
+    else if (!out[i].empty())
+      continue;  // computed here
+    else if (st == kThrew)
       error = std::string(messages + i * kMessage);
-    else if (status[i] != kDone)
+    else if (st != kDone)
       error = ended.empty() ? "a worker process ended before its item " + std::to_string(i) : ended;
     else
       out[i].assign(values + i * width_, values + (i + 1) * width_);
@@ -187,15 +220,7 @@ std::vector<std::vector<double>> ProcessMap::get() {
 std::vector<std::vector<double>> map_in_processes(std::size_t n, std::size_t width,
                                                   const std::function<std::vector<double>(std::size_t)>& f) {
   const std::size_t workers = std::min<std::size_t>(n, static_cast<std::size_t>(worker_threads()));
-  if (workers <= 1) {
-    std::vector<std::vector<double>> out(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      out[i] = f(i);
-      if (out[i].size() != width)
-        throw std::logic_error("map_in_processes: an item returned the wrong width");
-    }
-    return out;
-  }
+  if (workers <= 1) return map_here(n, width, f);
   return ProcessMap(n, width, f, static_cast<int>(workers)).get();
 }
 

@@ -44,9 +44,11 @@ std::vector<std::vector<double>> map_in_processes(std::size_t n, std::size_t wid
 // The same work started now in `workers` child processes (at least one, even for one item) and waited for
 // by get(), while the caller goes on: for work beside this process's own (the report's post design beside
 // its chain). A `nice` above 0 lowers the children's priority by it (19: they take what the caller's threads
-// leave idle). The children are forked here: make this call where no other thread of ours is inside the
-// BLAS or MUMPS, and set what the children need (their BLAS's threads) inside f, which runs in them only
-// (here only if no process could start, at get()). A map not waited for kills its children when it goes.
+// leave idle), and get() then computes here, at the caller's priority, every item no child has finished (a
+// busy machine's low-priority children may wait long for a core; an item's numbers must not depend on where
+// it runs). The children are forked here: make this call where no other thread of ours is inside the BLAS or
+// MUMPS, and set what an item needs (its BLAS's threads) inside f. f runs here only in get(): when no process
+// could start, or with a nice. A map not waited for kills its children when it goes.
 class ProcessMap {
  public:
   ProcessMap(std::size_t n, std::size_t width, std::function<std::vector<double>(std::size_t)> f, int workers,
@@ -65,6 +67,7 @@ class ProcessMap {
   char* map_ = nullptr;  // the shared memory: a Shared, then statuses, messages and values
   std::size_t status_at_ = 0, message_at_ = 0, values_at_ = 0, bytes_ = 0;
   std::vector<int> children_;  // pids
+  bool help_ = false;          // get() computes what the children have not
 };
 
 }  // namespace skinfem

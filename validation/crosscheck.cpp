@@ -153,12 +153,16 @@ Crosscheck crosscheck(const CrosscheckInput& in) {
                  ? "the FE contact at each hole position, the hole as its bulge (contact/holes/dimple.hpp)"
                  : "a full FE contact solve per hole position, the hole cutting the hats",
              [&](int c) { return sweeps[c].varsigma; });
+  // Every frame's tractions sit on the zone's quadrature points: the kernel is evaluated there once.
+  const FeConvolution k_paper_on_zone(zone, *in.mesh, k_paper, in.sensors);
   add_signal("green_k_paper", "each position's FE tractions, Green rescaled by the paper's k", [&](int c) {
-    const Eigen::VectorXd base = convolve(tractions(c, sweeps[c].baseline), k_paper, in.sensors);
+    const contact::ContactResult& b = sweeps[c].baseline;
+    const Eigen::VectorXd base = k_paper_on_zone(b.lambda, out.ratio[c], b.shear);
     Eigen::MatrixXd s(n, 2 * ns);
     // Each position's row alone: on the machine's cores.
     for_each_index(n, [&](std::size_t i) {
-      s.row(i) = (convolve(tractions(c, frames[c][i]), k_paper, in.sensors) - base).transpose();
+      const contact::ContactResult& r = frames[c][i];
+      s.row(i) = (k_paper_on_zone(r.lambda, out.ratio[c], r.shear) - base).transpose();
     });
     return s;
   });

@@ -101,17 +101,36 @@ Tractions layer_hertz_tractions(const contact::LayerHertzResult& layer, const Ve
                                 ratio, shear);
 }
 
+namespace {
+// The nodal pressure λ and traction ratio·λ + shear of the zone's multipliers, 0 elsewhere.
+std::pair<std::vector<double>, std::vector<double>> zone_nodal_tractions(const contact::MortarZone& zone,
+                                                                         const TetMesh& mesh,
+                                                                         const Eigen::VectorXd& lambda,
+                                                                         double ratio,
+                                                                         const Eigen::VectorXd& shear) {
+  std::pair<std::vector<double>, std::vector<double>> v{std::vector<double>(mesh.num_nodes(), 0.0),
+                                                        std::vector<double>(mesh.num_nodes(), 0.0)};
+  for (int i = 0; i < zone.size(); ++i) {
+    v.first[zone.vertices[i]] = lambda[i];
+    v.second[zone.vertices[i]] = ratio * lambda[i] + (shear.size() ? shear[i] : 0.0);
+  }
+  return v;
+}
+
+// Linear in the face's corners (the multipliers' shape functions).
+double on_face(const TetMesh& mesh, const std::vector<double>& v, int f, double s, double t) {
+  return (1 - s - t) * v[mesh.faces(f, 0)] + s * v[mesh.faces(f, 1)] + t * v[mesh.faces(f, 2)];
+}
+}  // namespace
+
 Tractions fe_tractions(const contact::MortarZone& zone, const TetMesh& mesh, const Eigen::VectorXd& lambda,
                        double ratio, const Eigen::VectorXd& shear) {
   Tractions t;
-  auto nodal = std::make_shared<std::vector<double>>(mesh.num_nodes(), 0.0);
-  auto nodal_t = std::make_shared<std::vector<double>>(mesh.num_nodes(), 0.0);
-  for (int i = 0; i < zone.size(); ++i) {
-    (*nodal)[zone.vertices[i]] = lambda[i];
-    (*nodal_t)[zone.vertices[i]] = ratio * lambda[i] + (shear.size() ? shear[i] : 0.0);
-  }
+  auto [p_nodal, t_nodal] = zone_nodal_tractions(zone, mesh, lambda, ratio, shear);
+  auto nodal = std::make_shared<std::vector<double>>(std::move(p_nodal));
+  auto nodal_t = std::make_shared<std::vector<double>>(std::move(t_nodal));
   const auto interpolate = [&mesh](const std::vector<double>& v, int f, double s, double tt) {
-    return (1 - s - tt) * v[mesh.faces(f, 0)] + s * v[mesh.faces(f, 1)] + tt * v[mesh.faces(f, 2)];
+    return on_face(mesh, v, f, s, tt);
   };
   for (int f : zone.faces)
     for (const FacePoint& q : face_quadrature(mesh, f)) {
@@ -141,6 +160,45 @@ Eigen::VectorXd convolve(const Tractions& t, const GreenKernel& g, const Sensors
       const green::GreenSample G = g(k, p[0] - sensors.positions[k][0], p[1] - sensors.positions[k][1]);
       out[2 * k] += p[2] * G.zz + p[3] * G.xz;
       out[2 * k + 1] += p[2] * G.zx + p[3] * G.xx;
+    }
+  return out;
+}
+
+FeConvolution::FeConvolution(const contact::MortarZone& zone, const TetMesh& mesh, const GreenKernel& g,
+                             const Sensors& sensors)
+    : zone_(zone), mesh_(mesh), sensors_(static_cast<int>(sensors.positions.size())) {
+  std::vector<Vec2> xy;
+  for (int f : zone.faces)
+    for (const FacePoint& q : face_quadrature(mesh, f)) {
+      points_.push_back({f, q.s, q.t, q.weight_xy});
+      xy.push_back({q.x.x(), q.x.y()});
+    }
+  g_.reserve(sensors_ * points_.size());
+  for (int k = 0; k < sensors_; ++k)
+    for (const Vec2& x : xy)
+      g_.push_back(g(k, x[0] - sensors.positions[k][0], x[1] - sensors.positions[k][1]));
+}
+
+Eigen::VectorXd FeConvolution::operator()(const Eigen::VectorXd& lambda, double ratio,
+                                          const Eigen::VectorXd& shear) const {
+  const auto [nodal, nodal_t] = zone_nodal_tractions(zone_, mesh_, lambda, ratio, shear);
+  // fe_tractions's points: those where the pressure or the traction is not zero, each with its weight.
+  std::vector<std::array<double, 2>> w(points_.size());
+  std::vector<char> on(points_.size());
+  for (size_t q = 0; q < points_.size(); ++q) {
+    const Point& pt = points_[q];
+    const double p = on_face(mesh_, nodal, pt.face, pt.s, pt.t),
+                 tt = on_face(mesh_, nodal_t, pt.face, pt.s, pt.t);
+    on[q] = p != 0 || tt != 0;
+    w[q] = {pt.weight_xy * p, pt.weight_xy * tt};
+  }
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(2 * sensors_);
+  for (int k = 0; k < sensors_; ++k)
+    for (size_t q = 0; q < points_.size(); ++q) {
+      if (!on[q]) continue;
+      const green::GreenSample& G = g_[k * points_.size() + q];
+      out[2 * k] += w[q][0] * G.zz + w[q][1] * G.xz;
+      out[2 * k + 1] += w[q][0] * G.zx + w[q][1] * G.xx;
     }
   return out;
 }

@@ -65,6 +65,28 @@ Tractions fe_tractions(const contact::MortarZone& zone, const TetMesh& mesh, con
 
 // σ_z and σ_x of every sensor (2·sensors, MPa) by the convolution of eq. (1).
 Eigen::VectorXd convolve(const Tractions& t, const GreenKernel& g, const Sensors& sensors);
+
+// convolve(fe_tractions(zone, mesh, λ, ratio, shear), g, sensors) for many λ on one zone (a hole sweep's
+// frames): the kernel evaluated once at the zone's quadrature points, then the same sums in the same order,
+// so the same numbers to the last bit. zone and mesh must outlive it.
+class FeConvolution {
+ public:
+  FeConvolution(const contact::MortarZone& zone, const TetMesh& mesh, const GreenKernel& g,
+                const Sensors& sensors);
+  Eigen::VectorXd operator()(const Eigen::VectorXd& lambda, double ratio,
+                             const Eigen::VectorXd& shear = {}) const;
+
+ private:
+  struct Point {
+    int face;
+    double s, t, weight_xy;
+  };
+  const contact::MortarZone& zone_;
+  const TetMesh& mesh_;
+  int sensors_ = 0;
+  std::vector<Point> points_;          // fe_tractions's, in its order
+  std::vector<green::GreenSample> g_;  // sensors × points, sensor-major
+};
 // ς of every sensor for the hole centred at each of `centers` (positions × 2·sensors, MPa), eqs. (2)–(3).
 Eigen::MatrixXd first_order_hole(const Tractions& t, const GreenKernel& g, const Sensors& sensors,
                                  const std::vector<Vec2>& centers, double hole_area);

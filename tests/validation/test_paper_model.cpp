@@ -1,9 +1,10 @@
 // The paper's convolution model (validation/paper_model.hpp) against independent values: the exact layer's
-// own disc-load tensor, and a full FE solve of a traction patch.
+// own disc-load tensor, and a full FE solve of a traction patch; its cached form against the plain one.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "skinfem/contact/mortar.hpp"
 #include "skinfem/fem/base_traction.hpp"
 #include "skinfem/mesh/build.hpp"
 #include "skinfem/validation/paper_model.hpp"
@@ -89,6 +90,37 @@ TEST(PaperModel, FeKernelConvolutionEqualsAFullSolveForAPatch) {
     const SensorReading v = base.disc_mean(s.sensors.positions[k][0], s.sensors.positions[k][1], 0.2);
     EXPECT_NEAR(conv[2 * k], v.sigma_z, 1e-5 * peak) << "sensor " << k;
     EXPECT_NEAR(conv[2 * k + 1], v.sigma_x, 1e-5 * peak) << "sensor " << k;
+  }
+}
+
+// A sweep's frames convolved through FeConvolution (the kernel evaluated once per quadrature point) are
+// convolve(fe_tractions(...)) to the last bit: the same points, weights and sums in the same order, whether
+// the pressure is zero on some faces, with or without a nodal shear.
+TEST(PaperModel, FeConvolutionIsTheConvolutionOfFeTractionsToTheLastBit) {
+  Scene s;
+  s.geometry.kind = GeometryKind::flat;
+  s.geometry.flat = {3.04, 7.0};
+  s.sensors = line_of_sensors();
+  s.mesh.h_min = 0.4;
+  s.mesh.h_max = 2.0;
+  s.mesh.growth = 1.7;
+  const TetMesh mesh = build_mesh(s);
+  const contact::MortarZone zone = contact::mortar_zone(mesh, {0.3, -0.2}, 2.2);
+  ASSERT_GT(zone.size(), 10);
+  const GreenKernel k = rescaled_halfspace_kernel(std::vector<double>(5, 3.04), 1.48);
+  const FeConvolution on_zone(zone, mesh, k, s.sensors);
+  Eigen::VectorXd lambda(zone.size()), shear(zone.size());
+  for (int i = 0; i < zone.size(); ++i) {
+    lambda[i] = i % 4 == 0 ? 0.0 : 0.01 * (1 + std::sin(1.7 * i));  // zeros: points fe_tractions skips
+    shear[i] = 0.003 * std::cos(0.9 * i);
+  }
+  for (const Eigen::VectorXd& t : {Eigen::VectorXd(), shear}) {
+    const Eigen::VectorXd a = on_zone(lambda, 0.4, t),
+                          b = convolve(fe_tractions(zone, mesh, lambda, 0.4, t), k, s.sensors);
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_GT(b.cwiseAbs().maxCoeff(), 0.0);
+    for (int j = 0; j < a.size(); ++j)
+      EXPECT_EQ(a[j], b[j]) << "reading " << j << (t.size() ? " with shear" : "");
   }
 }
 
