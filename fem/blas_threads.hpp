@@ -21,8 +21,8 @@ class BlasThreads {
 
 // OpenBLAS's idle threads spin (sched_yield) for about 2^28 cycles after every threaded call before they
 // sleep. Beside our other threads and processes on a machine's few cores (the report's kfit, figures and post
-// design) that spinning takes their time: on the default report, 2 cores, 3.5 s of its 33. This makes them
-// sleep at once (OPENBLAS_THREAD_TIMEOUT at its least, 4: 2^4 cycles) unless the environment sets the
+// design) that spinning takes their time: on the default report, 2 cores, 2-3.5 s of about 30. This makes
+// them sleep at once (OPENBLAS_THREAD_TIMEOUT at its least, 4: 2^4 cycles) unless the environment sets the
 // timeout itself; the work each thread does, and so every number, is unchanged. Call it once, before any
 // thread of ours calls the BLAS; nothing where the BLAS is not OpenBLAS.
 void blas_threads_sleep_when_idle();

@@ -46,8 +46,9 @@ PostDesign post_design(const Scene& scene, const std::vector<double>& diameters,
 
 // post_design's work, computed from construction on by `processes` child processes at the lowest priority
 // (scene/parallel.hpp's ProcessMap, nice 19: they take the cores the caller leaves idle) while the caller
-// goes on with its own; or (processes 0) by finish() on the machine's cores. The numbers are the same either
-// way: each design runs alone with one BLAS thread.
+// goes on with its own, finish() computing here what they have not finished; or (processes 0) by finish()
+// on the machine's cores. The numbers are the same either way: each design runs alone with one BLAS thread.
+// Call finish() where no other thread of ours is inside the BLAS or MUMPS.
 class PostDesignRun {
  public:
   PostDesignRun(const Scene& scene, const std::vector<double>& diameters, const std::vector<double>& heights,
