@@ -87,14 +87,19 @@ struct Shared {
 constexpr std::size_t kMessage = 512;
 enum : int { kPending = 0, kDone = 1, kThrew = 2 };
 
+// Item i's doubles, checked for their number.
+std::vector<double> item(const std::function<std::vector<double>(std::size_t)>& f, std::size_t i,
+                         std::size_t width) {
+  std::vector<double> v = f(i);
+  if (v.size() != width) throw std::logic_error("map_in_processes: an item returned the wrong width");
+  return v;
+}
+
 // Every item in order on this thread.
 std::vector<std::vector<double>> map_here(std::size_t n, std::size_t width,
                                           const std::function<std::vector<double>(std::size_t)>& f) {
   std::vector<std::vector<double>> out(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    out[i] = f(i);
-    if (out[i].size() != width) throw std::logic_error("map_in_processes: an item returned the wrong width");
-  }
+  for (std::size_t i = 0; i < n; ++i) out[i] = item(f, i, width);
   return out;
 }
 }  // namespace
@@ -129,9 +134,7 @@ ProcessMap::ProcessMap(std::size_t n, std::size_t width, std::function<std::vect
       try {
         for (long i; (i = shared->next.fetch_add(1)) < static_cast<long>(n);) {
           try {
-            const std::vector<double> v = f_(static_cast<std::size_t>(i));
-            if (v.size() != width)
-              throw std::logic_error("map_in_processes: an item returned the wrong width");
+            const std::vector<double> v = item(f_, static_cast<std::size_t>(i), width);
             std::memcpy(values + i * width, v.data(), width * sizeof(double));
             status[i].store(kDone, std::memory_order_release);
           } catch (const std::exception& e) {
@@ -180,9 +183,7 @@ std::vector<std::vector<double>> ProcessMap::get() {
     // on where it ran.
     const auto here = [&](std::size_t i) {
       try {
-        out[i] = f_(i);
-        if (out[i].size() != width_)
-          throw std::logic_error("map_in_processes: an item returned the wrong width");
+        out[i] = item(f_, i, width_);
       } catch (const std::exception& e) {
         out[i].clear();
         failed_here[i] = e.what();

@@ -543,6 +543,7 @@ def pareto(d):
 
 _BUDGET_TABLES = {}
 _DEFECT_TABLES = {}
+_BUDGET_AXES = {}  # per process: budget_axes's figures, by number of sensors
 
 
 def defect_table(d):
@@ -728,10 +729,10 @@ def main(argv):
     budget = [f for f in _FIGURES if f[0].startswith("budget_")]
     signals = any("crosscheck/defect.csv" in f[1] for f in _FIGURES)
     try:
+        if signals and os.path.isfile(os.path.join(d, "crosscheck/defect.csv")):
+            defect_table(d)
         if budget and all(os.path.isfile(os.path.join(d, f)) for f in budget[0][1]):
             budget_tables(d)
-        elif signals and os.path.isfile(os.path.join(d, "crosscheck/defect.csv")):
-            defect_table(d)
     except InputError as e:
         print(f"figures: error: {e}", file=sys.stderr)
         return 2
@@ -757,7 +758,6 @@ def main(argv):
 
 
 _FIGURES, _DIR = [], ""
-_BUDGET_AXES = {}  # per process: budget_axes's figures, by number of sensors
 
 
 def draw_figure(i):

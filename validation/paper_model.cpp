@@ -129,22 +129,19 @@ Tractions fe_tractions(const contact::MortarZone& zone, const TetMesh& mesh, con
   auto [p_nodal, t_nodal] = zone_nodal_tractions(zone, mesh, lambda, ratio, shear);
   auto nodal = std::make_shared<std::vector<double>>(std::move(p_nodal));
   auto nodal_t = std::make_shared<std::vector<double>>(std::move(t_nodal));
-  const auto interpolate = [&mesh](const std::vector<double>& v, int f, double s, double tt) {
-    return on_face(mesh, v, f, s, tt);
-  };
   for (int f : zone.faces)
     for (const FacePoint& q : face_quadrature(mesh, f)) {
-      const double p = interpolate(*nodal, f, q.s, q.t), pt = interpolate(*nodal_t, f, q.s, q.t);
+      const double p = on_face(mesh, *nodal, f, q.s, q.t), pt = on_face(mesh, *nodal_t, f, q.s, q.t);
       if (p != 0 || pt != 0) t.points.push_back({q.x.x(), q.x.y(), q.weight_xy * p, q.weight_xy * pt});
     }
   // The face index is built on the first pointwise query only: sweeps convolve many of these and never ask.
   auto top = std::make_shared<std::unique_ptr<PlanarFaceIndex>>();
-  const auto pointwise = [top, &mesh, interpolate](std::shared_ptr<std::vector<double>> v) {
-    return [top, &mesh, interpolate, v](double x, double y) {
+  const auto pointwise = [top, &mesh](std::shared_ptr<std::vector<double>> v) {
+    return [top, &mesh, v](double x, double y) {
       if (!*top) *top = std::make_unique<PlanarFaceIndex>(mesh, kTop);
       double s = 0, tt = 0;
       const int f = (*top)->find(x, y, s, tt);
-      return f < 0 ? 0.0 : interpolate(*v, f, s, tt);
+      return f < 0 ? 0.0 : on_face(mesh, *v, f, s, tt);
     };
   };
   t.pressure = pointwise(nodal);
