@@ -165,6 +165,8 @@ Eigen::MatrixXd ContactSolver::frictionless_matrix() const {
 }
 
 ContactLcp& ContactSolver::lcp(double ratio) const {
+  // find() first: an existing problem is only read (solves on several threads, contact/holes/sweep.cpp).
+  if (const auto it = lcps_.find(ratio); it != lcps_.end()) return *it->second;
   auto& slot = lcps_[ratio];
   if (!slot) {
     Eigen::MatrixXd M = frictionless_matrix();

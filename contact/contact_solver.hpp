@@ -105,7 +105,9 @@ class ContactSolver {
   ContactResult solve(FrictionMode mode, const CutProblem& cp, const std::vector<int>& warm = {}) const;
   // A small hole as a bulge (contact/holes/dimple.hpp): the hole-free problem with the dimple's gaps opened
   // on its contact set (solved on the stored reference, set_reference), the shear-strength part cut by
-  // `covered`. Throws std::invalid_argument under an interface that is not hard.
+  // `covered`. Throws std::invalid_argument under an interface that is not hard. Several threads may call
+  // it at once once this mode's problem, τ0 and touched set are built (a solve(mode), shear(mode) and,
+  // where that is not 0, touched(mode) before them), and set_reference is not called meanwhile.
   ContactResult solve(FrictionMode mode, const HoleDimple& dimple) const;
   // From now on solves of `mode` reuse the factorized principal system of this active set (sweeps).
   void set_reference(FrictionMode mode, const std::vector<int>& active) const;

@@ -332,11 +332,39 @@ Eigen::MatrixXd MixedSolver::solve_block(const Eigen::MatrixXd& F, const Eigen::
   for (int j = 0; j < k; ++j)  // column by column: the blocks are column-major and large
     for (int i = 0; i < s.nf; ++i) b(i, j) = F(s.free_dofs[i], j);
   if (U_fixed.size()) {
-    const Eigen::MatrixXd U = held();
-    const Eigen::MatrixXd AU = s.M.A * U, BU = s.M.B * U;
-    for (int i = 0; i < s.nf; ++i) b.row(i) -= AU.row(s.free_dofs[i]);
+    // A U and B U over the held columns whose values are not all 0 (a few hundred of the 3N): the sums
+    // Eigen's sparse products would form, term by term in the same order, without their 3N × k blocks.
+    std::vector<int> a_slot(n3, -1), b_slot(s.M.B.rows(), -1);
+    std::vector<int> a_rows, b_rows;
+    std::vector<int> columns;
+    for (int c = 0; c < n3; ++c) {
+      if (s.free_index[c] >= 0 || (U_fixed.row(c).array() == 0).all()) continue;
+      columns.push_back(c);
+      for (SparseMatrixd::InnerIterator it(s.M.A, c); it; ++it)
+        if (a_slot[it.row()] < 0)
+          a_slot[it.row()] = static_cast<int>(a_rows.size()), a_rows.push_back(it.row());
+      for (SparseMatrixd::InnerIterator it(s.M.B, c); it; ++it)
+        if (b_slot[it.row()] < 0)
+          b_slot[it.row()] = static_cast<int>(b_rows.size()), b_rows.push_back(it.row());
+    }
+    Eigen::MatrixXd AU = Eigen::MatrixXd::Zero(a_rows.size(), k),
+                    BU = Eigen::MatrixXd::Zero(b_rows.size(), k);
+    for (const int c : columns) {
+      for (SparseMatrixd::InnerIterator it(s.M.A, c); it; ++it)
+        for (int j = 0; j < k; ++j) AU(a_slot[it.row()], j) += it.value() * U_fixed(c, j);
+      for (SparseMatrixd::InnerIterator it(s.M.B, c); it; ++it)
+        for (int j = 0; j < k; ++j) BU(b_slot[it.row()], j) += it.value() * U_fixed(c, j);
+    }
+    for (size_t r = 0; r < a_rows.size(); ++r)
+      if (const int f = s.free_index[a_rows[r]]; f >= 0) b.row(f) -= AU.row(r);
+    // Every pressure row set as −σ (B U) sets it: −σ · 0 = −0 in the rows no held column reaches.
     for (size_t q = 0; q < s.p_index.size(); ++q)
-      if (s.p_index[q] >= 0) b.row(s.nf + s.p_index[q]) = -s.sigma * BU.row(q);
+      if (s.p_index[q] >= 0) {
+        if (b_slot[q] >= 0)
+          b.row(s.nf + s.p_index[q]) = -s.sigma * BU.row(b_slot[q]);
+        else
+          b.row(s.nf + s.p_index[q]).setConstant(-s.sigma * 0.0);
+      }
   }
   // The residual of every column would cost as much as the solve itself (a sparse product per column);
   // check one combination instead, Σ w_j x_j with w_j = c_j/‖b_j‖, c_j ∈ {1, 2, 3}: if every column meets

@@ -15,6 +15,7 @@
 #include <cstring>
 #include <exception>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -53,6 +54,9 @@ void for_each_index(std::size_t n, const std::function<void(std::size_t)>& f, bo
   std::size_t failed = n;  // the lowest index that threw
   std::exception_ptr error;
   const auto work = [&](bool reports) {
+    // An item's own loops run on its thread: one loop's threads are the machine's cores already.
+    std::optional<ThreadCap> one_each;
+    if (threads > 1) one_each.emplace(1);
     for (;;) {
       if (reports && done) done(finished.load());
       const std::size_t i = next++;

@@ -67,6 +67,18 @@ SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const H
   solver.set_reference(mode, out.baseline.active);
   const int n = sweep.positions;
   out.varsigma.resize(n, out.baseline.readings.size());
+  // A bulge's positions are independent (no warm start: each solves on the stored reference): on the
+  // machine's cores, each in its own slot, once the solver's lazily built parts for this mode exist.
+  std::vector<ContactResult> bulged;
+  if (sweep.model == HoleModel::bulge) {
+    if (solver.shear(mode) != 0) solver.touched(mode);
+    bulged.resize(n);
+    for_each_index(n, [&](std::size_t i) {
+      const Vec2 c = sweep_center(sweep, static_cast<int>(i));
+      const Hole at{material_point ? material_point(c) : c, sweep.hole_diameter};
+      bulged[i] = solver.solve(mode, (*dimples)(at, out.baseline.lambda));
+    });
+  }
   std::vector<int> warm = out.baseline.active;
   for (int i = 0; i < n; ++i) {
     const Vec2 c = sweep_center(sweep, i);
@@ -74,8 +86,7 @@ SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const H
     const std::vector<Hole> hole{Hole{c, sweep.hole_diameter}};
     ContactResult r;
     if (sweep.model == HoleModel::bulge) {
-      const Hole at{material_point ? material_point(c) : c, sweep.hole_diameter};
-      r = solver.solve(mode, (*dimples)(at, out.baseline.lambda));
+      r = std::move(bulged[i]);
     } else if (cuts) {
       r = solver.solve(mode, cuts->at[i], warm);
     } else if (const auto& path = solver.condensed().path) {
