@@ -9,12 +9,14 @@
 #include <memory>
 
 #include "skinfem/contact/contact_solver.hpp"
+#include "skinfem/contact/holes/dimple.hpp"
 #include "skinfem/contact/holes/sweep.hpp"
 #include "skinfem/contact/layer_hertz.hpp"
 #include "skinfem/contact/layer_hertz_interface.hpp"
 #include "skinfem/contact/metrics.hpp"
 #include "skinfem/fem/base_traction.hpp"
 #include "skinfem/mesh/build.hpp"
+#include "skinfem/scene/parallel.hpp"
 
 namespace skinfem::contact {
 namespace {
@@ -342,6 +344,39 @@ TEST(ContactFe, SweepMatchesColdSolves) {
     const Eigen::VectorXd expect = r.readings - co.readings;
     EXPECT_LT((sw.varsigma.row(i).transpose() - expect).cwiseAbs().maxCoeff(),
               1e-9 * co.readings.cwiseAbs().maxCoeff());
+  }
+}
+
+// A bulge sweep solves its positions on the machine's cores (holes/sweep.cpp): its signals, frames and
+// pivot counts are those of the same sweep on one thread, to the last bit, under a shear strength too (its
+// lazily built τ0 and touched set).
+TEST(ContactFe, ABulgeSweepOnTheCoresIsItsOneThreadSweepToTheLastBit) {
+  Fixture& f = layer();
+  HoleSweep sweep;
+  sweep.from = {-2.0, 0};
+  sweep.to = {2.0, 0};
+  sweep.positions = 9;
+  sweep.hole_diameter = 0.6;
+  sweep.model = HoleModel::bulge;
+  for (const FrictionLaw law : {FrictionLaw::coulomb, FrictionLaw::shear_strength}) {
+    ContactLoad load = *f.scene.contact;
+    load.law = law;
+    load.mu = 0.5;
+    const auto sweep_with = [&](int threads, std::vector<Eigen::VectorXd>* lambdas) {
+      const ThreadCap cap(threads);
+      const ContactSolver solver(*f.condensed, load);
+      const HoleDimples dimples(solver, f.mesh, *f.top, f.scene.material.E, f.scene.material.nu);
+      return hole_sweep(solver, f.mesh, sweep, FrictionMode::coupled, &dimples,
+                        [&](int, const ContactResult& r) { lambdas->push_back(r.lambda); });
+    };
+    std::vector<Eigen::VectorXd> one_l, many_l;
+    const SweepResult one = sweep_with(1, &one_l), many = sweep_with(2, &many_l);
+    ASSERT_GT(one.varsigma.cwiseAbs().maxCoeff(), 0) << to_string(law);
+    EXPECT_TRUE(one.varsigma == many.varsigma) << to_string(law);
+    EXPECT_EQ(one.pivots, many.pivots) << to_string(law);
+    ASSERT_EQ(one_l.size(), many_l.size());
+    for (size_t i = 0; i < one_l.size(); ++i)
+      EXPECT_TRUE(one_l[i] == many_l[i]) << to_string(law) << " " << i;
   }
 }
 
