@@ -37,6 +37,7 @@ struct FiniteProblem {
   MixedSolver::Coupling columns;  // [a | b]: the multipliers' pressures −D_zᵀ e_j, their tractions D_tᵀ e_j
   Eigen::VectorXd gap0;
   double volume = 0;
+  MixedSolver::Reuse* factors = nullptr;  // the tangents' one analysis, handed from iterate to iterate
 
   int nc() const { return zone.size(); }
   // D u_z: the multipliers' weighted downward displacements, mm³.
@@ -81,7 +82,7 @@ std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double f
     MixedSolution dx;
     try {
       const MixedSolver solver(s.system.tangent, incompressible, P.fixed, SolverKind::direct_ldlt, 1e-9, {},
-                               &P.columns);
+                               &P.columns, P.factors);
       ++factorizations;
       const auto [zz, zt] = compliances(P, solver);
       const MixedSolution rest = solver.solve(minus_internal, {}, -s.system.constraint);
@@ -153,6 +154,8 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
     P.gap0 += load.opening;
   }
   P.volume = pressure_mass(mesh).sum();
+  MixedSolver::Reuse factors;
+  P.factors = &factors;
 
   FiniteContactResult out;
   FiniteState s;

@@ -57,6 +57,7 @@ struct MixedSolver::Impl {
   double released_flops = 0;  // the factorization's, once released
   Eigen::MatrixXd coupling_products;
   std::optional<BorderChoice> border_choice;
+  Reuse* reuse = nullptr;  // given the factorization back when the solver goes
 
   explicit Impl(const MixedMatrices& m) : M(m) {}
 
@@ -83,12 +84,17 @@ struct MixedSolver::Impl {
   }
 };
 
+MixedSolver::Reuse::Reuse() = default;
+MixedSolver::Reuse::~Reuse() = default;
+
 MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const std::vector<bool>& fixed,
                          SolverKind kind, double tolerance, const FactorProgress& progress,
-                         const Coupling* coupling)
+                         const Coupling* coupling, Reuse* reuse)
     : impl_(new Impl(matrices)), kind_(kind) {
   if (coupling && kind != SolverKind::direct_ldlt)
     throw std::invalid_argument("MixedSolver: a coupling needs the direct_ldlt solver");
+  if (reuse && kind != SolverKind::direct_ldlt)
+    throw std::invalid_argument("MixedSolver: a kept factorization needs the direct_ldlt solver");
   const auto start = std::chrono::steady_clock::now();
   Impl& s = *impl_;
   s.tolerance = tolerance;
@@ -176,6 +182,32 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
         for (SparseMatrixd::InnerIterator it(R, j); it; ++it)
           if (it.value() != 0) add(s.nf + s.np + j, static_cast<int>(it.row()), it.value());
     }
+    // The kept analysis, where this matrix has its pattern (with its border, or the plain part alone).
+    if (reuse && reuse->ldlt_) {
+      const size_t entries = reuse->border_ == 0 ? plain_entries : reuse->border_ == m ? t.value.size() : 0;
+      if (reuse->ldlt_->same_pattern(t, entries)) {
+        t.row.resize(entries);
+        t.col.resize(entries);
+        t.value.resize(entries);
+        s.ldlt = std::move(reuse->ldlt_);
+        s.border_choice = reuse->choice_;
+        m = reuse->border_;
+        s.reuse = reuse;
+        try {
+          s.ldlt->refactor(std::move(t), progress);
+        } catch (const std::runtime_error& e) {
+          throw SolverError(std::string("cannot factor the saddle-point matrix: ") + e.what());
+        }
+        if (m > 0) {
+          s.coupling_products = -s.ldlt->schur() / s.sigma;
+          if (!s.coupling_products.allFinite())
+            throw SolverError("the coupling's Schur complement is not finite");
+        }
+        factor_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return;
+      }
+      reuse->ldlt_.reset();  // another pattern: analysed afresh below, and kept instead
+    }
     try {
       if (m > 0) {
         // The plain matrix (the bordered one's leading entries) is analysed first: its PORD order, the
@@ -204,6 +236,13 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
       } else {
         s.ldlt = std::make_unique<MumpsLdlt>(s.nf + s.np, std::move(t), 0, progress, 5, false);
       }
+      if (reuse) {
+        s.ldlt->keep_pattern();
+        ++reuse->analyses_;
+        reuse->choice_ = s.border_choice;
+        reuse->border_ = m;
+        s.reuse = reuse;
+      }
       s.ldlt->factor(progress);
     } catch (const std::runtime_error& e) {
       throw SolverError(std::string("cannot factor the saddle-point matrix: ") + e.what());
@@ -217,7 +256,9 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
   factor_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-MixedSolver::~MixedSolver() = default;
+MixedSolver::~MixedSolver() {
+  if (impl_ && impl_->reuse && impl_->ldlt) impl_->reuse->ldlt_ = std::move(impl_->ldlt);
+}
 
 const Eigen::MatrixXd& MixedSolver::coupling_products() const { return impl_->coupling_products; }
 const std::optional<MixedSolver::BorderChoice>& MixedSolver::border_choice() const {

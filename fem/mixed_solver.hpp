@@ -21,6 +21,8 @@
 
 namespace skinfem {
 
+class MumpsLdlt;
+
 enum class SolverKind { schur_cg, direct_ldlt };
 const char* to_string(SolverKind kind);
 
@@ -64,14 +66,36 @@ class MixedSolver {
     bool fits() const { return memory_limit_mb <= 0 || bordered_mb <= memory_limit_mb; }
   };
 
+  // A direct factorization handed from one solver to the next of a matrix with the same pattern (the
+  // tangents of a Newton iteration: one mesh, one set of held DOFs, one coupling): the first analyses and
+  // factors, each later one factors its own values on that analysis (MUMPS's ordering and symbolic
+  // factorization, a fifth of the factor stage on the default scene's half), with the first one's border
+  // choice. A solver takes it when built and gives it back when it goes: one solver at a time. A matrix of
+  // another pattern is analysed afresh (and becomes the kept one).
+  class Reuse {
+   public:
+    Reuse();
+    ~Reuse();
+    Reuse(const Reuse&) = delete;
+    Reuse& operator=(const Reuse&) = delete;
+    int analyses() const { return analyses_; }  // fresh analyses so far
+
+   private:
+    friend class MixedSolver;
+    std::unique_ptr<MumpsLdlt> ldlt_;
+    std::optional<BorderChoice> choice_;
+    int border_ = 0;  // the kept factorization's border columns (0: the plain one)
+    int analyses_ = 0;
+  };
+
   // fixed: 3N flags, true where the displacement DOF is prescribed. Factors immediately; progress (may be
-  // empty) hears from the direct_ldlt factorization every few seconds.
+  // empty) hears from the direct_ldlt factorization every few seconds. reuse: see Reuse (direct_ldlt).
   MixedSolver(const MixedMatrices& matrices, const Lame& lame, const std::vector<bool>& fixed,
               SolverKind kind, double tolerance = 1e-10, const FactorProgress& progress = {},
-              const Coupling* coupling = nullptr);
+              const Coupling* coupling = nullptr, Reuse* reuse = nullptr);
   // It keeps a reference to the matrices, which must outlive it (a temporary does not compile).
   MixedSolver(MixedMatrices&&, const Lame&, const std::vector<bool>&, SolverKind, double = 1e-10,
-              const FactorProgress& = {}, const Coupling* = nullptr) = delete;
+              const FactorProgress& = {}, const Coupling* = nullptr, Reuse* = nullptr) = delete;
 
   // The coupling's products, m × m (empty without a coupling): G(i, j) = F.col(i) · u_j over the free DOFs,
   // u_j = solve_block(F.col(j), U_fixed.col(j)). Between two loads it is their compliance, symmetric by

@@ -33,6 +33,8 @@ struct MumpsLdlt::Impl {
   std::vector<MUMPS_INT> schur_vars;
   std::vector<MUMPS_INT> perm_in;
   Eigen::MatrixXd schur;
+  bool keep_pattern = false;
+  std::vector<MUMPS_INT> kept_irn, kept_jcn;  // keep_pattern(): the analysed pattern, 1-based
 
   void call(int job) const {
     id.job = job;
@@ -237,12 +239,52 @@ void MumpsLdlt::factor_locked(const FactorProgress& progress, double every_s) {
     s.id.listvar_schur = nullptr;
   }
   // The solve phase needs only the factors (no iterative refinement or error analysis is requested):
-  // release the matrix.
+  // release the matrix, or keep its pattern for refactor().
+  if (s.keep_pattern && s.kept_irn.empty()) {
+    s.kept_irn = std::move(s.irn);
+    s.kept_jcn = std::move(s.jcn);
+  }
   std::vector<MUMPS_INT>().swap(s.irn);
   std::vector<MUMPS_INT>().swap(s.jcn);
   std::vector<double>().swap(s.a);
   s.id.irn = s.id.jcn = nullptr;
   s.id.a = nullptr;
+}
+
+void MumpsLdlt::keep_pattern() {
+  if (impl_->factored) throw std::logic_error("MumpsLdlt: keep_pattern after the factorization");
+  impl_->keep_pattern = true;
+}
+
+bool MumpsLdlt::same_pattern(const Triplets& lower, size_t entries) const {
+  const Impl& s = *impl_;
+  const size_t nnz = s.kept_irn.size();
+  if (nnz == 0 || entries != nnz || lower.row.size() < nnz || lower.col.size() < nnz ||
+      lower.value.size() < nnz)
+    return false;
+  for (size_t k = 0; k < nnz; ++k)
+    if (lower.row[k] + 1 != s.kept_irn[k] || lower.col[k] + 1 != s.kept_jcn[k]) return false;
+  return true;
+}
+
+void MumpsLdlt::refactor(Triplets lower, const FactorProgress& progress, double every_s) {
+  std::lock_guard<std::mutex> lock(mumps_mutex);
+  Impl& s = *impl_;
+  if (!s.keep_pattern || !s.factored) throw std::logic_error("MumpsLdlt: refactor without a kept pattern");
+  if (lower.value.size() != s.kept_irn.size() || !same_pattern(lower, lower.value.size()))
+    throw std::invalid_argument("MumpsLdlt::refactor: the matrix's pattern is not the analysed one");
+  s.irn = s.kept_irn;
+  s.jcn = s.kept_jcn;
+  s.a = std::move(lower.value);
+  s.id.irn = s.irn.data();
+  s.id.jcn = s.jcn.data();
+  s.id.a = s.a.data();
+  if (s.schur_size > 0) {
+    s.id.listvar_schur = s.schur_vars.data();
+    s.id.schur = s.schur.data();
+  }
+  s.factored = false;
+  factor_locked(progress, every_s);
 }
 
 MumpsLdlt::~MumpsLdlt() {

@@ -48,6 +48,16 @@ class MumpsLdlt {
   Estimate analysis() const;
   // Throws as the constructor does (also when the estimated memory exceeds what is available).
   void factor(const FactorProgress& progress = {}, double every_s = 5);
+  // Keeps the analysed pattern after factoring (a copy of the index arrays, 8 bytes an entry), so that
+  // refactor() may factor new values on the same analysis. Call before factor().
+  void keep_pattern();
+  // The matrix's new values, factored on the analysis already done (no ordering, no symbolic factorization:
+  // a Newton iteration's tangent, whose pattern does not change). `lower` must have the analysed pattern,
+  // entry for entry (throws std::invalid_argument otherwise, or std::logic_error without keep_pattern());
+  // the factors, and a Schur complement, are then those of the new values. Throws as factor() does.
+  void refactor(Triplets lower, const FactorProgress& progress = {}, double every_s = 5);
+  // Whether the first `entries` of lower are the kept pattern, entry for entry (refactor() takes them).
+  bool same_pattern(const Triplets& lower, size_t entries) const;
   ~MumpsLdlt();
   MumpsLdlt(const MumpsLdlt&) = delete;
   MumpsLdlt& operator=(const MumpsLdlt&) = delete;

@@ -39,7 +39,7 @@ struct Converged {
 std::optional<Converged> newton(const TetMesh& mesh, double mu, const std::vector<bool>& fixed,
                                 const Eigen::VectorXd& f_full, const Eigen::VectorXd& u_fixed_full,
                                 double lambda, double force_scale, double volume, const NewtonOptions& o,
-                                State& s) {
+                                State& s, MixedSolver::Reuse& factors) {
   const Eigen::VectorXd f = lambda * f_full;
   // The prescribed values are imposed by the first iteration's increment; the state moves there through
   // the solve, not by a jump that could fold the elements next to the held DOFs.
@@ -62,7 +62,8 @@ std::optional<Converged> newton(const TetMesh& mesh, double mu, const std::vecto
     if (it == o.max_iterations) return std::nullopt;
     MixedSolution dx;
     try {
-      const MixedSolver solver(r->system.tangent, incompressible, fixed, SolverKind::direct_ldlt, 1e-9);
+      const MixedSolver solver(r->system.tangent, incompressible, fixed, SolverKind::direct_ldlt, 1e-9, {},
+                               nullptr, &factors);
       dx = solver.solve(r->r_u, du_fixed, -r->system.constraint);
     } catch (const SolverError&) {
       return std::nullopt;
@@ -124,12 +125,14 @@ FiniteStrainResult solve_finite_strain(const TetMesh& mesh, double mu, const std
   FiniteStrainResult out;
   State s{Eigen::VectorXd::Zero(3 * mesh.num_nodes()), Eigen::VectorXd::Zero(mesh.num_vertices)};
   FiniteStrainSystem at;
+  MixedSolver::Reuse factors;  // every tangent has the rest's pattern: one analysis for the whole path
   double reached = 0, step = o.first_step;
   const double smallest = o.first_step / std::pow(2.0, o.max_halvings);
   while (reached < 1) {
     const double target = std::min(1.0, reached + step);
     State trial = s;
-    if (auto done = newton(mesh, mu, fixed, f_free, u_fixed, target, force_scale, volume, o, trial)) {
+    if (auto done =
+            newton(mesh, mu, fixed, f_free, u_fixed, target, force_scale, volume, o, trial, factors)) {
       s = std::move(trial);
       reached = target;
       out.steps.push_back(std::move(done->step));

@@ -2,6 +2,7 @@
 // at ν = 0.5 and ν = 0.3, both saddle-point solvers, determinism.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstring>
 
 #include "../common/convergence.hpp"
@@ -275,6 +276,51 @@ TEST(MixedSolver, BorderedProductsEqualBlockSolves) {
             1e-10 * scale);
   EXPECT_LT((bordered.solve_block(Eigen::MatrixXd(c.F), Eigen::MatrixXd(c.U_fixed)) - U).norm(),
             1e-10 * U.norm());
+}
+
+// A Newton iteration's solvers share one analysis (MixedSolver::Reuse): a solver that factors its values on
+// the kept analysis solves, and borders, as a fresh one to the last bit, plain and bordered; a matrix of
+// another pattern is analysed afresh.
+TEST(MixedSolver, AKeptAnalysisSolvesAsAFreshSolverToTheLastBit) {
+  const Lame lame = Lame::from(3.0, 0.5);
+  const TetMesh m1 = box_mesh(1.5, 1.5, 0.6);
+  TetMesh m2 = m1;  // the same tets, other values
+  for (int i = 0; i < m2.num_nodes(); ++i) m2.nodes(i, 0) *= 1.0 + 0.1 * m2.nodes(i, 2);
+  const MixedMatrices a1 = assemble_mixed(m1, lame), a2 = assemble_mixed(m2, lame);
+  const int n3 = 3 * m1.num_nodes();
+  std::vector<bool> fixed(n3, false);
+  std::vector<int> top;
+  for (int i = 0; i < m1.num_nodes(); ++i) {
+    if (m1.node_marker(i) & kBase) fixed[3 * i] = fixed[3 * i + 1] = fixed[3 * i + 2] = true;
+    if (m1.node_marker(i) == kTop) top.push_back(i);
+  }
+  MixedSolver::Coupling c;
+  std::vector<Eigen::Triplet<double>> f;
+  for (int j = 0; j < 6; ++j) f.emplace_back(3 * top[(5 * j) % top.size()] + 2, j, -1.0 - j);
+  c.F.resize(n3, 6);
+  c.F.setFromTriplets(f.begin(), f.end());
+  const Eigen::VectorXd load = Eigen::VectorXd(c.F.col(0)) + Eigen::VectorXd(c.F.col(3));
+  const std::array<const MixedSolver::Coupling*, 2> couplings{nullptr, &c};
+  for (const MixedSolver::Coupling* coupling : couplings) {
+    MixedSolver::Reuse reuse;
+    { const MixedSolver first(a1, lame, fixed, SolverKind::direct_ldlt, 1e-10, {}, coupling, &reuse); }
+    const MixedSolver kept(a2, lame, fixed, SolverKind::direct_ldlt, 1e-10, {}, coupling, &reuse);
+    const MixedSolver fresh(a2, lame, fixed, SolverKind::direct_ldlt, 1e-10, {}, coupling);
+    EXPECT_EQ(reuse.analyses(), 1);
+    EXPECT_TRUE(kept.solve(load).u == fresh.solve(load).u);
+    EXPECT_TRUE(kept.coupling_products() == fresh.coupling_products());
+  }
+  MixedSolver::Reuse reuse;
+  { const MixedSolver first(a1, lame, fixed, SolverKind::direct_ldlt, 1e-10, {}, nullptr, &reuse); }
+  const TetMesh other = box_mesh(1.5, 1.5, 0.75);
+  const MixedMatrices a3 = assemble_mixed(other, lame);
+  std::vector<bool> fixed3(3 * other.num_nodes(), false);
+  for (int i = 0; i < other.num_nodes(); ++i)
+    if (other.node_marker(i) & kBase) fixed3[3 * i] = fixed3[3 * i + 1] = fixed3[3 * i + 2] = true;
+  const Eigen::VectorXd g = Eigen::VectorXd::Constant(3 * other.num_nodes(), -0.01);
+  const MixedSolver again(a3, lame, fixed3, SolverKind::direct_ldlt, 1e-10, {}, nullptr, &reuse);
+  EXPECT_EQ(reuse.analyses(), 2);
+  EXPECT_TRUE(again.solve(g).u == MixedSolver(a3, lame, fixed3, SolverKind::direct_ldlt).solve(g).u);
 }
 
 // Linear elasticity under force loads: u ∝ 1/E, p independent of E (scale invariance of the continuous

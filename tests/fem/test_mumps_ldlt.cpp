@@ -2,6 +2,7 @@
 // reports while factoring (fem/factor_progress.hpp).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <vector>
 
@@ -137,6 +138,42 @@ TEST(MumpsLdlt, BorderedMatrixTakesThePlainMatrixsPivotOrder) {
   EXPECT_LT((ordered.schur() - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
   std::printf("bordered %d × %d grid: factor entries %.4g (own order) against %.4g (plain order)\n", m, m,
               own.analysis().factor_entries, ordered.analysis().factor_entries);
+}
+
+// A Newton iteration's tangents share one pattern: refactor() factors new values on the first analysis.
+// Its factors and Schur complement are those of a fresh factorization of the new values (analysis and
+// all), to the last bit: the analysis reads the pattern only. Another pattern is refused.
+TEST(MumpsLdlt, RefactoredValuesSolveAsAFreshFactorizationToTheLastBit) {
+  const int m = 80, n = m * m, s = 4;  // above the size where MUMPS gets PORD
+  const Eigen::SparseMatrix<double> K1 = laplacian(m);
+  Eigen::SparseMatrix<double> K2 = K1;
+  for (int c = 0; c < K2.outerSize(); ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(K2, c); it; ++it)
+      it.valueRef() *= it.row() == it.col() ? 1.0 + 0.37 * std::sin(0.1 * c) : 0.9;
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(n, s);
+  for (int j = 0; j < s; ++j)
+    for (int k = 0; k < 30; ++k) G((41 * j + 173 * k) % n, j) = 1.0 + 0.02 * k - 0.25 * j;
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0);
+  for (const int border : {0, s}) {
+    const auto lower = [&](const Eigen::SparseMatrix<double>& K) {
+      return border > 0 ? bordered_lower(K, G) : MumpsLdlt::lower_triangle(K);
+    };
+    MumpsLdlt kept(n + border, lower(K1), border, {}, 5, false);
+    kept.keep_pattern();
+    kept.factor();
+    const Eigen::VectorXd x1 = kept.solve(b);
+    kept.refactor(lower(K2));
+    const MumpsLdlt fresh(n + border, lower(K2), border);
+    const Eigen::VectorXd x2 = kept.solve(b);
+    EXPECT_TRUE(x2 == fresh.solve(b)) << "border " << border;
+    EXPECT_FALSE(x2 == x1);
+    EXPECT_TRUE(kept.schur() == fresh.schur()) << "border " << border;
+    MumpsLdlt::Triplets other = lower(K2);
+    std::swap(other.row[1], other.row[2]);
+    EXPECT_THROW(kept.refactor(other), std::invalid_argument);
+  }
+  MumpsLdlt unkept(n, MumpsLdlt::lower_triangle(K1));
+  EXPECT_THROW(unkept.refactor(MumpsLdlt::lower_triangle(K2)), std::logic_error);
 }
 
 }  // namespace
