@@ -72,12 +72,8 @@ FiniteDefectCase finite_defect_case(const Scene& scene, FrictionMode mode) {
           progress("sweep " + out.name + ": " + std::to_string(i + 1) + "/" +
                    std::to_string(sweep.positions) + " positions");
       },
-      nullptr,
-      [&](const Vec2& c) {
-        const Vec2 X = material_point(*st.mesh, top, u, c);
-        out.material_centres.push_back(X);
-        return X;
-      });
+      nullptr, [&](const Vec2& c) { return material_point(*st.mesh, top, u, c); });
+  for (const Vec2& c : out.sweep.centers) out.material_centres.push_back(material_point(*st.mesh, top, u, c));
   const Eigen::VectorXd& lam = out.sweep.baseline.lambda;
   out.baseline_rel = (lam - st.result.lambda).cwiseAbs().maxCoeff() / st.result.lambda.maxCoeff();
   const Eigen::MatrixXd& v = out.sweep.varsigma;
