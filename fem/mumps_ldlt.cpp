@@ -33,8 +33,7 @@ struct MumpsLdlt::Impl {
   std::vector<MUMPS_INT> schur_vars;
   std::vector<MUMPS_INT> perm_in;
   Eigen::MatrixXd schur;
-  bool keep_pattern = false;
-  std::vector<MUMPS_INT> kept_irn, kept_jcn;  // keep_pattern(): the analysed pattern, 1-based
+  bool keep_pattern = false;  // irn and jcn then stay after the factorization (refactor())
 
   void call(int job) const {
     id.job = job;
@@ -239,15 +238,13 @@ void MumpsLdlt::factor_locked(const FactorProgress& progress, double every_s) {
     s.id.listvar_schur = nullptr;
   }
   // The solve phase needs only the factors (no iterative refinement or error analysis is requested):
-  // release the matrix, or keep its pattern for refactor().
-  if (s.keep_pattern && s.kept_irn.empty()) {
-    s.kept_irn = std::move(s.irn);
-    s.kept_jcn = std::move(s.jcn);
+  // release the matrix, or its values alone when its pattern is kept for refactor().
+  if (!s.keep_pattern) {
+    std::vector<MUMPS_INT>().swap(s.irn);
+    std::vector<MUMPS_INT>().swap(s.jcn);
+    s.id.irn = s.id.jcn = nullptr;
   }
-  std::vector<MUMPS_INT>().swap(s.irn);
-  std::vector<MUMPS_INT>().swap(s.jcn);
   std::vector<double>().swap(s.a);
-  s.id.irn = s.id.jcn = nullptr;
   s.id.a = nullptr;
 }
 
@@ -258,27 +255,25 @@ void MumpsLdlt::keep_pattern() {
 
 bool MumpsLdlt::same_pattern(const Triplets& lower, size_t entries) const {
   const Impl& s = *impl_;
-  const size_t nnz = s.kept_irn.size();
+  const size_t nnz = s.keep_pattern ? s.irn.size() : 0;
   if (nnz == 0 || entries != nnz || lower.row.size() < nnz || lower.col.size() < nnz ||
       lower.value.size() < nnz)
     return false;
   for (size_t k = 0; k < nnz; ++k)
-    if (lower.row[k] + 1 != s.kept_irn[k] || lower.col[k] + 1 != s.kept_jcn[k]) return false;
+    if (lower.row[k] + 1 != s.irn[k] || lower.col[k] + 1 != s.jcn[k]) return false;
   return true;
 }
 
 void MumpsLdlt::refactor(Triplets lower, const FactorProgress& progress, double every_s) {
   std::lock_guard<std::mutex> lock(mumps_mutex);
   Impl& s = *impl_;
-  if (!s.keep_pattern || !s.factored) throw std::logic_error("MumpsLdlt: refactor without a kept pattern");
-  if (lower.value.size() != s.kept_irn.size() || !same_pattern(lower, lower.value.size()))
+  if (!s.keep_pattern || s.irn.empty()) throw std::logic_error("MumpsLdlt: refactor without a kept pattern");
+  if (lower.value.size() != s.irn.size() || !same_pattern(lower, lower.value.size()))
     throw std::invalid_argument("MumpsLdlt::refactor: the matrix's pattern is not the analysed one");
-  s.irn = s.kept_irn;
-  s.jcn = s.kept_jcn;
   s.a = std::move(lower.value);
-  s.id.irn = s.irn.data();
-  s.id.jcn = s.jcn.data();
   s.id.a = s.a.data();
+  std::vector<int>().swap(lower.row);  // the kept pattern's copy: gone before the factors take their memory
+  std::vector<int>().swap(lower.col);
   if (s.schur_size > 0) {
     s.id.listvar_schur = s.schur_vars.data();
     s.id.schur = s.schur.data();

@@ -48,7 +48,7 @@ class MumpsLdlt {
   Estimate analysis() const;
   // Throws as the constructor does (also when the estimated memory exceeds what is available).
   void factor(const FactorProgress& progress = {}, double every_s = 5);
-  // Keeps the analysed pattern after factoring (a copy of the index arrays, 8 bytes an entry), so that
+  // Keeps the analysed pattern after factoring (its index arrays, 8 bytes an entry), so that
   // refactor() may factor new values on the same analysis. Call before factor().
   void keep_pattern();
   // The matrix's new values, factored on the analysis already done (no ordering, no symbolic factorization:
