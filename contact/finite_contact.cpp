@@ -38,8 +38,21 @@ struct FiniteProblem {
   Eigen::VectorXd gap0;
   double volume = 0;
   MixedSolver::Reuse* factors = nullptr;  // the tangents' one analysis, handed from iterate to iterate
+  // A sphere: its centre at first touch (it descends by the depth) and radius; its gaps are the normal
+  // gaps on the displaced top (MortarZone::sphere_gaps), opened by `opening`.
+  bool sphere = false;
+  Eigen::Vector3d centre0 = Eigen::Vector3d::Zero();
+  double R = 0;
+  Eigen::VectorXd opening;
 
   int nc() const { return zone.size(); }
+  MortarZone::SphereGaps sphere_gaps(const Eigen::VectorXd& u, double depth,
+                                     const Eigen::VectorXd* lambda = nullptr) const {
+    MortarZone::SphereGaps sg =
+        zone.sphere_gaps(mesh, u, centre0 - depth * Eigen::Vector3d::UnitZ(), R, lambda);
+    if (opening.size()) sg.g += opening;
+    return sg;
+  }
   // D u_z: the multipliers' weighted downward displacements, mm³.
   Eigen::VectorXd weighted_uz(const Eigen::VectorXd& u) const {
     Eigen::VectorXd uz(u.size() / 3);
@@ -50,19 +63,25 @@ struct FiniteProblem {
 
 // C_zz and C_zt on the tangent the solver factored (condensed.hpp's definitions): from the bordered
 // factorization's products, or by block solves of the pressure columns where MUMPS chose the plain one.
-std::pair<Eigen::MatrixXd, Eigen::MatrixXd> compliances(const FiniteProblem& P, const MixedSolver& solver) {
+// columns: [a | b], or a sphere's pressure columns a alone (then C_zt is 0).
+std::pair<Eigen::MatrixXd, Eigen::MatrixXd> compliances(const FiniteProblem& P,
+                                                        const MixedSolver::Coupling& columns,
+                                                        const MixedSolver& solver) {
   const int nc = P.nc();
+  const bool tangential = columns.F.cols() == 2 * nc;
   const Eigen::MatrixXd& G = solver.coupling_products();
   if (G.size() > 0)
-    return {0.5 * (G.topLeftCorner(nc, nc) + G.topLeftCorner(nc, nc).transpose()), G.topRightCorner(nc, nc)};
-  Eigen::MatrixXd zz(nc, nc), zt(nc, nc);
-  const Eigen::SparseMatrix<double> Ft = P.columns.F.transpose();
+    return {0.5 * (G.topLeftCorner(nc, nc) + G.topLeftCorner(nc, nc).transpose()),
+            tangential ? Eigen::MatrixXd(G.topRightCorner(nc, nc)) : Eigen::MatrixXd::Zero(nc, nc)};
+  Eigen::MatrixXd zz(nc, nc), zt = Eigen::MatrixXd::Zero(nc, nc);
+  const Eigen::SparseMatrix<double> Ft = columns.F.transpose();
   for (int j0 = 0; j0 < nc; j0 += kFiniteBlock) {
     const int k = std::min(kFiniteBlock, nc - j0);
-    const Eigen::MatrixXd U = solver.solve_block(Eigen::MatrixXd(P.columns.F.middleCols(j0, k)));
+    const Eigen::MatrixXd U = solver.solve_block(Eigen::MatrixXd(columns.F.middleCols(j0, k)));
     const Eigen::MatrixXd R = Ft * U;  // (2 n_c) × k: the readouts a and b of sources a
     zz.middleCols(j0, k) = R.topRows(nc);
-    zt.middleRows(j0, k) = R.bottomRows(nc).transpose();  // Maxwell–Betti: C_zt(j, i) = b_i · u(a_j)
+    if (tangential)
+      zt.middleRows(j0, k) = R.bottomRows(nc).transpose();  // Maxwell–Betti: C_zt(j, i) = b_i · u(a_j)
   }
   return {0.5 * (zz + zz.transpose()), zt};
 }
@@ -81,14 +100,37 @@ std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double f
     LcpSolution lcp;
     MixedSolution dx;
     try {
+      // A sphere's columns are its pressures along its normals at this iterate (they turn with the surface).
+      std::optional<MortarZone::SphereGaps> sg;
+      MixedSolver::Coupling normal_columns;
+      if (P.sphere) {
+        // The tangent less the pressures' turning at this iterate's λ (MortarZone::sphere_gaps's G, within
+        // the skin's pattern: the nodes of one top face share a tet), so that Newton stays quadratic.
+        sg = P.sphere_gaps(s.u, s.depth, &s.lambda);
+        for (int c = 0; c < sg->G.outerSize(); ++c)
+          for (Eigen::SparseMatrix<double>::InnerIterator it(sg->G, c); it; ++it)
+            s.system.tangent.A.coeffRef(it.row(), it.col()) -= it.value();
+        normal_columns.F = sg->Dn.transpose();
+        normal_columns.solves_instead = P.columns.solves_instead;
+        normal_columns.memory_limit_mb = P.columns.memory_limit_mb;
+      }
+      const MixedSolver::Coupling& columns = sg ? normal_columns : P.columns;
       const MixedSolver solver(s.system.tangent, incompressible, P.fixed, SolverKind::direct_ldlt, 1e-9, {},
-                               &P.columns, P.factors);
+                               &columns, P.factors);
       ++factorizations;
-      const auto [zz, zt] = compliances(P, solver);
+      const auto [zz, zt] = compliances(P, columns, solver);
       const MixedSolution rest = solver.solve(minus_internal, {}, -s.system.constraint);
-      const Eigen::VectorXd q = P.gap0 - P.weighted_uz(s.u + rest.u);
-      lcp = ContactLcp(zz + ratio * zt, q, P.zone.area).solve_force(force, {}, s.active);
-      dx = solver.solve(P.zone.load(lcp.lambda, P.t, ratio) + minus_internal, {}, -s.system.constraint);
+      if (sg) {
+        // g ≈ g_k + Dn du − m (δ − δ_k): the LCP's q − δ m + M λ with du = du_r + K⁻¹ Dnᵀ λ.
+        const Eigen::VectorXd q = sg->g + s.depth * sg->m + sg->Dn * rest.u;
+        lcp = ContactLcp(zz, q, sg->m).solve_force(force, {}, s.active);
+        dx = solver.solve(Eigen::VectorXd(sg->Dn.transpose() * lcp.lambda) + minus_internal, {},
+                          -s.system.constraint);
+      } else {
+        const Eigen::VectorXd q = P.gap0 - P.weighted_uz(s.u + rest.u);
+        lcp = ContactLcp(zz + ratio * zt, q, P.zone.area).solve_force(force, {}, s.active);
+        dx = solver.solve(P.zone.load(lcp.lambda, P.t, ratio) + minus_internal, {}, -s.system.constraint);
+      }
     } catch (const std::runtime_error& e) {  // SolverError, or an LCP without a consistent set
       why = e.what();
       return std::nullopt;
@@ -108,7 +150,9 @@ std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double f
       why = "an element folded (det F <= 0)";
       return std::nullopt;
     }
-    const Eigen::VectorXd f = P.zone.load(s.lambda, P.t, ratio);  // the plate's load on the skin
+    const Eigen::VectorXd f = P.sphere
+                                  ? Eigen::VectorXd(P.sphere_gaps(s.u, s.depth).Dn.transpose() * s.lambda)
+                                  : P.zone.load(s.lambda, P.t, ratio);  // the indenter's load on the skin
     step.residuals.push_back(equilibrium_residual(s.system, f, P.fixed, f.norm(), P.volume));
     step.active_sizes.push_back(static_cast<int>(s.active.size()));
     step.set_changes.push_back(static_cast<int>(changed.size()));
@@ -134,13 +178,16 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
                                          const FiniteContactLoad& load, const NewtonOptions& o,
                                          const FiniteContactStepSink& on_step,
                                          const FiniteContactResult* from) {
-  if (indenter.kind() != IndenterKind::plane)
-    throw std::invalid_argument("solve_finite_contact: only a plane indenter (its gap is linear in u)");
   if (!(load.force > 0) || !(load.ratio >= 0))
     throw std::invalid_argument("solve_finite_contact: force must be > 0 and ratio ≥ 0");
+  const bool sphere = indenter.kind() == IndenterKind::sphere;
+  if (sphere && load.ratio > 0)
+    throw std::invalid_argument("solve_finite_contact: a sphere is frictionless here (ratio 0)");
   if (!(o.first_step > 0 && o.first_step <= 1))
     throw std::invalid_argument("NewtonOptions::first_step must be in (0, 1]");
-  FiniteProblem P{mesh, mu, fixed, zone, load.direction.normalized(), {}, {}, 0};
+  FiniteProblem P{mesh, mu, fixed,   zone,  load.direction.normalized(), {},
+                  {},   0,  nullptr, false, Eigen::Vector3d::Zero(),     0,
+                  {}};
   const int nc = zone.size();
   // condense's columns without watched nodes or sensors: [a | b], solves_instead = n_c.
   P.columns =
@@ -152,6 +199,12 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
                                   std::to_string(load.opening.size()) + " gaps for " + std::to_string(nc) +
                                   " multipliers");
     P.gap0 += load.opening;
+  }
+  if (sphere) {
+    P.sphere = true;
+    P.R = indenter.R();
+    P.centre0 = {indenter.center()[0], indenter.center()[1], indenter.z_touch() + indenter.R()};
+    P.opening = load.opening;
   }
   P.volume = pressure_mass(mesh).sum();
   MixedSolver::Reuse factors;
@@ -208,10 +261,16 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
   out.solution.p = s.p;
   out.solution.residual = out.steps.back().residuals.back();
   out.internal_force = s.system.internal_force;
-  out.load = zone.load(s.lambda, P.t, load.ratio);
   out.lambda = s.lambda;
   out.depth_mm = s.depth;
-  out.gap = P.gap0 - s.depth * zone.area - P.weighted_uz(s.u);
+  if (sphere) {
+    const MortarZone::SphereGaps sg = P.sphere_gaps(s.u, s.depth);
+    out.load = sg.Dn.transpose() * s.lambda;
+    out.gap = sg.g;
+  } else {
+    out.load = zone.load(s.lambda, P.t, load.ratio);
+    out.gap = P.gap0 - s.depth * zone.area - P.weighted_uz(s.u);
+  }
   out.active = s.active;
   out.complementarity = s.complementarity;
   return out;
@@ -250,6 +309,8 @@ CondensedContact tangent_contact(const TetMesh& mesh, double mu, const std::vect
                                  const MortarZone& zone, const Indenter& indenter,
                                  const SensorReadings& readings, const FiniteContactLoad& load,
                                  const FiniteContactResult& r) {
+  if (indenter.kind() != IndenterKind::plane)
+    throw std::invalid_argument("tangent_contact: a plane's contact (a sphere's gaps turn with the surface)");
   const Eigen::Vector2d t = load.direction.normalized();
   const FiniteStrainSystem system = assemble_finite_strain(mesh, mu, r.solution.u, r.solution.p);
   const CondenseColumns columns = condense_columns(mesh, zone, readings.weight_block(), {t.x(), t.y()}, {});

@@ -1,19 +1,25 @@
-// Contact of a rigid plane with the finite-strain skin (fem/finite_strain.hpp), frictionless or in steady
-// Coulomb sliding, force controlled: the plate meets the deformed surface x = X + u.
+// Contact of a rigid plane or sphere with the finite-strain skin (fem/finite_strain.hpp), force controlled:
+// the indenter meets the deformed surface x = X + u. A plane is frictionless or in steady Coulomb sliding, a
+// sphere frictionless.
 //
 // Mortar multipliers on the reference top (contact/mortar.hpp): λ_i is the nodal pressure per unit of the
-// hat's reference horizontal area, pushing along −e_z with the friction traction ratio·λ along the sliding
-// direction t (dead directions: the plate's normal and its sliding direction do not turn). Because the
-// plate is flat, the weighted gap is exactly linear in u, g_i = gap0_i − δ·area_i − (D u_z)_i, whatever
-// the lateral motion; the nonlinearity is the skin's alone. Each Newton iterate solves, on the tangent at
-// (u_k, p_k), the condensed complementarity problem of contact/lcp.hpp:
-//   M = C_zz + ratio·C_zt (the tangent's compliances, condensed.hpp's definitions),
-//   q = gap0 − D_z (u_k + du_r),  du_r the tangent's answer to the residual alone,
+// hat's reference horizontal area. Under a plane it pushes along −e_z with the friction traction ratio·λ
+// along the sliding direction t (dead directions: the plate's normal and its sliding direction do not
+// turn); because the plate is flat, the weighted gap is exactly linear in u, g_i = gap0_i − δ·area_i −
+// (D u_z)_i, whatever the lateral motion, and the nonlinearity is the skin's alone. Under a sphere (centre
+// c − δ e_z, radius R) the gap is the normal one on the displaced top, g_i = ∫ψ_i (|x + u − c| − R), and λ
+// pushes along the sphere's normal there (MortarZone::sphere_gaps): both turn with the surface. Each Newton
+// iterate solves, on the tangent at (u_k, p_k), the condensed complementarity problem of contact/lcp.hpp:
+//   M = C_zz + ratio·C_zt (the tangent's compliances, condensed.hpp's definitions; a sphere's along its
+//       normals at the iterate),
+//   q = gap0 − D_z (u_k + du_r) (a plane), g_k + δ_k m + Dn du_r (a sphere),  du_r the tangent's answer
+//       to the residual alone,
 // then steps to u_k + du_r + (the multipliers' answer). This is Newton's method on the whole complementarity
-// system (Josephy-Newton): once the active set stops changing it is Newton on a smooth system, quadratic.
-// The first iterate from rest is the linear contact exactly. Load path: the normal force ramps to F
-// frictionless, then the ratio ramps to its value at F, in adaptive steps (a step that fails is halved).
-// Units: mm, N, MPa.
+// system (Josephy-Newton): once the active set stops changing it is Newton on a smooth system, quadratic
+// (a sphere's tangent includes its pressures' turning with the surface, at the last iterate's λ).
+// The first iterate from rest is the linear contact exactly under a plane. Load path: the normal force
+// ramps to F frictionless, then the ratio ramps to its value at F, in adaptive steps (a step that fails is
+// halved). Units: mm, N, MPa.
 #pragma once
 
 #include <Eigen/Dense>
@@ -59,7 +65,7 @@ struct FiniteContactResult {
   Eigen::VectorXd internal_force;  // 3N at the solution: at held DOFs the supports' reactions (N)
   Eigen::VectorXd load;            // 3N: the plate's load on the skin at the solution (N)
   Eigen::VectorXd lambda;          // n_c nodal pressures, MPa
-  Eigen::VectorXd gap;             // n_c weighted gaps, mm³ (exact: linear in u)
+  Eigen::VectorXd gap;             // n_c weighted gaps at the solution, mm³
   double depth_mm = 0;             // the plate's approach from first touch
   std::vector<int> active;         // multipliers in contact, ascending
   double complementarity = 0;      // of the last LCP (contact/lcp.hpp's measure)
@@ -72,10 +78,10 @@ struct FiniteContactResult {
 using FiniteContactStepSink = std::function<void(const FiniteContactStep&)>;
 
 // mesh: the skin (a half mesh's cut held by `fixed`); fixed: 3N held DOFs (base, cut), not moved;
-// zone: the candidate multipliers; indenter: a plane (a sphere throws std::invalid_argument); mu: shear
-// modulus, MPa. Throws SolverError (one line: the force and ratio reached, and why) when no step converges.
-// from: null to start at rest and follow the load path; or a converged state of the same force and ratio
-// (another opening), from which one step goes straight to `load`.
+// zone: the candidate multipliers; indenter: a plane, or a sphere with load.ratio 0 (std::invalid_argument
+// otherwise); mu: shear modulus, MPa. Throws SolverError (one line: the force and ratio reached, and why)
+// when no step converges. from: null to start at rest and follow the load path; or a converged state of the
+// same force and ratio (another opening), from which one step goes straight to `load`.
 FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const std::vector<bool>& fixed,
                                          const MortarZone& zone, const Indenter& indenter,
                                          const FiniteContactLoad& load, const NewtonOptions& options = {},

@@ -18,6 +18,7 @@ class Indenter {
   // The vertical gap from point x (mm) up to the indenter at first touch: z_touch + φ(x, y) − z.
   double gap_at_rest(const Eigen::Vector3d& x) const { return z_touch_ + phi(x.x(), x.y()) - x.z(); }
   const Vec2& center() const { return center_; }
+  double R() const { return R_; }  // a sphere's radius, mm (0 for a plane)
   IndenterKind kind() const { return kind_; }
 
  private:

@@ -61,6 +61,52 @@ Eigen::VectorXd MortarZone::weighted(const TetMesh& m,
   return out;
 }
 
+MortarZone::SphereGaps MortarZone::sphere_gaps(const TetMesh& m, const Eigen::VectorXd& u,
+                                               const Eigen::Vector3d& c, double R,
+                                               const Eigen::VectorXd* lambda) const {
+  std::vector<int> local(m.num_nodes(), -1);
+  for (int i = 0; i < size(); ++i) local[vertices[i]] = i;
+  SphereGaps out{Eigen::VectorXd::Zero(size()), Eigen::VectorXd::Zero(size()), {}, {}};
+  std::vector<Eigen::Triplet<double>> t, tg;
+  for (int face : faces)
+    for (const FacePoint& q : face_quadrature(m, face)) {
+      const Eigen::Vector3d psi = hats(q.s, q.t);
+      Eigen::Vector3d x = q.x;
+      for (int b = 0; b < 6; ++b) x += q.N[b] * u.segment<3>(3 * m.faces(face, b));
+      const double r = (x - c).norm();
+      const Eigen::Vector3d n = (x - c) / r;
+      if (lambda) {
+        double p = 0;  // Σ λ_i ψ_i at the point
+        for (int a = 0; a < 3; ++a)
+          if (const int i = local[m.faces(face, a)]; i >= 0) p += (*lambda)[i] * psi[a];
+        const Eigen::Matrix3d turn = q.weight_xy * p / r * (Eigen::Matrix3d::Identity() - n * n.transpose());
+        if (p != 0)
+          for (int a = 0; a < 6; ++a)
+            for (int b = 0; b < 6; ++b)
+              for (int k = 0; k < 3; ++k)
+                for (int l = 0; l < 3; ++l)
+                  tg.emplace_back(3 * m.faces(face, a) + k, 3 * m.faces(face, b) + l,
+                                  q.N[a] * q.N[b] * turn(k, l));
+      }
+      for (int a = 0; a < 3; ++a) {
+        const int i = local[m.faces(face, a)];
+        if (i < 0) continue;
+        const double w = q.weight_xy * psi[a];
+        out.g[i] += w * (r - R);
+        out.m[i] -= w * n.z();
+        for (int b = 0; b < 6; ++b)
+          for (int k = 0; k < 3; ++k) t.emplace_back(i, 3 * m.faces(face, b) + k, w * q.N[b] * n[k]);
+      }
+    }
+  out.Dn.resize(size(), 3 * m.num_nodes());
+  out.Dn.setFromTriplets(t.begin(), t.end());
+  if (lambda) {
+    out.G.resize(3 * m.num_nodes(), 3 * m.num_nodes());
+    out.G.setFromTriplets(tg.begin(), tg.end());
+  }
+  return out;
+}
+
 Eigen::VectorXd MortarZone::load(const Eigen::VectorXd& lambda, const Eigen::Vector2d& t_dir, double ratio,
                                  const Eigen::VectorXd& shear) const {
   const Eigen::VectorXd nodal = D.transpose() * lambda;  // ∫ p φ_j

@@ -31,6 +31,18 @@ struct MortarZone {
   int size() const { return static_cast<int>(vertices.size()); }
   // ∫ ψ_i f(x) dx dy for every multiplier, f evaluated at the physical (curved) top point.
   Eigen::VectorXd weighted(const TetMesh& mesh, const std::function<double(const Eigen::Vector3d&)>& f) const;
+  // A sphere (centre c, radius R, mm) against the displaced top x + u_h(x) (u: 3N, mm): the weighted normal
+  // gaps g_i = ∫ ψ_i (|x + u_h − c| − R), their derivative Dn (n_c × 3N: ∫ ψ_i φ_node n, n the sphere's
+  // outward normal (x + u_h − c)/|x + u_h − c| at the displaced point; the load of pressures λ along it is
+  // Dnᵀ λ) and m_i = ∫ ψ_i (−n_z), by which gap i closes per mm the sphere descends (contact/finite_contact).
+  // With pressures `lambda` (n_c, MPa) also the load's derivative G = ∂(Dnᵀ λ)/∂u = Σ λ_i ∫ ψ_i φ_a φ_b
+  // (I − n nᵀ)/|x + u_h − c| (3N × 3N, symmetric: the normals turn as the surface moves over the sphere).
+  struct SphereGaps {
+    Eigen::VectorXd g, m;
+    Eigen::SparseMatrix<double> Dn, G;
+  };
+  SphereGaps sphere_gaps(const TetMesh& mesh, const Eigen::VectorXd& u, const Eigen::Vector3d& c, double R,
+                         const Eigen::VectorXd* lambda = nullptr) const;
   // 3N load vector of multipliers λ: traction −Σλψ e_z + t_dir·(ratio Σλψ + Σ shear_i ψ) (t_dir in the
   // (x, y) plane; shear: empty or n_c nodal values, MPa).
   Eigen::VectorXd load(const Eigen::VectorXd& lambda, const Eigen::Vector2d& t_dir, double ratio,

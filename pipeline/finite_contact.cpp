@@ -74,10 +74,11 @@ void check_finite_contact(const Scene& scene, FrictionMode mode) {
                      "' (--friction or contact.friction.mode): with material.model \"neo_hookean\" the "
                      "contact is frictionless ('none'), at rest with its residual traction ('static') or in "
                      "coupled sliding ('coupled')");
-  if (c.indenter != IndenterKind::plane)
-    throw finite_refusal(
-        scene, "contact.indenter = \"sphere\"",
-        "the indenter is a plane (a sphere's gap on the deformed surface is not modelled yet)");
+  if (c.indenter == IndenterKind::sphere && mode != FrictionMode::none)
+    throw finite_refusal(scene, "contact.indenter = \"sphere\"",
+                         "a sphere is frictionless (friction mode 'none', not '" +
+                             std::string(to_string(mode)) +
+                             "'): sliding and the hole signals are modelled under a plane");
 }
 
 FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode) {
@@ -108,8 +109,9 @@ FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode) {
   const Eigen::Vector2d t(c.direction[0], c.direction[1]);
   run.load = {share * *c.force, ratio, t, {}};
   const Lame lame = Lame::from(scene.material.E, scene.material.nu);
-  progress("Newton on the neo-Hookean skin under the plate (" + std::to_string(solved.num_nodes()) +
-           " nodes, " + std::to_string(zone.size()) + " multipliers)");
+  progress(std::string("Newton on the neo-Hookean skin under the ") +
+           (c.indenter == IndenterKind::sphere ? "sphere" : "plate") + " (" +
+           std::to_string(solved.num_nodes()) + " nodes, " + std::to_string(zone.size()) + " multipliers)");
   run.solved_result = contact::solve_finite_contact(
       solved, lame.mu, run.held.fixed, zone, *run.indenter, run.load, {},
       [&](const contact::FiniteContactStep& s) {
@@ -131,9 +133,15 @@ FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode) {
   for (int k = 0; k < readings.size(); ++k) run.readings.push_back(readings.read(k, reactions));
   for (int i = 0; i < solved.num_nodes(); ++i) run.base_force_N += reactions.segment<3>(3 * i);
   if (run.mirrored) run.base_force_N = {2 * run.base_force_N.x(), 0.0, 2 * run.base_force_N.z()};
-  // At equilibrium the base takes back the plate's whole force, friction included (the internal force's
-  // test functions sum to one).
-  const Eigen::Vector3d plate(run.tangential_force_N * t.x(), run.tangential_force_N * t.y(), -run.force_N);
+  // At equilibrium the base takes back the indenter's whole load, friction included (the internal force's
+  // test functions sum to one): the plate's nominal force, or the sum of a sphere's pressures along its
+  // normals (their horizontal parts cancel only as far as the mesh is symmetric).
+  Eigen::Vector3d plate(run.tangential_force_N * t.x(), run.tangential_force_N * t.y(), -run.force_N);
+  if (c.indenter == IndenterKind::sphere) {
+    plate.setZero();
+    for (int i = 0; i < solved.num_nodes(); ++i) plate += r.load.segment<3>(3 * i);
+    if (run.mirrored) plate = {2 * plate.x(), 0.0, 2 * plate.z()};
+  }
   run.balance_rel = (run.base_force_N + plate).norm() / plate.norm();
 
   if (run.mirrored) {
@@ -167,7 +175,7 @@ FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode) {
                                      std::abs(w.solution.u[3 * v] * t.x() + w.solution.u[3 * v + 1] * t.y()));
   }
   run.p_max_MPa = w.lambda.maxCoeff();
-  // Pointwise: each zone face node's current height against the plate at its current (x, y).
+  // Pointwise: each zone face node's current height against the indenter at its current (x, y).
   for (int face : run.zone.faces)
     for (int k = 0; k < 6; ++k) {
       const int n = mesh.faces(face, k);
@@ -213,7 +221,7 @@ nlohmann::json finite_contact_json(const Scene& scene, const FiniteContactRun& r
   return {{"scene", scene_json(scene)},
           {"material_model", "neo_hookean"},
           {"path", "3d"},
-          {"indenter", "plane"},
+          {"indenter", scene.contact->indenter == IndenterKind::sphere ? "sphere" : "plane"},
           {"friction", to_string(run.mode)},
           {"friction_law", "coulomb"},
           {"ratio", solved_ratio(*scene.contact, run.mode)},

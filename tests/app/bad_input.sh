@@ -240,7 +240,7 @@ bad neo_contact_depth "$neo"'}; del d["contact"]["force"]; d["contact"]["depth"]
 bad neo_contact_holes "$neo"', "holes": [{"center": [0.5, 0], "diameter": 0.5}]}' 'contact.holes: with material.model "neo_hookean" the plate has no holes \(1 given\)' contact
 bad neo_contact_law "$neo"', "friction": {"law": "shear_strength", "mu": 1}}' 'contact.friction.law = "shear_strength": with material.model "neo_hookean" friction is Coulomb.s' contact
 bad neo_contact_interface "$neo"', "interface": {"law": "linear", "K": 5}}' 'contact.interface.law = "linear": with material.model "neo_hookean" the interface is hard' contact
-bad neo_contact_sphere "$neo"'}' 'contact.indenter = "sphere": with material.model "neo_hookean" the indenter is a plane' contact
+bad neo_contact_sphere "$neo"', "friction": {"mode": "coupled", "mu": 1}}' 'contact.indenter = "sphere": with material.model "neo_hookean" a sphere is frictionless \(friction mode .none., not .coupled.\)' contact
 bad neo_contact_uncoupled "$neo"', "friction": {"mode": "uncoupled", "mu": 1, "static_ratio": 0.1}}' "friction mode 'uncoupled' \(--friction or contact.friction.mode\): with material.model \"neo_hookean\" the contact is frictionless \('none'\), at rest" contact
 bad neo_defect_resolved "$neo"'}; d["contact"]["indenter"] = {"type": "plane"}; d["geometry"] = {"type": "cap", "R": 20.0, "h": 3.0, "apex": [0.0, 0.0], "truncation_radius": 8.0}; d["contact"]["sweep"] = {"from": [-1, 0], "to": [1, 0], "hole_model": "resolved"}' 'contact.sweep.hole_model = "resolved": with material.model "neo_hookean" the hole is the bulge' defect
 variant neo_meridian "$neo"'}'
