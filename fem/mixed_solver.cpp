@@ -183,6 +183,7 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
           if (it.value() != 0) add(s.nf + s.np + j, static_cast<int>(it.row()), it.value());
     }
     // The kept analysis, where this matrix has its pattern (with its border, or the plain part alone).
+    bool kept = false;
     if (reuse && reuse->ldlt_) {
       const size_t entries = reuse->border_ == 0 ? plain_entries : reuse->border_ == m ? t.value.size() : 0;
       if (reuse->ldlt_->same_pattern(t, entries)) {
@@ -193,57 +194,51 @@ MixedSolver::MixedSolver(const MixedMatrices& matrices, const Lame& lame, const 
         s.border_choice = reuse->choice_;
         m = reuse->border_;
         s.reuse = reuse;
-        try {
-          s.ldlt->refactor(std::move(t), progress);
-        } catch (const std::runtime_error& e) {
-          throw SolverError(std::string("cannot factor the saddle-point matrix: ") + e.what());
-        }
-        if (m > 0) {
-          s.coupling_products = -s.ldlt->schur() / s.sigma;
-          if (!s.coupling_products.allFinite())
-            throw SolverError("the coupling's Schur complement is not finite");
-        }
-        factor_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        return;
+        kept = true;
+      } else {
+        reuse->ldlt_.reset();  // another pattern: analysed afresh below, and kept instead
       }
-      reuse->ldlt_.reset();  // another pattern: analysed afresh below, and kept instead
     }
     try {
-      if (m > 0) {
-        // The plain matrix (the bordered one's leading entries) is analysed first: its PORD order, the
-        // border appended last, orders the bordered matrix too (mumps_ldlt.cpp).
-        MumpsLdlt::Triplets plain;
-        plain.row.assign(t.row.begin(), t.row.begin() + plain_entries);
-        plain.col.assign(t.col.begin(), t.col.begin() + plain_entries);
-        plain.value.assign(t.value.begin(), t.value.begin() + plain_entries);
-        auto unbordered = std::make_unique<MumpsLdlt>(s.nf + s.np, std::move(plain), 0, progress, 5, false);
-        auto bordered = std::make_unique<MumpsLdlt>(s.nf + s.np + m, std::move(t), m, progress, 5, false,
-                                                    unbordered->pivot_order());
-        BorderChoice& c = s.border_choice.emplace();
-        c.bordered = true;
-        if (coupling->solves_instead > 0) {
-          // Both analysed, the cheaper factored.
-          const auto b = bordered->analysis(), p = unbordered->analysis();
-          c.bordered_flops = b.flops, c.bordered_mb = b.memory_mb;
-          c.plain_flops = p.flops, c.plain_mb = p.memory_mb;
-          c.solves = coupling->solves_instead;
-          c.solve_flops = kFactorOverSolveRate * 4 * p.factor_entries * c.solves;
-          c.memory_limit_mb = coupling->memory_limit_mb;
-          c.bordered = c.cheaper() && c.fits();
-        }
-        s.ldlt = c.bordered ? std::move(bordered) : std::move(unbordered);
-        if (!c.bordered) m = 0;
+      if (kept) {
+        s.ldlt->refactor(std::move(t), progress);
       } else {
-        s.ldlt = std::make_unique<MumpsLdlt>(s.nf + s.np, std::move(t), 0, progress, 5, false);
+        if (m > 0) {
+          // The plain matrix (the bordered one's leading entries) is analysed first: its PORD order, the
+          // border appended last, orders the bordered matrix too (mumps_ldlt.cpp).
+          MumpsLdlt::Triplets plain;
+          plain.row.assign(t.row.begin(), t.row.begin() + plain_entries);
+          plain.col.assign(t.col.begin(), t.col.begin() + plain_entries);
+          plain.value.assign(t.value.begin(), t.value.begin() + plain_entries);
+          auto unbordered = std::make_unique<MumpsLdlt>(s.nf + s.np, std::move(plain), 0, progress, 5, false);
+          auto bordered = std::make_unique<MumpsLdlt>(s.nf + s.np + m, std::move(t), m, progress, 5, false,
+                                                      unbordered->pivot_order());
+          BorderChoice& c = s.border_choice.emplace();
+          c.bordered = true;
+          if (coupling->solves_instead > 0) {
+            // Both analysed, the cheaper factored.
+            const auto b = bordered->analysis(), p = unbordered->analysis();
+            c.bordered_flops = b.flops, c.bordered_mb = b.memory_mb;
+            c.plain_flops = p.flops, c.plain_mb = p.memory_mb;
+            c.solves = coupling->solves_instead;
+            c.solve_flops = kFactorOverSolveRate * 4 * p.factor_entries * c.solves;
+            c.memory_limit_mb = coupling->memory_limit_mb;
+            c.bordered = c.cheaper() && c.fits();
+          }
+          s.ldlt = c.bordered ? std::move(bordered) : std::move(unbordered);
+          if (!c.bordered) m = 0;
+        } else {
+          s.ldlt = std::make_unique<MumpsLdlt>(s.nf + s.np, std::move(t), 0, progress, 5, false);
+        }
+        if (reuse) {
+          s.ldlt->keep_pattern();
+          ++reuse->analyses_;
+          reuse->choice_ = s.border_choice;
+          reuse->border_ = m;
+          s.reuse = reuse;
+        }
+        s.ldlt->factor(progress);
       }
-      if (reuse) {
-        s.ldlt->keep_pattern();
-        ++reuse->analyses_;
-        reuse->choice_ = s.border_choice;
-        reuse->border_ = m;
-        s.reuse = reuse;
-      }
-      s.ldlt->factor(progress);
     } catch (const std::runtime_error& e) {
       throw SolverError(std::string("cannot factor the saddle-point matrix: ") + e.what());
     }
