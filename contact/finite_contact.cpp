@@ -29,6 +29,9 @@ struct FiniteState {
 
 // What every iteration shares: the multipliers' load columns, the gaps at rest and the residual's scales.
 struct FiniteProblem {
+  FiniteProblem(const TetMesh& m, double mu_shear, const std::vector<bool>& held, const MortarZone& z,
+                const Eigen::Vector2d& direction)
+      : mesh(m), mu(mu_shear), fixed(held), zone(z), t(direction) {}
   const TetMesh& mesh;
   double mu;
   const std::vector<bool>& fixed;
@@ -185,9 +188,7 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
     throw std::invalid_argument("solve_finite_contact: a sphere is frictionless here (ratio 0)");
   if (!(o.first_step > 0 && o.first_step <= 1))
     throw std::invalid_argument("NewtonOptions::first_step must be in (0, 1]");
-  FiniteProblem P{mesh, mu, fixed,   zone,  load.direction.normalized(), {},
-                  {},   0,  nullptr, false, Eigen::Vector3d::Zero(),     0,
-                  {}};
+  FiniteProblem P(mesh, mu, fixed, zone, load.direction.normalized());
   const int nc = zone.size();
   // condense's columns without watched nodes or sensors: [a | b], solves_instead = n_c.
   P.columns =
