@@ -189,6 +189,8 @@ double ContactSolver::unique_ratio_bound() const {
 
 void ContactSolver::set_reference(FrictionMode mode, const std::vector<int>& active) const {
   lcp(solved_ratio(mode)).set_reference(solved_set(active));
+  if (shear(mode) != 0)
+    touched(mode);  // τ0 and the touched set, built now, before a sweep's threads read them
 }
 
 ContactResult ContactSolver::solve(FrictionMode mode, const std::vector<char>& excluded,

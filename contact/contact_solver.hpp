@@ -106,10 +106,10 @@ class ContactSolver {
   // A small hole as a bulge (contact/holes/dimple.hpp): the hole-free problem with the dimple's gaps opened
   // on its contact set (solved on the stored reference, set_reference), the shear-strength part cut by
   // `covered`. Throws std::invalid_argument under an interface that is not hard. Several threads may call
-  // it at once once this mode's problem, τ0 and touched set are built (a solve(mode), shear(mode) and,
-  // where that is not 0, touched(mode) before them), and set_reference is not called meanwhile.
+  // it at once after set_reference(mode, …), as long as set_reference is not called meanwhile.
   ContactResult solve(FrictionMode mode, const HoleDimple& dimple) const;
-  // From now on solves of `mode` reuse the factorized principal system of this active set (sweeps).
+  // From now on solves of `mode` reuse the factorized principal system of this active set (sweeps). It also
+  // builds what solves of `mode` would build on first use (τ0 and the touched set under a shear strength).
   void set_reference(FrictionMode mode, const std::vector<int>& active) const;
   double ratio(FrictionMode mode) const;  // Coulomb part p_t / p of `mode`
   // The Coulomb ratio below which force control has exactly one solution (+inf: every ratio): there the

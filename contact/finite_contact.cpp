@@ -25,6 +25,8 @@ struct FiniteState {
   std::vector<int> active;
   double depth = 0, complementarity = 0;
   FiniteStrainSystem system;  // assembled at (u, p), with its tangent
+  // Under a sphere: its gaps at (u, depth), with the pressures' turning at λ; built once per state.
+  std::optional<MortarZone::SphereGaps> sphere;
 };
 
 // What every iteration shares: the multipliers' load columns, the gaps at rest and the residual's scales.
@@ -104,12 +106,12 @@ std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double f
     MixedSolution dx;
     try {
       // A sphere's columns are its pressures along its normals at this iterate (they turn with the surface).
-      std::optional<MortarZone::SphereGaps> sg;
       MixedSolver::Coupling normal_columns;
-      if (P.sphere) {
+      if (P.sphere && !s.sphere) s.sphere = P.sphere_gaps(s.u, s.depth, &s.lambda);
+      const std::optional<MortarZone::SphereGaps>& sg = s.sphere;
+      if (sg) {
         // The tangent less the pressures' turning at this iterate's λ (MortarZone::sphere_gaps's G, within
         // the skin's pattern: the nodes of one top face share a tet), so that Newton stays quadratic.
-        sg = P.sphere_gaps(s.u, s.depth, &s.lambda);
         for (int c = 0; c < sg->G.outerSize(); ++c)
           for (Eigen::SparseMatrix<double>::InnerIterator it(sg->G, c); it; ++it)
             s.system.tangent.A.coeffRef(it.row(), it.col()) -= it.value();
@@ -153,8 +155,9 @@ std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double f
       why = "an element folded (det F <= 0)";
       return std::nullopt;
     }
-    const Eigen::VectorXd f = P.sphere
-                                  ? Eigen::VectorXd(P.sphere_gaps(s.u, s.depth).Dn.transpose() * s.lambda)
+    if (P.sphere) s.sphere = P.sphere_gaps(s.u, s.depth, &s.lambda);  // the next iterate's, too
+    const Eigen::VectorXd f = s.sphere
+                                  ? Eigen::VectorXd(s.sphere->Dn.transpose() * s.lambda)
                                   : P.zone.load(s.lambda, P.t, ratio);  // the indenter's load on the skin
     step.residuals.push_back(equilibrium_residual(s.system, f, P.fixed, f.norm(), P.volume));
     step.active_sizes.push_back(static_cast<int>(s.active.size()));
@@ -264,10 +267,9 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
   out.internal_force = s.system.internal_force;
   out.lambda = s.lambda;
   out.depth_mm = s.depth;
-  if (sphere) {
-    const MortarZone::SphereGaps sg = P.sphere_gaps(s.u, s.depth);
-    out.load = sg.Dn.transpose() * s.lambda;
-    out.gap = sg.g;
+  if (s.sphere) {
+    out.load = s.sphere->Dn.transpose() * s.lambda;
+    out.gap = s.sphere->g;
   } else {
     out.load = zone.load(s.lambda, P.t, load.ratio);
     out.gap = P.gap0 - s.depth * zone.area - P.weighted_uz(s.u);

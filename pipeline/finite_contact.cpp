@@ -131,18 +131,21 @@ FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode) {
   run.sensor_sites = std::make_shared<const SensorReadings>(solved, reading_sites(scene.sensors));
   const SensorReadings& readings = *run.sensor_sites;
   for (int k = 0; k < readings.size(); ++k) run.readings.push_back(readings.read(k, reactions));
-  for (int i = 0; i < solved.num_nodes(); ++i) run.base_force_N += reactions.segment<3>(3 * i);
-  if (run.mirrored) run.base_force_N = {2 * run.base_force_N.x(), 0.0, 2 * run.base_force_N.z()};
+  // A vector's total over the solved nodes, for the whole skin.
+  const auto whole_sum = [&](const Eigen::VectorXd& v) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (int i = 0; i < solved.num_nodes(); ++i) sum += v.segment<3>(3 * i);
+    return run.mirrored ? Eigen::Vector3d(2 * sum.x(), 0.0, 2 * sum.z()) : sum;
+  };
+  run.base_force_N = whole_sum(reactions);
   // At equilibrium the base takes back the indenter's whole load, friction included (the internal force's
   // test functions sum to one): the plate's nominal force, or the sum of a sphere's pressures along its
   // normals (their horizontal parts cancel only as far as the mesh is symmetric).
-  Eigen::Vector3d plate(run.tangential_force_N * t.x(), run.tangential_force_N * t.y(), -run.force_N);
-  if (c.indenter == IndenterKind::sphere) {
-    plate.setZero();
-    for (int i = 0; i < solved.num_nodes(); ++i) plate += r.load.segment<3>(3 * i);
-    if (run.mirrored) plate = {2 * plate.x(), 0.0, 2 * plate.z()};
-  }
-  run.balance_rel = (run.base_force_N + plate).norm() / plate.norm();
+  const Eigen::Vector3d load =
+      c.indenter == IndenterKind::sphere
+          ? whole_sum(r.load)
+          : Eigen::Vector3d(run.tangential_force_N * t.x(), run.tangential_force_N * t.y(), -run.force_N);
+  run.balance_rel = (run.base_force_N + load).norm() / load.norm();
 
   if (run.mirrored) {
     auto whole = std::make_shared<TetMesh>(mirror_half(solved, &run.source));

@@ -65,6 +65,8 @@ FiniteDefectCase finite_defect_case(const Scene& scene, FrictionMode mode) {
   const contact::HoleDimples dimples(solver, *st.mesh, top, scene.material.E, scene.material.nu);
   out.tangent_seconds = clock.seconds();
   const Eigen::VectorXd& u = st.result.solution.u;
+  for (int i = 0; i < sweep.positions; ++i)
+    out.material_centres.push_back(material_point(*st.mesh, top, u, contact::sweep_center(sweep, i)));
   out.sweep = contact::hole_sweep(
       solver, *st.mesh, sweep, mode, &dimples,
       [&](int i, const contact::ContactResult&) {
@@ -72,8 +74,7 @@ FiniteDefectCase finite_defect_case(const Scene& scene, FrictionMode mode) {
           progress("sweep " + out.name + ": " + std::to_string(i + 1) + "/" +
                    std::to_string(sweep.positions) + " positions");
       },
-      nullptr, [&](const Vec2& c) { return material_point(*st.mesh, top, u, c); });
-  for (const Vec2& c : out.sweep.centers) out.material_centres.push_back(material_point(*st.mesh, top, u, c));
+      nullptr, out.material_centres);
   const Eigen::VectorXd& lam = out.sweep.baseline.lambda;
   out.baseline_rel = (lam - st.result.lambda).cwiseAbs().maxCoeff() / st.result.lambda.maxCoeff();
   const Eigen::MatrixXd& v = out.sweep.varsigma;

@@ -53,13 +53,14 @@ std::optional<HoleCuts> hole_cuts(const CondensedContact& condensed, const HoleS
 SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const HoleSweep& sweep,
                        FrictionMode mode, const HoleDimples* dimples,
                        const std::function<void(int, const ContactResult&)>& frame, const HoleCuts* cuts,
-                       const std::function<Vec2(const Vec2&)>& material_point) {
+                       const std::vector<Vec2>& material_centres) {
   if (cuts && static_cast<int>(cuts->at.size()) != sweep.positions)
     throw std::invalid_argument("hole_sweep: the cuts are another sweep's");
   if (sweep.model == HoleModel::bulge && !dimples)
     throw std::invalid_argument("hole_sweep: a bulge sweep needs the hole's dimples");
-  if (material_point && sweep.model != HoleModel::bulge)
-    throw std::invalid_argument("hole_sweep: a material point map is for bulge sweeps");
+  if (!material_centres.empty() &&
+      (sweep.model != HoleModel::bulge || static_cast<int>(material_centres.size()) != sweep.positions))
+    throw std::invalid_argument("hole_sweep: material centres are for bulge sweeps, one per position");
   const auto start = std::chrono::steady_clock::now();
   SweepResult out;
   out.mode = mode;
@@ -68,14 +69,13 @@ SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const H
   const int n = sweep.positions;
   out.varsigma.resize(n, out.baseline.readings.size());
   // A bulge's positions are independent (no warm start: each solves on the stored reference): on the
-  // machine's cores, each in its own slot, once the solver's lazily built parts for this mode exist.
+  // machine's cores, each in its own slot.
   std::vector<ContactResult> bulged;
   if (sweep.model == HoleModel::bulge) {
-    if (solver.shear(mode) != 0) solver.touched(mode);
     bulged.resize(n);
     for_each_index(n, [&](std::size_t i) {
-      const Vec2 c = sweep_center(sweep, static_cast<int>(i));
-      const Hole at{material_point ? material_point(c) : c, sweep.hole_diameter};
+      const Hole at{material_centres.empty() ? sweep_center(sweep, static_cast<int>(i)) : material_centres[i],
+                    sweep.hole_diameter};
       bulged[i] = solver.solve(mode, (*dimples)(at, out.baseline.lambda));
     });
   }

@@ -43,16 +43,14 @@ std::optional<HoleCuts> hole_cuts(const CondensedContact& condensed, const HoleS
 // resolved by cutting the hats (needs solver.condensed().path, contact/holes/cut.hpp; without a path, by
 // removing the multipliers whose vertex it holds). frame(i, result) is called for each position in order, on
 // the calling thread (to write its pressure map, report progress). cuts: hole_cuts(solver.condensed(),
-// sweep), or none (computed per position). material_point: where the hole's centre (in space) lies on the
-// reference skin, for a solver on a deformed state's tangent (contact/finite_contact.hpp's tangent_contact:
-// the hole acts on the material under it); empty for the identity, bulge sweeps only. A bulge sweep's
-// positions are solved on the machine's cores: material_point is then called from several threads at once
-// (it must only read). Throws std::invalid_argument for a bulge sweep without dimples, or a material_point
-// with another hole model.
+// sweep), or none (computed per position). material_centres: per position, where the hole's centre (in
+// space) lies on the reference skin, for a solver on a deformed state's tangent (contact/finite_contact.hpp's
+// tangent_contact: the hole acts on the material under it); empty for the centres themselves, bulge sweeps
+// only. A bulge sweep's positions are solved on the machine's cores. Throws std::invalid_argument for a
+// bulge sweep without dimples, or material centres with another hole model or another count.
 SweepResult hole_sweep(const ContactSolver& solver, const TetMesh& mesh, const HoleSweep& sweep,
                        FrictionMode mode, const HoleDimples* dimples,
                        const std::function<void(int, const ContactResult&)>& frame = {},
-                       const HoleCuts* cuts = nullptr,
-                       const std::function<Vec2(const Vec2&)>& material_point = {});
+                       const HoleCuts* cuts = nullptr, const std::vector<Vec2>& material_centres = {});
 
 }  // namespace skinfem::contact
