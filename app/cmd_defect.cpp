@@ -21,6 +21,7 @@
 
 #include "app/commands.hpp"
 #include "app/common.hpp"
+#include "app/report_page.hpp"
 #include "app/stages.hpp"
 #include "skinfem/contact/holes/sweep.hpp"
 #include "skinfem/contact/pressure_map.hpp"
@@ -130,8 +131,12 @@ void write_defect(const Scene& scene, const DefectRun& run, nlohmann::json& summ
 }
 
 namespace {
-int finite_defect_stage(const Scene& scene, const std::string& out_dir) {
-  const pipeline::FiniteDefectRun run = pipeline::finite_defect_run(scene);
+int finite_defect_stage(const Scene& scene, const std::string& out_dir,
+                        const std::vector<double>& error_scales) {
+  // The coarser levels first, each freed before the next: the scene's own level sets the peak memory.
+  std::vector<pipeline::ChainLevel> coarse = pipeline::finite_sliding_levels(scene, error_scales);
+  const pipeline::FiniteDefectRun run = pipeline::finite_defect_run(
+      scene, {FrictionMode::static_residual, FrictionMode::coupled}, std::move(coarse));
   nlohmann::json summary = pipeline::finite_defect_json(scene, run);
   Stopwatch clock;
   prepare_output_dir(out_dir);
@@ -171,8 +176,14 @@ int finite_defect_stage(const Scene& scene, const std::string& out_dir) {
       std::printf(" %.2f", 1e3 * c.sweep.varsigma.col(2 * k).cwiseAbs().maxCoeff());
     std::printf("\n");
   }
-  std::printf("  peak %.0f MB; left out: %s\n", peak_rss_mb(),
-              summary["left_out"].get<std::string>().c_str());
+  if (summary.contains("error_bars"))
+    for (const auto& b : summary["error_bars"])
+      std::printf("  %s: %s %s (%s)\n", b["what"].get<std::string>().c_str(),
+                  with_error(b["value"].get<double>(), b["error"].get<double>()).c_str(),
+                  b["unit"].get<std::string>().c_str(), b["method"].get<std::string>().c_str());
+  std::printf(
+      "  peak %.0f MB%s\n", peak_rss_mb(),
+      summary.contains("left_out") ? ("; left out: " + summary["left_out"].get<std::string>()).c_str() : "");
   std::printf("  wrote %s/defect.csv, summary.json\n", out_dir.c_str());
   return 0;
 }
@@ -182,7 +193,8 @@ int run_defect(const Scene& scene, const std::string& out_dir, const std::vector
   pipeline::check_error_scales(error_scales);
   require_sweep(scene);
   check_output_dir(out_dir);
-  if (scene.material.model == MaterialModel::neo_hookean) return finite_defect_stage(scene, out_dir);
+  if (scene.material.model == MaterialModel::neo_hookean)
+    return finite_defect_stage(scene, out_dir, error_scales);
   // The coarser levels first, each freed before the next: the scene's own level sets the peak memory.
   std::vector<pipeline::ChainLevel> coarse = pipeline::largest_sliding_levels(scene, error_scales);
   const DefectRun run =

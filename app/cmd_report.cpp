@@ -34,10 +34,10 @@ namespace skinfem::app {
 
 int run_report(const Scene& scene, const std::string& out_dir, const std::vector<double>& error_scales,
                bool fast) {
-  pipeline::check_error_scales(error_scales);
+  const pipeline::ReportOptions options{error_scales, fast};
+  pipeline::check_report(scene, options);
   check_output_dir(out_dir);
   remove_earlier_report(out_dir);
-  const pipeline::ReportOptions options{error_scales, fast};
   ReportWriter writer(scene, out_dir, options);
   pipeline::ReportResult run = pipeline::report_run(scene, options, writer);
   return writer.finish(run);

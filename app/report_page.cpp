@@ -303,6 +303,58 @@ void hole_budget(std::ostream& h, const Scene& scene, const ReportResult& in) {
   }
 }
 
+// report.json's finite_deformation entry as a paragraph and two tables (the sliding case).
+void finite_deformation(std::ostream& h, const ReportResult& in) {
+  if (!in.json.contains("finite_deformation")) return;
+  const nlohmann::json& f = in.json.at("finite_deformation");
+  const nlohmann::json& c = f.at("cases").at("sliding");
+  h << "<h2>Does finite deformation matter at the paper's load?</h2><p>"
+    << html_escape(f.at("answer").get<std::string>())
+    << " Linear: the small-strain skin the rest of this page solves; finite: the incompressible neo-Hookean "
+       "skin, the plate meeting its deformed surface (docs/theory.md). "
+    << f.at("dofs").get<int>() << " DOFs, " << fmt("%.1f", f.at("seconds").get<double>())
+    << " s for both states and their sweeps.</p>\n<table><tr><th>sliding contact (material frame)</th>"
+       "<th>linear</th><th>finite</th><th>change</th></tr>\n";
+  for (const char* key : {"contact_radius_mm", "p0_kPa", "indentation_um", "front_edge_mm", "back_edge_mm",
+                          "zone_centroid_x_mm", "pressure_centroid_x_mm"}) {
+    const nlohmann::json& v = c.at("contact").at(key);
+    h << "<tr><td style=\"text-align:left\">" << key << "</td><td>"
+      << fmt("%.4g", v.at("linear").get<double>()) << "</td><td>" << fmt("%.4g", v.at("finite").get<double>())
+      << "</td><td>" << fmt("%+.2f %%", 100 * v.at("change_rel").get<double>()) << "</td></tr>\n";
+  }
+  h << "</table>\n<table><tr><th>sensor</th><th>σz kPa linear / finite</th><th>σx kPa linear / "
+       "finite</th><th>sliding |ςz| finite/linear</th><th>|ςx| finite/linear</th></tr>\n";
+  for (size_t k = 0; k < c.at("readings").size(); ++k) {
+    const nlohmann::json &r = c.at("readings")[k], &a = c.at("hole_amplitudes")[k];
+    h << "<tr><td>" << r.at("sensor").get<int>() << (a.at("front").get<bool>() ? " (front)" : "") << "</td>";
+    for (const char* d : {"sigma_z_kPa", "sigma_x_kPa"})
+      h << "<td>" << fmt("%.3f", r.at(d).at("linear").get<double>()) << " / "
+        << fmt("%.3f", r.at(d).at("finite").get<double>()) << "</td>";
+    for (const char* d : {"z", "x"}) h << "<td>" << fmt("%.3f", a.at(d).at("ratio").get<double>()) << "</td>";
+    h << "</tr>\n";
+  }
+  h << "</table>\n";
+  if (!f.contains("error_bars") || !in.json.contains("error_bars")) return;
+  // Each headline value with its mesh error on both skins: a change is resolved when it exceeds both.
+  const auto pm = [](double v, double e) {
+    const auto [value, error] = rounded_to_error(v, e);
+    return error.empty() ? value : value + " ± " + error;
+  };
+  h << "<table><tr><th>sliding, mesh error from the coarser levels</th><th>linear</th><th>finite</th>"
+       "<th>change / larger error</th></tr>\n";
+  for (const nlohmann::json& b : f.at("error_bars"))
+    for (const nlohmann::json& l : in.json.at("error_bars"))
+      if (l.at("quantity") == b.at("quantity")) {
+        const double lv = l.at("value"), le = l.at("error"), fv = b.at("value"), fe = b.at("error");
+        const double larger = std::max(le, fe);
+        h << "<tr><td style=\"text-align:left\">" << html_escape(b.at("what").get<std::string>()) << ", "
+          << html_escape(b.at("unit").get<std::string>() == "um" ? "µm" : b.at("unit").get<std::string>())
+          << "</td><td>" << pm(lv, le) << "</td><td>" << pm(fv, fe) << "</td><td>"
+          << (larger > 0 ? fmt("%.1f", std::abs(fv - lv) / larger) : std::string("–")) << "</td></tr>\n";
+      }
+  h << "</table>\n";
+}
+
 void crosscheck(std::ostream& h, const Scene& scene, const ReportResult& in) {
   if (const validation::Crosscheck* x = in.crosscheck ? &*in.crosscheck : nullptr) {
     const int ns = static_cast<int>(scene.sensors.positions.size());
@@ -435,6 +487,7 @@ void write_index(const std::string& dir, const Scene& scene, const ReportResult&
   post_design(h, in);
   front_sensors(h, in);
   hole_budget(h, scene, in);
+  finite_deformation(h, in);
   crosscheck(h, scene, in);
   figures(h, dir, scene, in);
   files(h, dir);

@@ -224,14 +224,18 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
   const auto force_at = [&](double x) { return load.force * std::min(x, 1.0); };
   const auto ratio_at = [&](double x) { return load.ratio * std::max(x - 1, 0.0); };
   double reached = 0, step = o.first_step;
-  if (from) {  // a converged state of this force and ratio: one step to the new gaps
+  if (from) {  // a converged state of this force: one step to the new gaps, or on along the ratio's path
     if (from->solution.u.size() != s.u.size() || from->lambda.size() != nc)
       throw std::invalid_argument("solve_finite_contact: the starting state is not of this mesh and zone");
+    if (!(from->ratio <= load.ratio))
+      throw std::invalid_argument(
+          "solve_finite_contact: the starting state's friction ratio is above the load's");
     s.u = from->solution.u;
     s.p = from->solution.p;
     s.lambda = from->lambda;
     s.active = from->active;
-    reached = std::nextafter(end, 0.0);
+    s.depth = from->depth_mm;
+    reached = from->ratio == load.ratio ? std::nextafter(end, 0.0) : 1 + from->ratio / load.ratio;
     step = 1;
   }
   s.system = assemble_finite_strain(mesh, mu, s.u, s.p);
@@ -267,6 +271,7 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
   out.internal_force = s.system.internal_force;
   out.lambda = s.lambda;
   out.depth_mm = s.depth;
+  out.ratio = load.ratio;
   if (s.sphere) {
     out.load = s.sphere->Dn.transpose() * s.lambda;
     out.gap = s.sphere->g;

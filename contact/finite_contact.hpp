@@ -67,6 +67,7 @@ struct FiniteContactResult {
   Eigen::VectorXd lambda;          // n_c nodal pressures, MPa
   Eigen::VectorXd gap;             // n_c weighted gaps at the solution, mm³
   double depth_mm = 0;             // the plate's approach from first touch
+  double ratio = 0;                // the friction ratio solved at
   std::vector<int> active;         // multipliers in contact, ascending
   double complementarity = 0;      // of the last LCP (contact/lcp.hpp's measure)
   std::vector<FiniteContactStep> steps;
@@ -81,7 +82,8 @@ using FiniteContactStepSink = std::function<void(const FiniteContactStep&)>;
 // zone: the candidate multipliers; indenter: a plane, or a sphere with load.ratio 0 (std::invalid_argument
 // otherwise); mu: shear modulus, MPa. Throws SolverError (one line: the force and ratio reached, and why)
 // when no step converges. from: null to start at rest and follow the load path; or a converged state of the
-// same force and ratio (another opening), from which one step goes straight to `load`.
+// same force: at the same ratio (another opening) one step goes straight to `load`; at a smaller ratio (the
+// frictionless state shared by a static and a sliding case) the ratio's path goes on from it.
 FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const std::vector<bool>& fixed,
                                          const MortarZone& zone, const Indenter& indenter,
                                          const FiniteContactLoad& load, const NewtonOptions& options = {},

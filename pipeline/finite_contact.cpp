@@ -81,7 +81,8 @@ void check_finite_contact(const Scene& scene, FrictionMode mode) {
                              "'): sliding and the hole signals are modelled under a plane");
 }
 
-FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode) {
+FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode,
+                                    const contact::FiniteContactResult* from) {
   check_finite_contact(scene, mode);
   const ContactLoad& c = *scene.contact;
   FiniteContactRun run;
@@ -119,7 +120,14 @@ FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode) {
         std::snprintf(buf, sizeof buf, "  step to %.4g N, friction ratio %.3g: %zu iterations, residual %.1e",
                       s.force / share, s.ratio, s.residuals.size(), s.residuals.back());
         progress(buf);
-      });
+      },
+      from);
+  if (from) {
+    contact::FiniteContactResult& r = run.solved_result;
+    r.steps.insert(r.steps.begin(), from->steps.begin(), from->steps.end());
+    r.factorizations += from->factorizations;
+    r.rejected_steps += from->rejected_steps;
+  }
   const contact::FiniteContactResult& r = run.solved_result;
   run.wall["newton"] = clock.seconds();
   run.dofs =

@@ -68,8 +68,11 @@ struct FiniteContactRun {
 void check_finite_contact(const Scene& scene, FrictionMode mode);
 
 // Throws SceneError as check_finite_contact, beyond the resource guard (before meshing), when the contact
-// reaches the zone's outer element ring, and SolverError when Newton cannot carry the load.
-FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode);
+// reaches the zone's outer element ring, and SolverError when Newton cannot carry the load. from: null, or
+// the solved_result of an earlier run of this scene at a smaller friction ratio (its frictionless state),
+// whose path this run's goes on from; its steps and factorizations count as this run's.
+FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode,
+                                    const contact::FiniteContactResult* from = nullptr);
 
 // summary.json of `skinfem contact` on the neo-Hookean skin.
 nlohmann::json finite_contact_json(const Scene& scene, const FiniteContactRun& run);

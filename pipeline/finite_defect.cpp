@@ -3,19 +3,23 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "skinfem/contact/holes/dimple.hpp"
 #include "skinfem/fem/face_index.hpp"
+#include "skinfem/mesh/sizing.hpp"
 #include "skinfem/mesh/surface_quadrature.hpp"
+#include "skinfem/pipeline/clock.hpp"
 #include "skinfem/pipeline/defect.hpp"
 #include "skinfem/pipeline/progress.hpp"
 #include "skinfem/pipeline/resources.hpp"
 #include "skinfem/pipeline/scene_json.hpp"
 #include "skinfem/scene/laws.hpp"
 #include "skinfem/validation/hole_budget.hpp"
+#include "skinfem/validation/text.hpp"
 
 namespace skinfem::pipeline {
 
@@ -45,12 +49,13 @@ Vec2 material_point(const TetMesh& mesh, const PlanarFaceIndex& top, const Eigen
   return X;
 }
 
-FiniteDefectCase finite_defect_case(const Scene& scene, FrictionMode mode) {
+FiniteDefectCase finite_defect_case(const Scene& scene, FrictionMode mode,
+                                    const contact::FiniteContactResult* frictionless) {
   const HoleSweep& sweep = *scene.contact->sweep;
   FiniteDefectCase out;
   out.mode = mode;
   out.name = mode == FrictionMode::coupled ? "sliding" : "static";
-  out.state = finite_contact_run(scene, mode);
+  out.state = finite_contact_run(scene, mode, frictionless);
   const FiniteContactRun& st = out.state;
 
   Stopwatch clock;
@@ -75,6 +80,7 @@ FiniteDefectCase finite_defect_case(const Scene& scene, FrictionMode mode) {
                    std::to_string(sweep.positions) + " positions");
       },
       nullptr, out.material_centres);
+  out.metrics = contact::contact_metrics(solver, *st.mesh, top, out.sweep.baseline, contact_center(scene));
   const Eigen::VectorXd& lam = out.sweep.baseline.lambda;
   out.baseline_rel = (lam - st.result.lambda).cwiseAbs().maxCoeff() / st.result.lambda.maxCoeff();
   const Eigen::MatrixXd& v = out.sweep.varsigma;
@@ -90,7 +96,7 @@ FiniteDefectCase finite_defect_case(const Scene& scene, FrictionMode mode) {
 
 }  // namespace
 
-FiniteDefectRun finite_defect_run(const Scene& scene, const std::vector<FrictionMode>& modes) {
+void check_finite_defect(const Scene& scene, const std::vector<FrictionMode>& modes) {
   require_sweep(scene);
   if (modes.empty()) throw std::invalid_argument("finite_defect_run: no case asked for");
   for (FrictionMode m : modes) {
@@ -104,15 +110,74 @@ FiniteDefectRun finite_defect_run(const Scene& scene, const std::vector<Friction
         scene.source_path +
         ": contact.sweep.hole_model = \"resolved\": with material.model \"neo_hookean\" the hole "
         "is the bulge (\"bulge\"), a small change about the deformed state");
+}
+
+FiniteDefectRun finite_defect_run(const Scene& scene, const std::vector<FrictionMode>& modes,
+                                  std::vector<ChainLevel> coarse) {
+  check_finite_defect(scene, modes);
   FiniteDefectRun run;
+  // Every case's path starts with the same frictionless contact at the full force: solved once when shared.
+  std::optional<FiniteContactRun> frictionless;
+  if (modes.size() > 1) {
+    frictionless = finite_contact_run(scene, FrictionMode::none);
+    for (const auto& [stage, seconds] : frictionless->wall) run.wall[stage + "_frictionless"] = seconds;
+  }
   for (FrictionMode m : modes) {
-    run.cases.push_back(finite_defect_case(scene, m));
+    run.cases.push_back(finite_defect_case(scene, m, frictionless ? &frictionless->solved_result : nullptr));
     const FiniteDefectCase& c = run.cases.back();
     for (const auto& [stage, seconds] : c.state.wall) run.wall[stage + "_" + c.name] = seconds;
     run.wall["tangent_" + c.name] = c.tangent_seconds;
     run.wall["sweep_" + c.name] = c.sweep.seconds;
   }
+  if (!coarse.empty()) {
+    run.levels = std::move(coarse);
+    run.levels.push_back(finite_sliding_level(run));
+  }
   return run;
+}
+
+ChainLevel finite_sliding_level(const FiniteDefectRun& run, double scale) {
+  for (const FiniteDefectCase& c : run.cases)
+    if (c.mode == FrictionMode::coupled) {
+      ChainLevel l;
+      l.scale = scale;
+      l.dofs = c.state.dofs;
+      l.names = {"contact_radius", "contact_p0", "indentation", "hole_signal"};
+      l.value = {c.metrics.contact_radius_mm, c.metrics.p0_MPa, c.state.result.depth_mm,
+                 contact::largest_varsigma_z(c.sweep.varsigma)};
+      const double seconds = c.state.wall.total() + c.tangent_seconds + c.sweep.seconds;
+      l.seconds.assign(l.names.size(), seconds);
+      l.wall["newton"] = c.state.wall.at("newton");
+      l.wall["tangent"] = c.tangent_seconds;
+      l.wall["sweep"] = c.sweep.seconds;
+      l.peak_rss_mb = peak_rss_mb();
+      return l;
+    }
+  throw std::invalid_argument("finite_sliding_level: the run has no sliding (coupled) case");
+}
+
+std::vector<ChainLevel> finite_sliding_levels(const Scene& scene, const std::vector<double>& scales) {
+  check_error_scales(scales);
+  check_finite_defect(scene, {FrictionMode::coupled});
+  // A coarser zone's outer ring is wider, and the finite contact refuses a contact reaching into it: the
+  // zone grows by the ring's growth, so that the same contact keeps the scene's clearance.
+  const auto level = [&](double s, bool cap_holes) {
+    Scene scaled = scaled_scene(scene, s, cap_holes);
+    scaled.contact->zone_radius = contact_zone_radius(scene) + contact_zone_h(scaled) - contact_zone_h(scene);
+    return finite_sliding_level(finite_defect_run(scaled, {FrictionMode::coupled}), s);
+  };
+  std::vector<ChainLevel> out;
+  for (double s : scales) {
+    progress("finite-strain error bar: level x" + validation::fmt("%g", s));
+    try {
+      out.push_back(level(s, false));
+    } catch (const contact::HoleUnresolved&) {
+      out.push_back(level(s, true));
+      out.back().note = "the mesh over the hole capped at its diameter (the scaled one could not see it)";
+    }
+    release_freed_memory();
+  }
+  return out;
 }
 
 nlohmann::json finite_defect_json(const Scene& scene, const FiniteDefectRun& run) {
@@ -142,7 +207,15 @@ nlohmann::json finite_defect_json(const Scene& scene, const FiniteDefectRun& run
   summary["scene"] = scene_json(scene);
   summary["material_model"] = "neo_hookean";
   summary["friction_law"] = to_string(scene.contact->law);
-  summary["left_out"] = "error bars (the finite solve on coarser meshes)";
+  if (run.levels.size() >= 3) {
+    std::vector<double> scales;
+    for (size_t i = 0; i + 1 < run.levels.size(); ++i) scales.push_back(run.levels[i].scale);
+    summary["error_bars"] = error_bars_json(error_bars(chain_errors(run.levels), scales));
+    summary["levels"] = chain_study_json(scene, run.levels).at("levels");
+    summary["left_out"] = "the VTK frames";
+  } else {
+    summary["left_out"] = "the VTK frames and the error bars (the finite solve on coarser meshes)";
+  }
   summary["positions"] = sweep.positions;
   summary["hole_diameter_mm"] = sweep.hole_diameter;
   summary["hole_model"] = "bulge";

@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "skinfem/contact/holes/sweep.hpp"
+#include "skinfem/contact/metrics.hpp"
+#include "skinfem/pipeline/chain_level.hpp"
 #include "skinfem/pipeline/finite_contact.hpp"
 
 namespace skinfem::pipeline {
@@ -30,22 +32,40 @@ struct FiniteDefectCase {
   double max_roughness = 0;  // the jaggedest curve's validation::roughness
   int max_roughness_column = 0;
   double largest_material_shift_mm = 0;  // max |hole centre − the material point under it|
+  contact::ContactMetrics metrics;       // the state's contact in the reference frame, as the linear one's
   double tangent_seconds = 0;            // the condensation on the tangent and the bulges' set-up
 };
 
 struct FiniteDefectRun {
   std::vector<FiniteDefectCase> cases;
   Timings wall;  // per case: mesh_<case>, newton_<case>, tangent_<case>, sweep_<case>
+  // The sliding case's headline quantities (finite_sliding_level) on coarser levels and this one, last;
+  // empty without error bars.
+  std::vector<ChainLevel> levels;
 };
 
-// modes: the cases, static_residual and/or coupled, in order. Throws SceneError as check_finite_contact, when
-// the scene has no contact.sweep or its hole model is not the bulge, and SolverError when Newton cannot carry
-// the load.
+// Throws SceneError as check_finite_contact for each mode, when the scene has no contact.sweep or its hole
+// model is not the bulge; std::invalid_argument for a mode other than static_residual and coupled.
+void check_finite_defect(const Scene& scene, const std::vector<FrictionMode>& modes);
+
+// modes: the cases, static_residual and/or coupled, in order. Throws as check_finite_defect, and SolverError
+// when Newton cannot carry the load. coarse: finite_sliding_levels' result, kept in the run with this
+// level's appended (the modes must then include coupled).
 FiniteDefectRun finite_defect_run(const Scene& scene,
                                   const std::vector<FrictionMode>& modes = {FrictionMode::static_residual,
-                                                                            FrictionMode::coupled});
+                                                                            FrictionMode::coupled},
+                                  std::vector<ChainLevel> coarse = {});
 
-// summary.json of `skinfem defect` on the neo-Hookean skin.
+// The sliding case's contact radius (mm), p0 (MPa), indentation (mm) and largest |ς_z| (MPa), under
+// chain_level's names (contact_radius, contact_p0, indentation, hole_signal), so that chain_errors and
+// error_bars take them; throws std::invalid_argument when the run has no sliding case.
+ChainLevel finite_sliding_level(const FiniteDefectRun& run, double scale = 1);
+// The same on the scene scaled by each of `scales` (every mesh size × s > 1, mesh/sizing.hpp's
+// scaled_scene; the candidate zone grown by its coarser outer ring), each level solved, swept and freed in
+// turn (the sliding case alone): run before the scene's own level, the peak memory stays that level's.
+std::vector<ChainLevel> finite_sliding_levels(const Scene& scene, const std::vector<double>& scales);
+
+// summary.json of `skinfem defect` on the neo-Hookean skin; with levels, error_bars and chain_study's levels.
 nlohmann::json finite_defect_json(const Scene& scene, const FiniteDefectRun& run);
 
 }  // namespace skinfem::pipeline

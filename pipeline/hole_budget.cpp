@@ -6,8 +6,53 @@
 #include "skinfem/pipeline/clock.hpp"
 #include "skinfem/pipeline/progress.hpp"
 #include "skinfem/scene/parallel.hpp"
+#include "skinfem/validation/text.hpp"
 
 namespace skinfem::pipeline {
+
+namespace {
+
+// Appends a hypothesis's result with its count of facts met and its sliding roughness.
+void add_result(HoleBudget& b, validation::HypothesisResult r, int sensors) {
+  int met = 0;
+  for (const auto& f : r.facts) met += f.met;
+  double rough = 0;
+  for (int col = 0; col < 2 * sensors; ++col)
+    rough = std::max(rough, validation::roughness(r.signals[1].col(col)));
+  b.results.push_back(std::move(r));
+  b.facts_met.push_back(met);
+  b.sliding_roughness.push_back(rough);
+}
+
+// The answer, from the verdicts: the hypothesis meeting the most facts (the first listed of equals) and the
+// facts none meets.
+void say_answer(HoleBudget& b) {
+  if (b.results.empty()) {
+    b.answer = "Every hypothesis was skipped: " + b.skipped.at(0).why;
+    return;
+  }
+  int best_met = -1;
+  std::string best;
+  for (size_t i = 0; i < b.results.size(); ++i)
+    if (b.facts_met[i] > best_met) best_met = b.facts_met[i], best = b.results[i].hypothesis.name;
+  std::string answer = "Of " + std::to_string(b.results.size()) + " hypotheses, " + best +
+                       " meets the most of the paper's facts (" + std::to_string(best_met) + " of 5";
+  std::vector<std::string> facts;
+  for (const auto& f : b.results[0].facts) facts.push_back(f.fact);
+  std::sort(facts.begin(), facts.end());  // F1 … F5
+  std::string failed;
+  for (const std::string& fact : facts) {
+    bool any = false;
+    for (const auto& r : b.results)
+      for (const auto& f : r.facts) any = any || (f.fact == fact && f.met);
+    if (!any) failed += (failed.empty() ? "" : ", ") + fact;
+  }
+  answer += failed.empty() ? "); every fact is met by at least one." : "); none meets " + failed + ".";
+  if (!b.skipped.empty()) answer += " Skipped: " + std::to_string(b.skipped.size()) + " (report.json).";
+  b.answer = answer;
+}
+
+}  // namespace
 
 HoleBudget hole_budget(const Scene& scene, const ContactSetup& setup, const validation::Crosscheck& x,
                        const Eigen::VectorXd& reading_scale) {
@@ -69,45 +114,43 @@ HoleBudget hole_budget(const Scene& scene, const ContactSetup& setup, const vali
         progress_step("hole budget: hypotheses", static_cast<int>(done), static_cast<int>(hypotheses.size()),
                       clock.seconds());
       });
-  int best_met = -1;
-  std::string best;
   for (size_t i = 0; i < hypotheses.size(); ++i) {
     if (!runs[i]) {
       out.skipped.push_back({hypotheses[i], why[i]});
       continue;
     }
-    out.results.push_back(std::move(*runs[i]));
-    const validation::HypothesisResult& r = out.results.back();
-    int met = 0;
-    for (const auto& f : r.facts) met += f.met;
-    double rough = 0;
-    for (int col = 0; col < 2 * ns; ++col)
-      rough = std::max(rough, validation::roughness(r.signals[1].col(col)));
-    out.facts_met.push_back(met);
-    out.sliding_roughness.push_back(rough);
-    if (met > best_met) best_met = met, best = hypotheses[i].name;
+    add_result(out, std::move(*runs[i]), ns);
   }
-  // The answer, from the verdicts.
-  if (out.results.empty()) {
-    out.answer = "Every hypothesis was skipped: " + out.skipped.at(0).why;
-    return out;
-  }
-  std::string answer = "Of " + std::to_string(out.results.size()) + " hypotheses, " + best +
-                       " meets the most of the paper's facts (" + std::to_string(best_met) + " of 5";
-  std::vector<std::string> facts;
-  for (const auto& f : out.results[0].facts) facts.push_back(f.fact);
-  std::sort(facts.begin(), facts.end());  // F1 … F5
-  std::string failed;
-  for (const std::string& fact : facts) {
-    bool any = false;
-    for (const auto& r : out.results)
-      for (const auto& f : r.facts) any = any || (f.fact == fact && f.met);
-    if (!any) failed += (failed.empty() ? "" : ", ") + fact;
-  }
-  answer += failed.empty() ? "); every fact is met by at least one." : "); none meets " + failed + ".";
-  if (!out.skipped.empty()) answer += " Skipped: " + std::to_string(out.skipped.size()) + " (report.json).";
-  out.answer = answer;
+  say_answer(out);
   return out;
+}
+
+void add_finite_row(HoleBudget& b, const Scene& scene, const FiniteDefectRun& run) {
+  if (!b.unavailable.empty()) return;
+  if (run.cases.size() != 2 || run.cases[0].mode != FrictionMode::static_residual ||
+      run.cases[1].mode != FrictionMode::coupled)
+    throw std::invalid_argument("add_finite_row: the run's cases are static_residual, then coupled");
+  validation::HypothesisResult r;
+  r.hypothesis = {"coulomb_finite",
+                  "Coulomb friction (mu = " + validation::fmt("%g", scene.contact->mu) +
+                      ") on the neo-Hookean skin in finite strain: the plate meets the deformed surface, the "
+                      "hole acts on the material under it, its signal the tangent's answer",
+                  *scene.contact};
+  validation::FactsInput base = b.base;
+  for (int c = 0; c < 2; ++c) {
+    r.signals[c] = run.cases[c].sweep.varsigma;
+    if (base.reading_scale.size()) r.signals[c] *= base.reading_scale.cwiseInverse().asDiagonal();
+    r.seconds += run.cases[c].sweep.seconds + run.cases[c].tangent_seconds + run.cases[c].state.wall.total();
+  }
+  const FiniteContactRun& sliding = run.cases[1].state;
+  r.contact_radius_mm = run.cases[1].metrics.contact_radius_mm;
+  r.tangential_force_N = sliding.tangential_force_N;
+  base.fe = r.signals;
+  base.contact_radius_mm = r.contact_radius_mm;
+  r.ratio = validation::amplitude_ratios(base);
+  r.facts = validation::judge_facts(base);
+  add_result(b, std::move(r), static_cast<int>(scene.sensors.positions.size()));
+  say_answer(b);
 }
 
 nlohmann::json hole_budget_json(const Scene& scene, const HoleBudget& b) {

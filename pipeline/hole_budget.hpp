@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "skinfem/pipeline/contact_setup.hpp"
+#include "skinfem/pipeline/finite_defect.hpp"
 #include "skinfem/validation/crosscheck.hpp"
 #include "skinfem/validation/hole_budget.hpp"
 
@@ -33,6 +34,10 @@ struct HoleBudget {
 // reading_scale: validation::FactsInput's (post sensors: from pipeline::paper_reading_scale).
 HoleBudget hole_budget(const Scene& scene, const ContactSetup& setup, const validation::Crosscheck& x,
                        const Eigen::VectorXd& reading_scale = {});
+// Adds the finite-kinematics row: the scene's Coulomb friction on the neo-Hookean skin in finite strain, its
+// static and sliding cases (run.cases, in that order) judged against b.base as the linear rows are, and says
+// b.answer again over every row.
+void add_finite_row(HoleBudget& b, const Scene& scene, const FiniteDefectRun& run);
 // report.json's hole_budget entry: noise, rules, units, each hypothesis's facts and peaks, the answer; or
 // {"skipped": why}.
 nlohmann::json hole_budget_json(const Scene& scene, const HoleBudget& b);

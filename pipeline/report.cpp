@@ -9,6 +9,7 @@
 #include "skinfem/pipeline/adjoint_setup.hpp"
 #include "skinfem/pipeline/contact_setup.hpp"
 #include "skinfem/pipeline/crosscheck.hpp"
+#include "skinfem/pipeline/finite_deformation.hpp"
 #include "skinfem/pipeline/meridian_contact.hpp"
 #include "skinfem/pipeline/progress.hpp"
 #include "skinfem/pipeline/scene_json.hpp"
@@ -25,13 +26,15 @@ using validation::fmt;
 // One report's state between its stages; report_run calls the steps in order.
 class Chain {
  public:
-  Chain(const Scene& scene, const ReportOptions& options, ReportSink& sink)
-      : scene_(scene), options_(options), fast_(options.fast), sink_(sink) {}
+  // scene: the linear skin's; finite: the scene as given when its material.model is neo_hookean, else null.
+  Chain(const Scene& scene, const Scene* finite, const ReportOptions& options, ReportSink& sink)
+      : scene_(scene), finite_(finite), options_(options), fast_(options.fast), sink_(sink) {}
   Chain(const Chain&) = delete;
   Chain& operator=(const Chain&) = delete;
   void factor();        // the meridian checks, the one factorization and the sensors' adjoints
   void green();         // the green stage, the mesh's summary beside it; starts kfit and the k sweep
-  void contact();       // contact, defect sweep, crosscheck, hole budget (a scene with a contact)
+  void contact();       // contact, defect sweep, crosscheck, hole budget (a scene with a contact), and
+                        // with a neo-Hookean scene its finite deformation
   void error_levels();  // kfit's and the k sweep's ends, then the coarser levels of the error bars
   void post_design();   // or, in a fast report, what it left out
   ReportResult finish();
@@ -41,6 +44,7 @@ class Chain {
   void finish_k_sweep(const std::vector<validation::KSweepPoint>& mesh_rows);
 
   const Scene& scene_;
+  const Scene* finite_;
   const ReportOptions& options_;
   const bool fast_;
   ReportSink& sink_;
@@ -59,6 +63,7 @@ class Chain {
   std::optional<DefectRun> defect_;
   std::optional<KfitResult> kfit_;
   std::optional<PostDesignRun> post_run_;  // its processes killed if the report stops before it is waited for
+  std::optional<ChainLevel> finite_level_;  // the finite sliding state's headline values, for its error bars
 
   // Declared after what they read, so that they are waited for before it goes.
   struct MeridianChecks {
@@ -225,9 +230,22 @@ void Chain::contact() {
   if (fast_) return;
   clock = Stopwatch();
   out_.budget = hole_budget(scene_, *contact_, x, paper_reading_scale(*kfit_));
+  out_.wall["hole_budget"] = clock.seconds();
+  if (finite_) {
+    // The factorization is gone; the finite states' own (1.2 GB on the default scene) come one at a time.
+    clock = Stopwatch();
+    progress(
+        "finite deformation: the static and sliding states on the neo-Hookean skin and their hole sweeps");
+    const FiniteDeformation f = finite_deformation(*finite_, *defect_);
+    add_finite_row(*out_.budget, *finite_, f.run);
+    report_["finite_deformation"] = finite_deformation_json(*finite_, f, &*out_.budget);
+    finite_level_ = finite_sliding_level(f.run);
+    out_.wall["finite_deformation"] = clock.seconds();
+    clock = Stopwatch();
+  }
   sink_.hole_budget(*out_.budget, x);
   report_["hole_budget"] = hole_budget_json(scene_, *out_.budget);
-  out_.wall["hole_budget"] = clock.seconds();
+  out_.wall["hole_budget"] += clock.seconds();
 }
 
 // The chain's headline quantities on this mesh and on coarser ones (every mesh size scaled), Richardson
@@ -265,6 +283,15 @@ void Chain::error_levels() {
   out_.exponents = time_vs_dofs_exponent(levels);
   report_["error_bars"] = error_bars_json(out_.error_bars);
   out_.wall["error_levels"] = clock.seconds();
+  if (finite_level_) {
+    // The finite sliding state on the same coarser meshes: its own error bars, beside the linear ones.
+    const Stopwatch finite_clock;
+    std::vector<ChainLevel> finite = finite_sliding_levels(*finite_, scales);
+    finite.push_back(*finite_level_);
+    report_["finite_deformation"]["error_bars"] = error_bars_json(error_bars(chain_errors(finite), scales));
+    report_["finite_deformation"]["levels"] = chain_study_json(*finite_, finite).at("levels");
+    out_.wall["finite_error_levels"] = finite_clock.seconds();
+  }
   std::vector<validation::KSweepPoint> mesh_rows;
   for (const ChainLevel& l : levels) mesh_rows.push_back({"mesh_scale", l.scale, l.value[0], l.value[1]});
   finish_k_sweep(mesh_rows);
@@ -292,6 +319,7 @@ void Chain::post_design() {
   if (scene_.contact && scene_.contact->sweep)
     left.insert(left.end(), {"the hole-signal budget of hypotheses", "the defect sweep's VTK frames"});
   left.push_back("the post design sweep");
+  if (finite_) left.push_back("the finite deformation (material.model neo_hookean)");
   left.push_back("the k sweep (which protocol reading gives the paper's k)");
   if (scene_.geometry.kind == GeometryKind::cap)
     left.push_back("the cap's effective-thickness fits (kfit.json)");
@@ -301,7 +329,7 @@ void Chain::post_design() {
 }
 
 ReportResult Chain::finish() {
-  report_["scene"] = scene_json(scene_);
+  report_["scene"] = scene_json(finite_ ? *finite_ : scene_);
   report_["wall_s"] = out_.wall;
   report_["wall_beside_s"] = out_.beside;
   report_["units"] = {
@@ -313,12 +341,22 @@ ReportResult Chain::finish() {
 
 }  // namespace
 
-ReportResult report_run(const Scene& scene, const ReportOptions& options, ReportSink& sink) {
-  require_linear(scene, "report");
+void check_report(const Scene& scene, const ReportOptions& options) {
   check_error_scales(options.error_scales);
   if (options.fast && !options.error_scales.empty())
     throw SceneError("error_scales: a fast report draws no error bars; give one or the other");
-  Chain chain(scene, options, sink);
+  if (scene.material.model == MaterialModel::neo_hookean && !options.fast)
+    check_finite_defect(scene, {FrictionMode::static_residual, FrictionMode::coupled});
+}
+
+ReportResult report_run(const Scene& scene, const ReportOptions& options, ReportSink& sink) {
+  check_report(scene, options);
+  // A neo-Hookean scene: the chain (Green tensors, k, the linear contact and budget) on the linear skin, its
+  // small-signal model, then the finite deformation beside it.
+  const bool finite = scene.material.model == MaterialModel::neo_hookean;
+  Scene linear = scene;
+  linear.material.model = MaterialModel::linear;
+  Chain chain(linear, finite ? &scene : nullptr, options, sink);
   chain.factor();
   chain.green();
   if (scene.contact) chain.contact();

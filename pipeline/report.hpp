@@ -87,8 +87,16 @@ struct ReportResult {
   double peak_rss_mb = 0;  // the process's peak resident memory at its end
 };
 
-// Throws SceneError on bad options (check_error_scales; error scales with fast) before any stage, or on a
-// scene the chain cannot take; SolverError when a solve fails. The sink's calls made by then stand.
+// Throws SceneError on bad options (check_error_scales; error scales with fast), or on a neo-Hookean scene
+// whose finite deformation the report cannot solve (pipeline/finite_defect.hpp check_finite_defect; a fast
+// report leaves it out): what report_run checks before any stage, for a front end to call before it writes.
+void check_report(const Scene& scene, const ReportOptions& options);
+
+// A scene with material.model neo_hookean is reported on its linear skin (Green tensors, k, contact, hole
+// sweep, budget: the small-signal model), then its finite deformation beside it (report.json
+// finite_deformation, the budget's coulomb_finite row; pipeline/finite_deformation.hpp). Throws as
+// check_report before any stage, SceneError on a scene the chain cannot take and SolverError when a solve
+// fails. The sink's calls made by then stand.
 ReportResult report_run(const Scene& scene, const ReportOptions& options, ReportSink& sink);
 
 }  // namespace skinfem::pipeline

@@ -10,9 +10,9 @@ namespace skinfem::pipeline {
 
 void require_linear(const Scene& scene, const std::string& stage) {
   if (scene.material.model != MaterialModel::linear)
-    throw SceneError(scene.source_path + ": material.model = \"" + to_string(scene.material.model) +
-                     "\": " + stage +
-                     " takes \"linear\" only (the finite-strain skin runs in solve, contact and defect)");
+    throw SceneError(
+        scene.source_path + ": material.model = \"" + to_string(scene.material.model) + "\": " + stage +
+        " takes \"linear\" only (the finite-strain skin runs in solve, contact, defect and report)");
 }
 
 std::shared_ptr<Skin> skin_setup(const Scene& scene, MeshPart part, const Border& border) {

@@ -82,7 +82,7 @@ bad nu_negative 'd["material"]["nu"] = -0.1' 'material.nu = -0.1: must be a numb
 bad model_unknown 'd["material"]["model"] = "mooney"' 'material.model = "mooney": must be one of "linear", "neo_hookean"'
 bad model_neo_hookean_compressible 'd["material"].update(model="neo_hookean", nu=0.45)' 'material.nu = 0.45: must be 0.5 with "model": "neo_hookean"'
 bad model_neo_hookean_punch_force 'd["material"]["model"] = "neo_hookean"' 'loads.punches\[0\].force: with material.model "neo_hookean" a punch is driven by its "displacement"'
-bad model_neo_hookean_kfit 'd["material"]["model"] = "neo_hookean"' 'material.model = "neo_hookean": kfit takes "linear" only \(the finite-strain skin runs in solve, contact and defect\)' kfit
+bad model_neo_hookean_kfit 'd["material"]["model"] = "neo_hookean"' 'material.model = "neo_hookean": kfit takes "linear" only \(the finite-strain skin runs in solve, contact, defect and report\)' kfit
 bad cap_h_ge_R 'd["geometry"] = {"type": "cap", "R": 3, "h": 3, "apex": [0, 0], "truncation_radius": 2}' 'geometry.h = 3: must be a number in \(0, R\)'
 bad cap_truncation 'd["geometry"] = {"type": "cap", "R": 129.7, "h": 3.04, "apex": [0, 0], "truncation_radius": 40}' 'geometry.truncation_radius = 40: .*where the cap thins to zero'
 bad no_sensors 'd["sensors"]["positions"] = []' 'sensors.positions = \[\]: must be a non-empty array'
@@ -243,6 +243,7 @@ bad neo_contact_interface "$neo"', "interface": {"law": "linear", "K": 5}}' 'con
 bad neo_contact_sphere "$neo"', "friction": {"mode": "coupled", "mu": 1}}' 'contact.indenter = "sphere": with material.model "neo_hookean" a sphere is frictionless \(friction mode .none., not .coupled.\)' contact
 bad neo_contact_uncoupled "$neo"', "friction": {"mode": "uncoupled", "mu": 1, "static_ratio": 0.1}}' "friction mode 'uncoupled' \(--friction or contact.friction.mode\): with material.model \"neo_hookean\" the contact is frictionless \('none'\), at rest" contact
 bad neo_defect_resolved "$neo"'}; d["contact"]["indenter"] = {"type": "plane"}; d["geometry"] = {"type": "cap", "R": 20.0, "h": 3.0, "apex": [0.0, 0.0], "truncation_radius": 8.0}; d["contact"]["sweep"] = {"from": [-1, 0], "to": [1, 0], "hole_model": "resolved"}' 'contact.sweep.hole_model = "resolved": with material.model "neo_hookean" the hole is the bulge' defect
+bad neo_report_law "$neo"'}; d["contact"]["indenter"] = {"type": "plane"}; d["geometry"] = {"type": "cap", "R": 20.0, "h": 3.0, "apex": [0.0, 0.0], "truncation_radius": 8.0}; d["contact"]["sweep"] = {"from": [-1, 0], "to": [1, 0]}; d["contact"]["friction"] = {"law": "shear_strength", "mu": 1}' 'contact.friction.law = "shear_strength": with material.model "neo_hookean" friction is Coulomb.s' report
 variant neo_meridian "$neo"'}'
 check neo_contact_meridian '--path meridian: with material.model "neo_hookean" the contact is solved in 3D' "$skinfem" contact "$tmp/neo_meridian.json" --path meridian --out "$tmp/out"
 bad friction_law_unknown "$sphere, \"friction\": {\"law\": \"tresca\"}}" 'contact.friction.law = "tresca": must be one of "coulomb", "shear_strength", "mixed"' contact

@@ -15,14 +15,17 @@
 # a/R relative (a = the contact's area-equivalent radius, 0.96 mm: 4.8 %); the surface moves ahead under the
 # traction, so the current frame's force centroid lies ahead of the reference one by at most the largest
 # tangential displacement. Then `skinfem defect` about that sliding state and the state at rest (static_ratio
-# 0.3; 25 hole positions each): the tangent's
+# 0.3; 25 hole positions each; with the sliding state's error bars, whose values must be its own): the tangent's
 # own hole-free contact is the finite one (to 1e-9 of the largest pressure: the tangent's gaps are built to
 # have it as their solution, so a wrong mirror view or zone would show), each hole acts on material behind
 # its centre, by about the largest tangential displacement of the zone's vertices (within 10 %: the top's
 # quadratic interpolation between them and u_y add to it), and complementarity holds at every position. (The
 # signals' change against the linear skin's has no bound of this kind: it is the surface's shear strain
-# μ p / G, 10 % here; pipeline_test_finite_defect checks them against full finite solves.) The sanitizer pass
-# runs the frictionless contact alone (the same code).
+# μ p / G, 10 % here; pipeline_test_finite_defect checks them against full finite solves.) Then `skinfem
+# report` of the same neo-Hookean scene (no error bars): its finite section's readings and hole amplitudes are
+# the commands' (finite: `contact`, `defect`; linear: `defect` on the linear skin) to 1e-9, on one mesh, its
+# budget ends with the coulomb_finite row, and the page and figure show them. The sanitizer pass runs the
+# frictionless contact alone (the same code).
 set -u
 skinfem=$1
 against=${2:-}
@@ -60,9 +63,12 @@ if [ -n "$against" ]; then
   "$skinfem" contact "$tmp/lin.json" --out "$tmp/lin" >"$tmp/lin.out" 2>"$tmp/err" || { echo "FAIL linear contact:"; cat "$tmp/err"; exit 1; }
   for model in neo lin; do
     /usr/bin/python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); d["contact"]["sweep"] = {"from": [-1.2, 0.0], "to": [1.2, 0.0], "positions": 25, "hole_diameter": 0.5, "h": 0.5}; json.dump(d, open(sys.argv[2], "w"))' "$tmp/$model.json" "$tmp/${model}_sweep.json"
-    "$skinfem" defect "$tmp/${model}_sweep.json" --no-error-bars --out "$tmp/${model}_defect" >"$tmp/${model}_defect.out" 2>"$tmp/err" || { echo "FAIL $model defect:"; cat "$tmp/err"; exit 1; }
+    bars=--no-error-bars
+    [ $model = neo ] && bars=  # the finite sliding state's error bars: two coarser levels of this coarse cap
+    "$skinfem" defect "$tmp/${model}_sweep.json" $bars --out "$tmp/${model}_defect" >"$tmp/${model}_defect.out" 2>"$tmp/err" || { echo "FAIL $model defect:"; cat "$tmp/err"; exit 1; }
   done
   cat "$tmp/neo_defect.out"
+  "$skinfem" report "$tmp/neo_sweep.json" --no-error-bars --out "$tmp/report" >"$tmp/report.out" 2>"$tmp/err" || { echo "FAIL neo_hookean report:"; cat "$tmp/err"; exit 1; }
 fi
 /usr/bin/python3 - "$tmp" "$against" <<'PY'
 import csv, json, os, re, sys
@@ -117,9 +123,33 @@ if against:
         if not c["max_complementarity"] < 1e-12: bad.append(f"{name} complementarity {c['max_complementarity']}")
         g = peak(c) / peak(dl["cases"][name]) - 1
         print(f"largest {name} |varsigma_z|: {peak(c):.4f} against the linear skin's {peak(dl['cases'][name]):.4f} kPa ({g:+.2e})")
+    # The error bars are the sliding state's own numbers, with their levels coarse to fine.
+    bars = {b["quantity"]: b for b in d["error_bars"]}
+    sl = d["cases"]["sliding"]
+    for q, want in (("hole_signal", peak(sl)), ("indentation", sl["state"]["indentation_um"])):
+        if abs(bars[q]["value"] - want) > 1e-9 * want: bad.append(f"error bar {q} {bars[q]['value']} against {want}")
+    if sorted(bars) != ["contact_p0", "contact_radius", "hole_signal", "indentation"]: bad.append(f"error bars {sorted(bars)}")
+    if not all(0 <= b["error"] < b["value"] for b in bars.values()): bad.append(f"error bars {bars}")
+    if [l["scale"] for l in d["levels"]] != [2, 1.41, 1] or not d["levels"][0]["dofs"] < d["levels"][1]["dofs"] < d["levels"][2]["dofs"]: bad.append(f"levels {d['levels']}")
     # At rest the plate pulls less (0.3 p against p), so the surface moves less: its state's u_t is smaller.
     ut = {n: c["state"]["max_tangential_displacement_mm"] for n, c in d["cases"].items()}
     if not ut["static"] < ut["sliding"]: bad.append(f"u_t at rest {ut['static']} not below sliding {ut['sliding']}")
+    # The report of the neo-Hookean scene: its finite section is the commands' finite and linear runs again.
+    r = json.load(open(f"{tmp}/report/report.json"))
+    fd = r["finite_deformation"]
+    if not fd["same_mesh"]: bad.append("the report's linear and finite skins differ")
+    for row, finite in zip(fd["cases"]["sliding"]["readings"], rows("neo")):
+        for c in ("sigma_z_kPa", "sigma_x_kPa"):
+            if abs(row[c]["finite"] - float(finite[c])) > 1e-9 * scale: bad.append(f"report sensor {row['sensor']} {c} {row[c]['finite']} against contact's {finite[c]}")
+    for name in ("static", "sliding"):
+        for a, f, l in zip(fd["cases"][name]["hole_amplitudes"], d["cases"][name]["sensors"], dl["cases"][name]["sensors"]):
+            for got, want in ((a["z"]["finite_kPa"], f["peak_abs_varsigma_z_kPa"]), (a["z"]["linear_kPa"], l["peak_abs_varsigma_z_kPa"])):
+                if abs(got - want) > 1e-9 * want: bad.append(f"report {name} sensor {a['sensor']} amplitude {got} against defect's {want}")
+    row = r["hole_budget"]["hypotheses"][-1]
+    print(f"report: {fd['answer']}")
+    if row["name"] != "coulomb_finite" or row["facts_met"] != sum(v["met"] for v in row["facts"].values()): bad.append(f"budget row {row['name']}")
+    if "Does finite deformation matter at the paper's load?" not in open(f"{tmp}/report/index.html").read(): bad.append("page lacks the finite section")
+    if not os.path.getsize(f"{tmp}/report/figures/budget_coulomb_finite.png") > 0: bad.append("no budget_coulomb_finite.png")
 for b in bad: print("FAIL", b)
 sys.exit(1 if bad else 0)
 PY

@@ -110,6 +110,24 @@ TEST(FiniteContact, TheSkinCarriesThePlatesForceAndTheContactIsComplementary) {
   EXPECT_LT(r.lambda.cwiseProduct(r.gap).cwiseAbs().maxCoeff(), 1e-10 * r.lambda.maxCoeff() * gap_scale);
 }
 
+// A static and a sliding case share their path's first part, the frictionless contact at the full force:
+// resumed from it, the ratio's part is the whole path's, to the last bit (the same steps on the same states).
+TEST(FiniteContact, ThePathResumedFromTheFrictionlessStateIsTheWholePath) {
+  Cap& c = cap();
+  const FiniteContactResult rest = finite(0.3, 0.0), &whole = sliding();
+  const FiniteContactResult resumed = solve_finite_contact(
+      c.mesh, c.mu_shear, c.held.fixed, *c.zone, *c.indenter, {0.3, 3.0, {1, 0}, {}}, {}, {}, &rest);
+  EXPECT_EQ(resumed.solution.u, whole.solution.u);
+  EXPECT_EQ(resumed.lambda, whole.lambda);
+  EXPECT_EQ(resumed.depth_mm, whole.depth_mm);
+  EXPECT_EQ(resumed.steps.size() + rest.steps.size(), whole.steps.size());
+  EXPECT_EQ(resumed.factorizations + rest.factorizations, whole.factorizations);
+  // Friction does not go back along the path.
+  EXPECT_THROW(solve_finite_contact(c.mesh, c.mu_shear, c.held.fixed, *c.zone, *c.indenter,
+                                    {0.3, 1.0, {1, 0}, {}}, {}, {}, &whole),
+               std::invalid_argument);
+}
+
 TEST(FiniteContact, NewtonConvergesQuadraticallyOnceTheContactSetSettles) {
   // Josephy–Newton: with the set fixed it is Newton on a smooth system, so near the solution each residual is
   // about the square of the last: log r_{k+1} / log r_k ≥ 1.8 (a constant C in r_{k+1} = C r_k² of up to

@@ -136,6 +136,46 @@ TEST_F(HoleBudgetStage, TheJsonSaysTheTypedBudget) {
   EXPECT_EQ(j.contains("skipped"), !b.skipped.empty());
 }
 
+// The finite row is judged as the linear rows are: fed the linear skin's own static and sliding sweeps (the
+// scene's Coulomb law, as the "coulomb" row sweeps them), it is that row again, and the answer counts it.
+TEST_F(HoleBudgetStage, AFiniteRowOfTheLinearSweepsIsTheCoulombRow) {
+  HoleBudget b = *budget_;
+  const auto coulomb = std::find_if(b.results.begin(), b.results.end(),
+                                    [](const auto& r) { return r.hypothesis.name == "coulomb"; });
+  ASSERT_NE(coulomb, b.results.end());
+  const size_t coulomb_row = coulomb - b.results.begin();
+  const validation::HypothesisResult linear = *coulomb;
+  FiniteDefectRun run;
+  for (int c = 0; c < 2; ++c) {
+    FiniteDefectCase fc;
+    fc.mode = defect_->sweeps[c].mode;
+    fc.sweep = defect_->sweeps[c];
+    fc.metrics = contact::contact_metrics(*contact_->solver, contact_->mesh(), *contact_->top,
+                                          fc.sweep.baseline, contact_center(*scene_));
+    fc.state.tangential_force_N = linear.tangential_force_N;
+    run.cases.push_back(std::move(fc));
+  }
+  add_finite_row(b, *scene_, run);
+  ASSERT_EQ(b.results.size(), budget_->results.size() + 1);
+  const validation::HypothesisResult& finite = b.results.back();
+  EXPECT_EQ(finite.hypothesis.name, "coulomb_finite");
+  for (int c = 0; c < 2; ++c) {
+    EXPECT_EQ(finite.signals[c], linear.signals[c]);
+    EXPECT_EQ(finite.ratio[c], linear.ratio[c]);
+  }
+  EXPECT_EQ(finite.contact_radius_mm, linear.contact_radius_mm);
+  ASSERT_EQ(finite.facts.size(), linear.facts.size());
+  for (size_t i = 0; i < linear.facts.size(); ++i) {
+    EXPECT_EQ(finite.facts[i].met, linear.facts[i].met) << linear.facts[i].fact;
+    EXPECT_EQ(finite.facts[i].why, linear.facts[i].why);
+  }
+  EXPECT_EQ(b.facts_met.back(), b.facts_met[coulomb_row]);
+  EXPECT_TRUE(has(b.answer, "Of " + std::to_string(b.results.size()) + " hypotheses")) << b.answer;
+  // Its cases must be static, then sliding.
+  std::swap(run.cases[0], run.cases[1]);
+  EXPECT_THROW(add_finite_row(b, *scene_, run), std::invalid_argument);
+}
+
 TEST_F(HoleBudgetStage, WithoutThePapersModelTheBudgetIsSkippedWithTheReason) {
   validation::Crosscheck without = *x_;  // as a plane on a flat layer leaves it: no paper_model variant
   for (size_t v = 0; v < without.signal_variants.size(); ++v)

@@ -1,0 +1,149 @@
+#include "skinfem/pipeline/finite_deformation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "skinfem/validation/crosscheck.hpp"
+#include "skinfem/validation/text.hpp"
+
+namespace skinfem::pipeline {
+
+namespace {
+
+using validation::fmt;
+
+constexpr const char* kCases[2] = {"static", "sliding"};
+
+nlohmann::json beside(double linear, double finite) {
+  return {{"linear", linear}, {"finite", finite}, {"change_rel", linear != 0 ? finite / linear - 1 : 0.0}};
+}
+
+// max |ς| of column col over the positions, MPa.
+double peak(const Eigen::MatrixXd& s, int col) { return s.col(col).cwiseAbs().maxCoeff(); }
+
+struct Range {
+  double lo = 1e300, hi = 0;
+  void add(double v) { lo = std::min(lo, v), hi = std::max(hi, v); }
+};
+// "x0.96–1.10 on the front sensors", or "no front sensor".
+std::string on(const Range& r, const std::string& where) {
+  return r.hi > 0 ? "x" + fmt("%.2f", r.lo) + "–" + fmt("%.2f", r.hi) + " on the " + where + " sensors"
+                  : "no " + where + " sensor";
+}
+
+}  // namespace
+
+FiniteDeformation finite_deformation(const Scene& scene, const DefectRun& linear) {
+  if (linear.sweeps.size() != 2 || linear.sweeps[0].mode != FrictionMode::static_residual ||
+      linear.sweeps[1].mode != FrictionMode::coupled)
+    throw std::invalid_argument(
+        "finite_deformation: the linear run's cases are static_residual, then coupled");
+  FiniteDeformation f;
+  f.run = finite_defect_run(scene, {FrictionMode::static_residual, FrictionMode::coupled});
+  const ContactSetup& setup = *linear.setup;
+  for (int c = 0; c < 2; ++c) {
+    f.linear[c] = linear.sweeps[c].baseline;
+    f.linear_metrics[c] =
+        contact::contact_metrics(*setup.solver, setup.mesh(), *setup.top, f.linear[c], contact_center(scene));
+    f.linear_signals[c] = linear.sweeps[c].varsigma;
+  }
+  const TetMesh& a = setup.skin->mesh;
+  const TetMesh& b = *f.run.cases[0].state.solved;
+  f.same_mesh = a.num_nodes() == b.num_nodes() && a.num_tets() == b.num_tets() && a.nodes == b.nodes;
+  return f;
+}
+
+nlohmann::json finite_deformation_json(const Scene& scene, const FiniteDeformation& f,
+                                       const HoleBudget* budget) {
+  const int ns = static_cast<int>(scene.sensors.positions.size());
+  const std::vector<int> front =
+      validation::front_sensors(scene.sensors, contact_center(scene), scene.contact->direction);
+  const auto is_front = [&](int k) { return std::find(front.begin(), front.end(), k) != front.end(); };
+  nlohmann::json out;
+  out["question"] = "Does finite deformation matter at the paper's load?";
+  out["material_model"] = "neo_hookean";
+  out["same_mesh"] = f.same_mesh;
+  out["dofs"] = f.run.cases.at(0).state.dofs;
+  out["force_N"] = f.run.cases[0].state.force_N;
+  out["mu"] = scene.contact->mu;
+  std::array<Range, 2> front_ratio, back_ratio;  // sliding hole amplitudes, finite over linear
+  for (int c = 0; c < 2; ++c) {
+    const FiniteDefectCase& fc = f.run.cases[c];
+    const FiniteContactRun& st = fc.state;
+    const contact::ContactMetrics &lm = f.linear_metrics[c], &fm = fc.metrics;
+    nlohmann::json j;
+    j["tangential_force_N"] = st.tangential_force_N;
+    j["contact"] = {{"contact_radius_mm", beside(lm.contact_radius_mm, fm.contact_radius_mm)},
+                    {"p0_kPa", beside(1e3 * lm.p0_MPa, 1e3 * fm.p0_MPa)},
+                    {"p_max_kPa", beside(1e3 * lm.p_max_MPa, 1e3 * fm.p_max_MPa)},
+                    {"indentation_um", beside(1e3 * f.linear[c].depth_mm, 1e3 * st.result.depth_mm)},
+                    {"front_edge_mm", beside(lm.front_edge_mm, fm.front_edge_mm)},
+                    {"back_edge_mm", beside(lm.back_edge_mm, fm.back_edge_mm)},
+                    {"zone_centroid_x_mm", beside(lm.zone_centroid[0], fm.zone_centroid[0])},
+                    {"pressure_centroid_x_mm", beside(lm.pressure_centroid[0], fm.pressure_centroid[0])},
+                    {"frame", "material (reference): where the skin's material touches"}};
+    const contact::ContactZoneFrame& cur = st.current;
+    j["spatial_zone"] = {
+        {"frame", "spatial (current): where the deformed surface touches the plate"},
+        {"front_edge_mm", cur.front_mm},
+        {"back_edge_mm", -cur.back_mm},
+        {"zone_centroid_mm", {cur.zone_centroid[0], cur.zone_centroid[1]}},
+        {"anisotropy", cur.half_width_mm > 0 ? (cur.front_mm + cur.back_mm) / (2 * cur.half_width_mm) : 0.0},
+        {"shift_from_material_mm", cur.zone_centroid[0] - st.reference.zone_centroid[0]}};
+    j["max_tangential_displacement_mm"] = st.max_tangential_mm;
+    j["tangential_displacement_over_indentation"] = st.max_tangential_mm / st.result.depth_mm;
+    const Eigen::VectorXd& lr = f.linear[c].readings;
+    const Eigen::MatrixXd &ls = f.linear_signals[c], &fs = fc.sweep.varsigma;
+    for (int k = 0; k < ns; ++k) {
+      j["readings"].push_back({{"sensor", k + 1},
+                               {"sigma_z_kPa", beside(1e3 * lr[2 * k], 1e3 * st.readings[k].sigma_z)},
+                               {"sigma_x_kPa", beside(1e3 * lr[2 * k + 1], 1e3 * st.readings[k].sigma_x)}});
+      nlohmann::json a = {{"sensor", k + 1}, {"front", is_front(k)}};
+      for (int d = 0; d < 2; ++d) {
+        const double l = peak(ls, 2 * k + d), g = peak(fs, 2 * k + d);
+        a[d ? "x" : "z"] = {{"linear_kPa", 1e3 * l}, {"finite_kPa", 1e3 * g}, {"ratio", l > 0 ? g / l : 0.0}};
+        if (l > 0) (is_front(k) ? front_ratio : back_ratio)[c].add(g / l);
+      }
+      j["hole_amplitudes"].push_back(a);
+    }
+    j["hole_amplitude_ratio"] = {{"front", {front_ratio[c].lo, front_ratio[c].hi}},
+                                 {"back", {back_ratio[c].lo, back_ratio[c].hi}}};
+    out["cases"][kCases[c]] = j;
+  }
+  out["wall_s"] = f.run.wall;
+  out["seconds"] = f.run.wall.total();
+
+  // The answer, from the sliding case's numbers.
+  const FiniteContactRun& st = f.run.cases[1].state;
+  const contact::ContactMetrics &lm = f.linear_metrics[1], &fm = f.run.cases[1].metrics;
+  const auto pct = [](double lin, double fin) { return fmt("%+.1f %%", 100 * (fin / lin - 1)); };
+  const auto moved = [](double lin, double fin) {
+    const std::string a = fmt("%.2f", lin), b = fmt("%.2f", fin);
+    return a == b ? "stays at " + a + " mm" : "goes from " + a + " to " + b + " mm";
+  };
+  std::string answer =
+      "Sliding at mu = " + fmt("%g", scene.contact->mu) + " under " + fmt("%g", st.force_N) +
+      " N, finite strain changes the contact radius by " + pct(lm.contact_radius_mm, fm.contact_radius_mm) +
+      " (" + fmt("%.3f", lm.contact_radius_mm) + " to " + fmt("%.3f", fm.contact_radius_mm) + " mm), p0 by " +
+      pct(lm.p0_MPa, fm.p0_MPa) + " and the indentation by " + pct(f.linear[1].depth_mm, st.result.depth_mm) +
+      "; in the material frame the zone's back edge " + moved(lm.back_edge_mm, fm.back_edge_mm) +
+      " and its front edge " + moved(lm.front_edge_mm, fm.front_edge_mm) +
+      ", and the deformed surface carries the zone " +
+      fmt("%.2f", st.current.zone_centroid[0] - st.reference.zone_centroid[0]) +
+      " mm along x (spatial against material centroid). Sliding hole amplitudes, finite over linear: " +
+      on(front_ratio[1], "front") + ", " + on(back_ratio[1], "back") + ".";
+  if (!f.same_mesh) answer += " The two skins were meshed differently: the changes include mesh error.";
+  if (budget)
+    for (size_t i = 0; i < budget->results.size(); ++i)
+      if (budget->results[i].hypothesis.name == "coulomb_finite") {
+        answer += " Its hole-budget row (coulomb_finite) meets " + std::to_string(budget->facts_met[i]) +
+                  " of the paper's 5 facts";
+        for (const auto& v : budget->results[i].facts)
+          if (v.fact == "F3") answer += std::string("; F3 is ") + (v.met ? "met: " : "not met: ") + v.why;
+        answer += answer.back() == '.' ? "" : ".";
+      }
+  out["answer"] = answer;
+  return out;
+}
+
+}  // namespace skinfem::pipeline

@@ -1,0 +1,42 @@
+// The report's "Does finite deformation matter at the paper's load?" for a scene whose material.model is
+// neo_hookean: its static and sliding states in finite strain and the hole sweeps about them
+// (pipeline/finite_defect.hpp), beside the report's linear ones on the same mesh: the contact zone in the
+// material frame (contact/metrics.hpp, as the linear contact is measured) and in the spatial one, the
+// sensors' readings and the hole-signal amplitudes. The hole budget's finite row is
+// pipeline/hole_budget.hpp's add_finite_row on the same run. Units: mm, N, MPa (kPa and µm in the JSON, as
+// its keys say).
+#pragma once
+
+#include <Eigen/Dense>
+#include <array>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "skinfem/contact/metrics.hpp"
+#include "skinfem/pipeline/defect.hpp"
+#include "skinfem/pipeline/finite_defect.hpp"
+#include "skinfem/pipeline/hole_budget.hpp"
+
+namespace skinfem::pipeline {
+
+struct FiniteDeformation {
+  FiniteDefectRun run;  // cases static, sliding
+  // The same cases on the linear skin: the report's defect sweeps' hole-free contacts, their metrics and
+  // signals (positions × 2·sensors, MPa).
+  std::array<contact::ContactResult, 2> linear;
+  std::array<contact::ContactMetrics, 2> linear_metrics;
+  std::array<Eigen::MatrixXd, 2> linear_signals;
+  bool same_mesh = false;  // the linear and finite skins have the same nodes (the comparison is kinematics')
+};
+
+// scene: material.model neo_hookean (check_finite_contact's rules, a bulge sweep); linear: the report's
+// defect run of the same scene on the linear skin, static then sliding.
+FiniteDeformation finite_deformation(const Scene& scene, const DefectRun& linear);
+
+// report.json's finite_deformation entry: per case the contact (linear, finite, relative change), the
+// spatial frame's zone and shift, readings and hole amplitudes per sensor, costs, and `answer`, one
+// paragraph from these numbers and, with a budget holding the finite row, its facts.
+nlohmann::json finite_deformation_json(const Scene& scene, const FiniteDeformation& f,
+                                       const HoleBudget* budget);
+
+}  // namespace skinfem::pipeline
