@@ -318,9 +318,15 @@ void finite_deformation(std::ostream& h, const ReportResult& in) {
   for (const char* key : {"contact_radius_mm", "p0_kPa", "indentation_um", "front_edge_mm", "back_edge_mm",
                           "zone_centroid_x_mm", "pressure_centroid_x_mm"}) {
     const nlohmann::json& v = c.at("contact").at(key);
-    h << "<tr><td style=\"text-align:left\">" << key << "</td><td>"
-      << fmt("%.4g", v.at("linear").get<double>()) << "</td><td>" << fmt("%.4g", v.at("finite").get<double>())
-      << "</td><td>" << fmt("%+.2f %%", 100 * v.at("change_rel").get<double>()) << "</td></tr>\n";
+    const double lin = v.at("linear"), fin = v.at("finite");
+    // A position's change in mm, a size's in per cent.
+    const std::string name = key;
+    const bool position =
+        name.find("edge") != std::string::npos || name.find("centroid") != std::string::npos;
+    h << "<tr><td style=\"text-align:left\">" << key << "</td><td>" << fmt("%.4g", lin) << "</td><td>"
+      << fmt("%.4g", fin) << "</td><td>"
+      << (position ? fmt("%+.3f mm", fin - lin) : fmt("%+.2f %%", 100 * v.at("change_rel").get<double>()))
+      << "</td></tr>\n";
   }
   h << "</table>\n<table><tr><th>sensor</th><th>σz kPa linear / finite</th><th>σx kPa linear / "
        "finite</th><th>sliding |ςz| finite/linear</th><th>|ςx| finite/linear</th></tr>\n";
