@@ -97,7 +97,14 @@ std::vector<std::pair<std::string, std::string>> figure_captions(const std::stri
        "A post against a disc at the skin's axis (meridian solves): ∫ g dA and half width of g_zz over the "
        "post's height and diameter." +
            on},
-      {"pareto", "Cost against accuracy of each stage over the error-bar levels (labels: DOFs)." + on}};
+      {"pareto", "Cost against accuracy of each stage over the error-bar levels (labels: DOFs)." + on},
+      {"finite_path",
+       "The contact zone against the tangential load from 0 to μF at the full normal force: its edges (the "
+       "outermost touching vertices, in steps of the mesh) and force centroid along the sliding direction, "
+       "and its radius and anisotropy from the pressure's second moments; the linear skin (lines) beside the "
+       "neo-Hookean one (markers: the converged states of its load path) in the material and the spatial "
+       "frame." +
+           on}};
   if (budget)
     for (const validation::HypothesisResult& y : budget->results)
       f.push_back({"budget_" + y.hypothesis.name,
@@ -440,6 +447,7 @@ constexpr const char* kReportFiles[] = {"mesh/mesh.vtu",
                                         "contact/modes.csv",
                                         "contact/sensors.csv",
                                         "contact/summary.json",
+                                        "contact/finite_path.csv",
                                         "defect/defect.pvd",
                                         "green/post_design.csv",
                                         "defect/defect.csv",

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <sstream>
 
 #include "app/chain_study.hpp"
 #include "app/common.hpp"
@@ -59,6 +61,32 @@ void ReportWriter::defect(const pipeline::DefectRun& run, nlohmann::json& summar
 
 void ReportWriter::crosscheck(const validation::Crosscheck& x) {
   write_crosscheck(x, scene_.sensors, out_ + "/crosscheck");
+}
+
+// contact/finite_path.csv (model,frame,ratio,tangential_force_N,indentation_um,area_mm2,equivalent_radius_mm,
+// front_edge_mm,back_edge_mm,zone_centroid_x_mm,force_centroid_x_mm,anisotropy,moment_radius_mm,
+// moment_anisotropy): the contact zone along the tangential load, finite in both frames and linear in the
+// material one.
+void ReportWriter::finite_deformation(const nlohmann::json& entry) {
+  std::ostringstream csv;
+  csv.precision(10);
+  const char* columns[] = {"area_mm2",     "equivalent_radius_mm", "front_edge_mm",
+                           "back_edge_mm", "zone_centroid_x_mm",   "force_centroid_x_mm",
+                           "anisotropy",   "moment_radius_mm",     "moment_anisotropy"};
+  csv << "model,frame,ratio,tangential_force_N,indentation_um";
+  for (const char* c : columns) csv << "," << c;
+  csv << "\n";
+  for (const char* model : {"linear", "finite"})
+    for (const char* frame : {"material", "spatial"})
+      for (const nlohmann::json& p : entry.at("path").at(model)) {
+        if (!p.contains(frame)) continue;
+        csv << model << "," << frame << "," << p.at("ratio").get<double>() << ","
+            << p.at("tangential_force_N").get<double>() << "," << p.at("indentation_um").get<double>();
+        for (const char* c : columns) csv << "," << p.at(frame).at(c).get<double>();
+        csv << "\n";
+      }
+  std::filesystem::create_directories(out_ + "/contact");
+  write_text_atomic(out_ + "/contact/finite_path.csv", csv.str());
 }
 
 void ReportWriter::hole_budget(const pipeline::HoleBudget& b, const validation::Crosscheck& x) {

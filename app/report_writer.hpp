@@ -22,6 +22,7 @@ class ReportWriter : public pipeline::ReportSink {
   void contact(const pipeline::ContactRun& run, nlohmann::json& summary) override;
   void defect(const pipeline::DefectRun& run, nlohmann::json& summary) override;
   void crosscheck(const validation::Crosscheck& x) override;
+  void finite_deformation(const nlohmann::json& entry) override;
   void hole_budget(const pipeline::HoleBudget& b, const validation::Crosscheck& x) override;
   void chain_done() override;
   void chain_study(const std::vector<pipeline::ChainLevel>& levels, const nlohmann::json& study) override;

@@ -286,30 +286,47 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
 
 ContactZoneFrame zone_frame(const TetMesh& mesh, const MortarZone& zone, const FiniteContactResult& r,
                             const Vec2& center, const Eigen::Vector2d& direction, bool current) {
+  return zone_frame(mesh, zone, r.active, r.lambda, current ? &r.solution.u : nullptr, center, direction);
+}
+
+ContactZoneFrame zone_frame(const TetMesh& mesh, const MortarZone& zone, const std::vector<int>& active,
+                            const Eigen::VectorXd& lambda, const Eigen::VectorXd* u, const Vec2& center,
+                            const Eigen::Vector2d& direction) {
   const Eigen::Vector2d t = direction.normalized(), n(-t.y(), t.x()), c(center[0], center[1]);
   ContactZoneFrame z;
   double force = 0;
   Eigen::Vector2d zone_sum = Eigen::Vector2d::Zero(), force_sum = Eigen::Vector2d::Zero();
   z.front_mm = -1e300;
   z.back_mm = 1e300;
-  for (int i : r.active) {
+  for (int i : active) {
     const int v = zone.vertices[i];
     Eigen::Vector2d x(mesh.nodes(v, 0), mesh.nodes(v, 1));
-    if (current) x += Eigen::Vector2d(r.solution.u[3 * v], r.solution.u[3 * v + 1]);
+    if (u) x += Eigen::Vector2d((*u)[3 * v], (*u)[3 * v + 1]);
     const double a = zone.area[i], along = (x - c).dot(t);
     z.area_mm2 += a;
     zone_sum += a * x;
-    force += r.lambda[i] * a;
-    force_sum += r.lambda[i] * a * x;
+    force += lambda[i] * a;
+    force_sum += lambda[i] * a * x;
     z.front_mm = std::max(z.front_mm, along);
     z.back_mm = std::min(z.back_mm, along);
     z.half_width_mm = std::max(z.half_width_mm, std::abs((x - c).dot(n)));
   }
-  if (r.active.empty()) return ContactZoneFrame{};
+  if (active.empty()) return ContactZoneFrame{};
   z.back_mm = -z.back_mm;
   const Eigen::Vector2d zc = zone_sum / z.area_mm2, fc = force_sum / force;
   z.zone_centroid = {zc.x(), zc.y()};
   z.force_centroid = {fc.x(), fc.y()};
+  double along = 0, across = 0;
+  for (int i : active) {
+    const int v = zone.vertices[i];
+    Eigen::Vector2d x(mesh.nodes(v, 0), mesh.nodes(v, 1));
+    if (u) x += Eigen::Vector2d((*u)[3 * v], (*u)[3 * v + 1]);
+    const double w = lambda[i] * zone.area[i] / force;
+    along += w * std::pow((x - fc).dot(t), 2);
+    across += w * std::pow((x - fc).dot(n), 2);
+  }
+  z.moment_radius_mm = std::sqrt(2.5 * (along + across));
+  z.moment_anisotropy = across > 0 ? std::sqrt(along / across) : 0.0;
   return z;
 }
 

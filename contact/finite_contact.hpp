@@ -58,6 +58,11 @@ struct ContactZoneFrame {
   Vec2 force_centroid{0, 0};         // Σ λ_i area_i x_i / Σ λ_i area_i: where the plate's force acts, mm
   double front_mm = 0, back_mm = 0;  // farthest active vertex ahead of / behind `center` along t
   double half_width_mm = 0;          // largest |offset across t| of an active vertex from `center`
+  // The pressure's second moments about force_centroid, along t and across it: smooth in the load where the
+  // vertex-based sizes above step as a vertex enters or leaves. moment_radius_mm = √(5/2 ⟨|x − x_f|²⟩_p) is
+  // a for a Hertzian p = p0 √(1 − r²/a²); moment_anisotropy = √(⟨(x − x_f)·t)²⟩_p / ⟨((x − x_f)·n)²⟩_p), 1
+  // for an axisymmetric contact.
+  double moment_radius_mm = 0, moment_anisotropy = 0;
 };
 
 struct FiniteContactResult {
@@ -105,5 +110,10 @@ CondensedContact tangent_contact(const TetMesh& mesh, double mu, const std::vect
 // along the sliding direction t.
 ContactZoneFrame zone_frame(const TetMesh& mesh, const MortarZone& zone, const FiniteContactResult& r,
                             const Vec2& center, const Eigen::Vector2d& t, bool current);
+// The same for any contact: active multipliers of `zone`, their pressures λ (MPa), and u (3N, mm) for the
+// current frame or null for the reference one.
+ContactZoneFrame zone_frame(const TetMesh& mesh, const MortarZone& zone, const std::vector<int>& active,
+                            const Eigen::VectorXd& lambda, const Eigen::VectorXd* u, const Vec2& center,
+                            const Eigen::Vector2d& t);
 
 }  // namespace skinfem::contact

@@ -113,22 +113,41 @@ void check_finite_defect(const Scene& scene, const std::vector<FrictionMode>& mo
 }
 
 FiniteDefectRun finite_defect_run(const Scene& scene, const std::vector<FrictionMode>& modes,
-                                  std::vector<ChainLevel> coarse) {
+                                  std::vector<ChainLevel> coarse, int sliding_stations) {
   check_finite_defect(scene, modes);
+  if (sliding_stations < 1) throw std::invalid_argument("finite_defect_run: sliding_stations must be ≥ 1");
   FiniteDefectRun run;
+  const auto point = [&run](const FiniteContactRun& st, double ratio) {
+    run.path.push_back({ratio, st.tangential_force_N, st.result.depth_mm, st.reference, st.current});
+  };
   // Every case's path starts with the same frictionless contact at the full force: solved once when shared.
   std::optional<FiniteContactRun> frictionless;
-  if (modes.size() > 1) {
+  if (modes.size() > 1 || sliding_stations > 1) {
     frictionless = finite_contact_run(scene, FrictionMode::none);
     for (const auto& [stage, seconds] : frictionless->wall) run.wall[stage + "_frictionless"] = seconds;
+    point(*frictionless, 0);
   }
+  Scene station_scene = scene;
   for (FrictionMode m : modes) {
-    run.cases.push_back(finite_defect_case(scene, m, frictionless ? &frictionless->solved_result : nullptr));
+    const contact::FiniteContactResult* from = frictionless ? &frictionless->solved_result : nullptr;
+    // The sliding case's ratio path through converged stations at k/K of μ, each solved from the last.
+    std::optional<FiniteContactRun> station;
+    for (int k = 1; m == FrictionMode::coupled && k < sliding_stations; ++k) {
+      station_scene.contact->mu = scene.contact->mu * k / sliding_stations;
+      station = finite_contact_run(station_scene, FrictionMode::coupled, from);
+      run.wall["newton_station_" + std::to_string(k)] = station->wall.at("newton");
+      point(*station, station_scene.contact->mu);
+      from = &station->solved_result;
+    }
+    run.cases.push_back(finite_defect_case(scene, m, from));
     const FiniteDefectCase& c = run.cases.back();
     for (const auto& [stage, seconds] : c.state.wall) run.wall[stage + "_" + c.name] = seconds;
     run.wall["tangent_" + c.name] = c.tangent_seconds;
     run.wall["sweep_" + c.name] = c.sweep.seconds;
+    point(c.state, solved_ratio(*scene.contact, m));
   }
+  std::stable_sort(run.path.begin(), run.path.end(),
+                   [](const FinitePathPoint& a, const FinitePathPoint& b) { return a.ratio < b.ratio; });
   if (!coarse.empty()) {
     run.levels = std::move(coarse);
     run.levels.push_back(finite_sliding_level(run));

@@ -36,8 +36,18 @@ struct FiniteDefectCase {
   double tangent_seconds = 0;            // the condensation on the tangent and the bulges' set-up
 };
 
+// A converged state on a case's load path: its friction ratio, tangential force (N), approach (mm) and
+// contact zone in the material and spatial frames.
+struct FinitePathPoint {
+  double ratio = 0, tangential_force_N = 0, depth_mm = 0;
+  contact::ContactZoneFrame material, spatial;
+};
+
 struct FiniteDefectRun {
   std::vector<FiniteDefectCase> cases;
+  // The states the cases' paths went through at the full force, by ratio: the shared frictionless one (with
+  // several cases or stations), the sliding stations, each case's own.
+  std::vector<FinitePathPoint> path;
   Timings wall;  // per case: mesh_<case>, newton_<case>, tangent_<case>, sweep_<case>
   // The sliding case's headline quantities (finite_sliding_level) on coarser levels and this one, last;
   // empty without error bars.
@@ -50,11 +60,12 @@ void check_finite_defect(const Scene& scene, const std::vector<FrictionMode>& mo
 
 // modes: the cases, static_residual and/or coupled, in order. Throws as check_finite_defect, and SolverError
 // when Newton cannot carry the load. coarse: finite_sliding_levels' result, kept in the run with this
-// level's appended (the modes must then include coupled).
+// level's appended (the modes must then include coupled). sliding_stations K: the sliding case's ratio path
+// stops at k/K of μ (k < K) on its way, each stop a converged state in `path` (K − 1 more finite solves).
 FiniteDefectRun finite_defect_run(const Scene& scene,
                                   const std::vector<FrictionMode>& modes = {FrictionMode::static_residual,
                                                                             FrictionMode::coupled},
-                                  std::vector<ChainLevel> coarse = {});
+                                  std::vector<ChainLevel> coarse = {}, int sliding_stations = 1);
 
 // The sliding case's contact radius (mm), p0 (MPa), indentation (mm) and largest |ς_z| (MPa), under
 // chain_level's names (contact_radius, contact_p0, indentation, hole_signal), so that chain_errors and

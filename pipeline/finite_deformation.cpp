@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "skinfem/contact/contact_solver.hpp"
+#include "skinfem/contact/finite_contact.hpp"
 #include "skinfem/validation/crosscheck.hpp"
 #include "skinfem/validation/text.hpp"
 
@@ -39,8 +41,20 @@ FiniteDeformation finite_deformation(const Scene& scene, const DefectRun& linear
     throw std::invalid_argument(
         "finite_deformation: the linear run's cases are static_residual, then coupled");
   FiniteDeformation f;
-  f.run = finite_defect_run(scene, {FrictionMode::static_residual, FrictionMode::coupled});
+  f.run =
+      finite_defect_run(scene, {FrictionMode::static_residual, FrictionMode::coupled}, {}, kSlidingStations);
   const ContactSetup& setup = *linear.setup;
+  // The linear coupled contact along the ratio: one complementarity solve each on the condensed skin.
+  const Eigen::Vector2d t(scene.contact->direction[0], scene.contact->direction[1]);
+  for (int i = 0; i < kLinearPathPoints; ++i) {
+    ContactLoad load = *scene.contact;
+    load.mu = scene.contact->mu * i / (kLinearPathPoints - 1);
+    const contact::ContactSolver solver(*setup.condensed, load, setup.mirror.get());
+    const contact::ContactResult r = solver.solve(FrictionMode::coupled);
+    const contact::ContactZoneFrame z = contact::zone_frame(setup.mesh(), solver.zone(), r.active, r.lambda,
+                                                            nullptr, contact_center(scene), t);
+    f.linear_path.push_back({load.mu, r.tangential_force_N, r.depth_mm, z, z});
+  }
   for (int c = 0; c < 2; ++c) {
     f.linear[c] = linear.sweeps[c].baseline;
     f.linear_metrics[c] =
@@ -110,6 +124,35 @@ nlohmann::json finite_deformation_json(const Scene& scene, const FiniteDeformati
                                  {"back", {back_ratio[c].lo, back_ratio[c].hi}}};
     out["cases"][kCases[c]] = j;
   }
+  const auto frame = [](const contact::ContactZoneFrame& z) {
+    return nlohmann::json{
+        {"area_mm2", z.area_mm2},
+        {"equivalent_radius_mm", std::sqrt(z.area_mm2 / M_PI)},
+        {"front_edge_mm", z.front_mm},
+        {"back_edge_mm", -z.back_mm},
+        {"zone_centroid_x_mm", z.zone_centroid[0]},
+        {"force_centroid_x_mm", z.force_centroid[0]},
+        {"anisotropy", z.half_width_mm > 0 ? (z.front_mm + z.back_mm) / (2 * z.half_width_mm) : 0.0},
+        {"moment_radius_mm", z.moment_radius_mm},
+        {"moment_anisotropy", z.moment_anisotropy}};
+  };
+  for (const FinitePathPoint& p : f.run.path)
+    out["path"]["finite"].push_back({{"ratio", p.ratio},
+                                     {"tangential_force_N", p.tangential_force_N},
+                                     {"indentation_um", 1e3 * p.depth_mm},
+                                     {"material", frame(p.material)},
+                                     {"spatial", frame(p.spatial)}});
+  for (const FinitePathPoint& p : f.linear_path)
+    out["path"]["linear"].push_back({{"ratio", p.ratio},
+                                     {"tangential_force_N", p.tangential_force_N},
+                                     {"indentation_um", 1e3 * p.depth_mm},
+                                     {"material", frame(p.material)}});
+  out["path"]["edges"] =
+      "along the sliding direction from the first-touch point; material: the touching hats at their "
+      "reference "
+      "positions, spatial: at their current ones (finite only); anisotropy: length along over width across; "
+      "moment_radius_mm and moment_anisotropy: from the pressure's second moments (a Hertzian contact's a, "
+      "and 1 when axisymmetric), smooth where the vertex-based sizes step";
   out["wall_s"] = f.run.wall;
   out["seconds"] = f.run.wall.total();
 
@@ -132,6 +175,17 @@ nlohmann::json finite_deformation_json(const Scene& scene, const FiniteDeformati
       fmt("%.2f", st.current.zone_centroid[0] - st.reference.zone_centroid[0]) +
       " mm along x (spatial against material centroid). Sliding hole amplitudes, finite over linear: " +
       on(front_ratio[1], "front") + ", " + on(back_ratio[1], "back") + ".";
+  if (f.run.path.size() > 1 && f.linear_path.size() > 1) {
+    // From the frictionless state to the sliding one, the pressure's moments in the material frame.
+    const contact::ContactZoneFrame &f0 = f.run.path.front().material, &f1 = f.run.path.back().material,
+                                    &l0 = f.linear_path.front().material, &l1 = f.linear_path.back().material;
+    answer += " From no tangential load to " + fmt("%.3g", f.run.path.back().tangential_force_N) +
+              " N, the zone's moment radius changes by " + pct(f0.moment_radius_mm, f1.moment_radius_mm) +
+              " (linear " + pct(l0.moment_radius_mm, l1.moment_radius_mm) +
+              ") and its anisotropy along/across " + "goes from " + fmt("%.3f", f0.moment_anisotropy) +
+              " to " + fmt("%.3f", f1.moment_anisotropy) + " (linear " + fmt("%.3f", l0.moment_anisotropy) +
+              " to " + fmt("%.3f", l1.moment_anisotropy) + ").";
+  }
   if (!f.same_mesh) answer += " The two skins were meshed differently: the changes include mesh error.";
   if (budget)
     for (size_t i = 0; i < budget->results.size(); ++i)

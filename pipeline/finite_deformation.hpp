@@ -27,15 +27,23 @@ struct FiniteDeformation {
   std::array<contact::ContactMetrics, 2> linear_metrics;
   std::array<Eigen::MatrixXd, 2> linear_signals;
   bool same_mesh = false;  // the linear and finite skins have the same nodes (the comparison is kinematics')
+  // The contact zone against the tangential load from 0 to μF: the finite path's converged states
+  // (run.path), and the linear coupled contact at kLinearPathPoints ratios from 0 to μ (material frame).
+  std::vector<FinitePathPoint> linear_path;
 };
+// The sliding case's stations on the finite path (pipeline/finite_defect.hpp's sliding_stations): with the
+// frictionless and static states, five points from 0 to μF for two more finite solves.
+constexpr int kSlidingStations = 3;
+constexpr int kLinearPathPoints = 31;
 
 // scene: material.model neo_hookean (check_finite_contact's rules, a bulge sweep); linear: the report's
 // defect run of the same scene on the linear skin, static then sliding.
 FiniteDeformation finite_deformation(const Scene& scene, const DefectRun& linear);
 
 // report.json's finite_deformation entry: per case the contact (linear, finite, relative change), the
-// spatial frame's zone and shift, readings and hole amplitudes per sensor, costs, and `answer`, one
-// paragraph from these numbers and, with a budget holding the finite row, its facts.
+// spatial frame's zone and shift, readings and hole amplitudes per sensor; the zone along the tangential
+// load (`path`: finite in both frames, linear); costs, and `answer`, one paragraph from these numbers and,
+// with a budget holding the finite row, its facts.
 nlohmann::json finite_deformation_json(const Scene& scene, const FiniteDeformation& f,
                                        const HoleBudget* budget);
 

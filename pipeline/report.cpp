@@ -239,6 +239,7 @@ void Chain::contact() {
     const FiniteDeformation f = finite_deformation(*finite_, *defect_);
     add_finite_row(*out_.budget, *finite_, f.run);
     report_["finite_deformation"] = finite_deformation_json(*finite_, f, &*out_.budget);
+    sink_.finite_deformation(report_["finite_deformation"]);
     finite_level_ = finite_sliding_level(f.run);
     out_.wall["finite_deformation"] = clock.seconds();
     clock = Stopwatch();

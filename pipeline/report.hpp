@@ -57,6 +57,8 @@ class ReportSink {
   virtual void contact(const ContactRun&, nlohmann::json& /*summary*/) {}
   virtual void defect(const DefectRun&, nlohmann::json& /*summary*/) {}
   virtual void crosscheck(const validation::Crosscheck&) {}
+  // A neo-Hookean scene's finite deformation (report.json's finite_deformation), before hole_budget().
+  virtual void finite_deformation(const nlohmann::json& /*entry*/) {}
   virtual void hole_budget(const HoleBudget&, const validation::Crosscheck&) {}
   // Every output of the chain so far is final; the error bars' levels come next.
   virtual void chain_done() {}

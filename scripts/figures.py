@@ -50,6 +50,11 @@
 #                            varsigma_x_kPa), crosscheck/defect.csv: per hypothesis of the hole-signal budget,
 #                            sliding ς_z (top) and ς_x (bottom) against u, one panel per sensor, FE against the
 #                            paper_model variant, titled with the amplitude ratio FE/model.
+#   finite_path.png          contact/finite_path.csv (model,frame,ratio,tangential_force_N,indentation_um,
+#                            front_edge_mm,back_edge_mm,force_centroid_x_mm,moment_radius_mm,
+#                            moment_anisotropy, other columns ignored; model linear or finite, frame material
+#                            or spatial), written for a neo-Hookean scene only (no file, no figure and no
+#                            "skipped" line): the contact zone against the tangential load.
 #   pareto.png               study/chain_study.csv (the report's error levels, or skinfem study --chain --out
 #                            DIR/study): error vs seconds (log-log), one series per stage, labelled by DOFs.
 # Each PNG is written to a hidden temporary name in DIR/figures and renamed into place. A figure whose inputs
@@ -71,6 +76,7 @@ import sys
 import matplotlib
 
 matplotlib.use("Agg")  # before pyplot: no display
+import matplotlib.lines  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 import matplotlib.transforms  # noqa: E402
@@ -638,6 +644,53 @@ def budget_figures(d):
     return [(f"budget_{h}.png", inputs, lambda d, h=h: fig_budget(d, h)) for h in names]
 
 
+def finite_path(d):
+    t = read_csv(os.path.join(d, "contact/finite_path.csv"),
+                 {"model": one_of("linear", "finite"), "frame": one_of("material", "spatial"), "ratio": number,
+                  "tangential_force_N": number, "indentation_um": number, "front_edge_mm": number,
+                  "back_edge_mm": number, "force_centroid_x_mm": number, "moment_radius_mm": number,
+                  "moment_anisotropy": number})
+    # Colour: the quantity; line and marker: the skin and frame. The edges are the outermost touching
+    # vertices: they step by the mesh's size as one enters or leaves (drawn as steps); the force centroid and
+    # the pressure's moments are smooth.
+    series = [("linear", "material", "-", "", "linear skin (material frame)"),
+              ("finite", "material", "-", "o", "neo-Hookean, material frame"),
+              ("finite", "spatial", "--", "s", "neo-Hookean, spatial frame")]
+    edges = [("front_edge_mm", "front edge (outermost touching vertex)", "steps-post"),
+             ("back_edge_mm", "back edge (outermost touching vertex)", "steps-post"),
+             ("force_centroid_x_mm", "force centroid", "default")]
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.8))
+    for model, frame, style, marker, _ in series:
+        m = (t["model"] == model) & (t["frame"] == frame)
+        o = np.argsort(t["tangential_force_N"][m], kind="stable")
+        T = t["tangential_force_N"][m][o]
+        for i, (column, _, steps) in enumerate(edges):
+            axes[0].plot(T, t[column][m][o], style, marker=marker, color=f"C{i}", ms=5,
+                         drawstyle=steps if model == "linear" else "default")
+        axes[1].plot(T, t["moment_radius_mm"][m][o], style, marker=marker, color="C0", ms=5)
+        axes[2].plot(T, t["moment_anisotropy"][m][o], style, marker=marker, color="C0", ms=5)
+    quantity = [matplotlib.lines.Line2D([], [], color=f"C{i}", label=label) for i, (_, label, _) in enumerate(edges)]
+    kind = [matplotlib.lines.Line2D([], [], color="0.3", ls=style, marker=marker, label=label)
+            for _, _, style, marker, label in series]
+    axes[0].legend(handles=quantity + kind, fontsize=7, loc="center right", bbox_to_anchor=(1, 0.36))
+    axes[0].set_ylabel("along the sliding direction from first touch (mm)")
+    axes[1].set_ylabel("radius √(5/2 ⟨r²⟩_p) (mm)")
+    axes[2].set_ylabel("anisotropy √(⟨x_t²⟩_p / ⟨x_n²⟩_p)")
+    for ax in axes:
+        ax.set_xlabel("tangential load (N)")
+        ax.grid(alpha=0.3)
+    fig.suptitle("The contact zone against the tangential load at the full normal force: linear skin against "
+                 "neo-Hookean")
+    fig.tight_layout()
+    return fig
+
+
+def finite_figures(d):
+    """finite_path.png when the report solved a neo-Hookean scene's finite deformation."""
+    inputs = ("contact/finite_path.csv",)
+    return [("finite_path.png", inputs, finite_path)] if os.path.isfile(os.path.join(d, inputs[0])) else []
+
+
 def post_design(d):
     t = read_csv(os.path.join(d, "green/post_design.csv"),
                  {"row": one_of("post", "disc", "sweep"), "diameter_mm": positive, "height_mm": number,
@@ -709,13 +762,14 @@ def main(argv):
     written = skipped = 0
     global _FIGURES, _DIR
     try:
-        _FIGURES, _DIR = FIGURES + budget_figures(d), d
+        _FIGURES, _DIR = FIGURES + budget_figures(d) + finite_figures(d), d
     except InputError as e:
         print(f"figures: error: {e}", file=sys.stderr)
         return 2
     if selection:
         known = {f[0] for f in FIGURES}
-        unknown = sorted(n for n in selection[1] if n not in known and not n.startswith("budget_"))
+        unknown = sorted(n for n in selection[1]
+                         if n not in known and not n.startswith("budget_") and n != "finite_path.png")
         if unknown:
             print(f"figures: error: {selection[0]} {','.join(unknown)}: not a figure (known: "
                   f"{', '.join(sorted(known))}, budget_<hypothesis>.png)", file=sys.stderr)

@@ -4,7 +4,9 @@
 // (finite over linear, same mesh) is of the order of the strain a/R, and must fall with the force as the
 // strain does: a ∝ F^(1/3) on a half-space, F^(1/6) on a thin bonded incompressible layer (F ∝ a⁶/(R³h³)),
 // so an 8× smaller force divides each change by at least 8^(1/6) = 1.41. A mismatched case, a reading
-// scale applied twice or two different meshes would leave a change that does not fall.
+// scale applied twice or two different meshes would leave a change that does not fall. The zone along the
+// tangential load: the finite path's states in order of ratio, ending at the sliding state itself, and the
+// linear path ending at the linear sliding contact.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -25,6 +27,7 @@ Scene swept_cap(double force) {
   s.material.model = MaterialModel::neo_hookean;
   s.sensors.positions = {{0.0, 0.0}, {1.0, 0.0}};
   s.contact->force = force;
+  s.contact->static_ratio = 0.3;
   s.contact->friction = FrictionMode::coupled;
   s.contact->sweep = HoleSweep{{-0.4, 0.0}, {0.4, 0.0}, 3, 0.5};
   s.contact->sweep->h = 0.5;
@@ -74,6 +77,23 @@ TEST(FiniteDeformation, EveryChangeFallsWithTheStrainAsTheForceFalls) {
     EXPECT_GT(a[i], 0) << names[i];
     EXPECT_GT(a[i] / b[i], std::pow(8.0, 1.0 / 6)) << names[i];
   }
+  // The zone along the tangential load: the finite path's states by ratio, ending at the sliding state; the
+  // linear path from 0 to μ, ending at the linear sliding contact.
+  const double mu = full.contact->mu;
+  std::vector<double> ratios;
+  for (const FinitePathPoint& p : f.run.path) ratios.push_back(p.ratio);
+  const std::vector<double> expected{0.0, full.contact->static_ratio, mu / kSlidingStations,
+                                     mu * 2 / kSlidingStations, mu};
+  ASSERT_EQ(ratios.size(), expected.size());
+  for (size_t i = 0; i < ratios.size(); ++i) EXPECT_NEAR(ratios[i], expected[i], 1e-15) << i;
+  const FiniteContactRun& sliding = f.run.cases.at(1).state;
+  EXPECT_EQ(f.run.path.back().material.area_mm2, sliding.reference.area_mm2);
+  EXPECT_EQ(f.run.path.back().spatial.front_mm, sliding.current.front_mm);
+  EXPECT_EQ(f.run.path.back().depth_mm, sliding.result.depth_mm);
+  ASSERT_EQ(f.linear_path.size(), static_cast<size_t>(kLinearPathPoints));
+  EXPECT_NEAR(f.linear_path.back().ratio, mu, 1e-15);
+  EXPECT_NEAR(f.linear_path.back().depth_mm, f.linear[1].depth_mm, 1e-12 * f.linear[1].depth_mm);
+  EXPECT_NEAR(f.linear_path.back().tangential_force_N, mu * force, 1e-12 * force);
   // The answer is said from the typed numbers.
   const contact::ContactMetrics &lm = f.linear_metrics[1], &fm = f.run.cases.at(1).metrics;
   const std::string answer = jf.at("answer");
