@@ -61,10 +61,11 @@ import csv
 import json
 import math
 import os
-import subprocess
 import sys
 import time
 from pathlib import Path
+
+import peer_common  # bench/peer/peer_common.py, beside this script
 
 REPO = Path(__file__).resolve().parents[2]
 HERE = Path(__file__).resolve().parent
@@ -78,12 +79,7 @@ QUANTITIES = (("delta_um", "delta"), ("a_mm", "a"), ("p0_kPa", "p0"))
 # Driver (standard library only)
 # ----------------------------------------------------------------------------------------------------------
 def measured_run(cmd, log_path, cwd=REPO):
-    """Run cmd with stdout+stderr to log_path; return (exit code, wall seconds, the process's peak RSS MB)."""
-    t0 = time.perf_counter()
-    with open(log_path, "w") as log:
-        proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, cwd=cwd)
-        _, status, usage = os.wait4(proc.pid, 0)  # this child's own rusage, not all children's
-    return os.waitstatus_to_exitcode(status), time.perf_counter() - t0, usage.ru_maxrss / 1024.0
+    return peer_common.measured_run(cmd, log_path, cwd)
 
 
 def scene_variant(out, model, level, force):
@@ -168,11 +164,7 @@ def read_off_all(python, rows, out):
 
 
 def getfem_python(explicit):
-    """An interpreter that imports getfem, numpy and vtk: --python, this one, or Debian's."""
-    for cand in [explicit] if explicit else [sys.executable, "/usr/bin/python3"]:
-        if cand and subprocess.run([cand, "-c", "import getfem, numpy, vtk"], capture_output=True).returncode == 0:
-            return cand
-    return None
+    return peer_common.getfem_python(explicit, "getfem, numpy, vtk")
 
 
 def getfem_runs(python, out, hmers, forces, args):

@@ -61,10 +61,11 @@ import csv
 import json
 import math
 import os
-import subprocess
 import sys
 import time
 from pathlib import Path
+
+import peer_common  # bench/peer/peer_common.py, beside this script
 
 REPO = Path(__file__).resolve().parents[2]
 SCENE = "scenes/hertz_layer.json"
@@ -80,13 +81,7 @@ COLUMNS = ["code", "path", "dofs", "seconds", "peak_mb", "a_mm", "a_rel", "p0_kP
 # Driver (standard library only)
 # ----------------------------------------------------------------------------------------------------------
 def measured_run(cmd, log_path, cwd=REPO):
-    """Run cmd with stdout+stderr to log_path; return (exit code, wall seconds, the process's peak RSS MB)."""
-    t0 = time.perf_counter()
-    with open(log_path, "w") as log:
-        proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, cwd=cwd)
-        _, status, usage = os.wait4(proc.pid, 0)  # this child's own rusage, not all children's
-    proc.returncode = os.waitstatus_to_exitcode(status)
-    return proc.returncode, time.perf_counter() - t0, usage.ru_maxrss / 1024.0  # ru_maxrss: kB on Linux
+    return peer_common.measured_run(cmd, log_path, cwd)
 
 
 def with_errors(row):
@@ -129,11 +124,7 @@ def skinfem_row(binary, path, out):
 
 
 def getfem_python(explicit):
-    """An interpreter that imports getfem and numpy: --python, this one, or Debian's."""
-    for cand in [explicit] if explicit else [sys.executable, "/usr/bin/python3"]:
-        if cand and subprocess.run([cand, "-c", "import getfem, numpy"], capture_output=True).returncode == 0:
-            return cand
-    return None
+    return peer_common.getfem_python(explicit)
 
 
 def getfem_row(python, case, args, out):
