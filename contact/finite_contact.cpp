@@ -298,10 +298,18 @@ ContactZoneFrame zone_frame(const TetMesh& mesh, const MortarZone& zone, const s
   Eigen::Vector2d zone_sum = Eigen::Vector2d::Zero(), force_sum = Eigen::Vector2d::Zero();
   z.front_mm = -1e300;
   z.back_mm = 1e300;
+  // Each active vertex's position in the frame, once: the sums below and the moments about their centroid.
+  std::vector<Eigen::Vector2d> at;
+  at.reserve(active.size());
   for (int i : active) {
     const int v = zone.vertices[i];
     Eigen::Vector2d x(mesh.nodes(v, 0), mesh.nodes(v, 1));
     if (u) x += Eigen::Vector2d((*u)[3 * v], (*u)[3 * v + 1]);
+    at.push_back(x);
+  }
+  for (size_t k = 0; k < active.size(); ++k) {
+    const int i = active[k];
+    const Eigen::Vector2d& x = at[k];
     const double a = zone.area[i], along = (x - c).dot(t);
     z.area_mm2 += a;
     zone_sum += a * x;
@@ -317,13 +325,10 @@ ContactZoneFrame zone_frame(const TetMesh& mesh, const MortarZone& zone, const s
   z.zone_centroid = {zc.x(), zc.y()};
   z.force_centroid = {fc.x(), fc.y()};
   double along = 0, across = 0;
-  for (int i : active) {
-    const int v = zone.vertices[i];
-    Eigen::Vector2d x(mesh.nodes(v, 0), mesh.nodes(v, 1));
-    if (u) x += Eigen::Vector2d((*u)[3 * v], (*u)[3 * v + 1]);
-    const double w = lambda[i] * zone.area[i] / force;
-    along += w * std::pow((x - fc).dot(t), 2);
-    across += w * std::pow((x - fc).dot(n), 2);
+  for (size_t k = 0; k < active.size(); ++k) {
+    const double w = lambda[active[k]] * zone.area[active[k]] / force;
+    along += w * std::pow((at[k] - fc).dot(t), 2);
+    across += w * std::pow((at[k] - fc).dot(n), 2);
   }
   z.moment_radius_mm = std::sqrt(2.5 * (along + across));
   z.moment_anisotropy = across > 0 ? std::sqrt(along / across) : 0.0;

@@ -63,6 +63,8 @@ struct ContactZoneFrame {
   // a for a Hertzian p = p0 √(1 − r²/a²); moment_anisotropy = √(⟨(x − x_f)·t)²⟩_p / ⟨((x − x_f)·n)²⟩_p), 1
   // for an axisymmetric contact.
   double moment_radius_mm = 0, moment_anisotropy = 0;
+  // The vertex-based length along t over width across, (front + back) / (2 half_width); 0 for no zone.
+  double anisotropy() const { return half_width_mm > 0 ? (front_mm + back_mm) / (2 * half_width_mm) : 0.0; }
 };
 
 struct FiniteContactResult {

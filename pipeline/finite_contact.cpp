@@ -199,7 +199,6 @@ FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode,
 
 namespace {
 nlohmann::json frame_json(const contact::ContactZoneFrame& f) {
-  const double anisotropy = f.half_width_mm > 0 ? (f.front_mm + f.back_mm) / (2 * f.half_width_mm) : 0.0;
   return {{"area_mm2", f.area_mm2},
           {"equivalent_radius_mm", std::sqrt(f.area_mm2 / M_PI)},
           {"zone_centroid_mm", {f.zone_centroid[0], f.zone_centroid[1]}},
@@ -207,7 +206,7 @@ nlohmann::json frame_json(const contact::ContactZoneFrame& f) {
           {"front_edge_mm", f.front_mm},
           {"back_edge_mm", f.back_mm},
           {"half_width_mm", f.half_width_mm},
-          {"anisotropy", anisotropy}};
+          {"anisotropy", f.anisotropy()}};
 }
 }  // namespace
 

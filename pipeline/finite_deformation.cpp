@@ -97,13 +97,12 @@ nlohmann::json finite_deformation_json(const Scene& scene, const FiniteDeformati
                     {"pressure_centroid_x_mm", beside(lm.pressure_centroid[0], fm.pressure_centroid[0])},
                     {"frame", "material (reference): where the skin's material touches"}};
     const contact::ContactZoneFrame& cur = st.current;
-    j["spatial_zone"] = {
-        {"frame", "spatial (current): where the deformed surface touches the plate"},
-        {"front_edge_mm", cur.front_mm},
-        {"back_edge_mm", -cur.back_mm},
-        {"zone_centroid_mm", {cur.zone_centroid[0], cur.zone_centroid[1]}},
-        {"anisotropy", cur.half_width_mm > 0 ? (cur.front_mm + cur.back_mm) / (2 * cur.half_width_mm) : 0.0},
-        {"shift_from_material_mm", cur.zone_centroid[0] - st.reference.zone_centroid[0]}};
+    j["spatial_zone"] = {{"frame", "spatial (current): where the deformed surface touches the plate"},
+                         {"front_edge_mm", cur.front_mm},
+                         {"back_edge_mm", -cur.back_mm},
+                         {"zone_centroid_mm", {cur.zone_centroid[0], cur.zone_centroid[1]}},
+                         {"anisotropy", cur.anisotropy()},
+                         {"shift_from_material_mm", cur.zone_centroid[0] - st.reference.zone_centroid[0]}};
     j["max_tangential_displacement_mm"] = st.max_tangential_mm;
     j["tangential_displacement_over_indentation"] = st.max_tangential_mm / st.result.depth_mm;
     const Eigen::VectorXd& lr = f.linear[c].readings;
@@ -125,16 +124,15 @@ nlohmann::json finite_deformation_json(const Scene& scene, const FiniteDeformati
     out["cases"][kCases[c]] = j;
   }
   const auto frame = [](const contact::ContactZoneFrame& z) {
-    return nlohmann::json{
-        {"area_mm2", z.area_mm2},
-        {"equivalent_radius_mm", std::sqrt(z.area_mm2 / M_PI)},
-        {"front_edge_mm", z.front_mm},
-        {"back_edge_mm", -z.back_mm},
-        {"zone_centroid_x_mm", z.zone_centroid[0]},
-        {"force_centroid_x_mm", z.force_centroid[0]},
-        {"anisotropy", z.half_width_mm > 0 ? (z.front_mm + z.back_mm) / (2 * z.half_width_mm) : 0.0},
-        {"moment_radius_mm", z.moment_radius_mm},
-        {"moment_anisotropy", z.moment_anisotropy}};
+    return nlohmann::json{{"area_mm2", z.area_mm2},
+                          {"equivalent_radius_mm", std::sqrt(z.area_mm2 / M_PI)},
+                          {"front_edge_mm", z.front_mm},
+                          {"back_edge_mm", -z.back_mm},
+                          {"zone_centroid_x_mm", z.zone_centroid[0]},
+                          {"force_centroid_x_mm", z.force_centroid[0]},
+                          {"anisotropy", z.anisotropy()},
+                          {"moment_radius_mm", z.moment_radius_mm},
+                          {"moment_anisotropy", z.moment_anisotropy}};
   };
   for (const FinitePathPoint& p : f.run.path)
     out["path"]["finite"].push_back({{"ratio", p.ratio},

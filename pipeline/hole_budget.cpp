@@ -136,19 +136,13 @@ void add_finite_row(HoleBudget& b, const Scene& scene, const FiniteDefectRun& ru
                       ") on the neo-Hookean skin in finite strain: the plate meets the deformed surface, the "
                       "hole acts on the material under it, its signal the tangent's answer",
                   *scene.contact};
-  validation::FactsInput base = b.base;
   for (int c = 0; c < 2; ++c) {
     r.signals[c] = run.cases[c].sweep.varsigma;
-    if (base.reading_scale.size()) r.signals[c] *= base.reading_scale.cwiseInverse().asDiagonal();
     r.seconds += run.cases[c].sweep.seconds + run.cases[c].tangent_seconds + run.cases[c].state.wall.total();
   }
-  const FiniteContactRun& sliding = run.cases[1].state;
   r.contact_radius_mm = run.cases[1].metrics.contact_radius_mm;
-  r.tangential_force_N = sliding.tangential_force_N;
-  base.fe = r.signals;
-  base.contact_radius_mm = r.contact_radius_mm;
-  r.ratio = validation::amplitude_ratios(base);
-  r.facts = validation::judge_facts(base);
+  r.tangential_force_N = run.cases[1].state.tangential_force_N;
+  validation::judge_hypothesis(r, b.base);
   add_result(b, std::move(r), static_cast<int>(scene.sensors.positions.size()));
   say_answer(b);
 }

@@ -256,6 +256,15 @@ std::vector<Hypothesis> interface_hypotheses(const ContactLoad& scene_load, doub
   return out;
 }
 
+void judge_hypothesis(HypothesisResult& r, FactsInput base) {
+  if (base.reading_scale.size())
+    for (Eigen::MatrixXd& s : r.signals) s *= base.reading_scale.cwiseInverse().asDiagonal();
+  base.fe = r.signals;
+  base.contact_radius_mm = r.contact_radius_mm;
+  r.ratio = amplitude_ratios(base);
+  r.facts = judge_facts(base);
+}
+
 HypothesisResult run_hypothesis(const Hypothesis& h, const contact::CondensedContact& condensed,
                                 const contact::MirrorView* mirror, const TetMesh& mesh,
                                 const PlanarFaceIndex& top, const HoleSweep& sweep, const Material& material,
@@ -294,16 +303,11 @@ HypothesisResult run_hypothesis(const Hypothesis& h, const contact::CondensedCon
           "a hole through a compliant interface is resolved, and the condensed skin has no hole path");
     hyp_sweep.model = HoleModel::resolved;
   }
-  for (int c = 0; c < 2; ++c) {
+  for (int c = 0; c < 2; ++c)
     out.signals[c] = contact::hole_sweep(solver, mesh, hyp_sweep, modes[c], &dimples, {},
                                          hyp_sweep.model == HoleModel::resolved ? cuts : nullptr)
                          .varsigma;
-    if (base.reading_scale.size()) out.signals[c] *= base.reading_scale.cwiseInverse().asDiagonal();
-  }
-  base.fe = out.signals;
-  base.contact_radius_mm = out.contact_radius_mm;
-  out.ratio = amplitude_ratios(base);
-  out.facts = judge_facts(base);
+  judge_hypothesis(out, std::move(base));
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

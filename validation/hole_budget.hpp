@@ -90,6 +90,9 @@ struct HypothesisResult {
   std::array<std::vector<std::array<double, 2>>, 2> ratio;
   std::vector<FactVerdict> facts;
 };
+// r.signals (static, sliding: the FE readings' ς, MPa) put in base's units (over base.reading_scale) and
+// judged against base.model with r.contact_radius_mm: sets r.signals, r.ratio and r.facts.
+void judge_hypothesis(HypothesisResult& r, FactsInput base);
 // One static and one coupled sliding sweep on `condensed` (seen whole through `mirror` when not null), judged
 // against base.model. The hole is the scene sweep's model under a hard interface, resolved under any other
 // (then `condensed` needs its hole path: std::runtime_error otherwise). mesh, top: the whole mesh and its top
