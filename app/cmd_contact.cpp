@@ -231,9 +231,17 @@ int finite_contact_stage(const Scene& scene, const std::string& out_dir, Frictio
       "complementarity %.1e, max pointwise penetration %.3g um\n",
       run.max_tangential_mm, run.max_tangential_mm / r.depth_mm, run.balance_rel, r.complementarity,
       1e3 * run.max_penetration_mm);
+  if (run.tau_MPa > 0)
+    std::printf(
+        "  shear strength %.4g kPa where the skin touches (tau0 %.4g kPa%s), %d edge multipliers "
+        "holding a fraction of it\n",
+        1e3 * run.tau_MPa, 1e3 * run.tau0_MPa,
+        scene.contact->tau0 ? "" : ": mu F / A on this skin's frictionless contact", r.partial_shear);
   const double share = run.share();
   for (const contact::FiniteContactStep& s : r.steps) {
-    std::printf("  step to %.4g N, ratio %.3g: residuals", s.force / share, s.ratio);
+    std::printf("  step to %.4g N, ratio %.3g", s.force / share, s.ratio);
+    if (s.tau > 0) std::printf(", shear %.4g kPa", 1e3 * s.tau);
+    std::printf(": residuals");
     for (double x : s.residuals) std::printf(" %.1e", x);
     std::printf("\n");
   }

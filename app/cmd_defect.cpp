@@ -159,10 +159,16 @@ int finite_defect_stage(const Scene& scene, const std::string& out_dir,
   for (const pipeline::FiniteDefectCase& c : run.cases) {
     const Timings& wall = run.wall;
     const std::string& n = c.name;
+    const double ratio = summary["cases"][n]["ratio"].get<double>();
+    char friction[96];
+    if (c.state.tau_MPa > 0)
+      std::snprintf(friction, sizeof friction, "shear strength %.4g kPa%s", 1e3 * c.state.tau_MPa,
+                    ratio > 0 ? (", friction ratio " + validation::fmt("%.3g", ratio)).c_str() : "");
+    else
+      std::snprintf(friction, sizeof friction, "friction ratio %.3g", ratio);
     std::printf(
-        "  %s (friction ratio %.3g): mesh %.2f s, Newton %.2f s, tangent %.2f s, sweep %.2f s (%.2f "
-        "ms/position)\n",
-        n.c_str(), summary["cases"][n]["ratio"].get<double>(), wall.at("mesh_" + n), wall.at("newton_" + n),
+        "  %s (%s): mesh %.2f s, Newton %.2f s, tangent %.2f s, sweep %.2f s (%.2f ms/position)\n",
+        n.c_str(), friction, wall.at("mesh_" + n), wall.at("newton_" + n),
         wall.at("tangent_" + n), c.sweep.seconds, 1e3 * c.sweep.seconds / scene.contact->sweep->positions);
     std::printf(
         "    the tangent's own hole-free contact against the finite one: %.1e of the largest pressure; the "

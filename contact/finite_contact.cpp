@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "skinfem/contact/condensed.hpp"
+#include "skinfem/contact/contact_solver.hpp"
 #include "skinfem/contact/lcp.hpp"
 #include "skinfem/fem/finite_strain.hpp"
 
@@ -22,6 +23,8 @@ constexpr double kRoundOff = 1e3;  // how far above the tolerance a stalled resi
 
 struct FiniteState {
   Eigen::VectorXd u, p, lambda;
+  Eigen::VectorXd shear;  // n_c nodal shear-strength traction along t, MPa (empty: none)
+  int partial_shear = 0;
   std::vector<int> active;
   double depth = 0, complementarity = 0;
   FiniteStrainSystem system;  // assembled at (u, p), with its tangent
@@ -91,12 +94,34 @@ std::pair<Eigen::MatrixXd, Eigen::MatrixXd> compliances(const FiniteProblem& P,
   return {0.5 * (zz + zz.transpose()), zt};
 }
 
-// One load step's Newton iteration from `s` to (force, ratio); nullopt when it fails (s is then undefined),
-// with why it failed in `why`.
+// The iterate's complementarity problem under a shear strength τ wherever the skin touches: on the
+// tangent it is the linear coupled contact (contact_solver.hpp) with compliances zz, zt and gaps q at rest,
+// whose touched set ContactSolver iterates to a fixed point (an edge multiplier that lifts under its own
+// shear holding the fraction at which it just touches).
+ContactResult shear_contact(const FiniteProblem& P, const Eigen::MatrixXd& zz, const Eigen::MatrixXd& zt,
+                            const Eigen::VectorXd& q, double force, double ratio, double tau,
+                            const std::vector<int>& warm) {
+  CondensedContact c;
+  c.zone = P.zone;
+  c.direction = P.t;
+  c.C_zz = zz;
+  c.C_zt = zt;
+  c.gap0 = q;
+  c.S_p = c.S_t = Eigen::MatrixXd::Zero(0, P.nc());
+  ContactLoad load;
+  load.force = force;
+  load.mu = ratio;
+  load.law = ratio > 0 ? FrictionLaw::mixed : FrictionLaw::shear_strength;
+  load.tau0 = tau;
+  return ContactSolver(c, load).solve(FrictionMode::coupled, std::vector<char>{}, warm);
+}
+
+// One load step's Newton iteration from `s` to (force, ratio, tau); nullopt when it fails (s is then
+// undefined), with why it failed in `why`.
 std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double force, double ratio,
-                                                const NewtonOptions& o, FiniteState& s, int& factorizations,
-                                                std::string& why) {
-  FiniteContactStep step{force, ratio, {}, {}, {}};
+                                                double tau, const NewtonOptions& o, FiniteState& s,
+                                                int& factorizations, std::string& why) {
+  FiniteContactStep step{force, ratio, tau, {}, {}, {}};
   const Lame incompressible{P.mu, 0.0};
   for (int it = 0; it < o.max_iterations; ++it) {
     Eigen::VectorXd minus_internal = -s.system.internal_force;
@@ -104,6 +129,8 @@ std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double f
       if (P.fixed[d]) minus_internal[d] = 0;
     LcpSolution lcp;
     MixedSolution dx;
+    Eigen::VectorXd shear;
+    int partial_shear = 0;
     try {
       // A sphere's columns are its pressures along its normals at this iterate (they turn with the surface).
       MixedSolver::Coupling normal_columns;
@@ -133,8 +160,19 @@ std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double f
                           -s.system.constraint);
       } else {
         const Eigen::VectorXd q = P.gap0 - P.weighted_uz(s.u + rest.u);
-        lcp = ContactLcp(zz + ratio * zt, q, P.zone.area).solve_force(force, {}, s.active);
-        dx = solver.solve(P.zone.load(lcp.lambda, P.t, ratio) + minus_internal, {}, -s.system.constraint);
+        if (tau > 0) {
+          const ContactResult c = shear_contact(P, zz, zt, q, force, ratio, tau, s.active);
+          lcp.lambda = c.lambda;
+          lcp.active = c.active;
+          lcp.delta = c.depth_mm;
+          lcp.complementarity = c.complementarity;
+          shear = c.shear;
+          partial_shear = c.partial_shear;
+        } else {
+          lcp = ContactLcp(zz + ratio * zt, q, P.zone.area).solve_force(force, {}, s.active);
+        }
+        dx = solver.solve(P.zone.load(lcp.lambda, P.t, ratio, shear) + minus_internal, {},
+                          -s.system.constraint);
       }
     } catch (const std::runtime_error& e) {  // SolverError, or an LCP without a consistent set
       why = e.what();
@@ -146,6 +184,8 @@ std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double f
     s.u += dx.u;
     s.p += dx.p;
     s.lambda = lcp.lambda;
+    s.shear = shear;
+    s.partial_shear = partial_shear;
     s.active = lcp.active;
     s.depth = lcp.delta;
     s.complementarity = lcp.complementarity;
@@ -156,9 +196,8 @@ std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double f
       return std::nullopt;
     }
     if (P.sphere) s.sphere = P.sphere_gaps(s.u, s.depth, &s.lambda);  // the next iterate's, too
-    const Eigen::VectorXd f = s.sphere
-                                  ? Eigen::VectorXd(s.sphere->Dn.transpose() * s.lambda)
-                                  : P.zone.load(s.lambda, P.t, ratio);  // the indenter's load on the skin
+    const Eigen::VectorXd f = s.sphere ? Eigen::VectorXd(s.sphere->Dn.transpose() * s.lambda)
+                                       : P.zone.load(s.lambda, P.t, ratio, s.shear);  // the indenter's load
     step.residuals.push_back(equilibrium_residual(s.system, f, P.fixed, f.norm(), P.volume));
     step.active_sizes.push_back(static_cast<int>(s.active.size()));
     step.set_changes.push_back(static_cast<int>(changed.size()));
@@ -186,9 +225,12 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
                                          const FiniteContactResult* from) {
   if (!(load.force > 0) || !(load.ratio >= 0))
     throw std::invalid_argument("solve_finite_contact: force must be > 0 and ratio ≥ 0");
+  if ((load.tau && !(*load.tau >= 0)) || !(load.tau_mu >= 0))
+    throw std::invalid_argument("solve_finite_contact: the shear strength must be ≥ 0");
   const bool sphere = indenter.kind() == IndenterKind::sphere;
-  if (sphere && load.ratio > 0)
-    throw std::invalid_argument("solve_finite_contact: a sphere is frictionless here (ratio 0)");
+  const bool shearing = load.tau ? *load.tau > 0 : load.tau_mu > 0;
+  if (sphere && (load.ratio > 0 || shearing))
+    throw std::invalid_argument("solve_finite_contact: a sphere is frictionless here (ratio 0, no shear)");
   if (!(o.first_step > 0 && o.first_step <= 1))
     throw std::invalid_argument("NewtonOptions::first_step must be in (0, 1]");
   FiniteProblem P(mesh, mu, fixed, zone, load.direction.normalized());
@@ -219,23 +261,42 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
   s.u = Eigen::VectorXd::Zero(3 * mesh.num_nodes());
   s.p = Eigen::VectorXd::Zero(mesh.num_vertices);
   s.lambda = Eigen::VectorXd::Zero(nc);
-  // The path s ∈ (0, 1]: the force to F without friction; s ∈ (1, 2]: the ratio to its value at F.
-  const double end = load.ratio > 0 ? 2 : 1;
+  // The path s ∈ (0, 1]: the force to F without friction; s ∈ (1, 2]: the ratio and τ to their values at F.
+  const double end = load.ratio > 0 || shearing ? 2 : 1;
+  double tau = load.tau.value_or(0.0);  // from tau_mu once the frictionless contact at F is known
+  const auto frictionless_at_force = [&](double area) {
+    out.frictionless_area_mm2 = area;
+    if (!load.tau && load.tau_mu > 0) tau = area > 0 ? load.tau_mu * load.force / area : 0.0;
+  };
+  const auto area_of = [&](const std::vector<int>& active) {
+    double a = 0;
+    for (int i : active) a += zone.area[i];
+    return a;
+  };
   const auto force_at = [&](double x) { return load.force * std::min(x, 1.0); };
   const auto ratio_at = [&](double x) { return load.ratio * std::max(x - 1, 0.0); };
+  const auto tau_at = [&](double x) { return tau * std::max(x - 1, 0.0); };
   double reached = 0, step = o.first_step;
   if (from) {  // a converged state of this force: one step to the new gaps, or on along the ratio's path
     if (from->solution.u.size() != s.u.size() || from->lambda.size() != nc)
       throw std::invalid_argument("solve_finite_contact: the starting state is not of this mesh and zone");
-    if (!(from->ratio <= load.ratio))
+    const bool frictionless = from->ratio == 0 && from->tau == 0;
+    frictionless_at_force(frictionless ? area_of(from->active) : from->frictionless_area_mm2);
+    // How far along the friction path `from` is, by its ratio and its τ (the same fraction of each).
+    const double by_ratio = load.ratio > 0 ? from->ratio / load.ratio : 1;
+    const double by_tau = tau > 0 ? from->tau / tau : 1;
+    if (!(by_ratio <= 1) || !(by_tau <= 1 + 1e-12))
+      throw std::invalid_argument("solve_finite_contact: the starting state's friction is above the load's");
+    if (!frictionless && load.ratio > 0 && tau > 0 && std::abs(by_ratio - by_tau) > 1e-9)
       throw std::invalid_argument(
-          "solve_finite_contact: the starting state's friction ratio is above the load's");
+          "solve_finite_contact: the starting state's ratio and shear strength are not on the load's path");
     s.u = from->solution.u;
     s.p = from->solution.p;
     s.lambda = from->lambda;
     s.active = from->active;
     s.depth = from->depth_mm;
-    reached = from->ratio == load.ratio ? std::nextafter(end, 0.0) : 1 + from->ratio / load.ratio;
+    const double along = load.ratio > 0 ? by_ratio : by_tau;
+    reached = frictionless && end == 2 ? 1 : along >= 1 ? std::nextafter(end, 0.0) : 1 + along;
     step = 1;
   }
   s.system = assemble_finite_strain(mesh, mu, s.u, s.p);
@@ -245,10 +306,11 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
     // A step stops at the end of the force ramp, so that friction starts from the full frictionless contact.
     const double target = std::min(reached < 1 ? 1.0 : end, reached + step);
     FiniteState trial = s;
-    if (auto done =
-            contact_newton(P, force_at(target), ratio_at(target), o, trial, out.factorizations, why)) {
+    if (auto done = contact_newton(P, force_at(target), ratio_at(target), tau_at(target), o, trial,
+                                   out.factorizations, why)) {
       s = std::move(trial);
       reached = target;
+      if (reached == 1) frictionless_at_force(area_of(s.active));
       out.steps.push_back(std::move(*done));
       if (on_step) on_step(out.steps.back());
       if (out.steps.back().residuals.size() <= 5) step = std::min(1.0, 2 * step);
@@ -257,11 +319,13 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
     ++out.rejected_steps;
     step *= 0.5;
     if (step < smallest) {
-      char buf[200];
-      std::snprintf(buf, sizeof buf,
-                    "finite-strain contact: Newton failed beyond %.4g N and friction ratio %.4g (steps down "
-                    "to %.3g of the load path; the last: ",
-                    force_at(reached), ratio_at(reached), 2 * step);
+      char buf[240], shear[64] = "";
+      if (tau > 0) std::snprintf(shear, sizeof shear, ", shear strength %.4g kPa", 1e3 * tau_at(reached));
+      std::snprintf(
+          buf, sizeof buf,
+          "finite-strain contact: Newton failed beyond %.4g N and friction ratio %.4g%s (steps down "
+          "to %.3g of the load path; the last: ",
+          force_at(reached), ratio_at(reached), shear, 2 * step);
       throw SolverError(buf + why + ")");
     }
   }
@@ -272,11 +336,14 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
   out.lambda = s.lambda;
   out.depth_mm = s.depth;
   out.ratio = load.ratio;
+  out.tau = tau;
+  out.shear = s.shear.size() ? s.shear : Eigen::VectorXd::Zero(nc);
+  out.partial_shear = s.partial_shear;
   if (s.sphere) {
     out.load = s.sphere->Dn.transpose() * s.lambda;
     out.gap = s.sphere->g;
   } else {
-    out.load = zone.load(s.lambda, P.t, load.ratio);
+    out.load = zone.load(s.lambda, P.t, load.ratio, out.shear);
     out.gap = P.gap0 - s.depth * zone.area - P.weighted_uz(s.u);
   }
   out.active = s.active;
@@ -350,6 +417,7 @@ CondensedContact tangent_contact(const TetMesh& mesh, double mu, const std::vect
       condense(mesh, solver, fixed, zone, indenter, readings, {t.x(), t.y()}, {}, {}, &columns);
   // g = r.gap + (δ_r − δ)·area + M (λ − λ_r) with M = C_zz + ratio·C_zt.
   c.gap0 = r.gap + r.depth_mm * zone.area - (c.C_zz + load.ratio * c.C_zt) * r.lambda;
+  if (r.shear.size()) c.gap0 -= c.C_zt * r.shear;
   return c;
 }
 

@@ -1,6 +1,7 @@
 // Contact of a rigid plane or sphere with the finite-strain skin (fem/finite_strain.hpp), force controlled:
-// the indenter meets the deformed surface x = X + u. A plane is frictionless or in steady Coulomb sliding, a
-// sphere frictionless.
+// the indenter meets the deformed surface x = X + u. A plane is frictionless or in steady sliding under
+// Coulomb friction, a shear strength τ wherever the skin touches, or both (scene/laws.hpp's friction laws); a
+// sphere is frictionless.
 //
 // Mortar multipliers on the reference top (contact/mortar.hpp): λ_i is the nodal pressure per unit of the
 // hat's reference horizontal area. Under a plane it pushes along −e_z with the friction traction ratio·λ
@@ -14,16 +15,19 @@
 //       normals at the iterate),
 //   q = gap0 − D_z (u_k + du_r) (a plane), g_k + δ_k m + Dn du_r (a sphere),  du_r the tangent's answer
 //       to the residual alone,
-// then steps to u_k + du_r + (the multipliers' answer). This is Newton's method on the whole complementarity
-// system (Josephy-Newton): once the active set stops changing it is Newton on a smooth system, quadratic
-// (a sphere's tangent includes its pressures' turning with the surface, at the last iterate's λ).
-// The first iterate from rest is the linear contact exactly under a plane. Load path: the normal force
-// ramps to F frictionless, then the ratio ramps to its value at F, in adaptive steps (a step that fails is
-// halved). Units: mm, N, MPa.
+// then steps to u_k + du_r + (the multipliers' answer). A shear strength's traction τ acts on the touched
+// hats, a load that depends on the set: its gaps C_zt·τw join q and the iterate's set is iterated to a fixed
+// point with contact_solver.hpp's rules (w: 1 on touched hats, the fraction at which an edge hat just
+// touches). This is Newton's method on the whole complementarity system (Josephy-Newton): once the active set
+// stops changing it is Newton on a smooth system, quadratic (a sphere's tangent includes its pressures'
+// turning with the surface, at the last iterate's λ). The first iterate from rest is the linear contact
+// exactly under a plane. Load path: the normal force ramps to F frictionless, then the ratio and τ ramp
+// together to their values at F, in adaptive steps (a step that fails is halved). Units: mm, N, MPa.
 #pragma once
 
 #include <Eigen/Dense>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "skinfem/contact/condensed.hpp"
@@ -41,10 +45,16 @@ struct FiniteContactLoad {
   // n_c weighted gaps opened where the plate's face recedes (a hole's dimple, contact/holes/dimple.hpp), mm³;
   // empty for none.
   Eigen::VectorXd opening;
+  // The shear strength acting wherever the skin touches, MPa: tau when given, else tau_mu·F/A with A the
+  // reference area Σ∫ψ_i of the active multipliers of the path's frictionless contact at F (the linear
+  // contact's τ0 from_force, ContactSolver::tau0); neither: none. Under a plane only.
+  std::optional<double> tau;
+  double tau_mu = 0;
 };
 
 struct FiniteContactStep {
   double force = 0, ratio = 0;    // what this step reached
+  double tau = 0;                 // MPa
   std::vector<double> residuals;  // relative equilibrium residual after each iteration
   std::vector<int> active_sizes;  // the LCP's active set size at each iteration
   std::vector<int> set_changes;   // multipliers that entered or left the set at each iteration (0: repeated)
@@ -68,15 +78,19 @@ struct ContactZoneFrame {
 };
 
 struct FiniteContactResult {
-  MixedSolution solution;          // u (3N, mm), p (Nv, MPa)
-  Eigen::VectorXd internal_force;  // 3N at the solution: at held DOFs the supports' reactions (N)
-  Eigen::VectorXd load;            // 3N: the plate's load on the skin at the solution (N)
-  Eigen::VectorXd lambda;          // n_c nodal pressures, MPa
-  Eigen::VectorXd gap;             // n_c weighted gaps at the solution, mm³
-  double depth_mm = 0;             // the plate's approach from first touch
-  double ratio = 0;                // the friction ratio solved at
-  std::vector<int> active;         // multipliers in contact, ascending
-  double complementarity = 0;      // of the last LCP (contact/lcp.hpp's measure)
+  MixedSolution solution;            // u (3N, mm), p (Nv, MPa)
+  Eigen::VectorXd internal_force;    // 3N at the solution: at held DOFs the supports' reactions (N)
+  Eigen::VectorXd load;              // 3N: the plate's load on the skin at the solution (N)
+  Eigen::VectorXd lambda;            // n_c nodal pressures, MPa
+  Eigen::VectorXd gap;               // n_c weighted gaps at the solution, mm³
+  double depth_mm = 0;               // the plate's approach from first touch
+  double ratio = 0;                  // the friction ratio solved at
+  double tau = 0;                    // the shear strength solved at, MPa
+  Eigen::VectorXd shear;             // n_c nodal shear traction along t, MPa (zero without a shear strength)
+  int partial_shear = 0;             // edge multipliers holding a fraction of τ
+  double frictionless_area_mm2 = 0;  // the path's frictionless contact's A (τ's from tau_mu), mm²
+  std::vector<int> active;           // multipliers in contact, ascending
+  double complementarity = 0;        // of the last LCP (contact/lcp.hpp's measure)
   std::vector<FiniteContactStep> steps;
   int rejected_steps = 0;
   int factorizations = 0;  // tangents factored (one per iteration)
@@ -86,11 +100,12 @@ struct FiniteContactResult {
 using FiniteContactStepSink = std::function<void(const FiniteContactStep&)>;
 
 // mesh: the skin (a half mesh's cut held by `fixed`); fixed: 3N held DOFs (base, cut), not moved;
-// zone: the candidate multipliers; indenter: a plane, or a sphere with load.ratio 0 (std::invalid_argument
-// otherwise); mu: shear modulus, MPa. Throws SolverError (one line: the force and ratio reached, and why)
-// when no step converges. from: null to start at rest and follow the load path; or a converged state of the
-// same force: at the same ratio (another opening) one step goes straight to `load`; at a smaller ratio (the
-// frictionless state shared by a static and a sliding case) the ratio's path goes on from it.
+// zone: the candidate multipliers; indenter: a plane, or a sphere with load.ratio 0 and no shear
+// (std::invalid_argument otherwise); mu: shear modulus, MPa. Throws SolverError (one line: the force and
+// ratio reached, and why) when no step converges. from: null to start at rest and follow the load path; or a
+// converged state of the same force: at the same ratio (another opening) one step goes straight to `load`; at
+// a smaller ratio (the frictionless state shared by a static and a sliding case) the ratio's and τ's path
+// goes on from it.
 FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const std::vector<bool>& fixed,
                                          const MortarZone& zone, const Indenter& indenter,
                                          const FiniteContactLoad& load, const NewtonOptions& options = {},
@@ -100,9 +115,10 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
 // The contact linearized about r's converged state (a solve of `load`): the condensed skin of
 // contact/condensed.hpp on the tangent at (u, p), its compliances C_zz, C_zt and readings S_p, S_t (sensor
 // readings of the base's reactions, `readings` on mesh), with gap0 set so that the weighted gaps are
-// g = gap0 − δ·area + (C_zz + ratio·C_zt) λ to first order about (λ, δ) of r: the complementarity problem on
-// it has r's λ and δ as its solution, and a small change of the gaps (a hole's opening) moves the contact
-// and the readings by its derivative. One factorization of the tangent, bordered by the columns.
+// g = gap0 − δ·area + (C_zz + ratio·C_zt) λ + C_zt·shear to first order about (λ, δ, shear) of r: the
+// complementarity problem on it (with r's shear where r has one) has r's λ and δ as its solution, and a small
+// change of the gaps (a hole's opening) moves the contact and the readings by its derivative. One
+// factorization of the tangent, bordered by the columns.
 CondensedContact tangent_contact(const TetMesh& mesh, double mu, const std::vector<bool>& fixed,
                                  const MortarZone& zone, const Indenter& indenter,
                                  const SensorReadings& readings, const FiniteContactLoad& load,

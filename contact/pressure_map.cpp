@@ -97,22 +97,24 @@ void write_pressure_vtp(const std::string& path, const TetMesh& m, const Contact
 void write_finite_pressure_vtp(const std::string& path, const TetMesh& m, const MortarZone& zone,
                                const FiniteContactResult& r, const Eigen::Vector2d& direction, double ratio) {
   const int N = m.num_nodes();
-  std::vector<double> p(N, 0.0), gap(N, 0.0), in(N, 0.0);
+  std::vector<double> p(N, 0.0), gap(N, 0.0), in(N, 0.0), shear(N, 0.0);
   for (int i : r.active) in[zone.vertices[i]] = 1.0;
   for (int i = 0; i < zone.size(); ++i) {
     const int v = zone.vertices[i];
     p[v] = 1e3 * std::max(0.0, r.lambda[i]);
     gap[v] = 1e3 * r.gap[i] / zone.area[i];
+    if (r.shear.size()) shear[v] = 1e3 * r.shear[i];
   }
   const std::vector<int> faces = corner_faces(m, zone);
   mid_edge_means(m, faces, p);
   mid_edge_means(m, faces, gap);
+  mid_edge_means(m, faces, shear);
   mid_edge_both(m, faces, in);
   const Eigen::Vector2d t = direction.normalized();
   DataArray traction{"traction_kPa", 3, std::vector<double>(3 * N, 0.0)};
   for (int j = 0; j < N; ++j) {
-    traction.values[3 * j] = t.x() * ratio * p[j];
-    traction.values[3 * j + 1] = t.y() * ratio * p[j];
+    traction.values[3 * j] = t.x() * (ratio * p[j] + shear[j]);
+    traction.values[3 * j + 1] = t.y() * (ratio * p[j] + shear[j]);
   }
   const DataArray displacement{"displacement_mm", 3,
                                std::vector<double>(r.solution.u.data(), r.solution.u.data() + 3 * N)};

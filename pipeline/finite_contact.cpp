@@ -36,6 +36,7 @@ contact::FiniteContactResult mirrored_result(const contact::FiniteContactResult&
   r.solution = mirrored_solution(whole, source, half.solution);
   const int n = view.zone.size();
   r.lambda.resize(n);
+  r.shear.resize(n);
   r.gap.resize(n);
   std::vector<char> active(half_zone.size(), 0);
   for (int i : half.active) active[i] = 1;
@@ -43,6 +44,7 @@ contact::FiniteContactResult mirrored_result(const contact::FiniteContactResult&
   for (int i = 0; i < n; ++i) {
     const int h = view.half[i];
     r.lambda[i] = half.lambda[h];
+    r.shear[i] = half.shear[h];
     r.gap[i] = half.gap[h] * view.zone.area[i] / half_zone.area[h];
     if (active[h]) r.active.push_back(i);
   }
@@ -61,9 +63,6 @@ void check_finite_contact(const Scene& scene, FrictionMode mode) {
   if (!c.holes.empty())
     throw finite_refusal(scene, "contact.holes",
                          "the plate has no holes (" + std::to_string(c.holes.size()) + " given)");
-  if (c.law != FrictionLaw::coulomb)
-    throw finite_refusal(scene, std::string("contact.friction.law = \"") + to_string(c.law) + "\"",
-                         "friction is Coulomb's");
   if (c.interface.law != InterfaceLaw::hard)
     throw finite_refusal(scene, std::string("contact.interface.law = \"") + to_string(c.interface.law) + "\"",
                          "the interface is hard");
@@ -75,6 +74,7 @@ void check_finite_contact(const Scene& scene, FrictionMode mode) {
                      "contact is frictionless ('none'), at rest with its residual traction ('static') or in "
                      "coupled sliding ('coupled')");
   if (c.indenter == IndenterKind::sphere && mode != FrictionMode::none)
+    // Refused before a law's: a shear strength is a plane's too.
     throw finite_refusal(scene, "contact.indenter = \"sphere\"",
                          "a sphere is frictionless (friction mode 'none', not '" +
                              std::string(to_string(mode)) +
@@ -104,11 +104,21 @@ FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode,
   const contact::MortarZone& zone = run.solved_zone;
   run.mirrored = is_half_y(solved);
   const double share = run.share();
-  const double ratio = solved_ratio(c, mode);
+  const double ratio = coulomb_ratio(c, mode);
   run.force_N = *c.force;
-  run.tangential_force_N = ratio * *c.force;
   const Eigen::Vector2d t(c.direction[0], c.direction[1]);
-  run.load = {share * *c.force, ratio, t, {}};
+  run.load.force = share * *c.force;
+  run.load.ratio = ratio;
+  run.load.direction = t;
+  // A shear strength: τ0 as given, else μF/A on the finite skin's own frictionless contact; at rest the
+  // residual part static_ratio/μ of it (ContactSolver::shear's rule).
+  if (kind(c.law).shear_strength && mode != FrictionMode::none) {
+    const bool at_rest = mode == FrictionMode::static_residual;
+    if (c.tau0)
+      run.load.tau = at_rest ? (c.mu > 0 ? *c.tau0 * c.static_ratio / c.mu : 0.0) : *c.tau0;
+    else
+      run.load.tau_mu = at_rest ? c.static_ratio : c.mu;
+  }
   const Lame lame = Lame::from(scene.material.E, scene.material.nu);
   progress(std::string("Newton on the neo-Hookean skin under the ") +
            (c.indenter == IndenterKind::sphere ? "sphere" : "plate") + " (" +
@@ -116,9 +126,11 @@ FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode,
   run.solved_result = contact::solve_finite_contact(
       solved, lame.mu, run.held.fixed, zone, *run.indenter, run.load, {},
       [&](const contact::FiniteContactStep& s) {
-        char buf[200];
-        std::snprintf(buf, sizeof buf, "  step to %.4g N, friction ratio %.3g: %zu iterations, residual %.1e",
-                      s.force / share, s.ratio, s.residuals.size(), s.residuals.back());
+        char buf[200], shear[48] = "";
+        if (s.tau > 0) std::snprintf(shear, sizeof shear, ", shear %.4g kPa", 1e3 * s.tau);
+        std::snprintf(buf, sizeof buf,
+                      "  step to %.4g N, friction ratio %.3g%s: %zu iterations, residual %.1e",
+                      s.force / share, s.ratio, shear, s.residuals.size(), s.residuals.back());
         progress(buf);
       },
       from);
@@ -130,6 +142,12 @@ FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode,
   }
   const contact::FiniteContactResult& r = run.solved_result;
   run.wall["newton"] = clock.seconds();
+  run.tau_MPa = r.tau;
+  if (kind(c.law).shear_strength)
+    run.tau0_MPa = c.tau0                        ? *c.tau0
+                   : r.frictionless_area_mm2 > 0 ? c.mu * share * *c.force / r.frictionless_area_mm2
+                                                 : 0.0;
+  run.tangential_force_N = ratio * *c.force + zone.area.dot(r.shear) / share;
   run.dofs =
       static_cast<int>(std::count(run.held.fixed.begin(), run.held.fixed.end(), false)) + solved.num_vertices;
 
@@ -217,6 +235,7 @@ nlohmann::json finite_contact_json(const Scene& scene, const FiniteContactRun& r
   for (const contact::FiniteContactStep& s : r.steps)
     steps.push_back({{"force_N", s.force / share},
                      {"ratio", s.ratio},
+                     {"tau_kPa", 1e3 * s.tau},
                      {"residuals", s.residuals},
                      {"active_multipliers", s.active_sizes},
                      {"set_changes", s.set_changes}});
@@ -233,8 +252,10 @@ nlohmann::json finite_contact_json(const Scene& scene, const FiniteContactRun& r
           {"path", "3d"},
           {"indenter", scene.contact->indenter == IndenterKind::sphere ? "sphere" : "plane"},
           {"friction", to_string(run.mode)},
-          {"friction_law", "coulomb"},
-          {"ratio", solved_ratio(*scene.contact, run.mode)},
+          {"friction_law", to_string(scene.contact->law)},
+          {"ratio", coulomb_ratio(*scene.contact, run.mode)},
+          {"tau_kPa", 1e3 * run.tau_MPa},
+          {"partial_shear", r.partial_shear},
           {"direction", {scene.contact->direction[0], scene.contact->direction[1]}},
           {"force_N", run.force_N},
           {"tangential_force_N", run.tangential_force_N},

@@ -1,6 +1,7 @@
 // `skinfem contact` on the neo-Hookean skin (material.model "neo_hookean"): the scene's plate pressed with
-// its force, frictionless, at rest with the residual traction static_ratio·p (the static mode, coupled) or in
-// steady Coulomb sliding (the coupled mode), against the deformed surface
+// its force, frictionless, at rest with its residual traction (the static mode, coupled) or in steady
+// sliding (the coupled mode) under the scene's friction law (Coulomb, a shear strength or both), against the
+// deformed surface
 // x = X + u (contact/finite_contact.hpp: Josephy–Newton, the condensed complementarity problem on each
 // iterate's tangent). A mirror-symmetric scene (pipeline/symmetry.hpp) is solved on its half y ≥ 0 at half
 // the force; everything here is reported for the whole skin. The sensors read the base's reaction over their
@@ -25,6 +26,9 @@ namespace skinfem::pipeline {
 struct FiniteContactRun {
   FrictionMode mode = FrictionMode::none;  // none, static_residual or coupled
   double force_N = 0, tangential_force_N = 0;
+  // A shear strength's: the τ this mode solved with, and the sliding τ0 (contact.friction.tau0, or μF/A on
+  // this path's frictionless contact), MPa; 0 without one.
+  double tau_MPa = 0, tau0_MPa = 0;
   // What was solved: the skin (its half under mirror symmetry), its supports, its zone, the indenter and the
   // load, and the solution there (the half's force where mirrored).
   std::shared_ptr<const TetMesh> solved;
@@ -63,8 +67,8 @@ struct FiniteContactRun {
 };
 
 // Throws SceneError (one line naming the field or option, its value and what is allowed) for what the
-// finite-strain contact does not model: a sphere, a depth instead of a force, holes, a friction law other
-// than Coulomb, a compliant interface, posts on springs, and the uncoupled mode.
+// finite-strain contact does not model: friction under a sphere, a depth instead of a force, holes, a
+// compliant interface, posts on springs, and the uncoupled mode.
 void check_finite_contact(const Scene& scene, FrictionMode mode);
 
 // Throws SceneError as check_finite_contact, beyond the resource guard (before meshing), when the contact

@@ -64,7 +64,10 @@ FiniteDefectCase finite_defect_case(const Scene& scene, FrictionMode mode,
   const contact::CondensedContact tangent =
       contact::tangent_contact(*st.solved, mu, st.held.fixed, st.solved_zone, *st.indenter, *st.sensor_sites,
                                st.load, st.solved_result);
-  const contact::ContactSolver solver(tangent, *scene.contact, st.mirror ? &*st.mirror : nullptr);
+  // A shear strength from the force is the finite frictionless contact's μF/A, not the tangent's own.
+  ContactLoad load = *scene.contact;
+  if (kind(load.law).shear_strength) load.tau0 = st.tau0_MPa;
+  const contact::ContactSolver solver(tangent, load, st.mirror ? &*st.mirror : nullptr);
 
   const PlanarFaceIndex top(*st.mesh, kTop);
   const contact::HoleDimples dimples(solver, *st.mesh, top, scene.material.E, scene.material.nu);
@@ -207,7 +210,8 @@ nlohmann::json finite_defect_json(const Scene& scene, const FiniteDefectRun& run
     const contact::SweepResult& res = fc.sweep;
     nlohmann::json c;
     c["friction"] = to_string(fc.mode);
-    c["ratio"] = solved_ratio(*scene.contact, fc.mode);
+    c["ratio"] = coulomb_ratio(*scene.contact, fc.mode);
+    c["tau_kPa"] = 1e3 * fc.state.tau_MPa;
     c["seconds"] = res.seconds;
     c["ms_per_position"] = 1e3 * res.seconds / sweep.positions;
     c["max_complementarity"] = res.max_complementarity;

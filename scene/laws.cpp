@@ -82,4 +82,8 @@ double solved_ratio(const ContactLoad& c, FrictionMode mode) {
   return k.at_rest ? c.static_ratio : c.mu;
 }
 
+double coulomb_ratio(const ContactLoad& c, FrictionMode mode) {
+  return kind(c.law).proportional ? solved_ratio(c, mode) : 0.0;
+}
+
 }  // namespace skinfem

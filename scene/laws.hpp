@@ -43,6 +43,8 @@ const InterfaceLawKind& kind(InterfaceLaw law);
 // The Coulomb ratio p_t / p a mode applies while the pressure is solved: static_ratio at rest, μ sliding
 // (coupled), 0 frictionless or uncoupled (the uncoupled mode's traction comes after the pressure).
 double solved_ratio(const ContactLoad& c, FrictionMode mode);
+// Its part that is Coulomb's, p_t = ratio·p: 0 under a law without μp (shear_strength).
+double coulomb_ratio(const ContactLoad& c, FrictionMode mode);
 inline const char* to_string(FrictionMode mode) { return kind(mode).name; }
 inline const char* to_string(FrictionLaw law) { return kind(law).name; }
 inline const char* to_string(InterfaceLaw law) { return kind(law).name; }

@@ -1,6 +1,7 @@
 // Contact of a plate with the finite-strain skin (contact/finite_contact.hpp) against: the linear contact
-// (contact/condensed.hpp and lcp.hpp, an independent small-strain path) as the force vanishes, the global
-// balance of forces, complementarity, and Newton's quadratic convergence once the contact set settles.
+// (contact/condensed.hpp and lcp.hpp, an independent small-strain path; contact_solver.hpp under a shear
+// strength) as the force vanishes, the global balance of forces, complementarity, and Newton's quadratic
+// convergence once the contact set settles.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +12,7 @@
 #include "../common/newton_rate.hpp"
 #include "../common/plate_on_cap.hpp"
 #include "skinfem/contact/condensed.hpp"
+#include "skinfem/contact/contact_solver.hpp"
 #include "skinfem/contact/finite_contact.hpp"
 #include "skinfem/contact/lcp.hpp"
 #include "skinfem/fem/sensor_reading.hpp"
@@ -55,7 +57,7 @@ Cap& cap() {
 FiniteContactResult finite(double force, double ratio) {
   Cap& c = cap();
   return solve_finite_contact(c.mesh, c.mu_shear, c.held.fixed, *c.zone, *c.indenter,
-                              {force, ratio, {1, 0}, {}});
+                              {force, ratio, {1, 0}, {}, {}, 0});
 }
 
 LcpSolution linear(double force, double ratio) {
@@ -117,7 +119,7 @@ TEST(FiniteContact, ThePathResumedFromTheFrictionlessStateIsTheWholePath) {
   Cap& c = cap();
   const FiniteContactResult rest = finite(0.3, 0.0), &whole = sliding();
   const FiniteContactResult resumed = solve_finite_contact(
-      c.mesh, c.mu_shear, c.held.fixed, *c.zone, *c.indenter, {0.3, 3.0, {1, 0}, {}}, {}, {}, &rest);
+      c.mesh, c.mu_shear, c.held.fixed, *c.zone, *c.indenter, {0.3, 3.0, {1, 0}, {}, {}, 0}, {}, {}, &rest);
   EXPECT_EQ(resumed.solution.u, whole.solution.u);
   EXPECT_EQ(resumed.lambda, whole.lambda);
   EXPECT_EQ(resumed.depth_mm, whole.depth_mm);
@@ -125,7 +127,7 @@ TEST(FiniteContact, ThePathResumedFromTheFrictionlessStateIsTheWholePath) {
   EXPECT_EQ(resumed.factorizations + rest.factorizations, whole.factorizations);
   // Friction does not go back along the path.
   EXPECT_THROW(solve_finite_contact(c.mesh, c.mu_shear, c.held.fixed, *c.zone, *c.indenter,
-                                    {0.3, 1.0, {1, 0}, {}}, {}, {}, &whole),
+                                    {0.3, 1.0, {1, 0}, {}, {}, 0}, {}, {}, &whole),
                std::invalid_argument);
 }
 
@@ -168,7 +170,7 @@ const Tangent& tangent() {
     Cap& c = cap();
     SensorReadings readings(c.mesh, reading_sites(c.scene.sensors));
     CondensedContact k = tangent_contact(c.mesh, c.mu_shear, c.held.fixed, *c.zone, *c.indenter, readings,
-                                         {0.3, 3.0, {1, 0}, {}}, sliding());
+                                         {0.3, 3.0, {1, 0}, {}, {}, 0}, sliding());
     return new Tangent{std::move(readings), std::move(k)};
   }();
   return *t;
@@ -222,7 +224,7 @@ TEST(FiniteContact, ADentsSignalIsTheTangentsAnswerToFirstOrder) {
   const Eigen::VectorXd base = read(r);
   std::vector<double> err;
   for (double s : {1e-3, 5e-4, 2.5e-4}) {
-    FiniteContactLoad load{0.3, 3.0, {1, 0}, dent(s)};
+    FiniteContactLoad load{0.3, 3.0, {1, 0}, dent(s), {}, 0};
     const FiniteContactResult f =
         solve_finite_contact(c.mesh, c.mu_shear, c.held.fixed, *c.zone, *c.indenter, load, {}, {}, &r);
     const LcpSolution l =
@@ -247,7 +249,8 @@ TEST(FiniteContact, ALoadNewtonCannotCarryIsAOneLineErrorNamingWhereItStopped) {
   o.max_iterations = 2;
   o.max_halvings = 0;
   try {
-    solve_finite_contact(c.mesh, c.mu_shear, c.held.fixed, *c.zone, *c.indenter, {0.3, 3.0, {1, 0}, {}}, o);
+    solve_finite_contact(c.mesh, c.mu_shear, c.held.fixed, *c.zone, *c.indenter,
+                         {0.3, 3.0, {1, 0}, {}, {}, 0}, o);
     FAIL() << "no error";
   } catch (const SolverError& e) {
     const std::string what = e.what();
@@ -255,6 +258,105 @@ TEST(FiniteContact, ALoadNewtonCannotCarryIsAOneLineErrorNamingWhereItStopped) {
     EXPECT_NE(what.find("Newton failed beyond 0 N and friction ratio 0"), std::string::npos) << what;
     EXPECT_NE(what.find("the last: no convergence in 2 iterations"), std::string::npos) << what;
   }
+}
+
+// A shear strength τ = tau_mu·F/A wherever the skin touches (A: the frictionless contact's area), sliding.
+FiniteContactResult shearing(double force, double tau_mu, const FiniteContactResult* from = nullptr) {
+  Cap& c = cap();
+  FiniteContactLoad load{force, 0.0, {1, 0}, {}, {}, tau_mu};
+  return solve_finite_contact(c.mesh, c.mu_shear, c.held.fixed, *c.zone, *c.indenter, load, {}, {}, from);
+}
+
+// The linear skin's sliding contact under the same law (ContactSolver's touched-set iteration).
+ContactResult linear_shear(double force, double tau_mu) {
+  ContactLoad load;
+  load.force = force;
+  load.mu = tau_mu;
+  load.law = FrictionLaw::shear_strength;
+  return ContactSolver(*cap().condensed, load).solve(FrictionMode::coupled);
+}
+
+TEST(FiniteContact, AShearStrengthsSmallForcesTendToTheLinearContactAtFirstOrder) {
+  // As SmallForcesTendToTheLinearContactAtFirstOrder, under a shear strength τ = 0.5 F/A in place of
+  // Coulomb's 0.5 p: the same few vertices touch in both laws (asserted), so τ is the same (the same A) and
+  // the finite solution is the linear one plus O(F²): the relative gap between the displacements halves with
+  // the force.
+  Cap& c = cap();
+  const double forces[] = {4e-4, 2e-4, 1e-4, 5e-5}, tau_mu = 0.5;
+  std::vector<double> gap;
+  for (double F : forces) {
+    const FiniteContactResult f = shearing(F, tau_mu);
+    const ContactResult l = linear_shear(F, tau_mu);
+    ASSERT_EQ(f.active, l.active) << "F " << F;
+    EXPECT_NEAR(f.tau, l.tau, 1e-12 * l.tau) << "F " << F;
+    const Eigen::VectorXd u_lin =
+        c.linear->solve(c.zone->load(l.lambda, {1, 0}, 0.0, l.shear), {}).solution.u;
+    gap.push_back(rel_norm(f.solution.u, u_lin));
+  }
+  EXPECT_GT(gap.back(), 1e-7);
+  for (size_t k = 1; k < gap.size(); ++k)
+    EXPECT_NEAR(std::log2(gap[k - 1] / gap[k]), 1.0, 0.1) << "forces " << forces[k - 1] << ", " << forces[k];
+}
+
+// The paper's sliding force (3F) as a shear strength at 0.3 N on the small cap, its path resumed from the
+// frictionless state of `sliding()`'s.
+const FiniteContactResult& sheared() {
+  static const FiniteContactResult r = [] {
+    static const FiniteContactResult rest = finite(0.3, 0.0);
+    return shearing(0.3, 3.0, &rest);
+  }();
+  return r;
+}
+
+TEST(FiniteContact, AShearStrengthActsOnTheTouchedZoneAndTheSkinCarriesIt) {
+  // τ = 3F/A with A the frictionless contact's area at F; the shear acts on the hats that touch (an edge hat
+  // that lifts under its own shear holds a fraction), so the base's tangential reaction is −Σ area·shear, and
+  // the skin carries the plate's normal force. Newton stays quadratic with the touched set iterated inside
+  // each iterate.
+  Cap& c = cap();
+  const FiniteContactResult& r = sheared();
+  const double F = 0.3;
+  EXPECT_NEAR(r.tau, 3.0 * F / r.frictionless_area_mm2, 1e-12 * r.tau);
+  EXPECT_NEAR(r.lambda.dot(c.zone->area), F, 1e-12 * F);
+  Eigen::Vector3d base = Eigen::Vector3d::Zero();
+  for (int i = 0; i < c.mesh.num_nodes(); ++i)
+    if (c.held.fixed[3 * i + 2]) base += r.internal_force.segment<3>(3 * i);
+  const double tangential = c.zone->area.dot(r.shear);
+  int full = 0;
+  for (int i = 0; i < c.zone->size(); ++i) {
+    const bool touches = std::binary_search(r.active.begin(), r.active.end(), i);
+    if (!touches) {
+      EXPECT_EQ(r.shear[i], 0.0) << "multiplier " << i;
+    }
+    if (touches && r.shear[i] == r.tau) ++full;
+  }
+  EXPECT_EQ(full + r.partial_shear, static_cast<int>(r.active.size()));
+  EXPECT_NEAR(base.x(), -tangential, 1e-8 * F);
+  EXPECT_NEAR(base.z(), F, 1e-8 * F);
+  // The sliding force is about 3F (A changes little as the shear tilts the contact).
+  EXPECT_NEAR(tangential, 3.0 * F, 0.1 * 3.0 * F);
+  EXPECT_GE(r.lambda.minCoeff(), 0.0);
+  EXPECT_GE(r.gap.minCoeff(), -1e-10 * r.gap.cwiseAbs().maxCoeff());
+  EXPECT_GE(testing::check_newton_rate(r.steps, 1.8), 1);
+}
+
+TEST(FiniteContact, UnderAShearStrengthTheTangentContactHasTheFiniteSolutionAsItsOwn) {
+  // tangent_contact's gaps hold the finite state's shear too: the linear coupled contact on them, with the
+  // finite τ, finds the finite multipliers, set and shear.
+  Cap& c = cap();
+  const FiniteContactResult& r = sheared();
+  SensorReadings readings(c.mesh, reading_sites(c.scene.sensors));
+  const CondensedContact k = tangent_contact(c.mesh, c.mu_shear, c.held.fixed, *c.zone, *c.indenter, readings,
+                                             {0.3, 0.0, {1, 0}, {}, {}, 3.0}, r);
+  ContactLoad load;
+  load.force = 0.3;
+  load.law = FrictionLaw::shear_strength;
+  load.tau0 = r.tau;
+  const ContactResult l = ContactSolver(k, load).solve(FrictionMode::coupled);
+  EXPECT_EQ(l.active, r.active);
+  EXPECT_LT(rel_norm(l.lambda, r.lambda), 1e-8);
+  EXPECT_LT(rel_norm(l.shear, r.shear), 1e-8);
+  EXPECT_NEAR(l.depth_mm, r.depth_mm, 1e-8 * r.depth_mm);
 }
 
 }  // namespace
