@@ -166,10 +166,9 @@ int finite_defect_stage(const Scene& scene, const std::string& out_dir,
                     ratio > 0 ? (", friction ratio " + validation::fmt("%.3g", ratio)).c_str() : "");
     else
       std::snprintf(friction, sizeof friction, "friction ratio %.3g", ratio);
-    std::printf(
-        "  %s (%s): mesh %.2f s, Newton %.2f s, tangent %.2f s, sweep %.2f s (%.2f ms/position)\n",
-        n.c_str(), friction, wall.at("mesh_" + n), wall.at("newton_" + n),
-        wall.at("tangent_" + n), c.sweep.seconds, 1e3 * c.sweep.seconds / scene.contact->sweep->positions);
+    std::printf("  %s (%s): mesh %.2f s, Newton %.2f s, tangent %.2f s, sweep %.2f s (%.2f ms/position)\n",
+                n.c_str(), friction, wall.at("mesh_" + n), wall.at("newton_" + n), wall.at("tangent_" + n),
+                c.sweep.seconds, 1e3 * c.sweep.seconds / scene.contact->sweep->positions);
     std::printf(
         "    the tangent's own hole-free contact against the finite one: %.1e of the largest pressure; the "
         "holes act on material up to %.4f mm from their centres\n",

@@ -21,8 +21,8 @@ void write_pressure_vtp(const std::string& path, const TetMesh& mesh, const Cont
                         const ContactResult& r, const std::vector<Hole>& holes = {});
 
 // pressure.vtp of a plate on the finite-strain skin (contact/finite_contact.hpp): the same faces on the
-// reference mesh with pressure_kPa, traction_kPa (ratio·p + the shear along direction), gap_um, in_contact and
-// displacement_mm (ParaView's Warp By Vector shows the zone in the current frame).
+// reference mesh with pressure_kPa, traction_kPa (ratio·p + the shear along direction), gap_um, in_contact
+// and displacement_mm (ParaView's Warp By Vector shows the zone in the current frame).
 void write_finite_pressure_vtp(const std::string& path, const TetMesh& mesh, const MortarZone& zone,
                                const FiniteContactResult& r, const Eigen::Vector2d& direction, double ratio);
 

@@ -56,7 +56,8 @@ Layer& layer() {
 
 FiniteContactResult finite(double force) {
   Layer& l = layer();
-  return solve_finite_contact(l.mesh, l.mu_shear, l.held.fixed, *l.zone, *l.indenter, {force, 0, {1, 0}, {}, {}, 0});
+  return solve_finite_contact(l.mesh, l.mu_shear, l.held.fixed, *l.zone, *l.indenter,
+                              {force, 0, {1, 0}, {}, {}, 0});
 }
 
 double rel_norm(const Eigen::VectorXd& a, const Eigen::VectorXd& b) { return (a - b).norm() / b.norm(); }
