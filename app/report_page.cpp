@@ -319,8 +319,15 @@ void finite_deformation(std::ostream& h, const ReportResult& in) {
     << html_escape(f.at("answer").get<std::string>())
     << " Linear: the small-strain skin the rest of this page solves; finite: the incompressible neo-Hookean "
        "skin, the plate meeting its deformed surface (docs/theory.md). "
-    << f.at("dofs").get<int>() << " DOFs, " << fmt("%.1f", f.at("seconds").get<double>())
-    << " s for both states and their sweeps.</p>\n<table><tr><th>sliding contact (material frame)</th>"
+    << f.at("dofs").get<int>() << " DOFs, " << fmt("%.1f", f.at("seconds").get<double>()) << " s for "
+    << (f.contains("shear_strength") ? "each law's" : "both") << " states and their sweeps."
+    << (f.contains("shear_strength")
+            ? " Under the shear strength (τ0 = " +
+                  fmt("%.4g", f.at("shear_strength").at("tau0_kPa").get<double>()) +
+                  " kPa where the skin touches), the finite skin slides with " +
+                  fmt("%.3f", f.at("shear_strength").at("tangential_force_N").get<double>()) + " N."
+            : std::string())
+    << "</p>\n<table><tr><th>sliding contact (material frame)</th>"
        "<th>linear</th><th>finite</th><th>change</th></tr>\n";
   for (const char* key : {"contact_radius_mm", "p0_kPa", "indentation_um", "front_edge_mm", "back_edge_mm",
                           "zone_centroid_x_mm", "pressure_centroid_x_mm"}) {
@@ -335,8 +342,10 @@ void finite_deformation(std::ostream& h, const ReportResult& in) {
       << (position ? fmt("%+.3f mm", fin - lin) : fmt("%+.2f %%", 100 * v.at("change_rel").get<double>()))
       << "</td></tr>\n";
   }
+  const nlohmann::json* shear = f.contains("shear_strength") ? &f.at("shear_strength") : nullptr;
   h << "</table>\n<table><tr><th>sensor</th><th>σz kPa linear / finite</th><th>σx kPa linear / "
-       "finite</th><th>sliding |ςz| finite/linear</th><th>|ςx| finite/linear</th></tr>\n";
+       "finite</th><th>sliding |ςz| finite/linear</th><th>|ςx| finite/linear</th>"
+    << (shear ? "<th>shear strength |ςz| finite/linear</th><th>|ςx| finite/linear</th>" : "") << "</tr>\n";
   for (size_t k = 0; k < c.at("readings").size(); ++k) {
     const nlohmann::json &r = c.at("readings")[k], &a = c.at("hole_amplitudes")[k];
     h << "<tr><td>" << r.at("sensor").get<int>() << (a.at("front").get<bool>() ? " (front)" : "") << "</td>";
@@ -344,6 +353,12 @@ void finite_deformation(std::ostream& h, const ReportResult& in) {
       h << "<td>" << fmt("%.3f", r.at(d).at("linear").get<double>()) << " / "
         << fmt("%.3f", r.at(d).at("finite").get<double>()) << "</td>";
     for (const char* d : {"z", "x"}) h << "<td>" << fmt("%.3f", a.at(d).at("ratio").get<double>()) << "</td>";
+    if (shear)
+      for (const char* d : {"z", "x"}) {
+        const nlohmann::json& s = shear->at("hole_amplitudes").at(k).at(d);
+        h << "<td>" << (s.contains("ratio") ? fmt("%.3f", s.at("ratio").get<double>()) : std::string("–"))
+          << "</td>";
+      }
     h << "</tr>\n";
   }
   h << "</table>\n";

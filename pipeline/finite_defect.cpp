@@ -116,7 +116,8 @@ void check_finite_defect(const Scene& scene, const std::vector<FrictionMode>& mo
 }
 
 FiniteDefectRun finite_defect_run(const Scene& scene, const std::vector<FrictionMode>& modes,
-                                  std::vector<ChainLevel> coarse, int sliding_stations) {
+                                  std::vector<ChainLevel> coarse, int sliding_stations,
+                                  std::shared_ptr<const FiniteContactRun> frictionless) {
   check_finite_defect(scene, modes);
   if (sliding_stations < 1) throw std::invalid_argument("finite_defect_run: sliding_stations must be ≥ 1");
   FiniteDefectRun run;
@@ -124,15 +125,20 @@ FiniteDefectRun finite_defect_run(const Scene& scene, const std::vector<Friction
     run.path.push_back({ratio, st.tangential_force_N, st.result.depth_mm, st.reference, st.current});
   };
   // Every case's path starts with the same frictionless contact at the full force: solved once when shared.
-  std::optional<FiniteContactRun> frictionless;
-  if (modes.size() > 1 || sliding_stations > 1) {
-    frictionless = finite_contact_run(scene, FrictionMode::none);
-    for (const auto& [stage, seconds] : frictionless->wall) run.wall[stage + "_frictionless"] = seconds;
-    point(*frictionless, 0);
+  if (frictionless) {
+    if (frictionless->mode != FrictionMode::none || frictionless->force_N != *scene.contact->force)
+      throw std::invalid_argument("finite_defect_run: the given start is not this scene's frictionless run");
+    run.frictionless = std::move(frictionless);
+    point(*run.frictionless, 0);
+  } else if (modes.size() > 1 || sliding_stations > 1) {
+    run.frictionless =
+        std::make_shared<const FiniteContactRun>(finite_contact_run(scene, FrictionMode::none));
+    for (const auto& [stage, seconds] : run.frictionless->wall) run.wall[stage + "_frictionless"] = seconds;
+    point(*run.frictionless, 0);
   }
   Scene station_scene = scene;
   for (FrictionMode m : modes) {
-    const contact::FiniteContactResult* from = frictionless ? &frictionless->solved_result : nullptr;
+    const contact::FiniteContactResult* from = run.frictionless ? &run.frictionless->solved_result : nullptr;
     // The sliding case's ratio path through converged stations at k/K of μ, each solved from the last.
     std::optional<FiniteContactRun> station;
     for (int k = 1; m == FrictionMode::coupled && k < sliding_stations; ++k) {

@@ -8,6 +8,7 @@
 // top. Units: mm, N, MPa.
 #pragma once
 
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -36,8 +37,9 @@ struct FiniteDefectCase {
   double tangent_seconds = 0;            // the condensation on the tangent and the bulges' set-up
 };
 
-// A converged state on a case's load path: its friction ratio, tangential force (N), approach (mm) and
-// contact zone in the material and spatial frames.
+// A converged state on a case's load path: its friction coefficient (the mode's μ or static_ratio, which
+// scales a shear strength from the force too), tangential force (N), approach (mm) and contact zone in the
+// material and spatial frames.
 struct FinitePathPoint {
   double ratio = 0, tangential_force_N = 0, depth_mm = 0;
   contact::ContactZoneFrame material, spatial;
@@ -45,6 +47,9 @@ struct FinitePathPoint {
 
 struct FiniteDefectRun {
   std::vector<FiniteDefectCase> cases;
+  // The frictionless contact at the full force that the cases' paths start from, when they share it (several
+  // cases or stations, or given): another law's run on the same scene can start from it too.
+  std::shared_ptr<const FiniteContactRun> frictionless;
   // The states the cases' paths went through at the full force, by ratio: the shared frictionless one (with
   // several cases or stations), the sliding stations, each case's own.
   std::vector<FinitePathPoint> path;
@@ -62,10 +67,13 @@ void check_finite_defect(const Scene& scene, const std::vector<FrictionMode>& mo
 // when Newton cannot carry the load. coarse: finite_sliding_levels' result, kept in the run with this
 // level's appended (the modes must then include coupled). sliding_stations K: the sliding case's ratio path
 // stops at k/K of μ (k < K) on its way, each stop a converged state in `path` (K − 1 more finite solves).
+// frictionless: null, or the frictionless run of a scene differing from this one in its friction alone
+// (another run's `frictionless`): the paths start from it instead of solving it again.
 FiniteDefectRun finite_defect_run(const Scene& scene,
                                   const std::vector<FrictionMode>& modes = {FrictionMode::static_residual,
                                                                             FrictionMode::coupled},
-                                  std::vector<ChainLevel> coarse = {}, int sliding_stations = 1);
+                                  std::vector<ChainLevel> coarse = {}, int sliding_stations = 1,
+                                  std::shared_ptr<const FiniteContactRun> frictionless = nullptr);
 
 // The sliding case's contact radius (mm), p0 (MPa), indentation (mm) and largest |ς_z| (MPa), under
 // chain_level's names (contact_radius, contact_p0, indentation, hole_signal), so that chain_errors and

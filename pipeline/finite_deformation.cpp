@@ -5,7 +5,10 @@
 
 #include "skinfem/contact/contact_solver.hpp"
 #include "skinfem/contact/finite_contact.hpp"
+#include "skinfem/pipeline/progress.hpp"
+#include "skinfem/scene/laws.hpp"
 #include "skinfem/validation/crosscheck.hpp"
+#include "skinfem/validation/hole_budget.hpp"
 #include "skinfem/validation/text.hpp"
 
 namespace skinfem::pipeline {
@@ -27,6 +30,8 @@ struct Range {
   double lo = 1e300, hi = 0;
   void add(double v) { lo = std::min(lo, v), hi = std::max(hi, v); }
 };
+// [lo, hi], or null for no sensor.
+nlohmann::json range_json(const Range& r) { return r.hi > 0 ? nlohmann::json{r.lo, r.hi} : nlohmann::json(); }
 // "x0.96–1.10 on the front sensors", or "no front sensor".
 std::string on(const Range& r, const std::string& where) {
   return r.hi > 0 ? "x" + fmt("%.2f", r.lo) + "–" + fmt("%.2f", r.hi) + " on the " + where + " sensors"
@@ -43,6 +48,20 @@ FiniteDeformation finite_deformation(const Scene& scene, const DefectRun& linear
   FiniteDeformation f;
   f.run =
       finite_defect_run(scene, {FrictionMode::static_residual, FrictionMode::coupled}, {}, kSlidingStations);
+  if (scene.contact->law != FrictionLaw::shear_strength) {
+    // The hole budget's shear_strength hypothesis on the finite skin, from the same frictionless state.
+    Scene shear = scene;
+    for (const validation::Hypothesis& h : validation::friction_hypotheses(*scene.contact))
+      if (h.load.law == FrictionLaw::shear_strength) shear.contact = h.load;
+    progress("finite deformation under the shear strength: its static and sliding states and hole sweeps");
+    try {
+      f.shear = finite_defect_run(shear, {FrictionMode::static_residual, FrictionMode::coupled}, {}, 1,
+                                  f.run.frictionless);
+      f.shear_scene = shear;
+    } catch (const SolverError& e) {
+      f.shear_failed = e.what();
+    }
+  }
   const ContactSetup& setup = *linear.setup;
   // The linear coupled contact along the ratio: one complementarity solve each on the condensed skin.
   const Eigen::Vector2d t(scene.contact->direction[0], scene.contact->direction[1]);
@@ -119,8 +138,7 @@ nlohmann::json finite_deformation_json(const Scene& scene, const FiniteDeformati
       }
       j["hole_amplitudes"].push_back(a);
     }
-    j["hole_amplitude_ratio"] = {{"front", {front_ratio[c].lo, front_ratio[c].hi}},
-                                 {"back", {back_ratio[c].lo, back_ratio[c].hi}}};
+    j["hole_amplitude_ratio"] = {{"front", range_json(front_ratio[c])}, {"back", range_json(back_ratio[c])}};
     out["cases"][kCases[c]] = j;
   }
   const auto frame = [](const contact::ContactZoneFrame& z) {
@@ -153,6 +171,46 @@ nlohmann::json finite_deformation_json(const Scene& scene, const FiniteDeformati
       "and 1 when axisymmetric), smooth where the vertex-based sizes step";
   out["wall_s"] = f.run.wall;
   out["seconds"] = f.run.wall.total();
+  if (f.shear) {
+    // The shear-strength hypothesis: its sliding contact on the finite skin, and its hole amplitudes over the
+    // linear skin's (the budget's shear_strength row).
+    const FiniteDefectCase& sc = f.shear->cases.at(1);
+    const FiniteContactRun& st = sc.state;
+    nlohmann::json j = {{"tau0_kPa", 1e3 * st.tau0_MPa},
+                        {"tangential_force_N", st.tangential_force_N},
+                        {"contact_radius_mm", sc.metrics.contact_radius_mm},
+                        {"p0_kPa", 1e3 * sc.metrics.p0_MPa},
+                        {"indentation_um", 1e3 * st.result.depth_mm},
+                        {"partial_shear", st.result.partial_shear},
+                        {"seconds", f.shear->wall.total()}};
+    // The budget holds both rows' signals in its units (the same scale per sensor and component).
+    const validation::HypothesisResult *lin = nullptr, *fin = nullptr;
+    if (budget)
+      for (const validation::HypothesisResult& r : budget->results) {
+        if (r.hypothesis.name == "shear_strength") lin = &r;
+        if (r.hypothesis.name == "shear_strength_finite") fin = &r;
+      }
+    Range fr, br;
+    for (int k = 0; k < ns; ++k) {
+      nlohmann::json a = {{"sensor", k + 1}, {"front", is_front(k)}};
+      for (int d = 0; d < 2; ++d) {
+        const int col = 2 * k + d;
+        nlohmann::json& x = a[d ? "x" : "z"];
+        const double g = peak(sc.sweep.varsigma, col);
+        x["finite_kPa"] = 1e3 * g;
+        if (!lin || !fin) continue;
+        const double ls = peak(lin->signals[1], col), fs = peak(fin->signals[1], col);
+        if (!(ls > 0 && fs > 0)) continue;
+        x["linear_kPa"] = 1e3 * g * ls / fs;
+        x["ratio"] = fs / ls;
+        (is_front(k) ? fr : br).add(fs / ls);
+      }
+      j["hole_amplitudes"].push_back(a);
+    }
+    if (lin && fin) j["hole_amplitude_ratio"] = {{"front", range_json(fr)}, {"back", range_json(br)}};
+    out["shear_strength"] = j;
+    out["seconds"] = f.run.wall.total() + f.shear->wall.total();
+  }
 
   // The answer, from the sliding case's numbers.
   const FiniteContactRun& st = f.run.cases[1].state;
@@ -186,14 +244,17 @@ nlohmann::json finite_deformation_json(const Scene& scene, const FiniteDeformati
   }
   if (!f.same_mesh) answer += " The two skins were meshed differently: the changes include mesh error.";
   if (budget)
-    for (size_t i = 0; i < budget->results.size(); ++i)
-      if (budget->results[i].hypothesis.name == "coulomb_finite") {
-        answer += " Its hole-budget row (coulomb_finite) meets " + std::to_string(budget->facts_met[i]) +
-                  " of the paper's 5 facts";
-        for (const auto& v : budget->results[i].facts)
-          if (v.fact == "F3") answer += std::string("; F3 is ") + (v.met ? "met: " : "not met: ") + v.why;
-        answer += answer.back() == '.' ? "" : ".";
-      }
+    for (size_t i = 0; i < budget->results.size(); ++i) {
+      const std::string& name = budget->results[i].hypothesis.name;
+      if (name.size() < 7 || name.compare(name.size() - 7, 7, "_finite") != 0) continue;
+      answer += " Its hole-budget row " + name + " meets " + std::to_string(budget->facts_met[i]) +
+                " of the paper's 5 facts";
+      for (const auto& v : budget->results[i].facts)
+        if (v.fact == "F3") answer += std::string("; F3 is ") + (v.met ? "met: " : "not met: ") + v.why;
+      answer += answer.back() == '.' ? "" : ".";
+    }
+  if (!f.shear_failed.empty())
+    answer += " The shear strength on the finite skin did not solve: " + f.shear_failed;
   out["answer"] = answer;
   return out;
 }

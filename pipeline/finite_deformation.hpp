@@ -2,14 +2,15 @@
 // neo_hookean: its static and sliding states in finite strain and the hole sweeps about them
 // (pipeline/finite_defect.hpp), beside the report's linear ones on the same mesh: the contact zone in the
 // material frame (contact/metrics.hpp, as the linear contact is measured) and in the spatial one, the
-// sensors' readings and the hole-signal amplitudes. The hole budget's finite row is
-// pipeline/hole_budget.hpp's add_finite_row on the same run. Units: mm, N, MPa (kPa and µm in the JSON, as
-// its keys say).
+// sensors' readings and the hole-signal amplitudes; and the shear-strength hypothesis on the finite skin.
+// The hole budget's finite rows are pipeline/hole_budget.hpp's add_finite_row on these runs. Units: mm, N,
+// MPa (kPa and µm in the JSON, as its keys say).
 #pragma once
 
 #include <Eigen/Dense>
 #include <array>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "skinfem/contact/metrics.hpp"
@@ -30,6 +31,12 @@ struct FiniteDeformation {
   // The contact zone against the tangential load from 0 to μF: the finite path's converged states
   // (run.path), and the linear coupled contact at kLinearPathPoints ratios from 0 to μ (material frame).
   std::vector<FinitePathPoint> linear_path;
+  // Unless the scene's law is already it: the budget's shear-strength hypothesis (τ0 = μF/A wherever the
+  // skin touches, validation::friction_hypotheses) on the finite skin, static then sliding, on `shear_scene`;
+  // or why Newton could not carry it.
+  std::optional<FiniteDefectRun> shear;
+  std::optional<Scene> shear_scene;
+  std::string shear_failed;
 };
 // The sliding case's stations on the finite path (pipeline/finite_defect.hpp's sliding_stations): with the
 // frictionless and static states, five points from 0 to μF for two more finite solves.

@@ -5,6 +5,7 @@
 
 #include "skinfem/pipeline/clock.hpp"
 #include "skinfem/pipeline/progress.hpp"
+#include "skinfem/scene/laws.hpp"
 #include "skinfem/scene/parallel.hpp"
 #include "skinfem/validation/text.hpp"
 
@@ -130,12 +131,28 @@ void add_finite_row(HoleBudget& b, const Scene& scene, const FiniteDefectRun& ru
   if (run.cases.size() != 2 || run.cases[0].mode != FrictionMode::static_residual ||
       run.cases[1].mode != FrictionMode::coupled)
     throw std::invalid_argument("add_finite_row: the run's cases are static_residual, then coupled");
+  const ContactLoad& load = *scene.contact;
+  const std::string mu = validation::fmt("%g", load.mu);
+  std::string law;
+  switch (load.law) {
+    case FrictionLaw::coulomb:
+      law = "Coulomb friction (mu = " + mu + ")";
+      break;
+    case FrictionLaw::shear_strength:
+      law = "a shear strength tau0 = " + (load.tau0 ? validation::fmt("%g MPa", *load.tau0) : "mu F / A") +
+            " (mu = " + mu + ") where the skin touches";
+      break;
+    case FrictionLaw::mixed:
+      law = "Coulomb friction (mu = " + mu + ") with a shear strength";
+      break;
+  }
   validation::HypothesisResult r;
-  r.hypothesis = {"coulomb_finite",
-                  "Coulomb friction (mu = " + validation::fmt("%g", scene.contact->mu) +
-                      ") on the neo-Hookean skin in finite strain: the plate meets the deformed surface, the "
+  r.hypothesis = {std::string(to_string(load.law)) + "_finite",
+                  law +
+                      " on the neo-Hookean skin in finite strain: the plate meets the deformed surface, the "
                       "hole acts on the material under it, its signal the tangent's answer",
-                  *scene.contact};
+                  load};
+  r.tau0_MPa = run.cases[1].state.tau0_MPa;
   for (int c = 0; c < 2; ++c) {
     r.signals[c] = run.cases[c].sweep.varsigma;
     r.seconds += run.cases[c].sweep.seconds + run.cases[c].tangent_seconds + run.cases[c].state.wall.total();

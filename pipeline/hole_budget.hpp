@@ -34,9 +34,9 @@ struct HoleBudget {
 // reading_scale: validation::FactsInput's (post sensors: from pipeline::paper_reading_scale).
 HoleBudget hole_budget(const Scene& scene, const ContactSetup& setup, const validation::Crosscheck& x,
                        const Eigen::VectorXd& reading_scale = {});
-// Adds the finite-kinematics row: the scene's Coulomb friction on the neo-Hookean skin in finite strain, its
-// static and sliding cases (run.cases, in that order) judged against b.base as the linear rows are, and says
-// b.answer again over every row.
+// Adds a finite-kinematics row, named <law>_finite: the scene's friction law on the neo-Hookean skin in
+// finite strain, its static and sliding cases (run.cases, in that order) judged against b.base as the linear
+// rows are, and says b.answer again over every row.
 void add_finite_row(HoleBudget& b, const Scene& scene, const FiniteDefectRun& run);
 // report.json's hole_budget entry: noise, rules, units, each hypothesis's facts and peaks, the answer; or
 // {"skipped": why}.

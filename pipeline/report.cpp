@@ -238,6 +238,12 @@ void Chain::contact() {
         "finite deformation: the static and sliding states on the neo-Hookean skin and their hole sweeps");
     const FiniteDeformation f = finite_deformation(*finite_, *defect_);
     add_finite_row(*out_.budget, *finite_, f.run);
+    if (f.shear) add_finite_row(*out_.budget, *f.shear_scene, *f.shear);
+    if (!f.shear_failed.empty() && out_.budget->unavailable.empty())
+      out_.budget->skipped.push_back(
+          {{"shear_strength_finite", "the shear strength on the neo-Hookean skin in finite strain",
+            *finite_->contact},
+           f.shear_failed});
     report_["finite_deformation"] = finite_deformation_json(*finite_, f, &*out_.budget);
     sink_.finite_deformation(report_["finite_deformation"]);
     finite_level_ = finite_sliding_level(f.run);

@@ -24,8 +24,10 @@
 # μ p / G, 10 % here; pipeline_test_finite_defect checks them against full finite solves.) Then `skinfem
 # report` of the same neo-Hookean scene (no error bars): its finite section's readings and hole amplitudes are
 # the commands' (finite: `contact`, `defect`; linear: `defect` on the linear skin) to 1e-9, on one mesh, its
-# budget ends with the coulomb_finite row, and the page and figure show them. The sanitizer pass runs the
-# frictionless contact alone (the same code).
+# budget ends with the coulomb_finite and shear_strength_finite rows, and the page and figure show them; the
+# report's shear-strength sliding state is `contact`'s on the scene with that law (tau0 = mu F / A), whose
+# base takes back its tangential force to 1e-9. The sanitizer pass runs the frictionless contact alone (the
+# same code).
 set -u
 skinfem=$1
 against=${2:-}
@@ -68,6 +70,9 @@ if [ -n "$against" ]; then
     "$skinfem" defect "$tmp/${model}_sweep.json" $bars --out "$tmp/${model}_defect" >"$tmp/${model}_defect.out" 2>"$tmp/err" || { echo "FAIL $model defect:"; cat "$tmp/err"; exit 1; }
   done
   cat "$tmp/neo_defect.out"
+  /usr/bin/python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); d["contact"]["friction"]["law"] = "shear_strength"; json.dump(d, open(sys.argv[2], "w"))' "$tmp/neo.json" "$tmp/shear.json"
+  "$skinfem" contact "$tmp/shear.json" --out "$tmp/shear" >"$tmp/shear.out" 2>"$tmp/err" || { echo "FAIL shear-strength contact:"; cat "$tmp/err"; exit 1; }
+  cat "$tmp/shear.out"
   "$skinfem" report "$tmp/neo_sweep.json" --no-error-bars --out "$tmp/report" >"$tmp/report.out" 2>"$tmp/err" || { echo "FAIL neo_hookean report:"; cat "$tmp/err"; exit 1; }
 fi
 /usr/bin/python3 - "$tmp" "$against" <<'PY'
@@ -145,9 +150,16 @@ if against:
         for a, f, l in zip(fd["cases"][name]["hole_amplitudes"], d["cases"][name]["sensors"], dl["cases"][name]["sensors"]):
             for got, want in ((a["z"]["finite_kPa"], f["peak_abs_varsigma_z_kPa"]), (a["z"]["linear_kPa"], l["peak_abs_varsigma_z_kPa"])):
                 if abs(got - want) > 1e-9 * want: bad.append(f"report {name} sensor {a['sensor']} amplitude {got} against defect's {want}")
-    row = r["hole_budget"]["hypotheses"][-1]
     print(f"report: {fd['answer']}")
-    if row["name"] != "coulomb_finite" or row["facts_met"] != sum(v["met"] for v in row["facts"].values()): bad.append(f"budget row {row['name']}")
+    finite_rows = [h for h in r["hole_budget"]["hypotheses"] if h["name"].endswith("_finite")]
+    if [h["name"] for h in finite_rows] != ["coulomb_finite", "shear_strength_finite"]: bad.append(f"finite budget rows {[h['name'] for h in finite_rows]}")
+    for row in finite_rows:
+        if row["facts_met"] != sum(v["met"] for v in row["facts"].values()): bad.append(f"budget row {row['name']} facts")
+    sh, ss = fd["shear_strength"], json.load(open(f"{tmp}/shear/summary.json"))
+    print(f"shear strength: tau0 {ss['tau_kPa']:.4f} kPa, {ss['tangential_force_N']:.6f} N tangential, base balance {ss['base_force_balance_rel']:.1e}; report {sh['tau0_kPa']:.4f} kPa, {sh['tangential_force_N']:.6f} N")
+    if not ss["base_force_balance_rel"] < 1e-9: bad.append(f"shear-strength balance {ss['base_force_balance_rel']:.1e}")
+    for got, want in ((sh["tau0_kPa"], ss["tau_kPa"]), (sh["tangential_force_N"], ss["tangential_force_N"]), (sh["indentation_um"], ss["indentation_um"])):
+        if abs(got - want) > 1e-9 * abs(want): bad.append(f"report's shear-strength state {got} against contact's {want}")
     if "Does finite deformation matter at the paper's load?" not in open(f"{tmp}/report/index.html").read(): bad.append("page lacks the finite section")
     if not os.path.getsize(f"{tmp}/report/figures/budget_coulomb_finite.png") > 0: bad.append("no budget_coulomb_finite.png")
 for b in bad: print("FAIL", b)

@@ -137,7 +137,8 @@ TEST_F(HoleBudgetStage, TheJsonSaysTheTypedBudget) {
 }
 
 // The finite row is judged as the linear rows are: fed the linear skin's own static and sliding sweeps (the
-// scene's Coulomb law, as the "coulomb" row sweeps them), it is that row again, and the answer counts it.
+// scene's Coulomb law, as the "coulomb" row sweeps them), it is that row again, and the answer counts it; a
+// run under the shear strength is named after its law.
 TEST_F(HoleBudgetStage, AFiniteRowOfTheLinearSweepsIsTheCoulombRow) {
   HoleBudget b = *budget_;
   const auto coulomb = std::find_if(b.results.begin(), b.results.end(),
@@ -174,6 +175,14 @@ TEST_F(HoleBudgetStage, AFiniteRowOfTheLinearSweepsIsTheCoulombRow) {
   // Its cases must be static, then sliding.
   std::swap(run.cases[0], run.cases[1]);
   EXPECT_THROW(add_finite_row(b, *scene_, run), std::invalid_argument);
+  // A run under another law is that law's finite row, with the sliding state's τ0.
+  std::swap(run.cases[0], run.cases[1]);
+  Scene shear = *scene_;
+  shear.contact->law = FrictionLaw::shear_strength;
+  run.cases[1].state.tau0_MPa = 0.125;
+  add_finite_row(b, shear, run);
+  EXPECT_EQ(b.results.back().hypothesis.name, "shear_strength_finite");
+  EXPECT_EQ(b.results.back().tau0_MPa, 0.125);
 }
 
 TEST_F(HoleBudgetStage, WithoutThePapersModelTheBudgetIsSkippedWithTheReason) {
