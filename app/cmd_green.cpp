@@ -75,7 +75,9 @@ void write_green(const Scene& scene, const SensorGreens& greens, const GreenRun&
     double worst = 0;
     for (const GreenScan& scan : run.scans)
       for (double e : *scan.disc_max_diff_over_peak) worst = std::max(worst, e);
-    say(lines, "  disc readings against the exact layer: max |difference| / peak %.1e\n", worst);
+    const bool preloaded = scene.material.model == MaterialModel::neo_hookean && !scene.loads.patches.empty();
+    say(lines, "  disc readings against the exact %slayer: max |difference| / peak %.1e\n",
+        preloaded ? "(linear, unloaded) " : "", worst);
   }
   if (run.grid) {
     const green::KernelGrid& grid = *run.grid;

@@ -132,8 +132,8 @@ int main(int argc, char** argv) {
     const Handler& handler = handlers().at(command);
     handler.check(o);
     Scene scene = skinfem::load_scene(o.text("scene"));
-    if (command != "mesh" && command != "solve" && command != "contact" && command != "defect" &&
-        command != "report")
+    if (command != "mesh" && command != "solve" && command != "green" && command != "contact" &&
+        command != "defect" && command != "report")
       skinfem::pipeline::require_linear(scene, command);
     scene.limits.max_dofs = o.number("max_dofs");
     // An --out without a default is out/<scene name>.

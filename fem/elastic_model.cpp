@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "skinfem/fem/face_index.hpp"
 #include "skinfem/mesh/surface_quadrature.hpp"
@@ -16,6 +17,15 @@ ElasticModel::ElasticModel(const TetMesh& mesh, const Material& material, SideCo
   matrices_ = assemble_mixed(mesh, lame_);
   assemble_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   held_ = skin_supports(mesh, side, punches);
+  top_index_ = std::make_unique<PlanarFaceIndex>(mesh, kTop);
+  solver_ = std::make_unique<MixedSolver>(matrices_, lame_, held_.fixed, options.solver, options.tolerance,
+                                          options.factor_progress, options.coupling);
+}
+
+ElasticModel::ElasticModel(const TetMesh& mesh, MixedMatrices tangent, double mu, SideCondition side,
+                           ModelOptions options)
+    : mesh_(mesh), lame_{mu, 0.0}, matrices_(std::move(tangent)) {
+  held_ = skin_supports(mesh, side, {});
   top_index_ = std::make_unique<PlanarFaceIndex>(mesh, kTop);
   solver_ = std::make_unique<MixedSolver>(matrices_, lame_, held_.fixed, options.solver, options.tolerance,
                                           options.factor_progress, options.coupling);

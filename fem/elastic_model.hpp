@@ -44,6 +44,12 @@ class ElasticModel {
                const std::vector<Punch>& punches, ModelOptions options = {});
   ElasticModel(TetMesh&&, const Material&, SideCondition, const std::vector<Punch>&,
                ModelOptions = {}) = delete;
+  // The incompressible neo-Hookean skin linearized about a deformed state: `tangent` is its tangent there
+  // (fem/finite_strain.hpp's assemble_finite_strain at (u, p)), mu its shear modulus (MPa). Solves give the
+  // increments of (u, p) for load increments: the sensitivity under that preload. No punches.
+  ElasticModel(const TetMesh& mesh, MixedMatrices tangent, double mu, SideCondition side,
+               ModelOptions options = {});
+  ElasticModel(TetMesh&&, MixedMatrices, double, SideCondition, ModelOptions = {}) = delete;
 
   const TetMesh& mesh() const { return mesh_; }
   const MixedMatrices& matrices() const { return matrices_; }

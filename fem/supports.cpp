@@ -90,10 +90,12 @@ Eigen::VectorXd patch_load(const TetMesh& mesh, const TractionPatch& patch) {
     area += w.sum();
     for (int k = 0; k < 6; ++k) F.segment<3>(3 * mesh.faces(f, k)) += w[k] * dir;
   }
-  if (!(area > 0.5 * M_PI * a * a))
+  // A half mesh y ≥ 0 carries half of a patch centred on its cut (the mirror image carries the rest).
+  const double share = is_half_y(mesh) && centre.y() == 0 ? 0.5 : 1.0;
+  if (!(area > 0.5 * share * M_PI * a * a))
     throw std::out_of_range("traction patch at (" + std::to_string(centre.x()) + ", " +
                             std::to_string(centre.y()) + ") is off the top surface");
-  return (patch.force / area) * F;
+  return (share * patch.force / area) * F;
 }
 
 }  // namespace skinfem

@@ -42,7 +42,8 @@ inline constexpr double kPatchEdgeResolution = 1e-3;
 // Load vector (3N, N) of a uniform traction patch on the top surface: total force `force` along `direction`,
 // spread evenly over the disc (per unit area of its projection on the base plane), integrated face by face
 // (mesh/surface_quadrature.hpp, face_quadrature_in_disc). A dead load: it keeps its direction and its
-// reference area as the skin deforms. Throws std::out_of_range when the disc is off the top surface.
+// reference area as the skin deforms. On a half mesh y ≥ 0 a patch centred on y = 0 gives half its force
+// (the half's share of a symmetric load). Throws std::out_of_range when the disc is off the top surface.
 Eigen::VectorXd patch_load(const TetMesh& mesh, const TractionPatch& patch);
 
 }  // namespace skinfem

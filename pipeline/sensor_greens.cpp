@@ -8,6 +8,7 @@
 #include "skinfem/mesh/shape.hpp"
 #include "skinfem/pipeline/clock.hpp"
 #include "skinfem/pipeline/kfit.hpp"
+#include "skinfem/pipeline/preloaded_skin.hpp"
 #include "skinfem/pipeline/progress.hpp"
 #include "skinfem/pipeline/skin_setup.hpp"
 
@@ -331,6 +332,20 @@ std::string meridian_check_line(const MeridianCheck& c) {
 }
 
 SensorGreens green_path(const Scene& scene, GreenPath path) {
+  if (scene.material.model == MaterialModel::neo_hookean) {
+    // The tangent about the patches' state is a 3D skin of its own: no meridian, no linear skin to share.
+    if (path == GreenPath::meridian)
+      throw SceneError(
+          "--path meridian: with material.model \"neo_hookean\" the Green tensor is the 3D "
+          "tangent's");
+    Preload preload;
+    std::shared_ptr<const AdjointSetup> setup =
+        adjoint_setup(scene, preloaded_skin(scene, preload_mesh_part(scene), &preload));
+    SensorGreens g = sensor_greens(scene, *setup);
+    g.model += "; the neo-Hookean skin " + preload.said();
+    g.adjoints = std::move(setup);
+    return g;
+  }
   if (path == GreenPath::meridian || (path == GreenPath::automatic && meridian_unavailable(scene).empty()))
     return meridian_sensor_greens(scene);
   std::shared_ptr<const AdjointSetup> setup = adjoint_setup(scene);

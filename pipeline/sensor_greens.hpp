@@ -101,7 +101,9 @@ struct SensorGains {
 SensorGains sensor_gains(const Sensors& sensors, double nu, double h, double scale = 1);
 
 // The Green tensors by `path`: the meridian's where asked, or where automatic and meridian_unavailable is
-// empty; else the 3D path's (with_path_reason), with the adjoint set-up it made in `adjoints`.
+// empty; else the 3D path's (with_path_reason), with the adjoint set-up it made in `adjoints`. A
+// neo-Hookean scene takes the 3D tangent about its patches' state (pipeline/preloaded_skin.hpp; SceneError
+// for the meridian).
 SensorGreens green_path(const Scene& scene, GreenPath path);
 // The path a name stands for (auto, 3d, meridian; as --path and Python's path= spell it); throws SceneError
 // naming the choices otherwise.

@@ -12,7 +12,7 @@ void require_linear(const Scene& scene, const std::string& stage) {
   if (scene.material.model != MaterialModel::linear)
     throw SceneError(
         scene.source_path + ": material.model = \"" + to_string(scene.material.model) + "\": " + stage +
-        " takes \"linear\" only (the finite-strain skin runs in solve, contact, defect and report)");
+        " takes \"linear\" only (the finite-strain skin runs in solve, green, contact, defect and report)");
 }
 
 std::shared_ptr<Skin> skin_setup(const Scene& scene, MeshPart part, const Border& border) {

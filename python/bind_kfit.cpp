@@ -88,6 +88,7 @@ void bind_kfit(py::module_& m) {
       [](const Scene& scene, const std::string& load, const std::string& path) {
         const green::LayerLoad l = calibration_load_named(load);
         const pipeline::GreenPath p = pipeline::green_path_named(path);
+        pipeline::require_linear(scene, "kfit");  // as the command line: k is the linear skin's
         py::gil_scoped_release free;
         return pipeline::kfit(scene, pipeline::green_path(scene, p), l);
       },

@@ -82,7 +82,7 @@ bad nu_negative 'd["material"]["nu"] = -0.1' 'material.nu = -0.1: must be a numb
 bad model_unknown 'd["material"]["model"] = "mooney"' 'material.model = "mooney": must be one of "linear", "neo_hookean"'
 bad model_neo_hookean_compressible 'd["material"].update(model="neo_hookean", nu=0.45)' 'material.nu = 0.45: must be 0.5 with "model": "neo_hookean"'
 bad model_neo_hookean_punch_force 'd["material"]["model"] = "neo_hookean"' 'loads.punches\[0\].force: with material.model "neo_hookean" a punch is driven by its "displacement"'
-bad model_neo_hookean_kfit 'd["material"]["model"] = "neo_hookean"' 'material.model = "neo_hookean": kfit takes "linear" only \(the finite-strain skin runs in solve, contact, defect and report\)' kfit
+bad model_neo_hookean_kfit 'd["material"]["model"] = "neo_hookean"' 'material.model = "neo_hookean": kfit takes "linear" only \(the finite-strain skin runs in solve, green, contact, defect and report\)' kfit
 bad cap_h_ge_R 'd["geometry"] = {"type": "cap", "R": 3, "h": 3, "apex": [0, 0], "truncation_radius": 2}' 'geometry.h = 3: must be a number in \(0, R\)'
 bad cap_truncation 'd["geometry"] = {"type": "cap", "R": 129.7, "h": 3.04, "apex": [0, 0], "truncation_radius": 40}' 'geometry.truncation_radius = 40: .*where the cap thins to zero'
 bad no_sensors 'd["sensors"]["positions"] = []' 'sensors.positions = \[\]: must be a non-empty array'
@@ -244,6 +244,10 @@ bad neo_contact_uncoupled "$neo"', "friction": {"mode": "uncoupled", "mu": 1, "s
 bad neo_defect_resolved "$neo"'}; d["contact"]["indenter"] = {"type": "plane"}; d["geometry"] = {"type": "cap", "R": 20.0, "h": 3.0, "apex": [0.0, 0.0], "truncation_radius": 8.0}; d["contact"]["sweep"] = {"from": [-1, 0], "to": [1, 0], "hole_model": "resolved"}' 'contact.sweep.hole_model = "resolved": with material.model "neo_hookean" the hole is the bulge' defect
 bad neo_report_interface "$neo"'}; d["contact"]["indenter"] = {"type": "plane"}; d["geometry"] = {"type": "cap", "R": 20.0, "h": 3.0, "apex": [0.0, 0.0], "truncation_radius": 8.0}; d["contact"]["sweep"] = {"from": [-1, 0], "to": [1, 0]}; d["contact"]["interface"] = {"law": "linear", "K": 5}' 'contact.interface.law = "linear": with material.model "neo_hookean" the interface is hard' report
 variant neo_meridian "$neo"'}'
+# The Green tensor about a preload: patches alone, in 3D.
+bad neo_green_punch 'd["material"]["model"] = "neo_hookean"; d["loads"]["punches"][0]["displacement"] = 0.01; del d["loads"]["punches"][0]["force"]' 'loads.punches: with material.model "neo_hookean" the Green tensor.s preload is loads.patches alone \(1 punches given\)' green
+variant neo_green 'd["material"]["model"] = "neo_hookean"; d["loads"] = {}'
+check neo_green_meridian '--path meridian: with material.model "neo_hookean" the Green tensor is the 3D tangent.s' "$skinfem" green "$tmp/neo_green.json" --path meridian --out "$tmp/out"
 check neo_contact_meridian '--path meridian: with material.model "neo_hookean" the contact is solved in 3D' "$skinfem" contact "$tmp/neo_meridian.json" --path meridian --out "$tmp/out"
 bad friction_law_unknown "$sphere, \"friction\": {\"law\": \"tresca\"}}" 'contact.friction.law = "tresca": must be one of "coulomb", "shear_strength", "mixed"' contact
 bad tau0_negative "$sphere, \"friction\": {\"law\": \"shear_strength\", \"tau0\": -0.1}}" 'contact.friction.tau0 = -0.1: must be a shear strength in \[0, 1e6\] MPa' defect
