@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <memory>
 #include <string>
 
@@ -67,6 +68,19 @@ LcpSolution linear(double force, double ratio) {
 
 double rel_norm(const Eigen::VectorXd& a, const Eigen::VectorXd& b) { return (a - b).norm() / b.norm(); }
 
+// The small forces at which the finite contact is compared with the linear one.
+constexpr double kSmallForces[] = {4e-4, 2e-4, 1e-4, 5e-5};
+
+// gap: the finite and linear displacements' relative gap at each of kSmallForces, which must halve with the
+// force (local order 1 ± 0.1) far above the Newton floor (~1e-9 of u), so that the ratios are the physics'.
+void expect_first_order_in_the_force(const std::vector<double>& gap) {
+  ASSERT_EQ(gap.size(), std::size(kSmallForces));
+  EXPECT_GT(gap.back(), 1e-7);
+  for (size_t k = 1; k < gap.size(); ++k)
+    EXPECT_NEAR(std::log2(gap[k - 1] / gap[k]), 1.0, 0.1)
+        << "forces " << kSmallForces[k - 1] << ", " << kSmallForces[k];
+}
+
 TEST(FiniteContact, SmallForcesTendToTheLinearContactAtFirstOrder) {
   // At forces this small the plate touches the same few vertices in both laws (asserted), so the problem is
   // smooth in F and the finite solution is the linear one plus O(F²): the relative gap between the two
@@ -74,18 +88,16 @@ TEST(FiniteContact, SmallForcesTendToTheLinearContactAtFirstOrder) {
   // strain a/R ∝ F^(1/3), but on a fixed mesh that regime is masked by the set's jumps, vertex by vertex.)
   // Sliding (ratio 0.5) so that the coupled friction's first-order consistency is checked too.
   Cap& c = cap();
-  const double forces[] = {4e-4, 2e-4, 1e-4, 5e-5}, ratio = 0.5;
+  const double ratio = 0.5;
   std::vector<double> gap;
-  for (double F : forces) {
+  for (double F : kSmallForces) {
     const FiniteContactResult f = finite(F, ratio);
     const LcpSolution l = linear(F, ratio);
     ASSERT_EQ(f.active, l.active) << "F " << F;
     const Eigen::VectorXd u_lin = c.linear->solve(c.zone->load(l.lambda, {1, 0}, ratio), {}).solution.u;
     gap.push_back(rel_norm(f.solution.u, u_lin));
   }
-  EXPECT_GT(gap.back(), 1e-7);  // far above the Newton floor (~1e-9 of u): the ratios below are the physics'
-  for (size_t k = 1; k < gap.size(); ++k)
-    EXPECT_NEAR(std::log2(gap[k - 1] / gap[k]), 1.0, 0.1) << "forces " << forces[k - 1] << ", " << forces[k];
+  expect_first_order_in_the_force(gap);
 }
 
 // The paper's friction (μ = 3) at 0.3 N on the small cap: the contact reaches about 1.2 mm, a/R = 6 %.
@@ -282,9 +294,9 @@ TEST(FiniteContact, AShearStrengthsSmallForcesTendToTheLinearContactAtFirstOrder
   // the finite solution is the linear one plus O(F²): the relative gap between the displacements halves with
   // the force.
   Cap& c = cap();
-  const double forces[] = {4e-4, 2e-4, 1e-4, 5e-5}, tau_mu = 0.5;
+  const double tau_mu = 0.5;
   std::vector<double> gap;
-  for (double F : forces) {
+  for (double F : kSmallForces) {
     const FiniteContactResult f = shearing(F, tau_mu);
     const ContactResult l = linear_shear(F, tau_mu);
     ASSERT_EQ(f.active, l.active) << "F " << F;
@@ -293,9 +305,7 @@ TEST(FiniteContact, AShearStrengthsSmallForcesTendToTheLinearContactAtFirstOrder
         c.linear->solve(c.zone->load(l.lambda, {1, 0}, 0.0, l.shear), {}).solution.u;
     gap.push_back(rel_norm(f.solution.u, u_lin));
   }
-  EXPECT_GT(gap.back(), 1e-7);
-  for (size_t k = 1; k < gap.size(); ++k)
-    EXPECT_NEAR(std::log2(gap[k - 1] / gap[k]), 1.0, 0.1) << "forces " << forces[k - 1] << ", " << forces[k];
+  expect_first_order_in_the_force(gap);
 }
 
 // The paper's sliding force (3F) as a shear strength at 0.3 N on the small cap, its path resumed from the
