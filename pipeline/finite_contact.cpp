@@ -74,7 +74,6 @@ void check_finite_contact(const Scene& scene, FrictionMode mode) {
                      "contact is frictionless ('none'), at rest with its residual traction ('static') or in "
                      "coupled sliding ('coupled')");
   if (c.indenter == IndenterKind::sphere && mode != FrictionMode::none)
-    // Refused before a law's: a shear strength is a plane's too.
     throw finite_refusal(scene, "contact.indenter = \"sphere\"",
                          "a sphere is frictionless (friction mode 'none', not '" +
                              std::string(to_string(mode)) +
