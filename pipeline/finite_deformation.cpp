@@ -40,7 +40,7 @@ std::string on(const Range& r, const std::string& where) {
 
 }  // namespace
 
-FiniteDeformation finite_deformation(const Scene& scene, const DefectRun& linear) {
+FiniteDeformation finite_deformation(const Scene& scene, const DefectRun& linear, bool shear_strength) {
   if (linear.sweeps.size() != 2 || linear.sweeps[0].mode != FrictionMode::static_residual ||
       linear.sweeps[1].mode != FrictionMode::coupled)
     throw std::invalid_argument(
@@ -48,7 +48,7 @@ FiniteDeformation finite_deformation(const Scene& scene, const DefectRun& linear
   FiniteDeformation f;
   f.run =
       finite_defect_run(scene, {FrictionMode::static_residual, FrictionMode::coupled}, {}, kSlidingStations);
-  if (scene.contact->law != FrictionLaw::shear_strength) {
+  if (shear_strength && scene.contact->law != FrictionLaw::shear_strength) {
     // The hole budget's shear_strength hypothesis on the finite skin, from the same frictionless state.
     Scene shear = scene;
     for (const validation::Hypothesis& h : validation::friction_hypotheses(*scene.contact))

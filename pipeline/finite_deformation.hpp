@@ -44,8 +44,9 @@ constexpr int kSlidingStations = 3;
 constexpr int kLinearPathPoints = 31;
 
 // scene: material.model neo_hookean (check_finite_contact's rules, a bulge sweep); linear: the report's
-// defect run of the same scene on the linear skin, static then sliding.
-FiniteDeformation finite_deformation(const Scene& scene, const DefectRun& linear);
+// defect run of the same scene on the linear skin, static then sliding. shear_strength: also the
+// shear-strength hypothesis (FiniteDeformation::shear), unless the scene's law is already it.
+FiniteDeformation finite_deformation(const Scene& scene, const DefectRun& linear, bool shear_strength = true);
 
 // report.json's finite_deformation entry: per case the contact (linear, finite, relative change), the
 // spatial frame's zone and shift, readings and hole amplitudes per sensor; the zone along the tangential

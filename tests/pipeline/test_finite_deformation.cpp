@@ -40,7 +40,7 @@ FiniteDeformation section(const Scene& scene) {
   linear.material.model = MaterialModel::linear;
   ContactSkin skin = chain_skin(linear, HolePath::as_scene);
   const std::shared_ptr<const ContactSetup> setup(contact_setup(linear, std::move(skin)));
-  return finite_deformation(scene, defect_run(linear, setup));
+  return finite_deformation(scene, defect_run(linear, setup), false);  // the scene's law alone
 }
 
 // |finite/linear − 1| of the sliding case's indentation, largest pressure, each sensor's σ_z and the
