@@ -106,6 +106,12 @@ const FiniteContactResult& sliding() {
   return r;
 }
 
+// Its frictionless start at the same force, where the static, sliding and shear-strength paths resume.
+const FiniteContactResult& resting() {
+  static const FiniteContactResult r = finite(0.3, 0.0);
+  return r;
+}
+
 TEST(FiniteContact, TheSkinCarriesThePlatesForceAndTheContactIsComplementary) {
   Cap& c = cap();
   const FiniteContactResult& r = sliding();
@@ -129,7 +135,7 @@ TEST(FiniteContact, TheSkinCarriesThePlatesForceAndTheContactIsComplementary) {
 // resumed from it, the ratio's part is the whole path's, to the last bit (the same steps on the same states).
 TEST(FiniteContact, ThePathResumedFromTheFrictionlessStateIsTheWholePath) {
   Cap& c = cap();
-  const FiniteContactResult rest = finite(0.3, 0.0), &whole = sliding();
+  const FiniteContactResult &rest = resting(), &whole = sliding();
   const FiniteContactResult resumed = solve_finite_contact(
       c.mesh, c.mu_shear, c.held.fixed, *c.zone, *c.indenter, {0.3, 3.0, {1, 0}, {}, {}, 0}, {}, {}, &rest);
   EXPECT_EQ(resumed.solution.u, whole.solution.u);
@@ -311,10 +317,7 @@ TEST(FiniteContact, AShearStrengthsSmallForcesTendToTheLinearContactAtFirstOrder
 // The paper's sliding force (3F) as a shear strength at 0.3 N on the small cap, its path resumed from the
 // frictionless state of `sliding()`'s.
 const FiniteContactResult& sheared() {
-  static const FiniteContactResult r = [] {
-    static const FiniteContactResult rest = finite(0.3, 0.0);
-    return shearing(0.3, 3.0, &rest);
-  }();
+  static const FiniteContactResult r = shearing(0.3, 3.0, &resting());
   return r;
 }
 
