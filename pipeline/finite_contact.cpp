@@ -66,8 +66,7 @@ void check_finite_contact(const Scene& scene, FrictionMode mode) {
   if (c.interface.law != InterfaceLaw::hard)
     throw finite_refusal(scene, std::string("contact.interface.law = \"") + to_string(c.interface.law) + "\"",
                          "the interface is hard");
-  if (scene.sensors.model == SensorModel::post && !scene.sensors.post.support.rigid())
-    throw finite_refusal(scene, "sensors.post.support", "posts are held rigid (\"support\": \"rigid\")");
+  require_rigid_posts(scene);
   if (mode == FrictionMode::uncoupled)
     throw SceneError(scene.source_path + ": friction mode '" + to_string(mode) +
                      "' (--friction or contact.friction.mode): with material.model \"neo_hookean\" the "

@@ -28,10 +28,7 @@ void check_preload(const Scene& scene) {
                      ": loads.punches: with material.model \"neo_hookean\" the Green "
                      "tensor's preload is loads.patches alone (" +
                      std::to_string(scene.loads.punches.size()) + " punches given)");
-  if (scene.sensors.model == SensorModel::post && !scene.sensors.post.support.rigid())
-    throw SceneError(scene.source_path +
-                     ": sensors.post.support: with material.model \"neo_hookean\" posts are held rigid "
-                     "(\"support\": \"rigid\")");
+  require_rigid_posts(scene);
 }
 
 MeshPart preload_mesh_part(const Scene& scene) {

@@ -28,7 +28,8 @@ struct Preload {
 };
 
 // Throws SceneError (one line naming the field) for a preload the tangent Green tensor does not model:
-// punches (green/fe_green.hpp reads a skin without punch constraints) and posts on springs.
+// punches (green/fe_green.hpp reads a skin without punch constraints) and posts on springs
+// (require_rigid_posts).
 void check_preload(const Scene& scene);
 
 // The mesh part Green tensors take for the scene (pipeline/symmetry.hpp's green_mesh_part), whole unless

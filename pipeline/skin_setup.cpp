@@ -15,6 +15,13 @@ void require_linear(const Scene& scene, const std::string& stage) {
         " takes \"linear\" only (the finite-strain skin runs in solve, green, contact, defect and report)");
 }
 
+void require_rigid_posts(const Scene& scene) {
+  if (scene.sensors.model == SensorModel::post && !scene.sensors.post.support.rigid())
+    throw SceneError(scene.source_path +
+                     ": sensors.post.support: with material.model \"neo_hookean\" posts are held rigid "
+                     "(\"support\": \"rigid\")");
+}
+
 std::shared_ptr<Skin> skin_setup(const Scene& scene, MeshPart part, const Border& border) {
   require_linear(scene, "the factored linear skin");
   Stopwatch clock;

@@ -22,6 +22,8 @@ struct Skin {
 // The stages built on the linear skin (every one but solve so far) refuse a finite-strain scene: throws
 // SceneError naming material.model, its value and what `stage` takes.
 void require_linear(const Scene& scene, const std::string& stage);
+// The finite-strain skin holds its posts rigid: throws SceneError naming sensors.post.support otherwise.
+void require_rigid_posts(const Scene& scene);
 
 // Given the skin's mesh before it is factored, columns to border the factorization with
 // (MixedSolver::Coupling: their products come with it), or null; what it returns must outlive the call.

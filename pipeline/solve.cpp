@@ -20,10 +20,7 @@ void check_finite_strain(const Scene& scene) {
       throw SceneError(
           scene.source_path + ": loads.punches[" + std::to_string(i) +
           "].force: with material.model \"neo_hookean\" a punch is driven by its \"displacement\"");
-  if (scene.sensors.model == SensorModel::post && !scene.sensors.post.support.rigid())
-    throw SceneError(scene.source_path +
-                     ": sensors.post.support: with material.model \"neo_hookean\" posts are held rigid "
-                     "(\"support\": \"rigid\")");
+  require_rigid_posts(scene);
 }
 
 // Newton on the neo-Hookean skin; the run's result as the linear solve gives it.
