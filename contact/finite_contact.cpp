@@ -48,7 +48,7 @@ struct FiniteProblem {
   MixedSolver::Reuse* factors = nullptr;  // the tangents' one analysis, handed from iterate to iterate
   // A sphere: its centre at first touch (it descends by the depth) and radius; its gaps are the normal
   // gaps on the displaced top (MortarZone::sphere_gaps), opened by `opening`.
-  bool sphere = false;
+  bool sphere = false, sliding = false;  // sliding: a friction traction along the sphere's tangent
   Eigen::Vector3d centre0 = Eigen::Vector3d::Zero();
   double R = 0;
   Eigen::VectorXd opening;
@@ -56,10 +56,17 @@ struct FiniteProblem {
   int nc() const { return zone.size(); }
   MortarZone::SphereGaps sphere_gaps(const Eigen::VectorXd& u, double depth,
                                      const Eigen::VectorXd* lambda = nullptr) const {
-    MortarZone::SphereGaps sg =
-        zone.sphere_gaps(mesh, u, centre0 - depth * Eigen::Vector3d::UnitZ(), R, lambda);
+    MortarZone::SphereGaps sg = zone.sphere_gaps(mesh, u, centre0 - depth * Eigen::Vector3d::UnitZ(), R,
+                                                 lambda, sliding ? &t : nullptr);
     if (opening.size()) sg.g += opening;
     return sg;
+  }
+  // A sphere's load on the skin: pressures λ along its normals, and ratio·λ along its tangents.
+  Eigen::VectorXd sphere_load(const MortarZone::SphereGaps& sg, const Eigen::VectorXd& lambda,
+                              double ratio) const {
+    Eigen::VectorXd f = sg.Dn.transpose() * lambda;
+    if (ratio > 0) f += ratio * (sg.Dt.transpose() * lambda);
+    return f;
   }
   // D u_z: the multipliers' weighted downward displacements, mm³.
   Eigen::VectorXd weighted_uz(const Eigen::VectorXd& u) const {
@@ -142,7 +149,15 @@ std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double f
         for (int c = 0; c < sg->G.outerSize(); ++c)
           for (Eigen::SparseMatrix<double>::InnerIterator it(sg->G, c); it; ++it)
             s.system.tangent.A.coeffRef(it.row(), it.col()) -= it.value();
-        normal_columns.F = sg->Dn.transpose();
+        // With friction, [Dnᵀ | Dtᵀ]: C_zt = Dn K⁻¹ Dtᵀ, the gaps' answer to the tangential tractions.
+        if (ratio > 0) {
+          const int nc = P.nc();
+          normal_columns.F.resize(sg->Dn.cols(), 2 * nc);
+          normal_columns.F.leftCols(nc) = sg->Dn.transpose();
+          normal_columns.F.rightCols(nc) = sg->Dt.transpose();
+        } else {
+          normal_columns.F = sg->Dn.transpose();
+        }
         normal_columns.solves_instead = P.columns.solves_instead;
         normal_columns.memory_limit_mb = P.columns.memory_limit_mb;
       }
@@ -155,9 +170,11 @@ std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double f
       if (sg) {
         // g ≈ g_k + Dn du − m (δ − δ_k): the LCP's q − δ m + M λ with du = du_r + K⁻¹ Dnᵀ λ.
         const Eigen::VectorXd q = sg->g + s.depth * sg->m + sg->Dn * rest.u;
-        lcp = ContactLcp(zz, q, sg->m).solve_force(force, {}, s.active);
-        dx = solver.solve(Eigen::VectorXd(sg->Dn.transpose() * lcp.lambda) + minus_internal, {},
-                          -s.system.constraint);
+        // The force is the sphere's whole downward load, friction's part included: that part at this
+        // iterate's λ (lagged, exact once λ settles) comes off the pressures' share.
+        const double friction_down = ratio > 0 ? ratio * sg->mt.dot(s.lambda) : 0.0;
+        lcp = ContactLcp(zz + ratio * zt, q, sg->m).solve_force(force - friction_down, {}, s.active);
+        dx = solver.solve(P.sphere_load(*sg, lcp.lambda, ratio) + minus_internal, {}, -s.system.constraint);
       } else {
         const Eigen::VectorXd q = P.gap0 - P.weighted_uz(s.u + rest.u);
         if (tau > 0) {
@@ -196,7 +213,7 @@ std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double f
       return std::nullopt;
     }
     if (P.sphere) s.sphere = P.sphere_gaps(s.u, s.depth, &s.lambda);  // the next iterate's, too
-    const Eigen::VectorXd f = s.sphere ? Eigen::VectorXd(s.sphere->Dn.transpose() * s.lambda)
+    const Eigen::VectorXd f = s.sphere ? P.sphere_load(*s.sphere, s.lambda, ratio)
                                        : P.zone.load(s.lambda, P.t, ratio, s.shear);  // the indenter's load
     step.residuals.push_back(equilibrium_residual(s.system, f, P.fixed, f.norm(), P.volume));
     step.active_sizes.push_back(static_cast<int>(s.active.size()));
@@ -229,8 +246,9 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
     throw std::invalid_argument("solve_finite_contact: the shear strength must be ≥ 0");
   const bool sphere = indenter.kind() == IndenterKind::sphere;
   const bool shearing = load.tau ? *load.tau > 0 : load.tau_mu > 0;
-  if (sphere && (load.ratio > 0 || shearing))
-    throw std::invalid_argument("solve_finite_contact: a sphere is frictionless here (ratio 0, no shear)");
+  if (sphere && shearing)
+    throw std::invalid_argument(
+        "solve_finite_contact: a sphere's friction is Coulomb's here (no shear strength)");
   if (!(o.first_step > 0 && o.first_step <= 1))
     throw std::invalid_argument("NewtonOptions::first_step must be in (0, 1]");
   FiniteProblem P(mesh, mu, fixed, zone, load.direction.normalized());
@@ -251,6 +269,7 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
     P.R = indenter.R();
     P.centre0 = {indenter.center()[0], indenter.center()[1], indenter.z_touch() + indenter.R()};
     P.opening = load.opening;
+    P.sliding = load.ratio > 0;
   }
   P.volume = pressure_mass(mesh).sum();
   MixedSolver::Reuse factors;
@@ -340,7 +359,7 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
   out.shear = s.shear.size() ? s.shear : Eigen::VectorXd::Zero(nc);
   out.partial_shear = s.partial_shear;
   if (s.sphere) {
-    out.load = s.sphere->Dn.transpose() * s.lambda;
+    out.load = P.sphere_load(*s.sphere, s.lambda, load.ratio);
     out.gap = s.sphere->g;
   } else {
     out.load = zone.load(s.lambda, P.t, load.ratio, out.shear);

@@ -1,7 +1,7 @@
 // Contact of a rigid plane or sphere with the finite-strain skin (fem/finite_strain.hpp), force controlled:
 // the indenter meets the deformed surface x = X + u. A plane is frictionless or in steady sliding under
 // Coulomb friction, a shear strength τ wherever the skin touches, or both (scene/laws.hpp's friction laws); a
-// sphere is frictionless.
+// sphere is frictionless or in steady sliding under Coulomb friction.
 //
 // Mortar multipliers on the reference top (contact/mortar.hpp): λ_i is the nodal pressure per unit of the
 // hat's reference horizontal area. Under a plane it pushes along −e_z with the friction traction ratio·λ
@@ -9,10 +9,13 @@
 // turn); because the plate is flat, the weighted gap is exactly linear in u, g_i = gap0_i − δ·area_i −
 // (D u_z)_i, whatever the lateral motion, and the nonlinearity is the skin's alone. Under a sphere (centre
 // c − δ e_z, radius R) the gap is the normal one on the displaced top, g_i = ∫ψ_i (|x + u − c| − R), and λ
-// pushes along the sphere's normal there (MortarZone::sphere_gaps): both turn with the surface. Each Newton
-// iterate solves, on the tangent at (u_k, p_k), the condensed complementarity problem of contact/lcp.hpp:
+// pushes along the sphere's normal there (MortarZone::sphere_gaps): both turn with the surface. A sliding
+// sphere's friction traction ratio·λ acts along its tangent s ∝ t − (t·n) n there (Dt), and the force is the
+// sphere's whole downward load Σ λ_i (m_i + ratio·mt_i), friction's part included (taken at the iterate's λ,
+// exact once λ settles). Each Newton iterate solves, on the tangent at (u_k, p_k), the condensed
+// complementarity problem of contact/lcp.hpp:
 //   M = C_zz + ratio·C_zt (the tangent's compliances, condensed.hpp's definitions; a sphere's along its
-//       normals at the iterate),
+//       normals and tangents at the iterate: Dn K⁻¹ Dnᵀ, Dn K⁻¹ Dtᵀ),
 //   q = gap0 − D_z (u_k + du_r) (a plane), g_k + δ_k m + Dn du_r (a sphere),  du_r the tangent's answer
 //       to the residual alone,
 // then steps to u_k + du_r + (the multipliers' answer). A shear strength's traction τ acts on the touched
@@ -20,9 +23,12 @@
 // point with contact_solver.hpp's rules (w: 1 on touched hats, the fraction at which an edge hat just
 // touches). This is Newton's method on the whole complementarity system (Josephy-Newton): once the active set
 // stops changing it is Newton on a smooth system, quadratic (a sphere's tangent includes its pressures'
-// turning with the surface, at the last iterate's λ). The first iterate from rest is the linear contact
-// exactly under a plane. Load path: the normal force ramps to F frictionless, then the ratio and τ ramp
-// together to their values at F, in adaptive steps (a step that fails is halved). Units: mm, N, MPa.
+// turning with the surface, at the last iterate's λ; not its drag's, whose derivative is not symmetric while
+// the tangent is factored LDLᵀ, so a sliding sphere's Newton is linear, dividing the residual each iterate by
+// about ratio·p h / (μ R): 0.02 on a 3 mm layer under R = 20 mm at 0.3 N, tests/contact/test_finite_sphere).
+// The first iterate from rest is the linear contact exactly under a plane. Load path: the normal force ramps
+// to F frictionless, then the ratio and τ ramp together to their values at F, in adaptive steps (a step that
+// fails is halved). Units: mm, N, MPa.
 #pragma once
 
 #include <Eigen/Dense>
@@ -100,7 +106,7 @@ struct FiniteContactResult {
 using FiniteContactStepSink = std::function<void(const FiniteContactStep&)>;
 
 // mesh: the skin (a half mesh's cut held by `fixed`); fixed: 3N held DOFs (base, cut), not moved;
-// zone: the candidate multipliers; indenter: a plane, or a sphere with load.ratio 0 and no shear
+// zone: the candidate multipliers; indenter: a plane, or a sphere with no shear strength
 // (std::invalid_argument otherwise); mu: shear modulus, MPa. Throws SolverError (one line: the force and
 // ratio reached, and why) when no step converges. from: null to start at rest and follow the load path; or a
 // converged state of the same force: at the same ratio (another opening) one step goes straight to `load`; at

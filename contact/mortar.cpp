@@ -63,11 +63,19 @@ Eigen::VectorXd MortarZone::weighted(const TetMesh& m,
 
 MortarZone::SphereGaps MortarZone::sphere_gaps(const TetMesh& m, const Eigen::VectorXd& u,
                                                const Eigen::Vector3d& c, double R,
-                                               const Eigen::VectorXd* lambda) const {
+                                               const Eigen::VectorXd* lambda,
+                                               const Eigen::Vector2d* sliding) const {
   std::vector<int> local(m.num_nodes(), -1);
   for (int i = 0; i < size(); ++i) local[vertices[i]] = i;
-  SphereGaps out{Eigen::VectorXd::Zero(size()), Eigen::VectorXd::Zero(size()), {}, {}};
-  std::vector<Eigen::Triplet<double>> t, tg;
+  SphereGaps out{Eigen::VectorXd::Zero(size()),
+                 Eigen::VectorXd::Zero(size()),
+                 Eigen::VectorXd::Zero(size()),
+                 {},
+                 {},
+                 {}};
+  std::vector<Eigen::Triplet<double>> t, tg, tt;
+  const Eigen::Vector3d t3 =
+      sliding ? Eigen::Vector3d(sliding->x(), sliding->y(), 0) : Eigen::Vector3d::Zero();
   for (int face : faces)
     for (const FacePoint& q : face_quadrature(m, face)) {
       const Eigen::Vector3d psi = hats(q.s, q.t);
@@ -96,10 +104,20 @@ MortarZone::SphereGaps MortarZone::sphere_gaps(const TetMesh& m, const Eigen::Ve
         out.m[i] -= w * n.z();
         for (int b = 0; b < 6; ++b)
           for (int k = 0; k < 3; ++k) t.emplace_back(i, 3 * m.faces(face, b) + k, w * q.N[b] * n[k]);
+        if (sliding) {
+          const Eigen::Vector3d s = (t3 - t3.dot(n) * n).normalized();
+          out.mt[i] -= w * s.z();
+          for (int b = 0; b < 6; ++b)
+            for (int k = 0; k < 3; ++k) tt.emplace_back(i, 3 * m.faces(face, b) + k, w * q.N[b] * s[k]);
+        }
       }
     }
   out.Dn.resize(size(), 3 * m.num_nodes());
   out.Dn.setFromTriplets(t.begin(), t.end());
+  if (sliding) {
+    out.Dt.resize(size(), 3 * m.num_nodes());
+    out.Dt.setFromTriplets(tt.begin(), tt.end());
+  }
   if (lambda) {
     out.G.resize(3 * m.num_nodes(), 3 * m.num_nodes());
     out.G.setFromTriplets(tg.begin(), tg.end());

@@ -37,12 +37,16 @@ struct MortarZone {
   // Dnᵀ λ) and m_i = ∫ ψ_i (−n_z), by which gap i closes per mm the sphere descends (contact/finite_contact).
   // With pressures `lambda` (n_c, MPa) also the load's derivative G = ∂(Dnᵀ λ)/∂u = Σ λ_i ∫ ψ_i φ_a φ_b
   // (I − n nᵀ)/|x + u_h − c| (3N × 3N, symmetric: the normals turn as the surface moves over the sphere).
+  // With a sliding direction t (unit, in the (x, y) plane) also Dt (n_c × 3N: ∫ ψ_i φ_node s, s the sphere's
+  // unit tangent at the displaced point in the plane of t and n, s ∝ t − (t·n) n: a friction traction
+  // ratio·λ along s has the load ratio·Dtᵀ λ, whose downward part is ratio·mtᵀ λ, mt_i = ∫ ψ_i (−s_z)).
   struct SphereGaps {
-    Eigen::VectorXd g, m;
-    Eigen::SparseMatrix<double> Dn, G;
+    Eigen::VectorXd g, m, mt;
+    Eigen::SparseMatrix<double> Dn, G, Dt;
   };
   SphereGaps sphere_gaps(const TetMesh& mesh, const Eigen::VectorXd& u, const Eigen::Vector3d& c, double R,
-                         const Eigen::VectorXd* lambda = nullptr) const;
+                         const Eigen::VectorXd* lambda = nullptr,
+                         const Eigen::Vector2d* sliding = nullptr) const;
   // 3N load vector of multipliers λ: traction −Σλψ e_z + t_dir·(ratio Σλψ + Σ shear_i ψ) (t_dir in the
   // (x, y) plane; shear: empty or n_c nodal values, MPa).
   Eigen::VectorXd load(const Eigen::VectorXd& lambda, const Eigen::Vector2d& t_dir, double ratio,

@@ -72,11 +72,10 @@ void check_finite_contact(const Scene& scene, FrictionMode mode) {
                      "' (--friction or contact.friction.mode): with material.model \"neo_hookean\" the "
                      "contact is frictionless ('none'), at rest with its residual traction ('static') or in "
                      "coupled sliding ('coupled')");
-  if (c.indenter == IndenterKind::sphere && mode != FrictionMode::none)
-    throw finite_refusal(scene, "contact.indenter = \"sphere\"",
-                         "a sphere is frictionless (friction mode 'none', not '" +
-                             std::string(to_string(mode)) +
-                             "'): sliding and the hole signals are modelled under a plane");
+  if (c.indenter == IndenterKind::sphere && mode != FrictionMode::none && c.law != FrictionLaw::coulomb)
+    throw finite_refusal(scene, std::string("contact.friction.law = \"") + to_string(c.law) + "\"",
+                         "a sphere's friction is Coulomb's (\"coulomb\"); the shear strength acts under "
+                         "a plate");
 }
 
 FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode,
@@ -145,7 +144,14 @@ FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode,
     run.tau0_MPa = c.tau0                        ? *c.tau0
                    : r.frictionless_area_mm2 > 0 ? c.mu * share * *c.force / r.frictionless_area_mm2
                                                  : 0.0;
-  run.tangential_force_N = ratio * *c.force + zone.area.dot(r.shear) / share;
+  // The drag along t: a plate's is horizontal; a sphere's follows its surface (its horizontal part).
+  if (c.indenter == IndenterKind::sphere) {
+    double drag = 0;
+    for (int i = 0; i < solved.num_nodes(); ++i) drag += r.load[3 * i] * t.x() + r.load[3 * i + 1] * t.y();
+    run.tangential_force_N = drag / share;
+  } else {
+    run.tangential_force_N = ratio * *c.force + zone.area.dot(r.shear) / share;
+  }
   run.dofs =
       static_cast<int>(std::count(run.held.fixed.begin(), run.held.fixed.end(), false)) + solved.num_vertices;
 

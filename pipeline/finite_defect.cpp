@@ -107,6 +107,10 @@ void check_finite_defect(const Scene& scene, const std::vector<FrictionMode>& mo
       throw std::invalid_argument("finite_defect_run: the cases are static_residual and coupled");
     check_finite_contact(scene, m);
   }
+  if (scene.contact->indenter == IndenterKind::sphere)
+    throw SceneError(scene.source_path +
+                     ": contact.indenter = \"sphere\": with material.model \"neo_hookean\" the hole sweep "
+                     "runs under a plate (its tangent contact takes the plate's fixed normal)");
   const HoleSweep& sweep = *scene.contact->sweep;
   if (sweep.model != HoleModel::bulge)
     throw SceneError(

@@ -6,8 +6,9 @@
 #   (1e-10 relative): a half counted once, or a sign, would be off by 50 % or 200 %.
 # - Symmetry: the whole zone's centroids lie on y = 0.
 # - The files: fields.vtu on the whole mesh, pressure.vtp, sensors.csv.
-# - A frictionless sphere on a flat layer: the base takes back its pressures' summed load (they turn with the
-#   surface), its vertical part the force.
+# - A sphere sliding on a flat layer (Coulomb, mu = 1): the base takes back the sphere's summed load (its
+#   pressures and drag turn with the surface), its vertical part the force; the drag along x is mu F within
+#   (1 + mu) F a/R (the normals' horizontal parts and the drag's tilt, each at most the slope a/R).
 # With --against-linear (Release): coupled sliding at mu = 1, against `skinfem contact` on the linear skin (an
 # independent path: condensation and the complementarity solve on the small-strain skin, readings by adjoint
 # solves). Finite strain changes the contact at first order in the strain scale a/R (the library's
@@ -48,15 +49,15 @@ JSON
 scene neo_hookean "$tmp/neo.json"
 "$skinfem" contact "$tmp/neo.json" --out "$tmp/neo" >"$tmp/neo.out" 2>"$tmp/err" || { echo "FAIL neo_hookean contact:"; cat "$tmp/err"; exit 1; }
 cat "$tmp/neo.out"
-# A frictionless sphere (R = 20 mm) on a flat layer: its pressures push along the turning normals, so the
-# balance is against their summed load, horizontal parts included.
+# A sphere (R = 20 mm) sliding on a flat layer: its pressures push along the turning normals and its drag
+# along the turning tangents, so the balance is against their summed load, horizontal parts included.
 cat >"$tmp/sphere.json" <<JSON
 {"name": "sphere_layer", "geometry": {"type": "flat", "h": 3.0, "half_width": 5.0, "side": "free"},
  "material": {"E": 3.0, "nu": 0.5, "model": "neo_hookean"},
  "sensors": {"positions": [[0.0, 0.0], [1.0, 0.0]], "disc_diameter": 0.2},
  "mesh": {"h_min": 0.5, "growth": 1.8, "h_max": 1.5, "refine_sensors": false},
  "contact": {"indenter": {"type": "sphere", "R": 20.0, "center": [0.0, 0.0]}, "force": 0.3, "zone_radius": 1.5,
-             "h": 0.5, "friction": {"mode": "none"}}}
+             "h": 0.5, "friction": {"mode": "coupled", "mu": 1.0}}}
 JSON
 "$skinfem" contact "$tmp/sphere.json" --out "$tmp/sphere" >"$tmp/sphere.out" 2>"$tmp/err" || { echo "FAIL sphere contact:"; cat "$tmp/err"; exit 1; }
 cat "$tmp/sphere.out"
@@ -100,6 +101,10 @@ print(f"sphere: base force balance {sp['base_force_balance_rel']:.1e}, indentati
 if sp["indenter"] != "sphere": bad.append(f"sphere summary says indenter {sp['indenter']}")
 if not sp["base_force_balance_rel"] < 1e-9: bad.append(f"sphere balance {sp['base_force_balance_rel']:.1e}")
 if abs(sp["base_force_N"][2] - sp["force_N"]) > 1e-8 * sp["force_N"]: bad.append(f"sphere vertical force {sp['base_force_N']}")
+Fs, Ts, a = sp["force_N"], sp["tangential_force_N"], sp["reference_frame"]["equivalent_radius_mm"]
+print(f"sphere: drag {Ts:.5f} N against mu F = {Fs:.5f} N, bound (1 + mu) F a/R = {2 * Fs * a / 20:.5f} N")
+if abs(sp["base_force_N"][0] + Ts) > 1e-8 * Fs: bad.append(f"sphere drag {Ts} against the base's {sp['base_force_N']}")
+if not abs(Ts - Fs) < 2 * Fs * a / 20: bad.append(f"sphere drag {Ts} beyond mu F's bound")
 if against:
     lin = json.load(open(f"{tmp}/lin/summary.json"))
     bound = s["reference_frame"]["equivalent_radius_mm"] / 20.0

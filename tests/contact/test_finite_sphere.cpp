@@ -54,44 +54,59 @@ Layer& layer() {
   return *l;
 }
 
-FiniteContactResult finite(double force) {
+FiniteContactResult finite(double force, double ratio = 0) {
   Layer& l = layer();
   return solve_finite_contact(l.mesh, l.mu_shear, l.held.fixed, *l.zone, *l.indenter,
-                              {force, 0, {1, 0}, {}, {}, 0});
+                              {force, ratio, {1, 0}, {}, {}, 0});
 }
 
 double rel_norm(const Eigen::VectorXd& a, const Eigen::VectorXd& b) { return (a - b).norm() / b.norm(); }
 
-TEST(FiniteSphere, SmallForcesTendToTheSmallStrainContactAtFirstOrder) {
-  // The small-strain contact of the same sphere, built here on the linear skin from the geometry at rest:
-  // normal gaps g⁰ and their derivative Dn⁰ (MortarZone::sphere_gaps at u = 0, the sphere at first touch),
-  // compliance Dn⁰ K⁻¹ Dn⁰ᵀ by one linear solve per multiplier, u = K⁻¹ Dn⁰ᵀ λ. (The linear contact of
-  // contact/condensed.hpp pushes vertically: it differs from both by the normals' tilt over the touched
-  // hats, a relative 3e-3 at every force here.) At forces this small the sphere touches the same vertices in
-  // both (asserted), so the problem is smooth in F and the finite solution is the small-strain one plus
-  // O(F²): the relative gap between the two displacement fields halves with the force.
+// The small-strain contact of the same sphere, built on the linear skin from the geometry at rest: normal
+// gaps g⁰ and their derivatives Dn⁰, Dt⁰ (MortarZone::sphere_gaps at u = 0, the sphere at first touch),
+// compliance Dn⁰ K⁻¹ (Dn⁰ + ratio Dt⁰)ᵀ by linear solves, u = K⁻¹ (Dn⁰ + ratio Dt⁰)ᵀ λ, the force the whole
+// downward load (m⁰ + ratio mt⁰)ᵀ λ. (The linear contact of
+// contact/condensed.hpp pushes vertically and drags horizontally: it differs from both by the normals' tilt
+// over the touched hats, a relative 3e-3 at every force here.) At forces this small the sphere touches the
+// same vertices in both (asserted), so the problem is smooth in F and the finite solution is the
+// small-strain one plus O(F²): the relative gap between the two displacement fields halves with the force.
+void expect_first_order_in_the_force(double ratio) {
   Layer& l = layer();
   const MortarZone& z = *l.zone;
   const int n3 = 3 * l.mesh.num_nodes();
   const Eigen::Vector3d c0(0, 0, l.indenter->z_touch() + l.indenter->R());
-  const MortarZone::SphereGaps rest = z.sphere_gaps(l.mesh, Eigen::VectorXd::Zero(n3), c0, l.indenter->R());
+  const Eigen::Vector2d t(1, 0);
+  const MortarZone::SphereGaps rest =
+      z.sphere_gaps(l.mesh, Eigen::VectorXd::Zero(n3), c0, l.indenter->R(), nullptr, &t);
+  const Eigen::SparseMatrix<double> pushes = rest.Dn + ratio * rest.Dt;
   Eigen::MatrixXd U(n3, z.size());
   for (int j = 0; j < z.size(); ++j)
-    U.col(j) = l.linear->solve(Eigen::VectorXd(rest.Dn.row(j).transpose()), {}).solution.u;
+    U.col(j) = l.linear->solve(Eigen::VectorXd(pushes.row(j).transpose()), {}).solution.u;
   Eigen::MatrixXd M = rest.Dn * U;
-  M = 0.5 * (M + M.transpose()).eval();
+  if (ratio == 0) M = 0.5 * (M + M.transpose()).eval();
   const double forces[] = {4e-4, 2e-4, 1e-4, 5e-5};
   std::vector<double> gap;
   for (double F : forces) {
-    const FiniteContactResult f = finite(F);
-    const LcpSolution small = ContactLcp(M, rest.g, rest.m).solve_force(F);
+    const FiniteContactResult f = finite(F, ratio);
+    // The force is the whole downward load, the friction's part ratio·mtᵀλ included: a fixed point on λ.
+    const ContactLcp lcp(M, rest.g, rest.m);
+    LcpSolution small = lcp.solve_force(F);
+    for (int k = 0; k < 20; ++k) small = lcp.solve_force(F - ratio * rest.mt.dot(small.lambda));
+    ASSERT_NEAR(rest.m.dot(small.lambda) + ratio * rest.mt.dot(small.lambda), F, 1e-14);
     ASSERT_EQ(f.active, small.active) << "F " << F;
     gap.push_back(rel_norm(f.solution.u, U * small.lambda));
-    std::printf("F %.1e N: %zu multipliers in contact, relative gap %.3e\n", F, f.active.size(), gap.back());
+    std::printf("ratio %g, F %.1e N: %zu multipliers in contact, relative gap %.3e\n", ratio, F,
+                f.active.size(), gap.back());
   }
   EXPECT_GT(gap.back(), 1e-7);  // far above the Newton floor (~1e-9 of u): the ratios below are the physics'
   for (size_t i = 1; i < gap.size(); ++i)
     EXPECT_NEAR(std::log2(gap[i - 1] / gap[i]), 1.0, 0.1) << "forces " << forces[i - 1] << ", " << forces[i];
+}
+
+TEST(FiniteSphere, SmallForcesTendToTheSmallStrainContactAtFirstOrder) { expect_first_order_in_the_force(0); }
+
+TEST(FiniteSphere, SlidingSmallForcesTendToTheSmallStrainSlidingContactAtFirstOrder) {
+  expect_first_order_in_the_force(1.0);
 }
 
 const FiniteContactResult& pressed() {
@@ -121,6 +136,61 @@ TEST(FiniteSphere, TheBaseTakesBackTheTurningPressuresAndTheContactIsComplementa
   const double gap_scale = r.gap.cwiseAbs().maxCoeff();
   EXPECT_GE(r.gap.minCoeff(), -1e-10 * gap_scale);
   EXPECT_LT(r.lambda.cwiseProduct(r.gap).cwiseAbs().maxCoeff(), 1e-10 * r.lambda.maxCoeff() * gap_scale);
+}
+
+TEST(FiniteSphere, SlidingItsFrictionFollowsTheSurfaceAndTheBaseTakesBackTheWholeLoad) {
+  // Coulomb friction in steady sliding along x, ratio 1: the traction ratio·p acts along the sphere's
+  // tangent s ∝ t − (t·n) n at the displaced point, so it turns with the surface as the pressure does.
+  // Equilibrium: the base takes back the whole load; the force is the sphere's whole downward load, the
+  // friction's part included. Tangency: per multiplier ∫ψ_i s and ∫ψ_i n are orthogonal up to the normal's
+  // turn across the hat, |cos| ≤ h/R (h = 0.35 mm, the zone's size). Newton: the tangent has the pressures'
+  // turning but not the friction direction's (its derivative is not symmetric, and the tangent is factored
+  // LDLᵀ), so Newton is linear on the settled set, each iterate dividing the residual by the omitted term's
+  // size against the skin's stiffness, ratio·p_max h_layer / (μ R) = 0.022 here; asserted ≤ 0.1.
+  Layer& l = layer();
+  const double F = 0.3, ratio = 1.0;
+  const FiniteContactResult r = finite(F, ratio);
+  Eigen::Vector3d base = Eigen::Vector3d::Zero(), load = Eigen::Vector3d::Zero();
+  for (int i = 0; i < l.mesh.num_nodes(); ++i) {
+    if (l.held.fixed[3 * i + 2]) base += r.internal_force.segment<3>(3 * i);
+    load += r.load.segment<3>(3 * i);
+  }
+  EXPECT_NEAR(load.z(), -F, 1e-9 * F);
+  EXPECT_GT(load.x(), 0.9 * ratio * F);  // the drag along t, nearly horizontal under a wide sphere
+  EXPECT_LT((base + load).norm(), 1e-8 * load.norm());
+  EXPECT_GE(r.lambda.minCoeff(), 0.0);
+  const double gap_scale = r.gap.cwiseAbs().maxCoeff();
+  EXPECT_GE(r.gap.minCoeff(), -1e-10 * gap_scale);
+  EXPECT_LT(r.lambda.cwiseProduct(r.gap).cwiseAbs().maxCoeff(), 1e-10 * r.lambda.maxCoeff() * gap_scale);
+
+  const Eigen::Vector2d t(1, 0);
+  const Eigen::Vector3d c(0, 0, l.indenter->z_touch() + l.indenter->R() - r.depth_mm);
+  const MortarZone::SphereGaps at =
+      l.zone->sphere_gaps(l.mesh, r.solution.u, c, l.indenter->R(), nullptr, &t);
+  const double h_over_R = 0.35 / l.indenter->R();
+  Eigen::MatrixXd normal(l.zone->size(), 3), tangent(l.zone->size(), 3);  // rows ∫ψ_i n, ∫ψ_i s
+  for (int k = 0; k < 3; ++k) {
+    Eigen::VectorXd e = Eigen::VectorXd::Zero(at.Dn.cols());
+    for (int j = k; j < e.size(); j += 3) e[j] = 1;  // the φ sum to one
+    normal.col(k) = at.Dn * e;
+    tangent.col(k) = at.Dt * e;
+  }
+  for (int i : r.active)
+    EXPECT_LT(std::abs(normal.row(i).dot(tangent.row(i))),
+              h_over_R * normal.row(i).norm() * tangent.row(i).norm())
+        << "multiplier " << i;
+
+  const double contraction = ratio * r.lambda.maxCoeff() * 3.0 / (l.mu_shear * l.indenter->R());
+  std::printf("omitted term / stiffness %.3f\n", contraction);
+  int pairs = 0;
+  for (const FiniteContactStep& step : r.steps)
+    for (size_t k = 1; k < step.residuals.size(); ++k)
+      if (step.ratio > 0 && step.set_changes[k - 1] == 0 && step.set_changes[k] == 0 &&
+          step.residuals[k] > 1e-13) {
+        EXPECT_LT(step.residuals[k], 0.1 * step.residuals[k - 1]);
+        ++pairs;
+      }
+  EXPECT_GE(pairs, 2);
 }
 
 TEST(FiniteSphere, NewtonConvergesQuadraticallyOnceTheContactSetSettles) {
