@@ -6,9 +6,8 @@
 // whole. Where the skin is a body of revolution about the indenter (pipeline/meridian_contact.hpp) the
 // contact is solved on its meridian instead (`--path meridian`, or `auto` where every reported mode is
 // exact there), and a 3D run checks itself against it (meridian_check). On the neo-Hookean skin
-// (material.model) a plate or a sphere, frictionless, at rest or in coupled sliding (a sphere under Coulomb
-// friction), by Newton on the deformed skin (pipeline/finite_contact.hpp), its zone in the reference and the
-// current frame.
+// (material.model) a plate or a sphere, frictionless, at rest or in coupled sliding, by Newton on the
+// deformed skin (pipeline/finite_contact.hpp), its zone in the reference and the current frame.
 //
 //   $ skinfem contact scenes/hertz_layer.json --out out/hertz
 //   contact hertz_layer (none), meridian path: 0.8000 N normal, 0.0000 N tangential; a = 2.4878 mm, ...

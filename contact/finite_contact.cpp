@@ -61,11 +61,14 @@ struct FiniteProblem {
     if (opening.size()) sg.g += opening;
     return sg;
   }
-  // A sphere's load on the skin: pressures λ along its normals, and ratio·λ along its tangents.
-  Eigen::VectorXd sphere_load(const MortarZone::SphereGaps& sg, const Eigen::VectorXd& lambda,
-                              double ratio) const {
+  // A sphere's load on the skin: pressures λ along its normals, ratio·λ and a shear strength's nodal
+  // traction (empty: none) along its tangents.
+  Eigen::VectorXd sphere_load(const MortarZone::SphereGaps& sg, const Eigen::VectorXd& lambda, double ratio,
+                              const Eigen::VectorXd& shear) const {
+    Eigen::VectorXd drag = ratio * lambda;
+    if (shear.size()) drag += shear;
     Eigen::VectorXd f = sg.Dn.transpose() * lambda;
-    if (ratio > 0) f += ratio * (sg.Dt.transpose() * lambda);
+    if (sliding) f += sg.Dt.transpose() * drag;
     return f;
   }
   // D u_z: the multipliers' weighted downward displacements, mm³.
@@ -105,11 +108,14 @@ std::pair<Eigen::MatrixXd, Eigen::MatrixXd> compliances(const FiniteProblem& P,
 // tangent it is the linear coupled contact (contact_solver.hpp) with compliances zz, zt and gaps q at rest,
 // whose touched set ContactSolver iterates to a fixed point (an edge multiplier that lifts under its own
 // shear holding the fraction at which it just touches).
+// weights: the force's weight per multiplier, the zone's areas under a plane, a sphere's m (its gaps close by
+// m per mm of descent): the solver's "areas".
 ContactResult shear_contact(const FiniteProblem& P, const Eigen::MatrixXd& zz, const Eigen::MatrixXd& zt,
                             const Eigen::VectorXd& q, double force, double ratio, double tau,
-                            const std::vector<int>& warm) {
+                            const std::vector<int>& warm, const Eigen::VectorXd& weights) {
   CondensedContact c;
   c.zone = P.zone;
+  c.zone.area = weights;
   c.direction = P.t;
   c.C_zz = zz;
   c.C_zt = zt;
@@ -150,7 +156,7 @@ std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double f
           for (Eigen::SparseMatrix<double>::InnerIterator it(sg->G, c); it; ++it)
             s.system.tangent.A.coeffRef(it.row(), it.col()) -= it.value();
         // With friction, [Dnᵀ | Dtᵀ]: C_zt = Dn K⁻¹ Dtᵀ, the gaps' answer to the tangential tractions.
-        if (ratio > 0) {
+        if (P.sliding) {
           const int nc = P.nc();
           normal_columns.F.resize(sg->Dn.cols(), 2 * nc);
           normal_columns.F.leftCols(nc) = sg->Dn.transpose();
@@ -171,14 +177,27 @@ std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double f
         // g ≈ g_k + Dn du − m (δ − δ_k): the LCP's q − δ m + M λ with du = du_r + K⁻¹ Dnᵀ λ.
         const Eigen::VectorXd q = sg->g + s.depth * sg->m + sg->Dn * rest.u;
         // The force is the sphere's whole downward load, friction's part included: that part at this
-        // iterate's λ (lagged, exact once λ settles) comes off the pressures' share.
-        const double friction_down = ratio > 0 ? ratio * sg->mt.dot(s.lambda) : 0.0;
-        lcp = ContactLcp(zz + ratio * zt, q, sg->m).solve_force(force - friction_down, {}, s.active);
-        dx = solver.solve(P.sphere_load(*sg, lcp.lambda, ratio) + minus_internal, {}, -s.system.constraint);
+        // iterate's λ and shear (lagged, exact once they settle) comes off the pressures' share.
+        double friction_down = ratio > 0 ? ratio * sg->mt.dot(s.lambda) : 0.0;
+        if (s.shear.size()) friction_down += sg->mt.dot(s.shear);
+        if (tau > 0) {
+          const ContactResult c =
+              shear_contact(P, zz, zt, q, force - friction_down, ratio, tau, s.active, sg->m);
+          lcp.lambda = c.lambda;
+          lcp.active = c.active;
+          lcp.delta = c.depth_mm;
+          lcp.complementarity = c.complementarity;
+          shear = c.shear;
+          partial_shear = c.partial_shear;
+        } else {
+          lcp = ContactLcp(zz + ratio * zt, q, sg->m).solve_force(force - friction_down, {}, s.active);
+        }
+        dx = solver.solve(P.sphere_load(*sg, lcp.lambda, ratio, shear) + minus_internal, {},
+                          -s.system.constraint);
       } else {
         const Eigen::VectorXd q = P.gap0 - P.weighted_uz(s.u + rest.u);
         if (tau > 0) {
-          const ContactResult c = shear_contact(P, zz, zt, q, force, ratio, tau, s.active);
+          const ContactResult c = shear_contact(P, zz, zt, q, force, ratio, tau, s.active, P.zone.area);
           lcp.lambda = c.lambda;
           lcp.active = c.active;
           lcp.delta = c.depth_mm;
@@ -213,7 +232,7 @@ std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double f
       return std::nullopt;
     }
     if (P.sphere) s.sphere = P.sphere_gaps(s.u, s.depth, &s.lambda);  // the next iterate's, too
-    const Eigen::VectorXd f = s.sphere ? P.sphere_load(*s.sphere, s.lambda, ratio)
+    const Eigen::VectorXd f = s.sphere ? P.sphere_load(*s.sphere, s.lambda, ratio, s.shear)
                                        : P.zone.load(s.lambda, P.t, ratio, s.shear);  // the indenter's load
     step.residuals.push_back(equilibrium_residual(s.system, f, P.fixed, f.norm(), P.volume));
     step.active_sizes.push_back(static_cast<int>(s.active.size()));
@@ -246,9 +265,6 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
     throw std::invalid_argument("solve_finite_contact: the shear strength must be ≥ 0");
   const bool sphere = indenter.kind() == IndenterKind::sphere;
   const bool shearing = load.tau ? *load.tau > 0 : load.tau_mu > 0;
-  if (sphere && shearing)
-    throw std::invalid_argument(
-        "solve_finite_contact: a sphere's friction is Coulomb's here (no shear strength)");
   if (!(o.first_step > 0 && o.first_step <= 1))
     throw std::invalid_argument("NewtonOptions::first_step must be in (0, 1]");
   FiniteProblem P(mesh, mu, fixed, zone, load.direction.normalized());
@@ -269,7 +285,7 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
     P.R = indenter.R();
     P.centre0 = {indenter.center()[0], indenter.center()[1], indenter.z_touch() + indenter.R()};
     P.opening = load.opening;
-    P.sliding = load.ratio > 0;
+    P.sliding = load.ratio > 0 || shearing;
   }
   P.volume = pressure_mass(mesh).sum();
   MixedSolver::Reuse factors;
@@ -359,7 +375,7 @@ FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const s
   out.shear = s.shear.size() ? s.shear : Eigen::VectorXd::Zero(nc);
   out.partial_shear = s.partial_shear;
   if (s.sphere) {
-    out.load = P.sphere_load(*s.sphere, s.lambda, load.ratio);
+    out.load = P.sphere_load(*s.sphere, s.lambda, load.ratio, out.shear);
     out.gap = s.sphere->g;
   } else {
     out.load = zone.load(s.lambda, P.t, load.ratio, out.shear);

@@ -1,7 +1,7 @@
 // Contact of a rigid plane or sphere with the finite-strain skin (fem/finite_strain.hpp), force controlled:
 // the indenter meets the deformed surface x = X + u. A plane is frictionless or in steady sliding under
 // Coulomb friction, a shear strength τ wherever the skin touches, or both (scene/laws.hpp's friction laws); a
-// sphere is frictionless or in steady sliding under Coulomb friction.
+// sphere the same, its drag along its surface.
 //
 // Mortar multipliers on the reference top (contact/mortar.hpp): λ_i is the nodal pressure per unit of the
 // hat's reference horizontal area. Under a plane it pushes along −e_z with the friction traction ratio·λ
@@ -10,10 +10,10 @@
 // (D u_z)_i, whatever the lateral motion, and the nonlinearity is the skin's alone. Under a sphere (centre
 // c − δ e_z, radius R) the gap is the normal one on the displaced top, g_i = ∫ψ_i (|x + u − c| − R), and λ
 // pushes along the sphere's normal there (MortarZone::sphere_gaps): both turn with the surface. A sliding
-// sphere's friction traction ratio·λ acts along its tangent s ∝ t − (t·n) n there (Dt), and the force is the
-// sphere's whole downward load Σ λ_i (m_i + ratio·mt_i), friction's part included (taken at the iterate's λ,
-// exact once λ settles). Each Newton iterate solves, on the tangent at (u_k, p_k), the condensed
-// complementarity problem of contact/lcp.hpp:
+// sphere's drag (ratio·λ, a shear strength's τ) acts along its tangent s ∝ t − (t·n) n there (Dt), and the
+// force is the sphere's whole downward load Σ λ_i m_i + Σ (ratio·λ_i + τ_i) mt_i, the drag's part included
+// (taken at the iterate's λ and τ, exact once they settle). Each Newton iterate solves, on the tangent at
+// (u_k, p_k), the condensed complementarity problem of contact/lcp.hpp:
 //   M = C_zz + ratio·C_zt (the tangent's compliances, condensed.hpp's definitions; a sphere's along its
 //       normals and tangents at the iterate: Dn K⁻¹ Dnᵀ, Dn K⁻¹ Dtᵀ),
 //   q = gap0 − D_z (u_k + du_r) (a plane), g_k + δ_k m + Dn du_r (a sphere),  du_r the tangent's answer
@@ -53,7 +53,7 @@ struct FiniteContactLoad {
   Eigen::VectorXd opening;
   // The shear strength acting wherever the skin touches, MPa: tau when given, else tau_mu·F/A with A the
   // reference area Σ∫ψ_i of the active multipliers of the path's frictionless contact at F (the linear
-  // contact's τ0 from_force, ContactSolver::tau0); neither: none. Under a plane only.
+  // contact's τ0 from_force, ContactSolver::tau0); neither: none.
   std::optional<double> tau;
   double tau_mu = 0;
 };
@@ -106,12 +106,11 @@ struct FiniteContactResult {
 using FiniteContactStepSink = std::function<void(const FiniteContactStep&)>;
 
 // mesh: the skin (a half mesh's cut held by `fixed`); fixed: 3N held DOFs (base, cut), not moved;
-// zone: the candidate multipliers; indenter: a plane, or a sphere with no shear strength
-// (std::invalid_argument otherwise); mu: shear modulus, MPa. Throws SolverError (one line: the force and
-// ratio reached, and why) when no step converges. from: null to start at rest and follow the load path; or a
-// converged state of the same force: at the same ratio (another opening) one step goes straight to `load`; at
-// a smaller ratio (the frictionless state shared by a static and a sliding case) the ratio's and τ's path
-// goes on from it.
+// zone: the candidate multipliers; indenter: a plane or a sphere; mu: shear modulus, MPa. Throws SolverError
+// (one line: the force and ratio reached, and why) when no step converges. from: null to start at rest and
+// follow the load path; or a converged state of the same force: at the same ratio (another opening) one step
+// goes straight to `load`; at a smaller ratio (the frictionless state shared by a static and a sliding case)
+// the ratio's and τ's path goes on from it.
 FiniteContactResult solve_finite_contact(const TetMesh& mesh, double mu, const std::vector<bool>& fixed,
                                          const MortarZone& zone, const Indenter& indenter,
                                          const FiniteContactLoad& load, const NewtonOptions& options = {},

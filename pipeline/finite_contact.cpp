@@ -72,10 +72,6 @@ void check_finite_contact(const Scene& scene, FrictionMode mode) {
                      "' (--friction or contact.friction.mode): with material.model \"neo_hookean\" the "
                      "contact is frictionless ('none'), at rest with its residual traction ('static') or in "
                      "coupled sliding ('coupled')");
-  if (c.indenter == IndenterKind::sphere && mode != FrictionMode::none && c.law != FrictionLaw::coulomb)
-    throw finite_refusal(scene, std::string("contact.friction.law = \"") + to_string(c.law) + "\"",
-                         "a sphere's friction is Coulomb's (\"coulomb\"); the shear strength acts under "
-                         "a plate");
 }
 
 FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode,

@@ -67,8 +67,8 @@ struct FiniteContactRun {
 };
 
 // Throws SceneError (one line naming the field or option, its value and what is allowed) for what the
-// finite-strain contact does not model: a shear strength under a sphere, a depth instead of a force, holes, a
-// compliant interface, posts on springs, and the uncoupled mode.
+// finite-strain contact does not model: a depth instead of a force, holes, a compliant interface, posts on
+// springs, and the uncoupled mode.
 void check_finite_contact(const Scene& scene, FrictionMode mode);
 
 // Throws SceneError as check_finite_contact, beyond the resource guard (before meshing), when the contact
