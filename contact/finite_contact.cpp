@@ -173,43 +173,34 @@ std::optional<FiniteContactStep> contact_newton(const FiniteProblem& P, double f
       ++factorizations;
       const auto [zz, zt] = compliances(P, columns, solver);
       const MixedSolution rest = solver.solve(minus_internal, {}, -s.system.constraint);
+      // The LCP's gaps q, its force weights (a plane's hat areas, a sphere's m) and the force they carry.
+      Eigen::VectorXd q;
+      double pressures_force = force;
       if (sg) {
         // g ≈ g_k + Dn du − m (δ − δ_k): the LCP's q − δ m + M λ with du = du_r + K⁻¹ Dnᵀ λ.
-        const Eigen::VectorXd q = sg->g + s.depth * sg->m + sg->Dn * rest.u;
-        // The force is the sphere's whole downward load, friction's part included: that part at this
+        q = sg->g + s.depth * sg->m + sg->Dn * rest.u;
+        // The force is the sphere's whole downward load, the drag's part included: that part at this
         // iterate's λ and shear (lagged, exact once they settle) comes off the pressures' share.
-        double friction_down = ratio > 0 ? ratio * sg->mt.dot(s.lambda) : 0.0;
-        if (s.shear.size()) friction_down += sg->mt.dot(s.shear);
-        if (tau > 0) {
-          const ContactResult c =
-              shear_contact(P, zz, zt, q, force - friction_down, ratio, tau, s.active, sg->m);
-          lcp.lambda = c.lambda;
-          lcp.active = c.active;
-          lcp.delta = c.depth_mm;
-          lcp.complementarity = c.complementarity;
-          shear = c.shear;
-          partial_shear = c.partial_shear;
-        } else {
-          lcp = ContactLcp(zz + ratio * zt, q, sg->m).solve_force(force - friction_down, {}, s.active);
-        }
-        dx = solver.solve(P.sphere_load(*sg, lcp.lambda, ratio, shear) + minus_internal, {},
-                          -s.system.constraint);
+        pressures_force -= ratio * sg->mt.dot(s.lambda);
+        if (s.shear.size()) pressures_force -= sg->mt.dot(s.shear);
       } else {
-        const Eigen::VectorXd q = P.gap0 - P.weighted_uz(s.u + rest.u);
-        if (tau > 0) {
-          const ContactResult c = shear_contact(P, zz, zt, q, force, ratio, tau, s.active, P.zone.area);
-          lcp.lambda = c.lambda;
-          lcp.active = c.active;
-          lcp.delta = c.depth_mm;
-          lcp.complementarity = c.complementarity;
-          shear = c.shear;
-          partial_shear = c.partial_shear;
-        } else {
-          lcp = ContactLcp(zz + ratio * zt, q, P.zone.area).solve_force(force, {}, s.active);
-        }
-        dx = solver.solve(P.zone.load(lcp.lambda, P.t, ratio, shear) + minus_internal, {},
-                          -s.system.constraint);
+        q = P.gap0 - P.weighted_uz(s.u + rest.u);
       }
+      const Eigen::VectorXd& weights = sg ? sg->m : P.zone.area;
+      if (tau > 0) {
+        const ContactResult c = shear_contact(P, zz, zt, q, pressures_force, ratio, tau, s.active, weights);
+        lcp.lambda = c.lambda;
+        lcp.active = c.active;
+        lcp.delta = c.depth_mm;
+        lcp.complementarity = c.complementarity;
+        shear = c.shear;
+        partial_shear = c.partial_shear;
+      } else {
+        lcp = ContactLcp(zz + ratio * zt, q, weights).solve_force(pressures_force, {}, s.active);
+      }
+      const Eigen::VectorXd load =
+          sg ? P.sphere_load(*sg, lcp.lambda, ratio, shear) : P.zone.load(lcp.lambda, P.t, ratio, shear);
+      dx = solver.solve(load + minus_internal, {}, -s.system.constraint);
     } catch (const std::runtime_error& e) {  // SolverError, or an LCP without a consistent set
       why = e.what();
       return std::nullopt;
