@@ -81,7 +81,8 @@ struct FiniteProblem {
 
 // C_zz and C_zt on the tangent the solver factored (condensed.hpp's definitions): from the bordered
 // factorization's products, or by block solves of the pressure columns where MUMPS chose the plain one.
-// columns: [a | b], or a sphere's pressure columns a alone (then C_zt is 0).
+// columns: [a | b]: a plane's, or a sphere's [Dnᵀ | Dtᵀ] when it slides; or a frictionless sphere's Dnᵀ
+// alone (then C_zt is 0).
 std::pair<Eigen::MatrixXd, Eigen::MatrixXd> compliances(const FiniteProblem& P,
                                                         const MixedSolver::Coupling& columns,
                                                         const MixedSolver& solver) {

@@ -140,14 +140,18 @@ FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode,
     run.tau0_MPa = c.tau0                        ? *c.tau0
                    : r.frictionless_area_mm2 > 0 ? c.mu * share * *c.force / r.frictionless_area_mm2
                                                  : 0.0;
-  // The drag along t: a plate's is horizontal; a sphere's follows its surface (its horizontal part).
-  if (c.indenter == IndenterKind::sphere) {
-    double drag = 0;
-    for (int i = 0; i < solved.num_nodes(); ++i) drag += r.load[3 * i] * t.x() + r.load[3 * i + 1] * t.y();
-    run.tangential_force_N = drag / share;
-  } else {
-    run.tangential_force_N = ratio * *c.force + zone.area.dot(r.shear) / share;
-  }
+  // A vector's total over the solved nodes, for the whole skin.
+  const auto whole_sum = [&](const Eigen::VectorXd& v) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (int i = 0; i < solved.num_nodes(); ++i) sum += v.segment<3>(3 * i);
+    return run.mirrored ? Eigen::Vector3d(2 * sum.x(), 0.0, 2 * sum.z()) : sum;
+  };
+  // The indenter's load on the whole skin. A plate's is nominal: its drag along t is horizontal. A sphere's
+  // pressures and drag follow its surface: their sum, whose horizontal part along t is the drag reported.
+  const bool sphere = c.indenter == IndenterKind::sphere;
+  const Eigen::Vector3d sphere_load = sphere ? whole_sum(r.load) : Eigen::Vector3d::Zero();
+  run.tangential_force_N =
+      sphere ? sphere_load.head<2>().dot(t) : ratio * *c.force + zone.area.dot(r.shear) / share;
   run.dofs =
       static_cast<int>(std::count(run.held.fixed.begin(), run.held.fixed.end(), false)) + solved.num_vertices;
 
@@ -157,20 +161,12 @@ FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode,
   run.sensor_sites = std::make_shared<const SensorReadings>(solved, reading_sites(scene.sensors));
   const SensorReadings& readings = *run.sensor_sites;
   for (int k = 0; k < readings.size(); ++k) run.readings.push_back(readings.read(k, reactions));
-  // A vector's total over the solved nodes, for the whole skin.
-  const auto whole_sum = [&](const Eigen::VectorXd& v) {
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (int i = 0; i < solved.num_nodes(); ++i) sum += v.segment<3>(3 * i);
-    return run.mirrored ? Eigen::Vector3d(2 * sum.x(), 0.0, 2 * sum.z()) : sum;
-  };
   run.base_force_N = whole_sum(reactions);
   // At equilibrium the base takes back the indenter's whole load, friction included (the internal force's
-  // test functions sum to one): the plate's nominal force, or the sum of a sphere's pressures along its
-  // normals (their horizontal parts cancel only as far as the mesh is symmetric).
+  // test functions sum to one).
   const Eigen::Vector3d load =
-      c.indenter == IndenterKind::sphere
-          ? whole_sum(r.load)
-          : Eigen::Vector3d(run.tangential_force_N * t.x(), run.tangential_force_N * t.y(), -run.force_N);
+      sphere ? sphere_load
+             : Eigen::Vector3d(run.tangential_force_N * t.x(), run.tangential_force_N * t.y(), -run.force_N);
   run.balance_rel = (run.base_force_N + load).norm() / load.norm();
 
   if (run.mirrored) {

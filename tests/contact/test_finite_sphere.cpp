@@ -64,6 +64,20 @@ FiniteContactResult finite(double force, double ratio = 0, double tau_mu = 0) {
 
 double rel_norm(const Eigen::VectorXd& a, const Eigen::VectorXd& b) { return (a - b).norm() / b.norm(); }
 
+// The base's reaction and the sphere's load on the skin, each summed over the nodes, N.
+struct Totals {
+  Eigen::Vector3d base = Eigen::Vector3d::Zero(), load = Eigen::Vector3d::Zero();
+};
+Totals totals(const FiniteContactResult& r) {
+  Layer& l = layer();
+  Totals t;
+  for (int i = 0; i < l.mesh.num_nodes(); ++i) {
+    if (l.held.fixed[3 * i + 2]) t.base += r.internal_force.segment<3>(3 * i);
+    t.load += r.load.segment<3>(3 * i);
+  }
+  return t;
+}
+
 // The small-strain contact of the same sphere, built on the linear skin from the geometry at rest: normal
 // gaps g⁰ and their derivatives Dn⁰, Dt⁰ (MortarZone::sphere_gaps at u = 0, the sphere at first touch), the
 // skin's answers Un = K⁻¹ Dn⁰ᵀ, Ut = K⁻¹ Dt⁰ᵀ by linear solves, compliances C_zz = Dn⁰ Un, C_zt = Dn⁰ Ut.
@@ -105,6 +119,15 @@ const SmallStrainSphere& small_strain() {
 void expect_first_order_in_the_force(double ratio, double tau_mu = 0) {
   const SmallStrainSphere& ss = small_strain();
   const MortarZone::SphereGaps& rest = ss.rest;
+  // The same problem as a condensed contact (the sphere's m for the hats' areas) and as an LCP.
+  CondensedContact c;
+  c.zone = *layer().zone;
+  c.zone.area = rest.m;
+  c.C_zz = ss.C_zz;
+  c.C_zt = ss.C_zt;
+  c.gap0 = rest.g;
+  c.S_p = c.S_t = Eigen::MatrixXd::Zero(0, rest.g.size());
+  const ContactLcp lcp(ss.C_zz + ratio * ss.C_zt, rest.g, rest.m);
   const double forces[] = {4e-4, 2e-4, 1e-4, 5e-5};
   std::vector<double> gap;
   for (double F : forces) {
@@ -114,13 +137,6 @@ void expect_first_order_in_the_force(double ratio, double tau_mu = 0) {
     double down = 0;  // the drag's downward part at the last λ and shear
     for (int k = 0; k < 20; ++k) {
       if (tau_mu > 0) {
-        CondensedContact c;
-        c.zone = *layer().zone;
-        c.zone.area = rest.m;
-        c.C_zz = ss.C_zz;
-        c.C_zt = ss.C_zt;
-        c.gap0 = rest.g;
-        c.S_p = c.S_t = Eigen::MatrixXd::Zero(0, rest.g.size());
         ContactLoad load;
         load.force = F - down;
         load.mu = ratio;
@@ -129,7 +145,7 @@ void expect_first_order_in_the_force(double ratio, double tau_mu = 0) {
         const ContactResult r = ContactSolver(c, load).solve(FrictionMode::coupled);
         lambda = r.lambda, shear = r.shear, active = r.active;
       } else {
-        const LcpSolution r = ContactLcp(ss.C_zz + ratio * ss.C_zt, rest.g, rest.m).solve_force(F - down);
+        const LcpSolution r = lcp.solve_force(F - down);
         lambda = r.lambda, active = r.active;
       }
       down = rest.mt.dot(ratio * lambda + shear);
@@ -164,16 +180,13 @@ TEST(FiniteSphere, TheBaseTakesBackTheTurningPressuresAndTheContactIsComplementa
   Layer& l = layer();
   const FiniteContactResult& r = pressed();
   const double F = 0.3;
-  Eigen::Vector3d base = Eigen::Vector3d::Zero(), load = Eigen::Vector3d::Zero(), horizontal_abs = {0, 0, 0};
-  for (int i = 0; i < l.mesh.num_nodes(); ++i) {
-    if (l.held.fixed[3 * i + 2]) base += r.internal_force.segment<3>(3 * i);
-    load += r.load.segment<3>(3 * i);
-    horizontal_abs += r.load.segment<3>(3 * i).cwiseAbs();
-  }
+  const auto [base, load] = totals(r);
+  double horizontal_abs = 0;  // Σ |load_x| over the nodes
+  for (int i = 0; i < l.mesh.num_nodes(); ++i) horizontal_abs += std::abs(r.load[3 * i]);
   // Σ λ_i m_i = F holds at the last iterate's normals; the load is the final state's, which moved by the
   // last Newton step: equal to the residual tolerance (1e-10).
   EXPECT_NEAR(load.z(), -F, 1e-9 * F);
-  EXPECT_GT(horizontal_abs.x(), 1e-3 * F);  // the normals do turn
+  EXPECT_GT(horizontal_abs, 1e-3 * F);  // the normals do turn
   EXPECT_LT((base + load).norm(), 1e-8 * F);
   EXPECT_GE(r.lambda.minCoeff(), 0.0);
   const double gap_scale = r.gap.cwiseAbs().maxCoeff();
@@ -207,11 +220,7 @@ TEST(FiniteSphere, SlidingItsFrictionFollowsTheSurfaceAndTheBaseTakesBackTheWhol
   Layer& l = layer();
   const double F = 0.3, ratio = 1.0;
   const FiniteContactResult r = finite(F, ratio);
-  Eigen::Vector3d base = Eigen::Vector3d::Zero(), load = Eigen::Vector3d::Zero();
-  for (int i = 0; i < l.mesh.num_nodes(); ++i) {
-    if (l.held.fixed[3 * i + 2]) base += r.internal_force.segment<3>(3 * i);
-    load += r.load.segment<3>(3 * i);
-  }
+  const auto [base, load] = totals(r);
   EXPECT_NEAR(load.z(), -F, 1e-9 * F);
   EXPECT_GT(load.x(), 0.9 * ratio * F);  // the drag along t, nearly horizontal under a wide sphere
   EXPECT_LT((base + load).norm(), 1e-8 * load.norm());
@@ -256,11 +265,7 @@ TEST(FiniteSphere, UnderAShearStrengthTheDragActsOnTheTouchedHatsAlongTheSurface
     else
       EXPECT_TRUE(r.shear[i] > 0 && r.shear[i] <= r.tau * (1 + 1e-12)) << "multiplier " << i;
   }
-  Eigen::Vector3d base = Eigen::Vector3d::Zero(), load = Eigen::Vector3d::Zero();
-  for (int i = 0; i < l.mesh.num_nodes(); ++i) {
-    if (l.held.fixed[3 * i + 2]) base += r.internal_force.segment<3>(3 * i);
-    load += r.load.segment<3>(3 * i);
-  }
+  const auto [base, load] = totals(r);
   const double drag = l.zone->area.dot(r.shear), slope = l.scene.contact->zone_radius / l.indenter->R();
   std::printf("tau %.4g kPa, %d partial of %zu; drag %.5f N against area·tau %.5f N\n", 1e3 * r.tau,
               r.partial_shear, r.active.size(), load.x(), drag);
