@@ -147,11 +147,13 @@ FiniteContactRun finite_contact_run(const Scene& scene, FrictionMode mode,
     return run.mirrored ? Eigen::Vector3d(2 * sum.x(), 0.0, 2 * sum.z()) : sum;
   };
   // The indenter's load on the whole skin. A plate's is nominal: its drag along t is horizontal. A sphere's
-  // pressures and drag follow its surface: their sum, whose horizontal part along t is the drag reported.
+  // pressures and drag follow its surface: their sum, whose horizontal part along t is the drag reported
+  // when it slides (without friction its pressures' horizontal parts cancel but for the mesh's asymmetry).
   const bool sphere = c.indenter == IndenterKind::sphere;
   const Eigen::Vector3d sphere_load = sphere ? whole_sum(r.load) : Eigen::Vector3d::Zero();
-  run.tangential_force_N =
-      sphere ? sphere_load.head<2>().dot(t) : ratio * *c.force + zone.area.dot(r.shear) / share;
+  run.tangential_force_N = !sphere                  ? ratio * *c.force + zone.area.dot(r.shear) / share
+                           : ratio > 0 || r.tau > 0 ? sphere_load.head<2>().dot(t)
+                                                    : 0.0;
   run.dofs =
       static_cast<int>(std::count(run.held.fixed.begin(), run.held.fixed.end(), false)) + solved.num_vertices;
 
