@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "skinfem/fem/mixed_solver.hpp"
+#include "skinfem/pipeline/perception.hpp"
 #include "skinfem/pipeline/sensor_greens.hpp"
 #include "skinfem/scene/scene.hpp"
 #include "skinfem/scene/sweep.hpp"
@@ -21,6 +22,9 @@ int run_contact(const Scene& scene, const std::string& out_dir, const std::strin
 // error_scales: coarser mesh levels (every size × s, s > 1) for the error bars (defect: of the largest
 // sliding signal; report: of the headline numbers); empty: none.
 int run_defect(const Scene& scene, const std::string& out_dir, const std::vector<double>& error_scales);
+// superpose: also the holes one at a time (the linear prediction).
+int run_scan(const Scene& scene, const std::string& out_dir, bool superpose);
+int run_perceive(const Scene& scene, const std::string& out_dir, const pipeline::PerceptionOptions& options);
 // fast: without the error bars' levels, the hypothesis budget and the post design sweep.
 int run_report(const Scene& scene, const std::string& out_dir, const std::vector<double>& error_scales,
                bool fast = false);

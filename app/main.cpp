@@ -1,7 +1,7 @@
 // skinfem — finite-element verification toolkit for tactile sensors under an elastomer skin.
-// Subcommands: mesh, solve, study, kfit, green, contact, defect, report, sweep, with their options in the
-// command table (scene/commands.cpp); each cmd_*.cpp says what it computes and writes. Exit codes: 0 success,
-// 2 bad input (scene or arguments), 1 any other failure.
+// Subcommands: mesh, solve, study, kfit, green, contact, defect, scan, perceive, report, sweep, with their
+// options in the command table (scene/commands.cpp); each cmd_*.cpp says what it computes and writes. Exit
+// codes: 0 success, 2 bad input (scene or arguments), 1 any other failure.
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <iostream>
@@ -86,6 +86,19 @@ const std::map<std::string, Handler>& handlers() {
       {"defect",
        {error_scales_check, [](const Scene& s, const std::string& out,
                                const ParsedOptions& o) { return app::run_defect(s, out, error_levels(o)); }}},
+      {"scan",
+       {none, [](const Scene& s, const std::string& out,
+                 const ParsedOptions& o) { return app::run_scan(s, out, !o.flag("no_superposition")); }}},
+      {"perceive",
+       {none,
+        [](const Scene& s, const std::string& out, const ParsedOptions& o) {
+          skinfem::pipeline::PerceptionOptions p;
+          p.noise.passages = static_cast<int>(o.number("passages"));
+          p.noise.sigma_z_kPa = o.number("noise_z");
+          p.noise.sigma_x_kPa = o.number("noise_x");
+          p.sample_mm = o.number("sample_mm");
+          return app::run_perceive(s, out, p);
+        }}},
       {"report",
        {error_scales_check,
         [](const Scene& s, const std::string& out, const ParsedOptions& o) {

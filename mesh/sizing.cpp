@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "skinfem/scene/texture.hpp"
+
 namespace skinfem {
 
 namespace {
@@ -49,6 +51,12 @@ SizingField::SizingField(const Scene& scene, MeshPart part)
           {hole.center, hole.center, 0.5 * hole.diameter, hole.h > 0 ? hole.h : contact_zone_h(scene)});
     if (const auto& s = scene.contact->sweep; s && s->h > 0)
       top_.push_back({s->from, s->to, 0.5 * s->hole_diameter + s->h, s->h});
+    if (const auto& t = scene.contact->texture; t && t->h > 0) {
+      // Each hole's track where it comes within the zone, plus one element (a row's holes share one).
+      for (const HoleTrack& k : hole_tracks(t->holes, scene.contact->direction, *scene.contact->scan, c,
+                                            contact_zone_radius(scene) + t->h))
+        top_.push_back({k.from, k.to, k.radius + t->h, t->h});
+    }
     // The readings see the contact through the layer: its resolution is carried down to every sensor.
     for (const auto& p : scene.sensors.positions)
       through_.push_back({p, p, scene.sensors.footprint_radius(), contact_zone_h(scene)});
@@ -148,6 +156,7 @@ Scene scaled_scene(const Scene& base, double s, bool cap_holes) {
     scene.contact->h = contact_zone_h(base) * s;
     for (auto& hole : scene.contact->holes) hole.h *= s;
     if (scene.contact->sweep) scene.contact->sweep->h *= s;
+    if (scene.contact->texture) scene.contact->texture->h *= s;
   }
   if (scene.contact && cap_holes) {
     // The scene rule: the mesh over a hole at most its diameter.
@@ -156,6 +165,8 @@ Scene scaled_scene(const Scene& base, double s, bool cap_holes) {
     };
     for (auto& hole : scene.contact->holes) cap(hole.h, hole.diameter);
     if (scene.contact->sweep) cap(scene.contact->sweep->h, scene.contact->sweep->hole_diameter);
+    if (auto& t = scene.contact->texture)
+      for (const Hole& hole : t->holes) cap(t->h, hole.diameter);
   }
   return scene;
 }

@@ -1,5 +1,6 @@
 #include "skinfem/pipeline/contact_setup.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -11,6 +12,7 @@
 #include "skinfem/pipeline/resources.hpp"
 #include "skinfem/pipeline/symmetry.hpp"
 #include "skinfem/scene/laws.hpp"
+#include "skinfem/scene/texture.hpp"
 
 namespace skinfem::pipeline {
 
@@ -28,6 +30,16 @@ void find_zone(const Scene& scene, const TetMesh& mesh, ContactSkin& cs) {
   cs.zone = contact::mortar_zone(mesh, contact_center(scene), contact_zone_radius(scene));
   if (watch)
     cs.watch_faces = contact::watch_path(mesh, *cs.zone, sweep->from, sweep->to, 0.5 * sweep->hole_diameter);
+  // A textured plate's holes are resolved: every track through the zone is watched.
+  if (const auto& t = scene.contact->texture; t && cs.hole_path != HolePath::none) {
+    for (const HoleTrack& k : hole_tracks(t->holes, scene.contact->direction, *scene.contact->scan,
+                                          contact_center(scene), contact_zone_radius(scene))) {
+      const std::vector<int> faces = contact::watch_path(mesh, *cs.zone, k.from, k.to, k.radius);
+      cs.watch_faces.insert(cs.watch_faces.end(), faces.begin(), faces.end());
+    }
+    std::sort(cs.watch_faces.begin(), cs.watch_faces.end());
+    cs.watch_faces.erase(std::unique(cs.watch_faces.begin(), cs.watch_faces.end()), cs.watch_faces.end());
+  }
 }
 }  // namespace
 

@@ -43,6 +43,13 @@ std::string contact_mirror_unavailable(const Scene& scene) {
       return buf;
     }
   if (c.sweep && (c.sweep->from[1] != 0 || c.sweep->to[1] != 0)) return "the hole sweep's path is off y = 0";
+  if (c.texture)
+    for (size_t i = 0; i < c.texture->holes.size(); ++i)
+      if (c.texture->holes[i].center[1] != 0) {
+        std::snprintf(buf, sizeof buf, "texture hole %zu is off y = 0 (y = %g mm)", i + 1,
+                      c.texture->holes[i].center[1]);
+        return buf;
+      }
   return "";
 }
 

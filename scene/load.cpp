@@ -60,7 +60,16 @@
 //                             "hole_model"*: "bulge" (default under a hard interface: the small
 //                                            hole's bulge, seen by the contact as a dimple of the
 //                                            indenter) | "resolved" (the hole's disc cuts the
-//                                            multipliers' hats; the default under any other)}}
+//                                            multipliers' hats; the default under any other)},
+//                  "texture"*: {"holes"*: [{"center": [x, y], "diameter", "depth"*}],  holes of a plate
+//                               "lattice"*: {"origin": [x, y], "period": [px, py],   scanned by `skinfem
+//                                            "count": [nx, ny], "diameter", "depth"*},   scan`, on the
+//                               "random"*: {"from": [x, y], "to": [x, y],             plate at u = 0,
+//                                           "density": <holes/mm^2>, "diameter": [min, max],
+//                                           "depth"*, "seed"*: integer >= 0 (default 1)},
+//                               "h"*: > 0, mesh size along their tracks (absent: the zone's)},
+//                  "scan"*: {"from": <mm>, "to": <mm>, "step": <mm, > 0>}}  the plate's displacement
+//                                                    along the sliding direction; with "texture" only
 //                 A plane needs a cap: it first touches at the apex (on a flat layer it touches everywhere at
 //                 once; an imported surface has no known apex). A sphere fits any geometry. On a cap or flat
 //                 layer, the sphere's centre, every hole disc and the swept hole at both ends of its path
@@ -92,6 +101,7 @@
 
 #include "skinfem/scene/json_text.hpp"
 #include "skinfem/scene/laws.hpp"
+#include "skinfem/scene/texture.hpp"
 
 namespace skinfem {
 namespace {
@@ -878,10 +888,101 @@ HoleSweep read_sweep(const Reader& r, const json& j, const std::string& path, co
   return s;
 }
 
+// A textured plate's holes and their patterns; the holes' fit, overlaps and tracks are checked with the
+// whole scene (check_texture).
+Hole read_texture_hole(const Reader& r, const json& j, const std::string& path) {
+  r.object(j, path, {"center", "diameter", "depth"});
+  Hole h;
+  h.center = r.vec2(j, path, "center");
+  h.diameter = r.number(j, path, "diameter", length());
+  h.depth = r.number_or(j, path, "depth", h.depth, length());
+  return h;
+}
+
+Texture read_texture(const Reader& r, const json& j, const std::string& path) {
+  r.object(j, path, {"holes", "lattice", "random", "h"});
+  Texture t;
+  if (Reader::find(j, "holes")) {
+    const json& holes = r.array(j, path, "holes", R"(an array of holes {"center": [x, y], "diameter"})");
+    for (std::size_t i = 0; i < holes.size(); ++i)
+      t.listed.push_back(read_texture_hole(r, holes[i], at(sub(path, "holes"), i)));
+  }
+  if (const json* l = Reader::find(j, "lattice")) {
+    const std::string P = sub(path, "lattice");
+    r.object(*l, P, {"origin", "period", "count", "diameter", "depth"});
+    HoleLattice lat;
+    lat.origin = r.vec2(*l, P, "origin");
+    lat.period = r.vec2(*l, P, "period");
+    const json& count = r.need(*l, P, "count", "[nx, ny], integers in [1, 10000]");
+    if (!count.is_array() || count.size() != 2) r.fail(sub(P, "count"), count, "must be [nx, ny]");
+    lat.nx = static_cast<int>(r.integer(count[0], sub(P, "count") + "[0]", 1, 10000));
+    lat.ny = static_cast<int>(r.integer(count[1], sub(P, "count") + "[1]", 1, 10000));
+    lat.diameter = r.number(*l, P, "diameter", length());
+    lat.depth = r.number_or(*l, P, "depth", lat.depth, length());
+    for (int k = 0; k < 2; ++k)
+      if ((k == 0 ? lat.nx : lat.ny) > 1 && !(lat.period[k] >= lat.diameter))
+        r.fail(sub(P, "period"), point(lat.period),
+               "each period along which the lattice has more than one hole must be >= its diameter " +
+                   fmt(lat.diameter) + " mm, or its holes overlap");
+    t.lattice = lat;
+  }
+  if (const json* rn = Reader::find(j, "random")) {
+    const std::string P = sub(path, "random");
+    r.object(*rn, P, {"from", "to", "density", "diameter", "depth", "seed"});
+    RandomHoles h;
+    h.from = r.vec2(*rn, P, "from");
+    h.to = r.vec2(*rn, P, "to");
+    h.density =
+        r.number(*rn, P, "density",
+                 {"a density in (0, 100] holes per mm^2", [](double x) { return x > 0 && x <= 100; }});
+    const json& d = r.need(*rn, P, "diameter", "[min, max] in mm");
+    if (!d.is_array() || d.size() != 2) r.fail(sub(P, "diameter"), d, "must be [min, max] in mm");
+    h.diameter_min = r.number(d[0], sub(P, "diameter") + "[0]", length());
+    h.diameter_max = r.number(d[1], sub(P, "diameter") + "[1]", length());
+    if (h.diameter_max < h.diameter_min) r.fail(sub(P, "diameter"), d, "must be [min, max] with min <= max");
+    h.depth = r.number_or(*rn, P, "depth", h.depth, length());
+    if (const json* seed = Reader::find(*rn, "seed"))
+      h.seed = static_cast<std::uint64_t>(r.integer(*seed, sub(P, "seed"), 0, 1LL << 53));
+    const double area = std::abs((h.to[0] - h.from[0]) * (h.to[1] - h.from[1]));
+    if (std::lround(h.density * area) < 1 || h.density * area > 10000)
+      r.fail(sub(P, "density"), json(h.density),
+             "times the rectangle's area " + fmt(area) + " mm^2 must give 1 to 10000 holes");
+    t.random = h;
+  }
+  if (t.listed.empty() && !t.lattice && !t.random)
+    r.fail(path, j, R"(must have at least one of "holes", "lattice", "random")");
+  t.h = r.number_or(j, path, "h", 0.0, length());
+  TextureHoles all = texture_holes(t);
+  if (!all.error.empty()) r.fail(sub(path, "random.density"), j["random"]["density"], all.error);
+  if (all.holes.size() > 10000)
+    r.fail(path, "has " + std::to_string(all.holes.size()) + " holes; at most 10000");
+  t.holes = std::move(all.holes);
+  return t;
+}
+
+// The plate's scan, at most kMaxScanPositions positions.
+constexpr int kMaxScanPositions = 100000;
+Scan read_scan(const Reader& r, const json& j, const std::string& path) {
+  r.object(j, path, {"from", "to", "step"});
+  Scan s;
+  const Rule any{"a displacement in [-1e4, 1e4] mm", [](double x) { return std::abs(x) <= 1e4; }};
+  s.from = r.number(j, path, "from", any);
+  s.to = r.number(j, path, "to", any);
+  if (!(s.to > s.from)) r.fail(sub(path, "to"), j.at("to"), "must be > from = " + fmt(s.from));
+  s.step = r.number(j, path, "step", length());
+  if ((s.to - s.from) / s.step + 1 > kMaxScanPositions)
+    r.fail(sub(path, "step"), j.at("step"),
+           "gives " + fmt((s.to - s.from) / s.step + 1) + " positions; at most " +
+               std::to_string(kMaxScanPositions) +
+               ": give a step >= " + fmt((s.to - s.from) / (kMaxScanPositions - 1)) + " mm");
+  return s;
+}
+
 ContactLoad read_contact(const Reader& r, const json& c, const Geometry& geo) {
   const std::string P = "contact";
   r.object(c, P,
-           {"indenter", "force", "depth", "holes", "zone_radius", "h", "friction", "interface", "sweep"});
+           {"indenter", "force", "depth", "holes", "zone_radius", "h", "friction", "interface", "sweep",
+            "texture", "scan"});
   ContactLoad out;
 
   const std::string PI = sub(P, "indenter");
@@ -987,6 +1088,15 @@ ContactLoad read_contact(const Reader& r, const json& c, const Geometry& geo) {
               " mm)² <= " + fmt(kBulgeRange) + " (measured: within 2 % at 0.027, 8 % at 0.061), here " +
               fmt(eps_d * eps_d) + R"(: give "hole_model": "resolved")");
   }
+  const json* texture = Reader::find(c, "texture");
+  const json* scan = Reader::find(c, "scan");
+  if ((texture != nullptr) != (scan != nullptr))
+    r.fail(sub(P, texture ? "texture" : "scan"), texture ? *texture : *scan,
+           R"(a textured plate is scanned: give both "texture" and "scan", or neither)");
+  if (texture) {
+    out.texture = read_texture(r, *texture, sub(P, "texture"));
+    out.scan = read_scan(r, *scan, sub(P, "scan"));
+  }
   return out;
 }
 
@@ -1090,6 +1200,68 @@ void check_hole_meshes(const Reader& r, const Scene& scene) {
           at("contact.holes", i) + ".h");
   if (c.sweep && c.sweep->model == HoleModel::resolved)
     check("contact.sweep.hole_diameter", c.sweep->hole_diameter, c.sweep->h, "contact.sweep.h");
+  if (c.texture) {
+    const Texture& t = *c.texture;
+    const std::size_t listed = t.listed.size();
+    const std::size_t in_lattice = t.lattice ? std::size_t(t.lattice->nx) * t.lattice->ny : 0;
+    for (std::size_t k = 0; k < t.holes.size(); ++k) {
+      const std::string field = k < listed                ? at("contact.texture.holes", k) + ".diameter"
+                                : k < listed + in_lattice ? std::string("contact.texture.lattice.diameter")
+                                                          : std::string("contact.texture.random.diameter");
+      check(field, t.holes[k].diameter, t.h, "contact.texture.h");
+    }
+  }
+}
+
+// Where texture hole k comes from, for an error message.
+std::string texture_hole_words(const Texture& t, std::size_t k) {
+  const std::size_t listed = t.listed.size();
+  const std::size_t in_lattice = t.lattice ? std::size_t(t.lattice->nx) * t.lattice->ny : 0;
+  if (k < listed) return at("contact.texture.holes", k);
+  if (k < listed + in_lattice)
+    return "contact.texture.lattice (hole " + std::to_string(k - listed + 1) + " of " +
+           std::to_string(in_lattice) + ")";
+  return "contact.texture.random (hole " + std::to_string(k - listed - in_lattice + 1) + ")";
+}
+
+// A textured plate's holes must not overlap (their cuts would count the common part twice), each must
+// cross the candidate contact zone during the scan (else it is outside the scanned plate and adds nothing),
+// and the scan's step must not exceed the mesh along their tracks (a coarser step skips what the mesh
+// resolves: the signal changes over one element as a hole's rim crosses it).
+void check_texture(const Reader& r, const json& j, const Scene& scene) {
+  const ContactLoad& c = *scene.contact;
+  if (!c.texture) return;
+  const Texture& t = *c.texture;
+  const Scan& scan = *c.scan;
+  for (std::size_t a = 0; a < t.holes.size(); ++a)
+    for (std::size_t b = a + 1; b < t.holes.size(); ++b)
+      if (holes_overlap(t.holes[a], t.holes[b]))
+        r.fail(texture_hole_words(t, b), point(t.holes[b].center),
+               "overlaps " + texture_hole_words(t, a) + " (centre " + fmt(t.holes[a].center) + ", diameter " +
+                   fmt(t.holes[a].diameter) + "): the holes of a texture must be disjoint discs");
+  const Vec2 o = contact_center(scene);
+  const double radius = contact_zone_radius(scene);
+  const Vec2 d = c.direction;
+  for (std::size_t k = 0; k < t.holes.size(); ++k) {
+    // The distance from the zone's centre to the hole's track, u in [from, to].
+    const Hole& h = t.holes[k];
+    const double along = (o[0] - h.center[0]) * d[0] + (o[1] - h.center[1]) * d[1];
+    const double u = std::clamp(along, scan.from, scan.to);
+    const Hole at_u = hole_at(h, d, u);
+    const double dist = std::hypot(at_u.center[0] - o[0], at_u.center[1] - o[1]);
+    if (dist >= radius + 0.5 * h.diameter)
+      r.fail(texture_hole_words(t, k), point(h.center),
+             "never reaches the candidate contact zone (radius " + fmt(radius) + " mm about " + fmt(o) +
+                 ") while the plate moves from u = " + fmt(scan.from) + " to " + fmt(scan.to) + " mm along " +
+                 fmt(d) + ": it lies outside the scanned plate; move it, or scan farther");
+  }
+  const double track_h = hole_mesh_h(scene, t.h);
+  if (scan.step > track_h)
+    r.fail("contact.scan.step", j.at("scan").at("step"),
+           "must be <= the mesh size along the holes' tracks (" +
+               (t.h > 0 && t.h < contact_zone_h(scene) ? "contact.texture.h = " + fmt(t.h)
+                                                       : contact_h_words(scene)) +
+               " mm): a coarser step skips what the mesh resolves as a rim crosses an element");
 }
 
 }  // namespace
@@ -1163,6 +1335,7 @@ Scene parse_scene(const std::string& json_text, const std::string& source_path) 
     check_contact_extent(r, *contact, scene);
     check_contact_zone(r, *contact, scene);
     check_hole_meshes(r, scene);
+    check_texture(r, *contact, scene);
     check_shear_strength(r, *contact, scene);
   }
   return scene;

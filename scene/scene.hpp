@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -229,6 +230,45 @@ struct HoleSweep {
   double hole_depth = 0.5;  // mm, as Hole::depth
 };
 
+// A textured plate (contact.texture) scanned over the skin (contact.scan, `skinfem scan`): holes listed one
+// by one, a lattice of identical holes (a row is a lattice one hole across) and holes at random. Positions
+// are on the plate at scan position u = 0; at u the plate and its holes have moved by u along the sliding
+// direction (contact.friction.direction). Every hole is resolved (contact/holes/cut.hpp). Grooves are not
+// modelled: a groove's cut is a strip, not a disc.
+struct HoleLattice {
+  Vec2 origin{0, 0};  // mm, the first hole's centre
+  Vec2 period{1, 1};  // mm, along x and y
+  int nx = 1, ny = 1;
+  double diameter = 0.5, depth = 0.5;  // mm
+};
+
+// Holes drawn uniformly on the plate's rectangle [from, to], round(density × area) of them, diameters
+// uniform in [diameter_min, diameter_max], none overlapping another feature (rejection): deterministic for
+// a seed on every platform (splitmix64, not the standard library's distributions).
+struct RandomHoles {
+  Vec2 from{0, 0}, to{0, 0};                                   // mm, the rectangle's corners
+  double density = 0;                                          // holes per mm²
+  double diameter_min = 0.5, diameter_max = 0.5, depth = 0.5;  // mm
+  std::uint64_t seed = 1;
+};
+
+struct Texture {
+  std::vector<Hole> listed;
+  std::optional<HoleLattice> lattice;
+  std::optional<RandomHoles> random;
+  double h = 0;  // mm, mesh size along the holes' tracks through the contact zone; 0 → the zone's
+  // Every hole: the listed ones, the lattice's row by row, the random ones (texture_holes); set by the
+  // loader.
+  std::vector<Hole> holes;
+};
+
+// The plate's scan: u from `from` to `to` (mm, inclusive within 1e-9 of a step) by `step`.
+struct Scan {
+  double from = 0, to = 0, step = 0.025;
+  int positions() const;
+  double u(int i) const { return from + i * step; }
+};
+
 // The skin–indenter interface (contact/contact_solver.hpp): hard (exact complementarity: no interpenetration)
 // or linear (a rough interface that closes by p/K before the surfaces meet: p = K·max(0, −gap); K in MPa/mm;
 // the Winkler layer of asperities in series with the skin) or exponential (the rough-surface law
@@ -261,6 +301,8 @@ struct ContactLoad {
   Vec2 direction{1, 0};                        // unit sliding direction of the indenter over the skin (x, y)
   FrictionMode friction = FrictionMode::none;  // default mode of `skinfem contact`
   std::optional<HoleSweep> sweep;
+  std::optional<Texture> texture;  // with scan, or neither
+  std::optional<Scan> scan;
 };
 
 // Whether a mirror-symmetric scene may be solved on its half (pipeline/symmetry.hpp decides where it

@@ -262,6 +262,18 @@ bad hole_below_mesh "$sphere, \"h\": 0.8, \"holes\": [{\"center\": [0.5, 0], \"d
 bad sweep_hole_below_mesh "$sphere, \"h\": 0.8, \"sweep\": {\"from\": [-1, 0], \"to\": [1, 0], \"hole_model\": \"resolved\"}}" 'contact.sweep.hole_diameter = 0.5: must be >= the mesh size over the hole' defect
 bad sweep_bulge_soft_interface "$sphere, \"interface\": {\"law\": \"linear\", \"K\": 5}, \"sweep\": {\"from\": [-1, 0], \"to\": [1, 0], \"hole_model\": \"bulge\"}}" 'contact.sweep.hole_model = "bulge": is the hole.s solution under a hard interface; with "interface": \{"law": "linear"\} use "resolved"' defect
 bad sweep_hole_model_unknown "$sphere, \"sweep\": {\"from\": [-1, 0], \"to\": [1, 0], \"hole_model\": \"crack\"}}" 'contact.sweep.hole_model = "crack": must be one of "bulge", "resolved"' defect
+# Textured plates and their scan (skinfem scan).
+tex='"scan": {"from": -2, "to": 2, "step": 0.05}, "texture": {"h": 0.4, '
+bad texture_overlap "$sphere, $tex\"holes\": [{\"center\": [0, 0], \"diameter\": 0.5}, {\"center\": [0.3, 0], \"diameter\": 0.5}]}}" 'contact.texture.holes\[1\] = \[0.3,0(.0)?\]: overlaps contact.texture.holes\[0\]' scan
+bad texture_outside "$sphere, $tex\"holes\": [{\"center\": [0, 5], \"diameter\": 0.5}]}}" 'contact.texture.holes\[0\] = \[0(.0)?,5(.0)?\]: never reaches the candidate contact zone' scan
+bad texture_lattice_overlap "$sphere, $tex\"lattice\": {\"origin\": [-1, 0], \"period\": [0.4, 1], \"count\": [5, 1], \"diameter\": 0.5}}}" 'contact.texture.lattice.period = \[0.4,1(.0)?\]: each period .* must be >= its diameter' scan
+bad texture_random_dense "$sphere, $tex\"random\": {\"from\": [-1, -0.5], \"to\": [1, 0.5], \"density\": 20, \"diameter\": [0.5, 0.5]}}}" 'contact.texture.random.density = 20: placed [0-9]+ of its 40 holes without overlapping another' scan
+bad texture_empty "$sphere, $tex\"h\": 0.4}}" 'contact.texture = .*must have at least one of "holes", "lattice", "random"' scan
+bad scan_step_coarse "$sphere, \"scan\": {\"from\": -2, \"to\": 2, \"step\": 0.5}, \"texture\": {\"h\": 0.4, \"holes\": [{\"center\": [0, 0], \"diameter\": 0.5}]}}" 'contact.scan.step = 0.5: must be <= the mesh size along the holes. tracks' scan
+bad scan_backwards "$sphere, \"scan\": {\"from\": 2, \"to\": -2, \"step\": 0.05}, \"texture\": {\"holes\": [{\"center\": [0, 0], \"diameter\": 0.5}]}}" 'contact.scan.to = -2: must be > from = 2' scan
+bad scan_without_texture "$sphere, \"scan\": {\"from\": -2, \"to\": 2, \"step\": 0.05}}" 'contact.scan = .*a textured plate is scanned: give both "texture" and "scan"' scan
+bad perceive_resolved "$sphere, \"sweep\": {\"from\": [-1, 0], \"to\": [1, 0], \"hole_model\": \"resolved\"}}" 'contact.sweep.hole_model = "resolved": skinfem perceive sweeps holes down to an eighth' perceive
+bad scan_no_texture "$sphere}" 'contact.texture: missing; skinfem scan needs' scan
 bad depth_through_skin 'd["contact"] = {"indenter": {"type": "sphere", "R": 50, "center": [0, 0]}, "depth": 5, "zone_radius": 3}' 'contact.depth = 5: must be below the skin.s thickness \(3 mm\)' contact
 bad depth_beyond_sphere 'd["contact"] = {"indenter": {"type": "sphere", "R": 1, "center": [0, 0]}, "depth": 2}' 'contact.depth = 2: must be below the sphere.s radius R = 1 mm' contact
 bad sphere_R_subnormal 'd["contact"] = {"indenter": {"type": "sphere", "R": 5e-324, "center": [0, 0]}, "force": 0.1}' 'contact.indenter.R = 5e-324: must be a radius in \[0.001, 10000\] mm' contact
@@ -326,7 +338,7 @@ bad_spec sweep_unknown_key '{"scene": "base.json", "command": "kfit", "axes": [{
 bad_spec sweep_option '{"scene": "base.json", "command": "kfit", "options": {"friction": "none"}, "axes": [{"pointer": "/material/nu", "values": [0.4]}]}' \
   'options.friction = "none": not an option of kfit; allowed: load, max_dofs, path'
 bad_spec sweep_command '{"scene": "base.json", "command": "mesh", "axes": [{"pointer": "/material/nu", "values": [0.4]}]}' \
-  'command = "mesh": must be one of contact, defect, green, kfit, report'
+  'command = "mesh": must be one of contact, defect, green, kfit, perceive, report, scan'
 bad_spec sweep_name_climbs '{"name": "..", "scene": "base.json", "command": "kfit", "axes": [{"pointer": "/material/nu", "values": [0.4]}]}' \
   'name = "..": must be a file name of 1 to 100 characters'
 bad_spec sweep_range '{"scene": "base.json", "command": "kfit", "axes": [{"pointer": "/material/nu", "range": {"from": 0.3, "to": 0.5, "count": 1}}]}' \

@@ -1,0 +1,127 @@
+// skinfem scan — a textured plate (contact.texture: listed holes, a lattice, random holes) moved along the
+// sliding direction over the skin from contact.scan.from to .to by .step; at every position the full
+// contact with every hole over the zone resolved on its exact disc and the contact set free, static
+// (residual traction) and sliding (the scene's friction law), and beside it the paper's linear prediction
+// Σ_k ς_k(u) from the holes one at a time (docs/contact.md, "Textures and scans").
+//
+//   $ skinfem scan scenes/texture_row.json --out out/texture_row
+//   scan texture_row: 2 cases x 401 positions, 20 holes; ...
+//
+// Writes DIR/scan.csv (case,u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa,superposed_z_kPa,superposed_x_kPa;
+// u = the plate's displacement), DIR/scan.pvd with DIR/frames/<case>_NNNNN.vtp (the contact pressure and
+// the holes at each position, at most 201 per case evenly spaced) and DIR/summary.json (per case the peaks
+// per sensor, the superposition's largest difference, time per position; wall_s per stage, peak_rss_mb).
+// The computation and summary.json are pipeline/scan.hpp's; this file writes and prints them.
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "app/commands.hpp"
+#include "app/common.hpp"
+#include "app/stages.hpp"
+#include "skinfem/contact/pressure_map.hpp"
+#include "skinfem/pipeline/contact_setup.hpp"
+#include "skinfem/pipeline/scan.hpp"
+#include "skinfem/scene/parallel.hpp"
+
+namespace skinfem::app {
+
+namespace {
+void write_scan(const Scene& scene, const pipeline::ScanRun& run, nlohmann::json& summary,
+                const std::string& out_dir) {
+  const ContactSetup& setup = *run.setup;
+  Stopwatch clock;
+  prepare_output_dir(out_dir + "/frames");
+  // The frames folder is this command's: a previous, longer scan's frames would outlive this one's.
+  for (const auto& f : std::filesystem::directory_iterator(out_dir + "/frames"))
+    if (f.is_regular_file() && f.path().extension() == ".vtp") std::filesystem::remove(f.path());
+  std::ostringstream pvd;
+  pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+  struct Frame {
+    size_t ci, k;
+    std::string file;
+  };
+  std::vector<Frame> written;
+  for (size_t ci = 0; ci < run.cases.size(); ++ci)
+    for (size_t k = 0; k < run.frames[ci].size(); ++k) {
+      const int i = run.frame_positions[ci][k];
+      char file[64];
+      std::snprintf(file, sizeof file, "%s_%05d.vtp", run.cases[ci].c_str(), i);
+      written.push_back({ci, k, file});
+      pvd << "<DataSet timestep=\"" << run.scans[ci].u[i] << "\" part=\"" << ci << "\" file=\"frames/" << file
+          << "\"/>\n";
+    }
+  for_each_index(written.size(), [&](size_t w) {
+    const Frame& f = written[w];
+    contact::write_pressure_vtp(out_dir + "/frames/" + f.file, setup.mesh(), *setup.solver,
+                                run.frames[f.ci][f.k], run.frame_holes[f.ci][f.k]);
+  });
+  pvd << "</Collection>\n</VTKFile>\n";
+  std::ostringstream csv;
+  csv.precision(10);
+  csv << "case,u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa"
+      << (run.superposed.empty() ? "" : ",superposed_z_kPa,superposed_x_kPa") << "\n";
+  const int ns = static_cast<int>(scene.sensors.positions.size());
+  for (size_t ci = 0; ci < run.cases.size(); ++ci) {
+    const contact::ScanResult& res = run.scans[ci];
+    for (size_t i = 0; i < res.u.size(); ++i)
+      for (int k = 0; k < ns; ++k) {
+        csv << run.cases[ci] << "," << res.u[i] << "," << k + 1 << "," << 1e3 * res.varsigma(i, 2 * k) << ","
+            << 1e3 * res.varsigma(i, 2 * k + 1);
+        if (!run.superposed.empty())
+          csv << "," << 1e3 * run.superposed[ci].varsigma(i, 2 * k) << ","
+              << 1e3 * run.superposed[ci].varsigma(i, 2 * k + 1);
+        csv << "\n";
+      }
+  }
+  write_text_atomic(out_dir + "/scan.csv", csv.str());
+  write_text_atomic(out_dir + "/scan.pvd", pvd.str());
+  add_write_seconds(summary, clock.seconds());
+  write_json(out_dir + "/summary.json", summary);
+
+  const Timings& wall = run.wall;
+  const int n = scene.contact->scan->positions();
+  std::printf(
+      "scan %s: %zu cases x %d positions, %zu holes; %d DOFs, %d multipliers (%d solved%s), %d watched "
+      "nodes\n",
+      scene.name.c_str(), run.cases.size(), n, scene.contact->texture->holes.size(),
+      setup.model->solver().free_dofs(), setup.solver->zone().size(), setup.condensed->zone.size(),
+      setup.whole ? " on the half y >= 0, mirror-symmetric" : "", summary["watched_nodes"].get<int>());
+  std::printf("  mesh %.2f s, assemble %.2f s, factor %.2f s, condense %.2f s; scans", wall.at("mesh"),
+              wall.at("assemble"), wall.at("factor"), wall.at("condense"));
+  for (size_t ci = 0; ci < run.cases.size(); ++ci)
+    std::printf(" %s %.2f s (%.2f ms/position)", run.cases[ci].c_str(), run.scans[ci].seconds,
+                1e3 * run.scans[ci].seconds / n);
+  std::printf("; total %.1f s, peak %.0f MB\n", summary.at("wall_total_s").get<double>(), peak_rss_mb());
+  for (size_t ci = 0; ci < run.cases.size(); ++ci) {
+    const nlohmann::json& c = summary["cases"][run.cases[ci]];
+    std::printf("  %s: up to %d holes in the zone at once; peak |varsigma_z| per sensor (kPa):",
+                run.cases[ci].c_str(), c["most_holes_in_zone"].get<int>());
+    for (int k = 0; k < static_cast<int>(scene.sensors.positions.size()); ++k)
+      std::printf(" %.2f", 1e3 * run.scans[ci].varsigma.col(2 * k).cwiseAbs().maxCoeff());
+    std::printf("\n");
+    if (c.contains("superposition")) {
+      const nlohmann::json& s = c["superposition"];
+      std::printf(
+          "  %s: the holes one at a time (%d single-hole solves, %.2f s) differ from the scan by up to %.3f "
+          "kPa "
+          "in varsigma_z (%.1f %% of its largest) and %.3f kPa in varsigma_x (%.1f %%)\n",
+          run.cases[ci].c_str(), s["single_hole_solves"].get<int>(), s["seconds"].get<double>(),
+          s["max_diff_z_kPa"].get<double>(), 100 * s["rel_diff_z"].get<double>(),
+          s["max_diff_x_kPa"].get<double>(), 100 * s["rel_diff_x"].get<double>());
+    }
+  }
+  std::printf("  wrote %s/scan.csv, scan.pvd (+ frames/), summary.json\n", out_dir.c_str());
+}
+}  // namespace
+
+int run_scan(const Scene& scene, const std::string& out_dir, bool superpose) {
+  pipeline::require_texture(scene);
+  check_output_dir(out_dir);
+  const pipeline::ScanRun run = pipeline::scan_run(scene, contact_setup(scene), superpose);
+  nlohmann::json summary = pipeline::scan_json(scene, run);
+  write_scan(scene, run, summary, out_dir);
+  return 0;
+}
+
+}  // namespace skinfem::app
