@@ -7,6 +7,9 @@
 //   $ skinfem scan scenes/texture_row.json --out out/texture_row
 //   scan texture_row: 2 cases x 401 positions, 20 holes; ...
 //
+// A scene without a texture but with a contact.sweep along the sliding direction (the default scene) scans
+// the sweep's hole, resolved, along its path: the paper's single-hole experiment.
+//
 // Writes DIR/scan.csv (case,u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa,superposed_z_kPa,superposed_x_kPa;
 // u = the plate's displacement), DIR/scan.pvd with DIR/frames/<case>_NNNNN.vtp (the contact pressure and
 // the holes at each position, at most 201 per case evenly spaced) and DIR/summary.json (per case the peaks
@@ -81,10 +84,11 @@ void write_scan(const Scene& scene, const pipeline::ScanRun& run, nlohmann::json
 
   const Timings& wall = run.wall;
   const int n = scene.contact->scan->positions();
+  const size_t holes = scene.contact->texture->holes.size();
   std::printf(
-      "scan %s: %zu cases x %d positions, %zu holes; %d DOFs, %d multipliers (%d solved%s), %d watched "
+      "scan %s: %zu cases x %d positions, %zu hole%s; %d DOFs, %d multipliers (%d solved%s), %d watched "
       "nodes\n",
-      scene.name.c_str(), run.cases.size(), n, scene.contact->texture->holes.size(),
+      scene.name.c_str(), run.cases.size(), n, holes, holes == 1 ? "" : "s",
       setup.model->solver().free_dofs(), setup.solver->zone().size(), setup.condensed->zone.size(),
       setup.whole ? " on the half y >= 0, mirror-symmetric" : "", summary["watched_nodes"].get<int>());
   std::printf("  mesh %.2f s, assemble %.2f s, factor %.2f s, condense %.2f s; scans", wall.at("mesh"),
@@ -95,17 +99,17 @@ void write_scan(const Scene& scene, const pipeline::ScanRun& run, nlohmann::json
   std::printf("; total %.1f s, peak %.0f MB\n", summary.at("wall_total_s").get<double>(), peak_rss_mb());
   for (size_t ci = 0; ci < run.cases.size(); ++ci) {
     const nlohmann::json& c = summary["cases"][run.cases[ci]];
-    std::printf("  %s: up to %d holes in the zone at once; peak |varsigma_z| per sensor (kPa):",
-                run.cases[ci].c_str(), c["most_holes_in_zone"].get<int>());
+    const int most = c["most_holes_in_zone"].get<int>();
+    std::printf("  %s: up to %d hole%s in the zone at once; peak |varsigma_z| per sensor (kPa):",
+                run.cases[ci].c_str(), most, most == 1 ? "" : "s");
     for (int k = 0; k < static_cast<int>(scene.sensors.positions.size()); ++k)
       std::printf(" %.2f", 1e3 * run.scans[ci].varsigma.col(2 * k).cwiseAbs().maxCoeff());
     std::printf("\n");
     if (c.contains("superposition")) {
       const nlohmann::json& s = c["superposition"];
       std::printf(
-          "  %s: the holes one at a time (%d single-hole solves, %.2f s) differ from the scan by up to %.3f "
-          "kPa "
-          "in varsigma_z (%.1f %% of its largest) and %.3f kPa in varsigma_x (%.1f %%)\n",
+          "  %s: the holes one at a time (%d single-hole solves, %.2f s) differ from the scan by up to %.4f "
+          "kPa in varsigma_z (%.1f %% of its largest) and %.4f kPa in varsigma_x (%.1f %%)\n",
           run.cases[ci].c_str(), s["single_hole_solves"].get<int>(), s["seconds"].get<double>(),
           s["max_diff_z_kPa"].get<double>(), 100 * s["rel_diff_z"].get<double>(),
           s["max_diff_x_kPa"].get<double>(), 100 * s["rel_diff_x"].get<double>());
@@ -115,10 +119,12 @@ void write_scan(const Scene& scene, const pipeline::ScanRun& run, nlohmann::json
 }
 }  // namespace
 
-int run_scan(const Scene& scene, const std::string& out_dir, bool superpose) {
-  pipeline::require_texture(scene);
+int run_scan(const Scene& given, const std::string& out_dir, bool superpose) {
+  const Scene scene = pipeline::scanned_scene(given);
   check_output_dir(out_dir);
-  const pipeline::ScanRun run = pipeline::scan_run(scene, contact_setup(scene), superpose);
+  // One hole is its own superposition.
+  const bool sum = superpose && scene.contact->texture->holes.size() > 1;
+  const pipeline::ScanRun run = pipeline::scan_run(scene, contact_setup(scene), sum);
   nlohmann::json summary = pipeline::scan_json(scene, run);
   write_scan(scene, run, summary, out_dir);
   return 0;

@@ -1,5 +1,6 @@
 #include "skinfem/pipeline/scan.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 #include "skinfem/contact/pressure_map.hpp"
@@ -14,7 +15,39 @@ void require_texture(const Scene& scene) {
     throw SceneError(
         scene.source_path +
         ": contact.texture: missing; skinfem scan needs a \"contact\" section with a \"texture\" "
-        "and a \"scan\"");
+        "and a \"scan\", or a \"sweep\" along the sliding direction");
+}
+
+Scene scanned_scene(const Scene& scene) {
+  if (!scene.contact || scene.contact->texture || !scene.contact->sweep) {
+    require_texture(scene);
+    return scene;
+  }
+  const HoleSweep& sw = *scene.contact->sweep;
+  const Vec2 d = scene.contact->direction;
+  const double dx = sw.to[0] - sw.from[0], dy = sw.to[1] - sw.from[1], length = std::hypot(dx, dy);
+  if (!(length > 0) || std::abs(dx * d[1] - dy * d[0]) > 1e-9 * length || dx * d[0] + dy * d[1] < 0)
+    throw SceneError(
+        scene.source_path +
+        ": contact.sweep: skinfem scan moves the plate along the sliding direction; this scene has no "
+        "contact.texture and its sweep runs across that direction: give a \"texture\" and a \"scan\"");
+  if (hole_mesh_h(scene, sw.h) > sw.hole_diameter) {
+    char line[300];
+    std::snprintf(
+        line, sizeof line,
+        ": contact.sweep.h: skinfem scan resolves the sweep's hole (diameter %g mm) on the mesh along "
+        "its path, which must be at most that diameter (here %g mm): give contact.sweep.h <= %g",
+        sw.hole_diameter, hole_mesh_h(scene, sw.h), sw.hole_diameter);
+    throw SceneError(scene.source_path + line);
+  }
+  Scene s = scene;
+  Texture t;
+  t.listed = {Hole{sw.from, sw.hole_diameter, 0, sw.hole_depth}};
+  t.holes = t.listed;
+  t.h = sw.h;
+  s.contact->texture = t;
+  s.contact->scan = Scan{0, length, length / (sw.positions - 1)};
+  return s;
 }
 
 std::vector<double> scan_positions(const Scan& scan) {

@@ -29,6 +29,11 @@ struct ScanRun {
   Timings wall;                                             // seconds per stage
 };
 
+// The scene `skinfem scan` runs: the scene itself when it has a contact.texture, else (with a contact.sweep
+// along the sliding direction) the sweep's hole as a texture of one hole, resolved, scanned along the
+// sweep's path at its step: the paper's single-hole experiment. Throws SceneError, naming the command's
+// need, when it has neither, or a sweep across the sliding direction.
+Scene scanned_scene(const Scene& scene);
 // Throws SceneError, naming the command's need, when the scene has no contact.texture.
 void require_texture(const Scene& scene);
 // The scan's positions u (mm).

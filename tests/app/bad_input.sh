@@ -273,6 +273,7 @@ bad scan_step_coarse "$sphere, \"scan\": {\"from\": -2, \"to\": 2, \"step\": 0.5
 bad scan_backwards "$sphere, \"scan\": {\"from\": 2, \"to\": -2, \"step\": 0.05}, \"texture\": {\"holes\": [{\"center\": [0, 0], \"diameter\": 0.5}]}}" 'contact.scan.to = -2: must be > from = 2' scan
 bad scan_without_texture "$sphere, \"scan\": {\"from\": -2, \"to\": 2, \"step\": 0.05}}" 'contact.scan = .*a textured plate is scanned: give both "texture" and "scan"' scan
 bad perceive_resolved "$sphere, \"sweep\": {\"from\": [-1, 0], \"to\": [1, 0], \"hole_model\": \"resolved\"}}" 'contact.sweep.hole_model = "resolved": skinfem perceive sweeps holes down to an eighth' perceive
+bad scan_sweep_across "$sphere, \"sweep\": {\"from\": [0, -1], \"to\": [0, 1]}}" 'contact.sweep: skinfem scan moves the plate along the sliding direction' scan
 bad scan_no_texture "$sphere}" 'contact.texture: missing; skinfem scan needs' scan
 bad depth_through_skin 'd["contact"] = {"indenter": {"type": "sphere", "R": 50, "center": [0, 0]}, "depth": 5, "zone_radius": 3}' 'contact.depth = 5: must be below the skin.s thickness \(3 mm\)' contact
 bad depth_beyond_sphere 'd["contact"] = {"indenter": {"type": "sphere", "R": 1, "center": [0, 0]}, "depth": 2}' 'contact.depth = 2: must be below the sphere.s radius R = 1 mm' contact

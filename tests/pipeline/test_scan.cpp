@@ -101,10 +101,29 @@ TEST(Scan, TwoHolesSharingTheContactDifferFromTheirSumByLessThanTheMeshError) {
   }
 }
 
+TEST(Scan, WithoutATextureTheSweepsHoleIsScannedAlongItsPath) {
+  const Scene scene = testing::swept_layer("swept_only", 13, {-1.8, 0}, {1.8, 0}, 2.0, kHole);
+  const Scene s = scanned_scene(scene);
+  ASSERT_TRUE(s.contact->texture && s.contact->scan);
+  ASSERT_EQ(s.contact->texture->holes.size(), 1u);
+  EXPECT_EQ(s.contact->texture->holes[0].center[0], -1.8);
+  EXPECT_EQ(s.contact->texture->holes[0].diameter, kHole);
+  EXPECT_EQ(s.contact->scan->positions(), 13);
+  const std::vector<double> u = scan_positions(*s.contact->scan);
+  for (int i = 0; i < 13; ++i)
+    EXPECT_NEAR(-1.8 + u[i], contact::sweep_center(*scene.contact->sweep, i)[0], 1e-12) << i;
+  // A sweep across the sliding direction cannot be a scan.
+  Scene across = scene;
+  across.contact->sweep->from = {0, -1};
+  across.contact->sweep->to = {0, 1};
+  EXPECT_THROW(scanned_scene(across), SceneError);
+}
+
 TEST(Scan, AStageWithoutATextureIsRefusedNamingIt) {
-  const Scene scene = testing::swept_layer("no_texture", 3);
+  Scene scene = testing::swept_layer("no_texture", 3);
+  scene.contact->sweep.reset();
   try {
-    require_texture(scene);
+    scanned_scene(scene);
     FAIL() << "no throw";
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("contact.texture: missing"), std::string::npos) << e.what();
