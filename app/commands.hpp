@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "skinfem/fem/mixed_solver.hpp"
+#include "skinfem/pipeline/inversion.hpp"
 #include "skinfem/pipeline/perception.hpp"
 #include "skinfem/pipeline/sensor_greens.hpp"
 #include "skinfem/scene/scene.hpp"
@@ -25,6 +26,9 @@ int run_defect(const Scene& scene, const std::string& out_dir, const std::vector
 // superpose: also the holes one at a time (the linear prediction).
 int run_scan(const Scene& scene, const std::string& out_dir, bool superpose);
 int run_perceive(const Scene& scene, const std::string& out_dir, const pipeline::PerceptionOptions& options);
+// signals_path: scan.csv's columns; case_name: the rows of that case when the file has a case column.
+int run_invert(const Scene& scene, const std::string& signals_path, const std::string& out_dir,
+               const pipeline::InversionOptions& options, const std::string& case_name);
 // fast: without the error bars' levels, the hypothesis budget and the post design sweep.
 int run_report(const Scene& scene, const std::string& out_dir, const std::vector<double>& error_scales,
                bool fast = false);

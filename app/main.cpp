@@ -1,7 +1,7 @@
 // skinfem — finite-element verification toolkit for tactile sensors under an elastomer skin.
-// Subcommands: mesh, solve, study, kfit, green, contact, defect, scan, perceive, report, sweep, with their
-// options in the command table (scene/commands.cpp); each cmd_*.cpp says what it computes and writes. Exit
-// codes: 0 success, 2 bad input (scene or arguments), 1 any other failure.
+// Subcommands: mesh, solve, study, kfit, green, contact, defect, scan, perceive, invert, report, sweep, with
+// their options in the command table (scene/commands.cpp); each cmd_*.cpp says what it computes and writes.
+// Exit codes: 0 success, 2 bad input (scene or arguments), 1 any other failure.
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <iostream>
@@ -98,6 +98,18 @@ const std::map<std::string, Handler>& handlers() {
           p.noise.sigma_x_kPa = o.number("noise_x");
           p.sample_mm = o.number("sample_mm");
           return app::run_perceive(s, out, p);
+        }}},
+      {"invert",
+       {none,
+        [](const Scene& s, const std::string& out, const ParsedOptions& o) {
+          skinfem::pipeline::InversionOptions p;
+          p.noise.passages = static_cast<int>(o.number("passages"));
+          p.noise.sigma_z_kPa = o.number("noise_z");
+          p.noise.sigma_x_kPa = o.number("noise_x");
+          p.offset_range = o.number("offset_range");
+          p.mode = o.text("case") == "static" ? skinfem::FrictionMode::static_residual
+                                              : skinfem::FrictionMode::coupled;
+          return app::run_invert(s, o.text("signals"), out, p, o.text("case"));
         }}},
       {"report",
        {error_scales_check,

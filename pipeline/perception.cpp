@@ -90,8 +90,9 @@ PerceptionRun perception_run(const Scene& scene, std::shared_ptr<const ContactSe
     run.wall["ladder_" + name] = clock.seconds();
     progress("perceive " + name + ": Monte Carlo of the filter (" + std::to_string(o.trials) + " draws)");
     Stopwatch mc;
-    // At the threshold hole's SNR, where the detection rate is p_d rather than 1: the scene's signal scaled
-    // (the ladder's SNR follows D³ to 0.5 %, so the threshold hole's signal is this one's shape).
+    // At the threshold hole's SNR, where the detection rate is p_d rather than 1: the statistic depends on
+    // the signal only through its SNR (T ~ N(d, 1)), so the scene's signal scaled stands for the threshold
+    // hole's.
     if (c.array_snr > 0)
       c.rates = validation::monte_carlo_rates(c.signal * (need / c.array_snr), o.noise, {}, o.p_fa, o.trials,
                                               o.seed);

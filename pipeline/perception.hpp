@@ -2,7 +2,8 @@
 // scene's hole sweep (`skinfem defect`'s, static and sliding) at the scene's diameter and on a ladder of
 // smaller ones on the same factorization, the matched filter's signal-to-noise ratio per sensor and across
 // the array, and from it the smallest diameter detected with probability p_d at false-alarm rate p_fa,
-// interpolated on the ladder (log d against log D: the bulge's signal grows as D³). The filter knows where
+// interpolated on the ladder (log d against log D: the bulge's signal grows as D³ under Coulomb friction, a
+// shear strength's hole as D²). The filter knows where
 // the hole is (the detection of a hole at a given place). `skinfem perceive` writes perception_json's object
 // as perception.json and the ROC curves as roc.csv.
 #pragma once

@@ -274,6 +274,17 @@ bad scan_backwards "$sphere, \"scan\": {\"from\": 2, \"to\": -2, \"step\": 0.05}
 bad scan_without_texture "$sphere, \"scan\": {\"from\": -2, \"to\": 2, \"step\": 0.05}}" 'contact.scan = .*a textured plate is scanned: give both "texture" and "scan"' scan
 bad perceive_resolved "$sphere, \"sweep\": {\"from\": [-1, 0], \"to\": [1, 0], \"hole_model\": \"resolved\"}}" 'contact.sweep.hole_model = "resolved": skinfem perceive sweeps holes down to an eighth' perceive
 bad scan_sweep_across "$sphere, \"sweep\": {\"from\": [0, -1], \"to\": [0, 1]}}" 'contact.sweep: skinfem scan moves the plate along the sliding direction' scan
+# skinfem invert's signals file (checked before any solve).
+variant invert_scene "$sphere, \"sweep\": {\"from\": [-1, 0], \"to\": [1, 0]}}"
+printf 'u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa\n0,1,0.1,0.2\n0.1,2,0.1,0.2\n' >"$tmp/signals_sensor.csv"
+check invert_wrong_sensor 'signals_sensor.csv: row 3: sensor = 2: the scene has sensors 1 to 1' "$skinfem" invert "$tmp/signals_sensor.csv" "$tmp/invert_scene.json" --out "$tmp/out"
+printf 'u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa\n0,1,nan,0.2\n0.1,1,0.1,0.2\n' >"$tmp/signals_nan.csv"
+check invert_nan 'signals_nan.csv: row 2: varsigma_z_kPa = nan: must be a finite number' "$skinfem" invert "$tmp/signals_nan.csv" "$tmp/invert_scene.json" --out "$tmp/out"
+printf 'u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa\n0,1,0.1,0.2\n0.1,1,0.1,0.2\n0.3,1,0.1,0.2\n' >"$tmp/signals_uneven.csv"
+check invert_uneven 'signals_uneven.csv: u_mm is not evenly spaced' "$skinfem" invert "$tmp/signals_uneven.csv" "$tmp/invert_scene.json" --out "$tmp/out"
+printf 'u,sensor,sz,sx\n0,1,0.1,0.2\n' >"$tmp/signals_header.csv"
+check invert_header 'signals_header.csv: header has no column u_mm' "$skinfem" invert "$tmp/signals_header.csv" "$tmp/invert_scene.json" --out "$tmp/out"
+check invert_missing 'no_signals.csv: cannot read the signals file' "$skinfem" invert "$tmp/no_signals.csv" "$tmp/invert_scene.json" --out "$tmp/out"
 bad scan_no_texture "$sphere}" 'contact.texture: missing; skinfem scan needs' scan
 bad depth_through_skin 'd["contact"] = {"indenter": {"type": "sphere", "R": 50, "center": [0, 0]}, "depth": 5, "zone_radius": 3}' 'contact.depth = 5: must be below the skin.s thickness \(3 mm\)' contact
 bad depth_beyond_sphere 'd["contact"] = {"indenter": {"type": "sphere", "R": 1, "center": [0, 0]}, "depth": 2}' 'contact.depth = 2: must be below the sphere.s radius R = 1 mm' contact

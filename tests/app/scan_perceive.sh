@@ -5,7 +5,8 @@
 # animation lists a frame per position and case and each file exists; summary.json counts the holes; a
 # second run writes the same scan.csv byte for byte (the cut problems are built on several threads).
 # perceive: the required SNR is Φ⁻¹(0.99) + Φ⁻¹(0.9) = 3.608 (tables); the ROC curves rise with the
-# false-alarm rate; the Monte Carlo rates lie within 4 standard errors of the nominal ones.
+# false-alarm rate; the Monte Carlo rates lie within 4 standard errors of the nominal ones. invert: the
+# scene's defect sweep, inverted, gives its hole back at the plate's origin.
 set -u
 skinfem=$1
 tmp=$(mktemp -d)
@@ -29,6 +30,10 @@ done
 cmp -s "$tmp/a/scan.csv" "$tmp/b/scan.csv" || { echo "FAIL: two runs wrote different scan.csv"; exit 1; }
 "$skinfem" perceive "$tmp/scene.json" --out "$tmp/p" >"$tmp/p.out" 2>"$tmp/err" ||
   { echo "FAIL perceive:"; cat "$tmp/err"; exit 1; }
+"$skinfem" defect "$tmp/scene.json" --no-error-bars --out "$tmp/d" >"$tmp/d.out" 2>"$tmp/err" ||
+  { echo "FAIL defect:"; cat "$tmp/err"; exit 1; }
+"$skinfem" invert "$tmp/d/defect.csv" "$tmp/scene.json" --offset-range 0.3 --out "$tmp/i" >"$tmp/i.out" 2>"$tmp/err" ||
+  { echo "FAIL invert:"; cat "$tmp/err"; exit 1; }
 /usr/bin/python3 - "$tmp" <<'PY'
 import csv, json, math, os, re, sys
 tmp = sys.argv[1]
@@ -61,6 +66,17 @@ for case in ["static", "sliding"]:
         bad.append(f"{case}: Monte Carlo false alarms {mc['false_alarm']}")
     if abs(mc["detection"] - p["p_d"]) > 4 * mc["detection_sigma"]:
         bad.append(f"{case}: Monte Carlo detections {mc['detection']}")
+# invert: the defect sweep's hole sits at the plate's origin (its centre is at u); the strongest feature
+# comes back there within the sweep's step, the contact within one offset step of its place.
+features = list(csv.DictReader(open(f"{tmp}/i/features.csv")))
+if not features or list(features[0].keys()) != ["position_mm", "diameter_mm", "amplitude", "snr"]:
+    bad.append("features.csv: no feature, or other columns")
+else:
+    strongest = max(features, key=lambda f: float(f["snr"]))
+    if abs(float(strongest["position_mm"])) > 0.09 + 1e-9:
+        bad.append(f"invert: the hole found at {strongest['position_mm']} mm, not 0")
+    if abs(json.load(open(f"{tmp}/i/summary.json"))["contact_offset_mm"]) > 0.1 + 1e-9:
+        bad.append("invert: the contact's offset is more than one step off")
 for b in bad:
     print("FAIL", b)
 sys.exit(1 if bad else 0)

@@ -1,0 +1,122 @@
+#include "skinfem/pipeline/inversion.hpp"
+
+#include <cmath>
+
+#include "skinfem/contact/holes/dimple.hpp"
+#include "skinfem/contact/holes/sweep.hpp"
+#include "skinfem/pipeline/contact_setup.hpp"
+#include "skinfem/pipeline/progress.hpp"
+#include "skinfem/pipeline/resources.hpp"
+#include "skinfem/pipeline/scene_json.hpp"
+
+namespace skinfem::pipeline {
+
+std::vector<double> offset_grid(double range, double step) {
+  std::vector<double> out;
+  const int n = static_cast<int>(std::floor(range / step + 1e-9));
+  for (int k = -n; k <= n; ++k) out.push_back(k * step);
+  return out;
+}
+
+validation::HoleResponses hole_responses(const Scene& scene, FrictionMode mode, double dx,
+                                         const std::vector<double>& offsets, Timings& wall, int& dofs) {
+  const std::string& file = scene.source_path;
+  if (!scene.contact || !scene.contact->sweep)
+    throw SceneError(file + ": contact.sweep: missing; skinfem invert takes its hole as the dictionary's");
+  if (scene.contact->direction[0] != 1)
+    throw SceneError(file + ": contact.friction.direction: skinfem invert reads scans along +x");
+  if (scene.sensors.model != SensorModel::disc)
+    throw SceneError(file +
+                     ": sensors.model: skinfem invert reads the dictionary through virtual disc sensors");
+  const double y = scene.sensors.positions.at(0)[1];
+  for (const Vec2& p : scene.sensors.positions)
+    if (p[1] != y)
+      throw SceneError(file + ": sensors: skinfem invert needs the sensors on one line y = const");
+  // The virtual sensors: every x_i − δ, once.
+  Scene s = scene;
+  validation::HoleResponses r;
+  for (const Vec2& p : scene.sensors.positions)
+    for (double d : offsets) {
+      const double x = p[0] - d;
+      bool seen = false;
+      for (double o : r.sites) seen = seen || std::abs(o - x) < 1e-6;
+      if (!seen) r.sites.push_back(x);
+    }
+  s.sensors.positions.clear();
+  for (double x : r.sites) s.sensors.positions.push_back({x, y});
+  // The hole from one side of the zone to the other, every dx.
+  const double c = contact_center(scene)[0],
+               reach = contact_zone_radius(scene) + scene.contact->sweep->hole_diameter;
+  HoleSweep& sw = *s.contact->sweep;
+  const int positions = static_cast<int>(std::ceil(2 * reach / dx)) + 1;
+  sw.from = {c - reach, 0};
+  sw.to = {c - reach + (positions - 1) * dx, 0};
+  sw.positions = positions;
+  r.x0 = sw.from[0];
+  r.dx = dx;
+  r.diameter = sw.hole_diameter;
+  progress("invert: the dictionary, " + std::to_string(r.sites.size()) + " virtual sensors x " +
+           std::to_string(positions) + " hole positions");
+  const auto setup = contact_setup(s);
+  wall = setup->wall;
+  dofs = setup->model->solver().free_dofs();
+  Stopwatch clock;
+  const contact::HoleDimples dimples(*setup->solver, setup->mesh(), *setup->top, s.material.E, s.material.nu);
+  const contact::SweepResult res = contact::hole_sweep(*setup->solver, setup->mesh(), sw, mode, &dimples);
+  r.R = 1e3 * res.varsigma;
+  wall["dictionary_sweep"] = clock.seconds();
+  return r;
+}
+
+InversionRun inversion_run(const Scene& scene, const validation::ScanSignals& signals,
+                           const InversionOptions& o) {
+  InversionRun run;
+  const double dx = (signals.u.back() - signals.u.front()) / (signals.u.size() - 1);
+  const std::vector<double> offsets = offset_grid(o.offset_range, o.offset_step);
+  run.responses = hole_responses(scene, o.mode, dx, offsets, run.wall, run.dofs);
+  Stopwatch clock;
+  run.multi = validation::invert_scan(signals, run.responses, o.noise, offsets, o.p_fa, o.p_d);
+  run.wall["invert"] = clock.seconds();
+  Stopwatch naive;
+  for (int k = 0; k < static_cast<int>(signals.sensors.size()); ++k)
+    run.naive.push_back(validation::invert_scan(signals, run.responses, o.noise, {0.0}, o.p_fa, o.p_d, k));
+  run.wall["invert_naive"] = naive.seconds();
+  return run;
+}
+
+nlohmann::json inversion_json(const Scene& scene, const InversionRun& run, const InversionOptions& o) {
+  const auto features = [](const validation::Inversion& inv) {
+    nlohmann::json f = nlohmann::json::array();
+    for (const validation::Feature& x : inv.features)
+      f.push_back({{"position_mm", x.position_mm},
+                   {"diameter_mm", x.diameter_mm},
+                   {"amplitude", x.amplitude},
+                   {"snr", x.snr}});
+    return f;
+  };
+  nlohmann::json j;
+  j["scene"] = scene_json(scene);
+  j["case"] = to_string(o.mode);
+  j["noise"] = {{"sigma_z_kPa", o.noise.sigma_z_kPa},
+                {"sigma_x_kPa", o.noise.sigma_x_kPa},
+                {"passages", o.noise.passages}};
+  j["contact_offset_mm"] = run.multi.offset_mm;
+  j["offsets_mm"] = run.multi.offsets;
+  j["weighted_residuals"] = run.multi.residuals;
+  j["features"] = features(run.multi);
+  nlohmann::json naive = nlohmann::json::array();
+  for (size_t k = 0; k < run.naive.size(); ++k)
+    naive.push_back({{"sensor", k + 1}, {"features", features(run.naive[k])}});
+  j["naive_single_sensor"] = naive;
+  j["dictionary"] = {{"hole_diameter_mm", run.responses.diameter},
+                     {"virtual_sensors", run.responses.sites.size()},
+                     {"hole_positions", run.responses.R.rows()},
+                     {"step_mm", run.responses.dx}};
+  j["dofs"] = run.dofs;
+  j["wall_s"] = run.wall;
+  j["wall_total_s"] = run.wall.total();
+  j["peak_rss_mb"] = peak_rss_mb();
+  return j;
+}
+
+}  // namespace skinfem::pipeline

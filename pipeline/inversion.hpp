@@ -1,0 +1,45 @@
+// `skinfem invert`: where the holes are, from a scan's sensor signals (validation/inversion.hpp). The
+// dictionary is the scene's own hole swept through the contact (`skinfem defect`'s sweep, the scene's hole
+// model) read by virtual sensors at every x_i − δ, δ on the offset grid: the responses of the sensors if
+// the contact sat δ from its nominal place. The multi-sensor inversion fits every sensor and the offset; the
+// paper's naive one fits each sensor alone at the nominal offset.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "skinfem/pipeline/clock.hpp"
+#include "skinfem/scene/scene.hpp"
+#include "skinfem/validation/inversion.hpp"
+
+namespace skinfem::pipeline {
+
+struct InversionOptions {
+  validation::SensorNoise noise{0.6, 0.4, 14};
+  double offset_range = 1.0;                  // mm: δ in [−range, range]
+  double offset_step = 0.1;                   // mm
+  FrictionMode mode = FrictionMode::coupled;  // the case the signals are of
+  double p_fa = 0.01, p_d = 0.9;
+};
+
+struct InversionRun {
+  validation::Inversion multi;               // every sensor, the offset fitted
+  std::vector<validation::Inversion> naive;  // per sensor alone, δ = 0
+  validation::HoleResponses responses;
+  int dofs = 0;
+  Timings wall;
+};
+
+// The dictionary for signals sampled every dx (mm) and the offsets. Throws SceneError when the scene has
+// no contact.sweep (its hole is the dictionary's), slides other than along +x, or its sensors are not
+// discs on one line y = const.
+validation::HoleResponses hole_responses(const Scene& scene, FrictionMode mode, double dx,
+                                         const std::vector<double>& offsets, Timings& wall, int& dofs);
+// The offset grid: −range, −range + step, …, range (0 included).
+std::vector<double> offset_grid(double range, double step);
+InversionRun inversion_run(const Scene& scene, const validation::ScanSignals& signals,
+                           const InversionOptions& options);
+nlohmann::json inversion_json(const Scene& scene, const InversionRun& run, const InversionOptions& options);
+
+}  // namespace skinfem::pipeline

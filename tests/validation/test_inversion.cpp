@@ -1,0 +1,120 @@
+// The inversion's solver and estimator (validation/inversion.hpp) on an analytic dictionary, independent of
+// any FE: smooth site-dependent responses on a 0.1 mm site grid. References: the Karush–Kuhn–Tucker
+// conditions of non-negative least squares (x ≥ 0, the gradient's sign, complementarity) and the
+// unconstrained solution when it is positive; planted features recovered from noise-free signals, with the
+// offset that made them, to the scan's step; and with the paper's noise the position error within 2× the
+// Cramér–Rao bound of the same model (rms over 40 seeded draws: a finite sample of an efficient estimator
+// sits within 1.3× of the bound with probability > 0.99, by the χ² law of its mean square; the grid and the
+// merging of adjacent atoms cost some efficiency, and the issue asks for 2×).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "skinfem/scene/random.hpp"
+#include "skinfem/validation/inversion.hpp"
+
+namespace skinfem::validation {
+namespace {
+
+TEST(Inversion, NnlsMeetsItsOptimalityConditions) {
+  SplitMix64 rng{5};
+  for (int trial = 0; trial < 20; ++trial) {
+    Eigen::MatrixXd A(12, 6);
+    Eigen::VectorXd b(12);
+    for (int i = 0; i < 12; ++i) {
+      b[i] = rng.normal();
+      for (int j = 0; j < 6; ++j) A(i, j) = rng.normal();
+    }
+    const Eigen::VectorXd x = nnls(A, b);
+    const Eigen::VectorXd w = A.transpose() * (b - A * x);
+    for (int j = 0; j < 6; ++j) {
+      EXPECT_GE(x[j], 0);
+      EXPECT_LE(w[j], 1e-9);
+      EXPECT_LT(std::abs(x[j] * w[j]), 1e-9);
+    }
+  }
+  // A positive unconstrained solution is the answer.
+  Eigen::MatrixXd A = Eigen::MatrixXd::Identity(3, 3);
+  A(0, 1) = 0.5;
+  const Eigen::Vector3d x_true(1, 2, 3);
+  EXPECT_LT((nnls(A, A * x_true) - x_true).norm(), 1e-12);
+}
+
+// Responses of sites every 0.1 mm on [−7, 7] to a hole at x: a hump in σ_z that turns antisymmetric with
+// the site's place, and a derivative-like σ_x, each about 1 mm wide.
+HoleResponses analytic_responses(double dx) {
+  HoleResponses r;
+  r.dx = dx;
+  r.x0 = -5;
+  r.diameter = 0.5;
+  for (int k = 0; k <= 140; ++k) r.sites.push_back(-7 + 0.1 * k);
+  const int rows = static_cast<int>(std::lround(10 / dx)) + 1;
+  r.R.resize(rows, 2 * r.sites.size());
+  for (int m = 0; m < rows; ++m)
+    for (size_t k = 0; k < r.sites.size(); ++k) {
+      const double x = r.x0 + m * dx, s = r.sites[k], d = x - s, e = std::exp(-d * d / 0.8);
+      const double envelope = std::exp(-x * x / 8);  // the contact's pressure the hole sits in
+      r.R(m, 2 * k) = envelope * e * (0.15 + 0.05 * s * d);
+      r.R(m, 2 * k + 1) = envelope * 0.1 * d * e;
+    }
+  return r;
+}
+
+std::vector<double> grid(double from, double to, double step) {
+  std::vector<double> u;
+  for (int i = 0; from + i * step <= to + 1e-9; ++i) u.push_back(from + i * step);
+  return u;
+}
+
+TEST(Inversion, NoiseFreeSignalsGiveThePlantedFeaturesAndTheOffset) {
+  const double dx = 0.05;
+  const HoleResponses r = analytic_responses(dx);
+  ScanSignals sig;
+  sig.u = grid(0, 6, dx);
+  sig.sensors = grid(-4.5, 4.5, 1.0);
+  const double offset = 0.3;
+  // Plate positions 2 mm apart, one between grid points, amplitudes of holes 0.5, 0.4 and 0.6 mm across.
+  const std::vector<Feature> planted{{-6.0, 0.5, 1.0, 0}, {-4.025, 0.4, 0.512, 0}, {-2.0, 0.6, 1.728, 0}};
+  sig.y = simulated_signals(sig.u, sig.sensors, r, planted, offset);
+  std::vector<double> offsets = grid(-1, 1, 0.1);
+  const Inversion inv = invert_scan(sig, r, SensorNoise{0.6, 0.4, 14}, offsets);
+  EXPECT_NEAR(inv.offset_mm, offset, 1e-9);
+  ASSERT_EQ(inv.features.size(), planted.size());
+  for (size_t k = 0; k < planted.size(); ++k) {
+    EXPECT_NEAR(inv.features[k].position_mm, planted[k].position_mm, dx) << k;
+    EXPECT_NEAR(inv.features[k].diameter_mm, planted[k].diameter_mm, 0.02 * planted[k].diameter_mm) << k;
+  }
+}
+
+TEST(Inversion, WithThePapersNoiseThePositionErrorIsWithinTwiceTheCramerRaoBound) {
+  const double dx = 0.05;
+  const HoleResponses r = analytic_responses(dx);
+  ScanSignals sig;
+  sig.u = grid(0, 6, dx);
+  sig.sensors = grid(-4.5, 4.5, 1.0);
+  const SensorNoise noise{0.6, 0.4, 14};
+  const Feature planted{-3.0, 0.5, 1.0, 0};
+  const Eigen::MatrixXd clean = simulated_signals(sig.u, sig.sensors, r, {planted}, 0.0);
+  SplitMix64 rng{11};
+  double sq = 0;
+  const int draws = 40;
+  for (int t = 0; t < draws; ++t) {
+    sig.y = clean;
+    for (int i = 0; i < sig.y.rows(); ++i)
+      for (int j = 0; j < sig.y.cols(); ++j)
+        sig.y(i, j) += (j % 2 ? 0.4 : 0.6) / std::sqrt(14.0) * rng.normal();
+    const Inversion inv = invert_scan(sig, r, noise, {0.0});
+    ASSERT_FALSE(inv.features.empty()) << "draw " << t;
+    // The strongest feature is the hole.
+    const Feature* f = &inv.features[0];
+    for (const Feature& g : inv.features)
+      if (g.snr > f->snr) f = &g;
+    sq += std::pow(f->position_mm - planted.position_mm, 2);
+  }
+  const double rms = std::sqrt(sq / draws);
+  const double crb = position_crb(sig, r, noise, planted.position_mm, planted.amplitude, 0.0);
+  EXPECT_LT(rms, 2 * crb) << "rms " << rms << " mm, bound " << crb << " mm";
+}
+
+}  // namespace
+}  // namespace skinfem::validation

@@ -1,0 +1,213 @@
+#include "skinfem/validation/inversion.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "skinfem/scene/parallel.hpp"
+
+namespace skinfem::validation {
+
+Eigen::VectorXd nnls(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, int max_iterations) {
+  const int n = static_cast<int>(A.cols());
+  // AᵀA by a symmetric rank update: half the product's flops.
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(n, n);
+  G.selfadjointView<Eigen::Lower>().rankUpdate(A.transpose());
+  G.triangularView<Eigen::StrictlyUpper>() = G.transpose();
+  const Eigen::VectorXd c = A.transpose() * b;
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
+  std::vector<char> in(n, 0);
+  const double tol = 1e-10 * std::max(1.0, c.cwiseAbs().maxCoeff());
+  const int limit = max_iterations > 0 ? max_iterations : 3 * n;
+  // The passive set's least squares, the others at zero.
+  const auto solve = [&](Eigen::VectorXd& z) {
+    std::vector<int> P;
+    for (int j = 0; j < n; ++j)
+      if (in[j]) P.push_back(j);
+    Eigen::MatrixXd GP(P.size(), P.size());
+    Eigen::VectorXd cP(P.size());
+    for (size_t a = 0; a < P.size(); ++a) {
+      cP[a] = c[P[a]];
+      for (size_t b2 = 0; b2 < P.size(); ++b2) GP(a, b2) = G(P[a], P[b2]);
+    }
+    const Eigen::VectorXd zP = GP.ldlt().solve(cP);
+    z.setZero(n);
+    for (size_t a = 0; a < P.size(); ++a) z[P[a]] = zP[a];
+  };
+  for (int it = 0;; ++it) {
+    if (it >= limit) throw std::runtime_error("nnls: no convergence in " + std::to_string(limit) + " steps");
+    const Eigen::VectorXd w = c - G * x;
+    int t = -1;
+    for (int j = 0; j < n; ++j)
+      if (!in[j] && w[j] > tol && (t < 0 || w[j] > w[t])) t = j;
+    if (t < 0) return x;
+    in[t] = 1;
+    Eigen::VectorXd z;
+    solve(z);
+    // Back along the segment x → z until every passive entry is positive.
+    for (int inner = 0; inner < n; ++inner) {
+      double alpha = 1;
+      bool negative = false;
+      for (int j = 0; j < n; ++j)
+        if (in[j] && z[j] <= 0) {
+          negative = true;
+          alpha = std::min(alpha, x[j] / (x[j] - z[j]));
+        }
+      if (!negative) break;
+      x += alpha * (z - x);
+      for (int j = 0; j < n; ++j)
+        if (in[j] && x[j] <= tol * 1e-6) in[j] = 0, x[j] = 0;
+      solve(z);
+    }
+    x = z;
+  }
+}
+
+namespace {
+// The column of responses.R for site s (mm), or −1.
+int site_column(const HoleResponses& r, double s) {
+  for (size_t k = 0; k < r.sites.size(); ++k)
+    if (std::abs(r.sites[k] - s) < 1e-6) return static_cast<int>(k);
+  return -1;
+}
+
+std::vector<int> sites_for(const std::vector<double>& sensors, const HoleResponses& r, double offset) {
+  std::vector<int> k;
+  for (double x : sensors) {
+    k.push_back(site_column(r, x - offset));
+    if (k.back() < 0)
+      throw std::invalid_argument("invert_scan: no response for a sensor at " + std::to_string(x - offset) +
+                                  " mm in the contact's frame (offset " + std::to_string(offset) + " mm)");
+  }
+  return k;
+}
+
+// R of column col at x, linear between the grid's points, 0 outside.
+double response_at(const HoleResponses& r, int col, double x) {
+  const double m = (x - r.x0) / r.dx;
+  const int i = static_cast<int>(std::floor(m));
+  if (i < 0 || i + 1 >= r.R.rows())
+    return (i == r.R.rows() - 1 && std::abs(m - i) < 1e-9) ? r.R(i, col) : 0.0;
+  const double t = m - i;
+  return (1 - t) * r.R(i, col) + t * r.R(i + 1, col);
+}
+
+// Per component of a sensor, 1/σ of the mean of N passages.
+double weight(const SensorNoise& n, int component) {
+  return std::sqrt(double(n.passages)) / (component == 0 ? n.sigma_z_kPa : n.sigma_x_kPa);
+}
+}  // namespace
+
+Eigen::MatrixXd simulated_signals(const std::vector<double>& u, const std::vector<double>& sensors,
+                                  const HoleResponses& r, const std::vector<Feature>& features,
+                                  double offset) {
+  const std::vector<int> k = sites_for(sensors, r, offset);
+  Eigen::MatrixXd y = Eigen::MatrixXd::Zero(static_cast<int>(u.size()), 2 * static_cast<int>(sensors.size()));
+  for (const Feature& f : features)
+    for (size_t i = 0; i < u.size(); ++i)
+      for (size_t s = 0; s < sensors.size(); ++s)
+        for (int c = 0; c < 2; ++c)
+          y(i, 2 * s + c) += f.amplitude * response_at(r, 2 * k[s] + c, f.position_mm - offset + u[i]);
+  return y;
+}
+
+Inversion invert_scan(const ScanSignals& sig, const HoleResponses& r, const SensorNoise& noise,
+                      const std::vector<double>& offsets, double p_fa, double p_d, int single_sensor) {
+  (void)p_d;
+  const int nu = static_cast<int>(sig.u.size()), ns = static_cast<int>(sig.sensors.size());
+  if (nu < 2 || sig.y.rows() != nu || sig.y.cols() != 2 * ns)
+    throw std::invalid_argument("invert_scan: the signals' shape does not match their positions and sensors");
+  const double du = (sig.u.back() - sig.u.front()) / (nu - 1);
+  if (std::abs(du - r.dx) > 1e-9 * std::max(1.0, r.dx))
+    throw std::invalid_argument("invert_scan: the scan's step must be the dictionary's");
+  if (single_sensor >= ns) throw std::invalid_argument("invert_scan: no such sensor");
+  std::vector<int> used;
+  for (int s = 0; s < ns; ++s)
+    if (single_sensor < 0 || s == single_sensor) used.push_back(s);
+  // Atom j: a hole at q_j = x0 − u0 + (j − (nu − 1)) dx, whose sample i reads the grid's point j − (nu − 1) +
+  // i.
+  const int rows = static_cast<int>(r.R.rows()), atoms = rows + nu - 1;
+  const auto q_of = [&](int j) { return r.x0 - sig.u[0] + (j - (nu - 1)) * r.dx; };
+  Eigen::VectorXd b(nu * 2 * static_cast<int>(used.size()));
+  for (int i = 0; i < nu; ++i)
+    for (size_t s = 0; s < used.size(); ++s)
+      for (int c = 0; c < 2; ++c)
+        b[(i * used.size() + s) * 2 + c] = weight(noise, c) * sig.y(i, 2 * used[s] + c);
+  // The offsets are independent fits: on the machine's cores, each in its own slot.
+  const int n_off = static_cast<int>(offsets.size());
+  std::vector<Eigen::VectorXd> amplitudes(n_off);
+  std::vector<double> residuals(n_off);
+  for (double delta : offsets) sites_for(sig.sensors, r, delta);  // throws on the calling thread
+  const auto design = [&](double delta) {
+    const std::vector<int> k = sites_for(sig.sensors, r, delta);
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(b.size(), atoms);
+    for (int j = 0; j < atoms; ++j)
+      for (int i = 0; i < nu; ++i) {
+        const int m = j - (nu - 1) + i;
+        if (m < 0 || m >= rows) continue;
+        for (size_t s = 0; s < used.size(); ++s)
+          for (int c = 0; c < 2; ++c)
+            A((i * used.size() + s) * 2 + c, j) = weight(noise, c) * r.R(m, 2 * k[used[s]] + c);
+      }
+    return A;
+  };
+  for_each_index(n_off, [&](std::size_t o) {
+    const Eigen::MatrixXd A = design(offsets[o]);
+    amplitudes[o] = nnls(A, b);
+    residuals[o] = (b - A * amplitudes[o]).squaredNorm();
+  });
+  Inversion best;
+  best.offsets = offsets;
+  best.residuals = residuals;
+  int chosen = 0;
+  for (int o = 1; o < n_off; ++o)
+    if (residuals[o] < residuals[chosen]) chosen = o;
+  best.weighted_residual = residuals[chosen];
+  best.offset_mm = offsets[chosen];
+  const Eigen::VectorXd& best_a = amplitudes[chosen];
+  const Eigen::MatrixXd best_A = design(offsets[chosen]);
+  // Adjacent non-zero atoms are one feature.
+  const double tau = detection_threshold(p_fa);
+  for (int j = 0; j < atoms;) {
+    if (!(best_a[j] > 0)) {
+      ++j;
+      continue;
+    }
+    double sum = 0, moment = 0;
+    Eigen::VectorXd signal = Eigen::VectorXd::Zero(b.size());
+    for (; j < atoms && best_a[j] > 0; ++j) {
+      sum += best_a[j];
+      moment += best_a[j] * q_of(j);
+      signal += best_a[j] * best_A.col(j);
+    }
+    Feature f;
+    f.amplitude = sum;
+    f.position_mm = moment / sum + best.offset_mm;
+    f.diameter_mm = r.diameter * std::cbrt(sum);
+    f.snr = signal.norm();
+    if (f.snr >= tau) best.features.push_back(f);
+  }
+  return best;
+}
+
+double position_crb(const ScanSignals& sig, const HoleResponses& r, const SensorNoise& noise, double q,
+                    double a, double offset, int single_sensor) {
+  const std::vector<int> k = sites_for(sig.sensors, r, offset);
+  Eigen::Matrix2d F = Eigen::Matrix2d::Zero();
+  const double h = 0.5 * r.dx;
+  for (size_t i = 0; i < sig.u.size(); ++i)
+    for (size_t s = 0; s < sig.sensors.size(); ++s) {
+      if (single_sensor >= 0 && static_cast<int>(s) != single_sensor) continue;
+      for (int c = 0; c < 2; ++c) {
+        const int col = 2 * k[s] + c;
+        const double x = q + sig.u[i];
+        const Eigen::Vector2d g(a * (response_at(r, col, x + h) - response_at(r, col, x - h)) / (2 * h),
+                                response_at(r, col, x));
+        const double w = weight(noise, c);
+        F += w * w * g * g.transpose();
+      }
+    }
+  return std::sqrt(F.inverse()(0, 0));
+}
+
+}  // namespace skinfem::validation
