@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "app/animation.hpp"
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "app/report_page.hpp"
@@ -28,7 +29,6 @@
 #include "skinfem/pipeline/contact_setup.hpp"
 #include "skinfem/pipeline/defect.hpp"
 #include "skinfem/pipeline/finite_defect.hpp"
-#include "skinfem/scene/parallel.hpp"
 #include "skinfem/validation/text.hpp"
 
 namespace skinfem::app {
@@ -42,37 +42,24 @@ void write_defect(const Scene& scene, const DefectRun& run, nlohmann::json& summ
   const auto& results = run.sweeps;
   const auto& frames = run.frames;
   Stopwatch clock;
-  prepare_output_dir(out_dir + "/frames");
-  // The frames folder is this command's: a previous, longer sweep's frames would outlive this one's.
-  for (const auto& f : std::filesystem::directory_iterator(out_dir + "/frames"))
-    if (f.is_regular_file() && f.path().extension() == ".vtp") std::filesystem::remove(f.path());
-  std::ostringstream pvd;
-  pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
-  // The frames pipeline::written_frame picks (the run may keep more); defect.csv keeps every position. Each
-  // frame is its own file, written on the machine's cores (VTK's compression is most of the stage).
-  struct Frame {
-    size_t ci, k;
-    std::string file;
-  };
-  std::vector<Frame> written;
-  for (size_t ci = 0; ci < run.cases.size(); ++ci)
+  // The frames pipeline::written_frame picks (the run may keep more); defect.csv keeps every position.
+  std::vector<AnimationFrame> written;
+  std::vector<std::pair<size_t, size_t>> kept;  // per written frame: its case and its place in run.frames
+  for (size_t ci = 0; ci < run.cases.size() && write_frames; ++ci)
     for (size_t k = 0; k < frames[ci].size(); ++k) {
       const int i = run.frame_positions[ci][k];
       if (!pipeline::written_frame(i, sweep.positions)) continue;
-      if (!write_frames) continue;
       char file[64];
       std::snprintf(file, sizeof file, "%s_%03d.vtp", run.cases[ci].c_str(), i);
-      written.push_back({ci, k, file});
-      const Vec2& c = results[ci].centers[i];
-      pvd << "<DataSet timestep=\"" << c[0] << "\" part=\"" << ci << "\" file=\"frames/" << file << "\"/>\n";
+      written.push_back({file, results[ci].centers[i][0], static_cast<int>(ci)});
+      kept.push_back({ci, k});
     }
-  for_each_index(written.size(), [&](size_t w) {
-    const Frame& f = written[w];
-    const Vec2& c = results[f.ci].centers[run.frame_positions[f.ci][f.k]];
-    contact::write_pressure_vtp(out_dir + "/frames/" + f.file, setup.mesh(), *setup.solver, frames[f.ci][f.k],
+  const std::string pvd = write_animation_frames(out_dir, written, [&](size_t w, const std::string& path) {
+    const auto [ci, k] = kept[w];
+    const Vec2& c = results[ci].centers[run.frame_positions[ci][k]];
+    contact::write_pressure_vtp(path, setup.mesh(), *setup.solver, frames[ci][k],
                                 {Hole{c, sweep.hole_diameter, 0.0, sweep.hole_depth}});
   });
-  pvd << "</Collection>\n</VTKFile>\n";
   std::ostringstream csv;
   csv.precision(10);
   csv << "case,u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa\n";
@@ -86,7 +73,7 @@ void write_defect(const Scene& scene, const DefectRun& run, nlohmann::json& summ
   }
   write_text_atomic(out_dir + "/defect.csv", csv.str());
   if (write_frames) {
-    write_text_atomic(out_dir + "/defect.pvd", pvd.str());
+    write_text_atomic(out_dir + "/defect.pvd", pvd);
   } else {                    // nothing of an earlier run's animation stays
     std::error_code ignored;  // frames/ holds no .vtp now; a file of the user's there keeps it
     std::filesystem::remove(out_dir + "/defect.pvd");

@@ -16,16 +16,15 @@
 // per sensor, the superposition's largest difference, time per position; wall_s per stage, peak_rss_mb).
 // The computation and summary.json are pipeline/scan.hpp's; this file writes and prints them.
 #include <cstdio>
-#include <filesystem>
 #include <sstream>
 
+#include "app/animation.hpp"
 #include "app/commands.hpp"
 #include "app/common.hpp"
 #include "app/stages.hpp"
 #include "skinfem/contact/pressure_map.hpp"
 #include "skinfem/pipeline/contact_setup.hpp"
 #include "skinfem/pipeline/scan.hpp"
-#include "skinfem/scene/parallel.hpp"
 
 namespace skinfem::app {
 
@@ -34,32 +33,20 @@ void write_scan(const Scene& scene, const pipeline::ScanRun& run, nlohmann::json
                 const std::string& out_dir) {
   const ContactSetup& setup = *run.setup;
   Stopwatch clock;
-  prepare_output_dir(out_dir + "/frames");
-  // The frames folder is this command's: a previous, longer scan's frames would outlive this one's.
-  for (const auto& f : std::filesystem::directory_iterator(out_dir + "/frames"))
-    if (f.is_regular_file() && f.path().extension() == ".vtp") std::filesystem::remove(f.path());
-  std::ostringstream pvd;
-  pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
-  struct Frame {
-    size_t ci, k;
-    std::string file;
-  };
-  std::vector<Frame> written;
+  std::vector<AnimationFrame> written;
+  std::vector<std::pair<size_t, size_t>> kept;  // per written frame: its case and its place in run.frames
   for (size_t ci = 0; ci < run.cases.size(); ++ci)
     for (size_t k = 0; k < run.frames[ci].size(); ++k) {
       const int i = run.frame_positions[ci][k];
       char file[64];
       std::snprintf(file, sizeof file, "%s_%05d.vtp", run.cases[ci].c_str(), i);
-      written.push_back({ci, k, file});
-      pvd << "<DataSet timestep=\"" << run.scans[ci].u[i] << "\" part=\"" << ci << "\" file=\"frames/" << file
-          << "\"/>\n";
+      written.push_back({file, run.scans[ci].u[i], static_cast<int>(ci)});
+      kept.push_back({ci, k});
     }
-  for_each_index(written.size(), [&](size_t w) {
-    const Frame& f = written[w];
-    contact::write_pressure_vtp(out_dir + "/frames/" + f.file, setup.mesh(), *setup.solver,
-                                run.frames[f.ci][f.k], run.frame_holes[f.ci][f.k]);
+  const std::string pvd = write_animation_frames(out_dir, written, [&](size_t w, const std::string& path) {
+    const auto [ci, k] = kept[w];
+    contact::write_pressure_vtp(path, setup.mesh(), *setup.solver, run.frames[ci][k], run.frame_holes[ci][k]);
   });
-  pvd << "</Collection>\n</VTKFile>\n";
   std::ostringstream csv;
   csv.precision(10);
   csv << "case,u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa"
@@ -78,7 +65,7 @@ void write_scan(const Scene& scene, const pipeline::ScanRun& run, nlohmann::json
       }
   }
   write_text_atomic(out_dir + "/scan.csv", csv.str());
-  write_text_atomic(out_dir + "/scan.pvd", pvd.str());
+  write_text_atomic(out_dir + "/scan.pvd", pvd);
   add_write_seconds(summary, clock.seconds());
   write_json(out_dir + "/summary.json", summary);
 
