@@ -77,8 +77,11 @@ validation::ScanSignals read_signals(const std::string& path, const Scene& scene
     if (sensor != std::round(sensor) || sensor < 1 || sensor > ns)
       throw SceneError(path + ": row " + std::to_string(row) + ": sensor = " + cells[col["sensor"]] +
                        ": the scene has sensors 1 to " + std::to_string(ns));
-    rows[std::llround(u * 1e6)][static_cast<int>(sensor) - 1] = {number("varsigma_z_kPa"),
-                                                                 number("varsigma_x_kPa")};
+    auto& at_u = rows[std::llround(u * 1e6)];
+    if (at_u.count(static_cast<int>(sensor) - 1))
+      throw SceneError(path + ": row " + std::to_string(row) + ": sensor " + cells[col["sensor"]] +
+                       " at u = " + cells[col["u_mm"]] + " mm is given twice");
+    at_u[static_cast<int>(sensor) - 1] = {number("varsigma_z_kPa"), number("varsigma_x_kPa")};
   }
   if (rows.size() < 2)
     throw SceneError(path + ": " + std::to_string(rows.size()) + " scan positions" +
@@ -103,11 +106,23 @@ validation::ScanSignals read_signals(const std::string& path, const Scene& scene
                        std::to_string(sig.u[k]) + " mm); the inversion needs a uniform scan");
   return sig;
 }
+// The fit's dense design matrix per offset (two in flight, 200 MB each).
+constexpr double kMaxDesign = 2.5e7;
 }  // namespace
 
 int run_invert(const Scene& scene, const std::string& signals_path, const std::string& out_dir,
                const pipeline::InversionOptions& options, const std::string& case_name) {
   const validation::ScanSignals signals = read_signals(signals_path, scene, case_name);
+  // The fit's design matrix: a column per hole position the scan can show, a row per sample.
+  const double step = signals.u[1] - signals.u[0];
+  const double atoms = pipeline::dictionary_positions(scene, step) + signals.u.size() - 1;
+  const double samples = 2.0 * signals.u.size() * signals.sensors.size();
+  if (atoms * samples > kMaxDesign)
+    throw SceneError(signals_path + ": " + std::to_string(signals.u.size()) + " positions every " +
+                     std::to_string(step) + " mm make a fit of " +
+                     std::to_string(static_cast<long long>(atoms)) + " hole positions by " +
+                     std::to_string(static_cast<long long>(samples)) +
+                     " samples; at most 2.5e7 entries: resample the signals coarser or scan a shorter range");
   check_output_dir(out_dir);
   const pipeline::InversionRun run = pipeline::inversion_run(scene, signals, options);
   nlohmann::json j = pipeline::inversion_json(scene, run, options);

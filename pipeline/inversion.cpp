@@ -18,6 +18,11 @@ std::vector<double> offset_grid(double range, double step) {
   return out;
 }
 
+int dictionary_positions(const Scene& scene, double dx) {
+  const double hole = scene.contact && scene.contact->sweep ? scene.contact->sweep->hole_diameter : 0;
+  return static_cast<int>(std::ceil(2 * (contact_zone_radius(scene) + hole) / dx)) + 1;
+}
+
 validation::HoleResponses hole_responses(const Scene& scene, FrictionMode mode, double dx,
                                          const std::vector<double>& offsets, Timings& wall, int& dofs) {
   const std::string& file = scene.source_path;
@@ -48,7 +53,7 @@ validation::HoleResponses hole_responses(const Scene& scene, FrictionMode mode, 
   const double c = contact_center(scene)[0],
                reach = contact_zone_radius(scene) + scene.contact->sweep->hole_diameter;
   HoleSweep& sw = *s.contact->sweep;
-  const int positions = static_cast<int>(std::ceil(2 * reach / dx)) + 1;
+  const int positions = dictionary_positions(scene, dx);
   sw.from = {c - reach, 0};
   sw.to = {c - reach + (positions - 1) * dx, 0};
   sw.positions = positions;

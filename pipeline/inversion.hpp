@@ -36,6 +36,9 @@ struct InversionRun {
 // discs on one line y = const.
 validation::HoleResponses hole_responses(const Scene& scene, FrictionMode mode, double dx,
                                          const std::vector<double>& offsets, Timings& wall, int& dofs);
+// How many hole positions the dictionary holds for signals sampled every dx (mm): the zone's width and the
+// hole's, over dx.
+int dictionary_positions(const Scene& scene, double dx);
 // The offset grid: −range, −range + step, …, range (0 included).
 std::vector<double> offset_grid(double range, double step);
 InversionRun inversion_run(const Scene& scene, const validation::ScanSignals& signals,

@@ -18,7 +18,7 @@ enum class OptionKind {
   flag,           // present or not
   count,          // an integer in [1, 4096]
   text,           // any word (a path, a profile)
-  positional,     // the command's one positional argument (its scene or sweep spec), required
+  positional,     // a positional argument (the scene or sweep spec; invert: its signals file first), required
 };
 
 struct OptionSpec {

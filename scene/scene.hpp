@@ -243,8 +243,9 @@ struct HoleLattice {
 };
 
 // Holes drawn uniformly on the plate's rectangle [from, to], round(density × area) of them, diameters
-// uniform in [diameter_min, diameter_max], none overlapping another feature (rejection): deterministic for
-// a seed on every platform (splitmix64, not the standard library's distributions).
+// uniform in [diameter_min, diameter_max], none overlapping another feature (rejection; refused when 20,000
+// draws in a row find no room): deterministic for a seed on every platform (splitmix64, not the standard
+// library's distributions).
 struct RandomHoles {
   Vec2 from{0, 0}, to{0, 0};                                   // mm, the rectangle's corners
   double density = 0;                                          // holes per mm²

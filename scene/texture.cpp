@@ -31,9 +31,10 @@ TextureHoles texture_holes(const Texture& t) {
     const double area = std::abs((r->to[0] - r->from[0]) * (r->to[1] - r->from[1]));
     const long wanted = std::lround(r->density * area);
     SplitMix64 rng{r->seed};
-    long placed = 0, draws = 0;
-    const long max_draws = 1000 * std::max(1L, wanted);
-    while (placed < wanted && draws < max_draws) {
+    // Give up after 20,000 rejections in a row: the rectangle is full (each draw checks every hole placed,
+    // so the bound keeps a hopeless density to about a second).
+    long placed = 0, draws = 0, rejected = 0;
+    while (placed < wanted && rejected < 20000) {
       ++draws;
       Hole h;
       h.center = {rng.uniform(r->from[0], r->to[0]), rng.uniform(r->from[1], r->to[1])};
@@ -41,7 +42,11 @@ TextureHoles texture_holes(const Texture& t) {
       h.depth = r->depth;
       bool free = true;
       for (const Hole& o : out.holes) free = free && !holes_overlap(h, o);
-      if (!free) continue;
+      if (!free) {
+        ++rejected;
+        continue;
+      }
+      rejected = 0;
       out.holes.push_back(h);
       ++placed;
     }

@@ -284,6 +284,8 @@ printf 'u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa\n0,1,0.1,0.2\n0.1,1,0.1,0.2\n0
 check invert_uneven 'signals_uneven.csv: u_mm is not evenly spaced' "$skinfem" invert "$tmp/signals_uneven.csv" "$tmp/invert_scene.json" --out "$tmp/out"
 printf 'u,sensor,sz,sx\n0,1,0.1,0.2\n' >"$tmp/signals_header.csv"
 check invert_header 'signals_header.csv: header has no column u_mm' "$skinfem" invert "$tmp/signals_header.csv" "$tmp/invert_scene.json" --out "$tmp/out"
+printf 'u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa\n0,1,0.1,0.2\n0,1,0.1,0.2\n' >"$tmp/signals_twice.csv"
+check invert_twice 'signals_twice.csv: row 3: sensor 1 at u = 0 mm is given twice' "$skinfem" invert "$tmp/signals_twice.csv" "$tmp/invert_scene.json" --out "$tmp/out"
 check invert_missing 'no_signals.csv: cannot read the signals file' "$skinfem" invert "$tmp/no_signals.csv" "$tmp/invert_scene.json" --out "$tmp/out"
 bad scan_no_texture "$sphere}" 'contact.texture: missing; skinfem scan needs' scan
 bad depth_through_skin 'd["contact"] = {"indenter": {"type": "sphere", "R": 50, "center": [0, 0]}, "depth": 5, "zone_radius": 3}' 'contact.depth = 5: must be below the skin.s thickness \(3 mm\)' contact
