@@ -80,11 +80,11 @@ InversionRun inversion_run(const Scene& scene, const validation::ScanSignals& si
   const std::vector<double> offsets = offset_grid(o.offset_range, o.offset_step);
   run.responses = hole_responses(scene, o.mode, dx, offsets, run.wall, run.dofs);
   Stopwatch clock;
-  run.multi = validation::invert_scan(signals, run.responses, o.noise, offsets, o.p_fa, o.p_d);
+  run.multi = validation::invert_scan(signals, run.responses, o.noise, offsets, o.p_fa);
   run.wall["invert"] = clock.seconds();
   Stopwatch naive;
   for (int k = 0; k < static_cast<int>(signals.sensors.size()); ++k)
-    run.naive.push_back(validation::invert_scan(signals, run.responses, o.noise, {0.0}, o.p_fa, o.p_d, k));
+    run.naive.push_back(validation::invert_scan(signals, run.responses, o.noise, {0.0}, o.p_fa, k));
   run.wall["invert_naive"] = naive.seconds();
   return run;
 }

@@ -20,7 +20,7 @@ struct InversionOptions {
   double offset_range = 1.0;                  // mm: δ in [−range, range]
   double offset_step = 0.1;                   // mm
   FrictionMode mode = FrictionMode::coupled;  // the case the signals are of
-  double p_fa = 0.01, p_d = 0.9;
+  double p_fa = 0.01;                         // features below the false-alarm threshold are dropped
 };
 
 struct InversionRun {

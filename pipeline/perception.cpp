@@ -66,11 +66,8 @@ PerceptionRun perception_run(const Scene& scene, std::shared_ptr<const ContactSe
       HoleSweep s = sweep;
       s.hole_diameter = run.diameters[r];
       const contact::SweepResult res = contact::hole_sweep(*setup->solver, setup->mesh(), s, mode, &dimples);
-      Eigen::MatrixXd sampled(0, res.varsigma.cols());
-      for (int i = 0; i < res.varsigma.rows(); i += every) {
-        sampled.conservativeResize(sampled.rows() + 1, Eigen::NoChange);
-        sampled.row(sampled.rows() - 1) = 1e3 * res.varsigma.row(i);
-      }
+      Eigen::MatrixXd sampled((res.varsigma.rows() + every - 1) / every, res.varsigma.cols());
+      for (int s = 0; s < sampled.rows(); ++s) sampled.row(s) = 1e3 * res.varsigma.row(s * every);
       double best = 0;
       std::vector<double> per_sensor;
       for (int k = 0; k < sensors; ++k) {

@@ -142,21 +142,27 @@ nlohmann::json scan_json(const Scene& scene, const ScanRun& run) {
     for (int i = 0; i < n; ++i) most = std::max(most, res.holes_in[i]), pivots += res.pivots[i];
     c["most_holes_in_zone"] = most;
     c["mean_pivots"] = pivots / n;
+    // Per column (σ_z of sensor k at 2k, σ_x at 2k + 1): the largest |ς| and, with the superposition, the
+    // largest |ς − Σ_k ς_k|.
+    const Eigen::Index cols = res.varsigma.cols();
+    Eigen::VectorXd peak(cols), diff = Eigen::VectorXd::Zero(cols);
+    std::vector<Eigen::Index> at(cols);
+    for (Eigen::Index j = 0; j < cols; ++j) {
+      peak[j] = res.varsigma.col(j).cwiseAbs().maxCoeff(&at[j]);
+      if (!run.superposed.empty())
+        diff[j] = (res.varsigma.col(j) - run.superposed[ci].varsigma.col(j)).cwiseAbs().maxCoeff();
+    }
     nlohmann::json sensors = nlohmann::json::array();
-    for (int k = 0; 2 * k < res.varsigma.cols(); ++k) {
+    for (int k = 0; 2 * k < cols; ++k) {
       nlohmann::json s{{"sensor", k + 1}};
       for (int comp = 0; comp < 2; ++comp) {
         const std::string z = comp == 0 ? "z" : "x";
-        Eigen::Index at;
-        const double peak = res.varsigma.col(2 * k + comp).cwiseAbs().maxCoeff(&at);
-        s["peak_abs_varsigma_" + z + "_kPa"] = 1e3 * peak;
-        s["u_at_peak_" + z + "_mm"] = res.u[at];
+        const int j = 2 * k + comp;
+        s["peak_abs_varsigma_" + z + "_kPa"] = 1e3 * peak[j];
+        s["u_at_peak_" + z + "_mm"] = res.u[at[j]];
         if (!run.superposed.empty()) {
-          const double diff = (res.varsigma.col(2 * k + comp) - run.superposed[ci].varsigma.col(2 * k + comp))
-                                  .cwiseAbs()
-                                  .maxCoeff();
-          s["superposition_max_diff_" + z + "_kPa"] = 1e3 * diff;
-          s["superposition_rel_diff_" + z] = peak > 0 ? diff / peak : 0.0;
+          s["superposition_max_diff_" + z + "_kPa"] = 1e3 * diff[j];
+          s["superposition_rel_diff_" + z] = peak[j] > 0 ? diff[j] / peak[j] : 0.0;
         }
       }
       sensors.push_back(s);
@@ -166,11 +172,9 @@ nlohmann::json scan_json(const Scene& scene, const ScanRun& run) {
       const contact::Superposition& sp = run.superposed[ci];
       // The largest difference over the largest signal, σ_z and σ_x of all sensors each.
       double dz = 0, pz = 0, dx = 0, px = 0;
-      for (int j = 0; j < res.varsigma.cols(); ++j) {
-        const double d = (res.varsigma.col(j) - sp.varsigma.col(j)).cwiseAbs().maxCoeff();
-        const double p = res.varsigma.col(j).cwiseAbs().maxCoeff();
-        (j % 2 ? dx : dz) = std::max(j % 2 ? dx : dz, d);
-        (j % 2 ? px : pz) = std::max(j % 2 ? px : pz, p);
+      for (Eigen::Index j = 0; j < cols; ++j) {
+        (j % 2 ? dx : dz) = std::max(j % 2 ? dx : dz, diff[j]);
+        (j % 2 ? px : pz) = std::max(j % 2 ? px : pz, peak[j]);
       }
       c["superposition"] = {{"single_hole_solves", sp.solves},      {"seconds", sp.seconds},
                             {"max_diff_z_kPa", 1e3 * dz},           {"max_diff_x_kPa", 1e3 * dx},

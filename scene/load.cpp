@@ -1242,19 +1242,12 @@ void check_texture(const Reader& r, const json& j, const Scene& scene) {
   const Vec2 o = contact_center(scene);
   const double radius = contact_zone_radius(scene);
   const Vec2 d = c.direction;
-  for (std::size_t k = 0; k < t.holes.size(); ++k) {
-    // The distance from the zone's centre to the hole's track, u in [from, to].
-    const Hole& h = t.holes[k];
-    const double along = (o[0] - h.center[0]) * d[0] + (o[1] - h.center[1]) * d[1];
-    const double u = std::clamp(along, scan.from, scan.to);
-    const Hole at_u = hole_at(h, d, u);
-    const double dist = std::hypot(at_u.center[0] - o[0], at_u.center[1] - o[1]);
-    if (dist >= radius + 0.5 * h.diameter)
-      r.fail(texture_hole_words(t, k), point(h.center),
+  for (std::size_t k = 0; k < t.holes.size(); ++k)
+    if (hole_tracks({t.holes[k]}, d, scan, o, radius).empty())
+      r.fail(texture_hole_words(t, k), point(t.holes[k].center),
              "never reaches the candidate contact zone (radius " + fmt(radius) + " mm about " + fmt(o) +
                  ") while the plate moves from u = " + fmt(scan.from) + " to " + fmt(scan.to) + " mm along " +
                  fmt(d) + ": it lies outside the scanned plate; move it, or scan farther");
-  }
   const double track_h = hole_mesh_h(scene, t.h);
   if (scan.step > track_h)
     r.fail("contact.scan.step", j.at("scan").at("step"),

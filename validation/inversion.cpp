@@ -112,8 +112,7 @@ Eigen::MatrixXd simulated_signals(const std::vector<double>& u, const std::vecto
 }
 
 Inversion invert_scan(const ScanSignals& sig, const HoleResponses& r, const SensorNoise& noise,
-                      const std::vector<double>& offsets, double p_fa, double p_d, int single_sensor) {
-  (void)p_d;
+                      const std::vector<double>& offsets, double p_fa, int single_sensor) {
   const int nu = static_cast<int>(sig.u.size()), ns = static_cast<int>(sig.sensors.size());
   if (nu < 2 || sig.y.rows() != nu || sig.y.cols() != 2 * ns)
     throw std::invalid_argument("invert_scan: the signals' shape does not match their positions and sensors");

@@ -54,12 +54,12 @@ struct Inversion {
   std::vector<double> offsets, residuals;  // every δ tried and its residual
 };
 
-// offsets: the δ grid (mm); every x_i − δ must be one of responses.sites (to 1e-6 mm). single_sensor ≥ 0:
+// offsets: the δ grid (mm); every x_i − δ must be one of responses.sites (to 1e-6 mm). p_fa: a feature whose
+// own SNR is below the threshold Φ⁻¹(1 − p_fa) is dropped. single_sensor ≥ 0:
 // invert that sensor's signals alone (the paper's "naive" inversion), else all of them. Throws
 // std::invalid_argument when a site is missing or the grids do not match (u's step must be dx).
 Inversion invert_scan(const ScanSignals& signals, const HoleResponses& responses, const SensorNoise& noise,
-                      const std::vector<double>& offsets, double p_fa = 0.01, double p_d = 0.9,
-                      int single_sensor = -1);
+                      const std::vector<double>& offsets, double p_fa = 0.01, int single_sensor = -1);
 
 // The Cramér–Rao bound on the position (mm) of one feature of amplitude a at q (known δ, unknown q and a),
 // from the dictionary's derivative along x: the inverse Fisher matrix's (q, q) entry, square-rooted.
