@@ -98,6 +98,27 @@ std::vector<std::pair<std::string, std::string>> figure_captions(const std::stri
        "post's height and diameter." +
            on},
       {"pareto", "Cost against accuracy of each stage over the error-bar levels (labels: DOFs)." + on},
+      {"perception_scan",
+       "Laid out like the paper's fig. 3: a row of the scene's holes scanned across the contact, sliding, "
+       "each sensor's ςz (top) and ςx (bottom) against the plate's displacement u; the full contact with "
+       "every hole in the zone (left) against the sum of the holes' single-hole signals (right). The "
+       "wiggles are the resolved holes' rims on the track's mesh (see the Perception section), in both." +
+           on},
+      {"perception_superposition",
+       "Where superposition holds: the largest difference between two holes' full scan and the sum of their "
+       "single-hole scans, over the scan's largest signal, against the holes' spacing (static and sliding, "
+       "ςz and ςx); stars: the row." +
+           on},
+      {"perception_detection",
+       "The matched filter's SNR against the hole's diameter at the paper's noise (the array and its best "
+       "sensor, static and sliding) and the smallest hole detected at p_fa 1 %, p_d 90 % against the "
+       "number of passages N." +
+           on},
+      {"perception_inversion",
+       "The row's sliding signals with the paper's noise (N = 14; ςz shown) inverted: the features found by "
+       "every sensor together with the contact's offset fitted, and by each sensor alone (the paper's naive "
+       "inversion), against the true holes." +
+           on},
       {"finite_path",
        "The contact zone against the tangential load from 0 to μF at the full normal force: its edges (the "
        "outermost touching vertices, in steps of the mesh) and force centroid along the sliding direction, "
@@ -448,6 +469,126 @@ void figures(std::ostream& h, const std::string& dir, const Scene& scene, const 
     }
 }
 
+// report.json's perception entry as paragraphs and a table: the row, the pairs, the detection map and the
+// inversion example (pipeline/report_perception.hpp).
+void perception(std::ostream& h, const ReportResult& in) {
+  if (!in.json.contains("perception")) return;
+  const nlohmann::json& p = in.json.at("perception");
+  h << "<h2>Perception: a textured plate, superposition, detection, inversion</h2>\n";
+  if (p.contains("skipped")) {
+    h << "<p>Not computed for this scene: " << html_escape(p.at("skipped").get<std::string>()) << ".</p>\n";
+    return;
+  }
+  const auto pct = [](double v) { return fmt("%.2g %%", 100 * v); };
+  const auto mm = [](const nlohmann::json& b) {
+    if (b.is_null()) return std::string("no single value (the ladder's SNR is not monotone)");
+    if (b.contains("mm")) return fmt("%.3g mm", b.at("mm").get<double>());
+    if (b.contains("above_mm")) return "above " + fmt("%.3g mm", b.at("above_mm").get<double>());
+    return "below " + fmt("%.3g mm", b.at("below_mm").get<double>());
+  };
+  const nlohmann::json& row = p.at("row");
+  const double D = p.at("hole_diameter_mm").get<double>();
+  h << "<p>A row of " << row.at("holes_mm").size() << " holes of " << fmt("%.3g", D) << " mm at a "
+    << fmt("%.4g", row.at("period_mm").get<double>()) << " mm period, scanned sliding over "
+    << row.at("positions").get<int>() << " positions until each has crossed the contact: the full contact "
+    << "differs from the sum of the holes' single-hole signals (the paper's linear prediction) by at most "
+    << pct(row.at("superposition_rel_diff_z").get<double>()) << " (ςz) and "
+    << pct(row.at("superposition_rel_diff_x").get<double>()) << " (ςx) of the largest signal. Its curves "
+    << "wiggle with a period of a few tenths of a millimetre: the holes are resolved, and the rim's pressure "
+    << "concentration falls between the track's nodes (mesh "
+    << fmt("%.3g", row.at("track_mesh_h_mm").get<double>())
+    << " mm; about ±10 % of a single hole's peak, docs/contact.md); both sides of the comparison carry them.";
+  // The smallest spacing from which every larger one holds within 5 % (the larger of ςz and ςx), per case.
+  for (const char* c : {"static", "sliding"}) {
+    std::vector<std::pair<double, double>> worst;  // spacing, larger of the two components
+    for (const nlohmann::json& q : p.at("pairs"))
+      if (q.at("case") == c)
+        worst.push_back({q.at("spacing_mm").get<double>(),
+                         std::max(q.at("rel_diff_z").get<double>(), q.at("rel_diff_x").get<double>())});
+    if (worst.empty()) continue;
+    std::sort(worst.begin(), worst.end());
+    size_t from = worst.size();
+    while (from > 0 && worst[from - 1].second <= 0.05) --from;
+    const auto at = [&](size_t i) {
+      return pct(worst[i].second) + " at " + fmt("%.4g", worst[i].first) + " mm (" +
+             fmt("%.2g", worst[i].first / D) + " diameters)";
+    };
+    h << " Two holes, " << c << ": ";
+    if (from == worst.size())
+      h << "superposition misses 5 % at every spacing computed, " << at(0) << " to " << at(worst.size() - 1)
+        << ".";
+    else if (from == 0)
+      h << "within 5 % at every spacing computed, " << at(0) << " to " << at(worst.size() - 1) << ".";
+    else
+      h << "within 5 % from " << fmt("%.4g", worst[from].first) << " mm on, " << at(0) << ".";
+  }
+  h << "</p>\n";
+  const nlohmann::json& det = p.at("detection");
+  const nlohmann::json& noise = det.at("noise");
+  h << "<p>Detection of a hole at a known place (the matched filter) under the paper's noise, "
+    << fmt("%g", noise.at("sigma_z_kPa").get<double>()) << " kPa on ςz and "
+    << fmt("%g", noise.at("sigma_x_kPa").get<double>()) << " kPa on ςx per sample and passage, samples "
+    << fmt("%.3g", noise.at("sample_mm").get<double>()) << " mm apart, at a false-alarm rate of "
+    << pct(det.at("p_fa").get<double>()) << " and a detection rate of " << pct(det.at("p_d").get<double>())
+    << " (required SNR " << fmt("%.3f", det.at("required_snr").get<double>())
+    << "): the smallest hole detected, the bulge's ladder from " << fmt("%.3g", D) << " mm down to an eighth "
+    << "of it.</p>\n<table><tr><th>case</th><th>passages N</th><th>every sensor</th><th>the best sensor "
+       "alone</th></tr>\n";
+  for (const nlohmann::json& d : p.at("detection_map"))
+    h << "<tr><td>" << d.at("case").get<std::string>() << "</td><td>" << d.at("passages").get<int>()
+      << "</td><td>" << mm(d.at("smallest_detected_array")) << "</td><td>"
+      << mm(d.at("smallest_detected_best_sensor")) << "</td></tr>\n";
+  h << "</table>\n";
+  for (const char* c : {"static", "sliding"})
+    if (det.at("cases").contains(c)) {
+      const nlohmann::json& m = det.at("cases").at(c).at("monte_carlo");
+      h << "<p>Monte Carlo check, " << c << " (" << m.at("trials").get<int>()
+        << " draws at the threshold hole): "
+        << "false alarms " << fmt("%.4f", m.at("false_alarm").get<double>()) << " ± "
+        << fmt("%.4f", m.at("false_alarm_sigma").get<double>()) << ", detections "
+        << fmt("%.3f", m.at("detection").get<double>()) << " ± "
+        << fmt("%.3f", m.at("detection_sigma").get<double>()) << ".</p>\n";
+    }
+  if (p.contains("inversion")) {
+    const nlohmann::json& inv = p.at("inversion");
+    const nlohmann::json& ms = inv.at("multi_sensor");
+    int false_lo = 1 << 30, false_hi = 0, missed_lo = 1 << 30, missed_hi = 0;
+    for (const nlohmann::json& n : inv.at("naive_single_sensor")) {
+      false_lo = std::min(false_lo, n.at("false_features").get<int>());
+      false_hi = std::max(false_hi, n.at("false_features").get<int>());
+      missed_lo = std::min(missed_lo, n.at("missed").get<int>());
+      missed_hi = std::max(missed_hi, n.at("missed").get<int>());
+    }
+    const auto range = [](int a, int b) {
+      return a == b ? std::to_string(a) : std::to_string(a) + "–" + std::to_string(b);
+    };
+    h << "<p>Inversion: the row's sliding signals with that noise (N = 14, one seeded draw) against a "
+         "dictionary "
+      << "of the hole's responses on its own mesh (" << inv.at("dictionary").at("virtual_sensors").get<int>()
+      << " virtual sensors, " << inv.at("dictionary").at("dofs").get<int>()
+      << " DOFs). Every sensor together, "
+      << "the contact's offset fitted (" << fmt("%.2g", inv.at("contact_offset_mm").get<double>())
+      << " mm): " << ms.at("found").get<int>() << " of " << row.at("holes_mm").size() << " holes found, rms "
+      << "position error " << fmt("%.2g", ms.at("rms_error_mm").get<double>()) << " mm (largest "
+      << fmt("%.2g", ms.at("largest_error_mm").get<double>()) << " mm), "
+      << ms.at("false_features").get<int>()
+      << " false features. Each sensor alone (the paper's naive inversion): " << range(missed_lo, missed_hi)
+      << " missed and " << range(false_lo, false_hi)
+      << " false features per sensor. A feature counts for the "
+      << "nearest hole within half the period; a second one for the same hole, or one near none, is "
+         "false.</p>\n";
+  }
+  const nlohmann::json& w = p.at("wall_s");
+  double scans = 0;
+  for (const char* k : {"perception_row", "perception_pairs", "perception_detection"})
+    if (w.contains(k)) scans += w.at(k).get<double>();
+  h << "<p>Cost: " << fmt("%.1f", scans) << " s for the scans and the ladder on the chain's factorization";
+  if (w.contains("perception_inversion"))
+    h << ", " << fmt("%.1f", w.at("perception_inversion").get<double>())
+      << " s for the inversion with its dictionary";
+  h << ". Files: <a href=\"perception/summary.json\">perception/summary.json</a> and its CSVs.</p>\n";
+}
+
 // Every file a report writes but its figures and the defect frames, in the page's order.
 constexpr const char* kReportFiles[] = {"mesh/mesh.vtu",
                                         "mesh/boundary.vtu",
@@ -473,6 +614,12 @@ constexpr const char* kReportFiles[] = {"mesh/mesh.vtu",
                                         "crosscheck/attribution.csv",
                                         "crosscheck/hole_budget.csv",
                                         "crosscheck/hole_budget_signals.csv",
+                                        "perception/row.csv",
+                                        "perception/pairs.csv",
+                                        "perception/detection.csv",
+                                        "perception/detection_map.csv",
+                                        "perception/features.csv",
+                                        "perception/summary.json",
                                         "study/chain_study.csv",
                                         "study/chain_study.json",
                                         "report.json"};
@@ -497,7 +644,8 @@ void remove_earlier_report(const std::string& dir) {
       if (e.path().extension() == ".png") figures.push_back(e.path());
   for (const fs::path& f : figures) fs::remove(f);
   std::error_code not_empty;  // a folder holding anything else stays
-  for (const char* sub : {"mesh", "green", "kfit", "contact", "defect", "crosscheck", "study", "figures"})
+  for (const char* sub :
+       {"mesh", "green", "kfit", "contact", "defect", "crosscheck", "perception", "study", "figures"})
     fs::remove(dir + "/" + sub, not_empty);
 }
 
@@ -518,6 +666,7 @@ void write_index(const std::string& dir, const Scene& scene, const ReportResult&
   hole_budget(h, scene, in);
   finite_deformation(h, in);
   crosscheck(h, scene, in);
+  perception(h, in);
   figures(h, dir, scene, in);
   files(h, dir);
   write_text_atomic(dir + "/index.html", h.str());

@@ -93,6 +93,11 @@ void ReportWriter::hole_budget(const pipeline::HoleBudget& b, const validation::
   write_hole_budget(scene_, b, x, out_ + "/crosscheck");
 }
 
+void ReportWriter::perception(const pipeline::ReportPerception& p, const nlohmann::json& entry) {
+  std::filesystem::create_directories(out_ + "/perception");
+  write_perception(scene_, p, entry, out_ + "/perception");
+}
+
 void ReportWriter::chain_done() { figures_.go(); }
 
 void ReportWriter::chain_study(const std::vector<pipeline::ChainLevel>& levels, const nlohmann::json& study) {

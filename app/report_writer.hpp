@@ -24,6 +24,7 @@ class ReportWriter : public pipeline::ReportSink {
   void crosscheck(const validation::Crosscheck& x) override;
   void finite_deformation(const nlohmann::json& entry) override;
   void hole_budget(const pipeline::HoleBudget& b, const validation::Crosscheck& x) override;
+  void perception(const pipeline::ReportPerception& p, const nlohmann::json& entry) override;
   void chain_done() override;
   void chain_study(const std::vector<pipeline::ChainLevel>& levels, const nlohmann::json& study) override;
   void k_sweep(const validation::KTargetAnswer& a) override;

@@ -13,6 +13,7 @@
 #include "skinfem/pipeline/kfit.hpp"
 #include "skinfem/pipeline/mesh_summary.hpp"
 #include "skinfem/pipeline/post_design.hpp"
+#include "skinfem/pipeline/report_perception.hpp"
 #include "skinfem/pipeline/sensor_greens.hpp"
 #include "skinfem/validation/crosscheck.hpp"
 
@@ -40,6 +41,10 @@ void write_defect(const Scene& scene, const pipeline::DefectRun& run, nlohmann::
 // The hole-signal budget's tables, in the crosscheck's folder (app/write_hole_budget.cpp).
 void write_hole_budget(const Scene& scene, const pipeline::HoleBudget& b, const validation::Crosscheck& x,
                        const std::string& out_dir);
+// The report's perception section: row.csv, pairs.csv, detection.csv, detection_map.csv, features.csv and
+// summary.json (entry) (app/write_perception.cpp).
+void write_perception(const Scene& scene, const pipeline::ReportPerception& p, const nlohmann::json& entry,
+                      const std::string& out_dir);
 // post_design.csv, and the entry's answer printed (app/write_post_design.cpp).
 void write_post_design(const pipeline::PostDesign& p, const nlohmann::json& entry,
                        const std::string& out_dir);

@@ -22,14 +22,34 @@ void throw_unless_contact(const Scene& scene) {
     throw SceneError(scene.source_path + ": contact: missing; this command needs a \"contact\" section");
 }
 
+// The segment from → to run on along its line, each end to where a hole of the sweep's leaves the zone (if
+// that is farther).
+std::pair<Vec2, Vec2> line_through_zone(const Scene& scene, const Vec2& from, const Vec2& to) {
+  const Eigen::Vector2d a(from[0], from[1]), b(to[0], to[1]);
+  const double length = (b - a).norm();
+  if (!(length > 0)) return {from, to};
+  const Eigen::Vector2d d = (b - a) / length, c(contact_center(scene)[0], contact_center(scene)[1]);
+  const double reach = contact_zone_radius(scene) + 0.5 * scene.contact->sweep->hole_diameter;
+  const double t = (c - a).dot(d), off = (c - a - t * d).norm();
+  if (off >= reach) return {from, to};
+  const double half = std::sqrt(reach * reach - off * off);
+  const Eigen::Vector2d p = a + std::min(0.0, t - half) * d, q = a + std::max(length, t + half) * d;
+  return {Vec2{p.x(), p.y()}, Vec2{q.x(), q.y()}};
+}
+
 // The zone and the faces a swept hole reaches, found once, on the skin's mesh.
 void find_zone(const Scene& scene, const TetMesh& mesh, ContactSkin& cs) {
   const auto& sweep = scene.contact->sweep;
   const bool watch = sweep && (cs.hole_path == HolePath::always ||
                                (cs.hole_path == HolePath::as_scene && sweep->model == HoleModel::resolved));
   cs.zone = contact::mortar_zone(mesh, contact_center(scene), contact_zone_radius(scene));
-  if (watch)
-    cs.watch_faces = contact::watch_path(mesh, *cs.zone, sweep->from, sweep->to, 0.5 * sweep->hole_diameter);
+  if (watch) {
+    Vec2 from = sweep->from, to = sweep->to;
+    // The report's path (always) runs on along the sweep's line to the zone's edge: the perception
+    // section's holes enter and leave the zone there (pipeline/report_perception.hpp).
+    if (cs.hole_path == HolePath::always) std::tie(from, to) = line_through_zone(scene, from, to);
+    cs.watch_faces = contact::watch_path(mesh, *cs.zone, from, to, 0.5 * sweep->hole_diameter);
+  }
   // A textured plate's holes are resolved: every track through the zone is watched.
   if (const auto& t = scene.contact->texture; t && cs.hole_path != HolePath::none) {
     for (const HoleTrack& k : hole_tracks(t->holes, scene.contact->direction, *scene.contact->scan,

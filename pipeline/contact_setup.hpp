@@ -41,8 +41,9 @@ struct ContactSetup {
 // Whether to condense, with a contact.sweep, the compliance of the nodes its hole can reach, so that the
 // sweep can cut the hats on the exact disc (contact/holes/cut.hpp; one more solve per such node): never, when
 // the scene's sweep is resolved (HoleModel::resolved), or always (the report: its hole budget sweeps the
-// interface hypotheses resolved). A contact.texture's tracks are watched unless never (its holes are always
-// resolved, contact/holes/scan.hpp).
+// interface hypotheses resolved, and its perception section scans holes that enter and leave the zone: the
+// path runs on along the sweep's line to the zone's edges). A contact.texture's tracks are watched unless
+// never (its holes are always resolved, contact/holes/scan.hpp).
 enum class HolePath { none, as_scene, always };
 
 // A skin of this scene meshed and factored for its contact (its half where contact_mesh_part says so):

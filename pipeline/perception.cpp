@@ -14,8 +14,8 @@ namespace skinfem::pipeline {
 namespace {
 // The ladder: the scene's diameter, then 2^(−k/4) of it down to an eighth.
 constexpr int kRungs = 13;
+}  // namespace
 
-// The smallest diameter whose SNR reaches `need`, log-linear between the rungs that bracket it.
 std::optional<double> smallest_detected(const std::vector<double>& D, const std::vector<double>& snr,
                                         double need) {
   if (snr[0] < need || snr.back() >= need) return std::nullopt;
@@ -27,7 +27,6 @@ std::optional<double> smallest_detected(const std::vector<double>& D, const std:
     }
   return std::nullopt;  // not monotone: no single answer
 }
-}  // namespace
 
 PerceptionRun perception_run(const Scene& scene, std::shared_ptr<const ContactSetup> setup,
                              const PerceptionOptions& o) {

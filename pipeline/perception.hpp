@@ -53,6 +53,12 @@ struct PerceptionRun {
   Timings wall;
 };
 
+// The smallest diameter of the ladder D (decreasing) whose SNR reaches `need`, log-linear between the rungs
+// that bracket it; none when even the smallest rung reaches it, the largest does not, or the SNR is not
+// monotone there.
+std::optional<double> smallest_detected(const std::vector<double>& D, const std::vector<double>& snr,
+                                        double need);
+
 // Throws SceneError without a contact.sweep, and std::invalid_argument for options out of range.
 PerceptionRun perception_run(const Scene& scene, std::shared_ptr<const ContactSetup> setup,
                              const PerceptionOptions& options);

@@ -35,12 +35,14 @@ class Chain {
   void green();         // the green stage, the mesh's summary beside it; starts kfit and the k sweep
   void contact();       // contact, defect sweep, crosscheck, hole budget (a scene with a contact), and
                         // with a neo-Hookean scene its finite deformation
+  void perception();    // the perception section; then the chain's set-up goes, before the dictionary's
   void error_levels();  // kfit's and the k sweep's ends, then the coarser levels of the error bars
   void post_design();   // or, in a fast report, what it left out
   ReportResult finish();
 
  private:
   void finish_kfit();
+  void release_chain();  // this level's values for the error bars, then the chain's set-up and adjoints
   void finish_k_sweep(const std::vector<validation::KSweepPoint>& mesh_rows);
 
   const Scene& scene_;
@@ -255,6 +257,41 @@ void Chain::contact() {
   out_.wall["hole_budget"] += clock.seconds();
 }
 
+void Chain::release_chain() {
+  if (!adjoints_) return;
+  if (!options_.error_scales.empty()) {
+    const BlasThreads one(1);
+    out_.levels.push_back(chain_values(scene_, *adjoints_, contact_.get()));
+  }
+  // The defect run holds the contact set-up too (its solver, its condensed blocks): without it, the paper's
+  // skin with posts kept 1.65 GB resident through the levels and peaked there, 350 MB above its own chain.
+  if (defect_) defect_->setup.reset();
+  contact_.reset();
+  adjoints_.reset();
+  skin_.reset();
+  factored_.skin.reset();  // without a contact it was never handed on
+  release_freed_memory();
+}
+
+void Chain::perception() {
+  if (fast_ || !scene_.contact) return;
+  if (const std::string why = perception_unavailable(scene_); !why.empty()) {
+    report_["perception"] = {{"skipped", why}};
+    return;
+  }
+  Stopwatch clock;
+  ReportPerception p = report_perception_scans(scene_, contact_);
+  out_.wall["perception_scans"] = clock.seconds();
+  // The inversion's dictionary has its own factorization: the chain's set-up goes first.
+  release_chain();
+  clock = Stopwatch();
+  report_perception_inversion(scene_, p);
+  out_.wall["perception_inversion"] = clock.seconds();
+  nlohmann::json entry = report_perception_json(scene_, p);
+  sink_.perception(p, entry);
+  report_["perception"] = std::move(entry);
+}
+
 // The chain's headline quantities on this mesh and on coarser ones (every mesh size scaled), Richardson
 // through the three finest. The coarse levels come after this level's memory is released.
 void Chain::error_levels() {
@@ -266,15 +303,7 @@ void Chain::error_levels() {
   const Stopwatch clock;
   const BlasThreads one(1);
   std::vector<ChainLevel>& levels = out_.levels;
-  levels.push_back(chain_values(scene_, *adjoints_, contact_.get()));
-  // The defect run holds the contact set-up too (its solver, its condensed blocks): without it, the paper's
-  // skin with posts kept 1.65 GB resident through the levels and peaked there, 350 MB above its own chain.
-  if (defect_) defect_->setup.reset();
-  contact_.reset();
-  adjoints_.reset();
-  skin_.reset();
-  factored_.skin.reset();  // without a contact it was never handed on
-  release_freed_memory();
+  release_chain();
   std::vector<double> scales = scales_given;
   std::sort(scales.begin(), scales.end(), std::greater<>());
   for (size_t i = 0; i < scales.size(); ++i) {
@@ -325,6 +354,7 @@ void Chain::post_design() {
   std::vector<std::string> left{"error bars (the coarser levels)"};
   if (scene_.contact && scene_.contact->sweep)
     left.insert(left.end(), {"the hole-signal budget of hypotheses", "the defect sweep's VTK frames"});
+  if (scene_.contact && scene_.contact->sweep) left.push_back("the perception section");
   left.push_back("the post design sweep");
   if (finite_) left.push_back("the finite deformation (material.model neo_hookean)");
   left.push_back("the k sweep (which protocol reading gives the paper's k)");
@@ -366,7 +396,10 @@ ReportResult report_run(const Scene& scene, const ReportOptions& options, Report
   Chain chain(linear, finite ? &scene : nullptr, options, sink);
   chain.factor();
   chain.green();
-  if (scene.contact) chain.contact();
+  if (scene.contact) {
+    chain.contact();
+    chain.perception();
+  }
   chain.error_levels();
   chain.post_design();
   return chain.finish();

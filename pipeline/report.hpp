@@ -26,6 +26,7 @@
 #include "skinfem/pipeline/kfit.hpp"
 #include "skinfem/pipeline/mesh_summary.hpp"
 #include "skinfem/pipeline/post_design.hpp"
+#include "skinfem/pipeline/report_perception.hpp"
 #include "skinfem/pipeline/sensor_greens.hpp"
 #include "skinfem/validation/crosscheck.hpp"
 #include "skinfem/validation/k_sweep.hpp"
@@ -60,6 +61,9 @@ class ReportSink {
   // A neo-Hookean scene's finite deformation (report.json's finite_deformation), before hole_budget().
   virtual void finite_deformation(const nlohmann::json& /*entry*/) {}
   virtual void hole_budget(const HoleBudget&, const validation::Crosscheck&) {}
+  // The perception section (pipeline/report_perception.hpp; entry: report.json's "perception"), before
+  // chain_done(); not in a fast report, nor where perception_unavailable says why not.
+  virtual void perception(const ReportPerception&, const nlohmann::json& /*entry*/) {}
   // Every output of the chain so far is final; the error bars' levels come next.
   virtual void chain_done() {}
   virtual void chain_study(const std::vector<ChainLevel>&, const nlohmann::json& /*study*/) {}

@@ -56,7 +56,6 @@ std::vector<double> scan_positions(const Scan& scan) {
   return u;
 }
 
-namespace {
 void check_texture_clearance(const ContactSetup& setup, const contact::ContactResult& r,
                              const std::vector<Hole>& holes, double u) {
   if (holes.empty()) return;
@@ -73,7 +72,6 @@ void check_texture_clearance(const ContactSetup& setup, const contact::ContactRe
       to_string(r.mode));
   throw SceneError(line);
 }
-}  // namespace
 
 ScanRun scan_run(const Scene& scene, std::shared_ptr<const ContactSetup> shared, bool superpose,
                  DefectFrames keep) {

@@ -36,6 +36,10 @@ struct ScanRun {
 Scene scanned_scene(const Scene& scene);
 // Throws SceneError, naming the command's need, when the scene has no contact.texture.
 void require_texture(const Scene& scene);
+// Throws SceneError when the skin reaches the bottom of one of `holes` (those cutting the contact r at scan
+// position u, mm): the contact is solved for holes whose bottom it does not touch.
+void check_texture_clearance(const ContactSetup& setup, const contact::ContactResult& r,
+                             const std::vector<Hole>& holes, double u);
 // The scan's positions u (mm).
 std::vector<double> scan_positions(const Scan& scan);
 // Throws SceneError when the skin reaches a hole's bottom at some position. superpose: also the linear

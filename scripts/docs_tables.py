@@ -26,7 +26,8 @@ import sys
 SOURCE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # The stages in the order the report runs them (report_run), for a table whose rows do not move between runs.
 STAGE_ORDER = ["mesh", "assemble", "factor", "green_adjoints", "green_profiles", "condense", "contact",
-               "defect", "kfit_wait", "crosscheck", "hole_budget", "k_sweep_wait", "error_levels",
+               "defect", "kfit_wait", "crosscheck", "hole_budget", "perception_scans", "perception_inversion",
+               "k_sweep_wait", "error_levels",
                "post_design_wait", "figures"]
 
 

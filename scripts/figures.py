@@ -28,6 +28,13 @@
 #                            p_fe_coupled_kPa,q_fe_coupled_kPa[,p_meridian_frictionless_kPa]; an empty cell
 #                            (not x_mm) = no value there.
 #   study/chain_study.csv    stage,level,dofs,seconds,error (error relative, > 0; seconds > 0). Optional.
+#   perception/row.csv       u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa,superposed_z_kPa,superposed_x_kPa
+#                            [,noisy_z_kPa,noisy_x_kPa]; perception/pairs.csv case,spacing_mm,rel_diff_z,
+#                            rel_diff_x; perception/detection.csv case,diameter_mm,array_snr,best_sensor_snr;
+#                            perception/detection_map.csv case,passages[,array_mm,best_sensor_mm] (empty:
+#                            outside the ladder); perception/features.csv source,sensor,position_mm,diameter_mm
+#                            (source truth, multi or naive); perception/summary.json (objects "row",
+#                            "detection", "inversion"). Optional: the report's perception section.
 #   Sensors are numbered 1, 2, ...; extra columns are ignored.
 #
 # Outputs (DIR/figures/, 120 dpi), each written only if all its inputs exist:
@@ -57,6 +64,14 @@
 #                            "skipped" line): the contact zone against the tangential load.
 #   pareto.png               study/chain_study.csv (the report's error levels, or skinfem study --chain --out
 #                            DIR/study): error vs seconds (log-log), one series per stage, labelled by DOFs.
+#   perception_scan.png      row.csv: the row's ς_z (top) and ς_x (bottom) per sensor against u, the full
+#                            contact (left) against the superposition (right), on shared y scales.
+#   perception_superposition.png  pairs.csv: max |ς − Σ ς_k| / max |ς| against the spacing, per case and
+#                            component, the row's at its period, the 5 % line.
+#   perception_detection.png detection.csv, detection_map.csv: SNR against the diameter (log-log) with the
+#                            required SNR, and the smallest hole detected against N.
+#   perception_inversion.png row.csv, features.csv: the noisy ς_z inverted, then the features found by every
+#                            sensor together and by each alone against the true holes (dotted).
 # Each PNG is written to a hidden temporary name in DIR/figures and renamed into place. A figure whose inputs
 # are missing prints `figures: skipped <name>.png: missing <file>`. The PNGs this run selects (all, without
 # --only or --except) are deleted first, so DIR/figures never keeps one from an earlier run that this run
@@ -718,6 +733,179 @@ def post_design(d):
     return fig
 
 
+def read_perception_summary(d):
+    path = os.path.join(d, "perception/summary.json")
+    try:
+        with open(path) as f:
+            obj = json.load(f)
+    except (OSError, UnicodeDecodeError, ValueError) as e:
+        raise InputError(f"{path}: {e}") from None
+    if not isinstance(obj, dict) or not isinstance(obj.get("row"), dict):
+        raise InputError(f"{path}: key 'row' is missing or not an object")
+    return obj
+
+
+def read_row(d):
+    return read_csv(os.path.join(d, "perception/row.csv"),
+                    {"u_mm": number, "sensor": sensor_number, "varsigma_z_kPa": number, "varsigma_x_kPa": number,
+                     "superposed_z_kPa": number, "superposed_x_kPa": number},
+                    optional=("noisy_z_kPa", "noisy_x_kPa"))
+
+
+def plain_log_ticks(axis):
+    """Ticks of a log axis written as plain numbers (0.1, 0.2, 0.5, 1, 2, 5, ...)."""
+    axis.set_major_locator(matplotlib.ticker.LogLocator(base=10, subs=(1, 2, 5)))
+    axis.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda v, _: f"{v:g}"))
+    axis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+
+
+def perception_scan(d):
+    t = read_row(d)
+    row = read_perception_summary(d)["row"]
+    sensors = sorted(set(t["sensor"].tolist()))
+    fig, axes = plt.subplots(2, 2, figsize=(15, 9), sharex=True, squeeze=False)
+    for r, comp in enumerate(("z", "x")):
+        for c, (col, what) in enumerate(((f"varsigma_{comp}_kPa", "full contact, every hole in the zone"),
+                                         (f"superposed_{comp}_kPa", "superposition Σ_k ς_k of single holes"))):
+            ax = axes[r, c]
+            for s in sensors:
+                ax.plot(*series(t, t["sensor"] == s, "u_mm", col), color=sensor_color(s), lw=1.2, label=f"#{s}")
+            ax.set_title(f"ς_{comp}: {what}")
+            ax.set_ylabel(f"ς_{comp} (kPa)")
+            ax.margins(y=0.08)
+        low = min(axes[r, 0].get_ylim()[0], axes[r, 1].get_ylim()[0])
+        high = max(axes[r, 0].get_ylim()[1], axes[r, 1].get_ylim()[1])
+        for ax in axes[r]:
+            ax.set_ylim(low, high)
+    for ax in axes[1]:
+        ax.set_xlabel("plate displacement u (mm)")
+    holes = row.get("holes_mm", [])
+    fig.legend(*axes[0, 0].get_legend_handles_labels(), loc="center right", title="sensor")
+    fig.suptitle(f"A row of {len(holes)} holes at a {row.get('period_mm', 0):.3g} mm period scanned across the "
+                 f"contact, sliding: FE (left) against the paper's linear prediction (right)\nlargest "
+                 f"difference {100 * row.get('superposition_rel_diff_z', 0):.2g} % (ς_z) and "
+                 f"{100 * row.get('superposition_rel_diff_x', 0):.2g} % (ς_x) of the largest signal")
+    inch_margins(fig, left=0.9, right=1.3, bottom=0.6, top=0.9, wspace=0.25, hspace=0.3)
+    return fig
+
+
+def perception_superposition(d):
+    t = read_csv(os.path.join(d, "perception/pairs.csv"),
+                 {"case": one_of(*CASES), "spacing_mm": positive, "rel_diff_z": number, "rel_diff_x": number})
+    summary = read_perception_summary(d)
+    diameter = summary.get("hole_diameter_mm", 0)
+    fig, ax = plt.subplots(figsize=(9, 5.5))
+    for case, color in (("static", "tab:blue"), ("sliding", "tab:red")):
+        m = t["case"] == case
+        for comp, ls, mk in (("z", "-", "o"), ("x", "--", "s")):
+            if m.any():
+                x, y = series(t, m, "spacing_mm", f"rel_diff_{comp}")
+                ax.plot(x, 100 * y, ls=ls, marker=mk, color=color, label=f"two holes, {case}, ς_{comp}")
+    row = summary["row"]
+    for comp, mk in (("z", "*"), ("x", "P")):
+        v = row.get(f"superposition_rel_diff_{comp}")
+        if isinstance(v, (int, float)):
+            ax.plot([row.get("period_mm", 0)], [100 * v], mk, ms=13, color="k",
+                    label=f"the row at its period, sliding, ς_{comp}")
+    ax.axhline(5, color="0.3", ls=":", lw=1.5, label="5 % of the largest signal")
+    ax.set_yscale("log")
+    plain_log_ticks(ax.yaxis)
+    ax.set_xlabel(f"spacing of the holes' centres (mm); hole diameter {diameter:.3g} mm")
+    ax.set_ylabel("max |ς − Σ_k ς_k| / max |ς|  (%)")
+    ax.set_title("Where superposition holds: two holes against their spacing")
+    ax.legend(loc="upper right", fontsize=8)
+    fig.tight_layout()
+    return fig
+
+
+def perception_detection(d):
+    t = read_csv(os.path.join(d, "perception/detection.csv"),
+                 {"case": one_of(*CASES), "diameter_mm": positive, "array_snr": number, "best_sensor_snr": number})
+    mp = read_csv(os.path.join(d, "perception/detection_map.csv"), {"case": one_of(*CASES), "passages": integer},
+                  optional=("array_mm", "best_sensor_mm"))
+    det = read_perception_summary(d).get("detection", {})
+    need = det.get("required_snr", 0)
+    noise = det.get("noise", {})
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(14, 5.5))
+    colors = {"static": "tab:blue", "sliding": "tab:red"}
+    for case in CASES:
+        m = t["case"] == case
+        if not m.any():
+            continue
+        ax.loglog(*series(t, m, "diameter_mm", "array_snr"), "-o", ms=4, color=colors[case],
+                  label=f"{case}, the array")
+        ax.loglog(*series(t, m, "diameter_mm", "best_sensor_snr"), "--s", ms=4, color=colors[case],
+                  label=f"{case}, the best sensor")
+        n = mp["case"] == case
+        for col, ls, what in (("array_mm", "-o", "the array"), ("best_sensor_mm", "--s", "the best sensor")):
+            x, y = series(mp, n, "passages", col)
+            ok = np.isfinite(y)
+            if ok.any():
+                bx.semilogx(x[ok], y[ok], ls, color=colors[case], label=f"{case}, {what}")
+    if need:
+        ax.axhline(need, color="0.3", ls=":",
+                   label=f"required SNR {need:.3g} (p_fa {det.get('p_fa')}, p_d {det.get('p_d')})")
+    plain_log_ticks(ax.xaxis)
+    plain_log_ticks(ax.yaxis)
+    ax.set_xlabel("hole diameter (mm)")
+    ax.set_ylabel("matched-filter SNR")
+    ax.set_title(f"SNR against the hole's diameter; noise {noise.get('sigma_z_kPa')} / "
+                 f"{noise.get('sigma_x_kPa')} kPa, N = {noise.get('passages')}")
+    ax.legend(fontsize=8)
+    plain_log_ticks(bx.xaxis)
+    bx.set_xlabel("passages N")
+    bx.set_ylabel("smallest hole detected (mm)")
+    bx.set_title("Smallest hole detected against N (outside the ladder: no point)")
+    if bx.lines:
+        bx.legend(fontsize=8)
+    else:
+        no_data(bx, "every N falls outside the ladder")
+    fig.tight_layout()
+    return fig
+
+
+def perception_inversion(d):
+    t = read_row(d)
+    f = read_csv(os.path.join(d, "perception/features.csv"),
+                 {"source": one_of("truth", "multi", "naive"), "sensor": integer, "position_mm": number,
+                  "diameter_mm": number}, optional=("snr",))
+    inv = read_perception_summary(d).get("inversion", {})
+    sensors = sorted(set(t["sensor"].tolist()))
+    # The three sensors with the largest ς_z: ten noisy curves hide one another.
+    loudest = sorted(sorted(sensors, key=lambda s: -np.abs(t["varsigma_z_kPa"][t["sensor"] == s]).max())[:3])
+    fig, (ax, bx) = plt.subplots(2, 1, figsize=(13, 9.5), gridspec_kw={"height_ratios": [3, 2]})
+    if "noisy_z_kPa" in t and np.isfinite(t["noisy_z_kPa"]).any():
+        for s in loudest:
+            m = t["sensor"] == s
+            ax.plot(*series(t, m, "u_mm", "noisy_z_kPa"), color=sensor_color(s), lw=0.6, alpha=0.6)
+            ax.plot(*series(t, m, "u_mm", "varsigma_z_kPa"), color=sensor_color(s), lw=1.6, label=f"#{s}")
+        ax.legend(loc="center left", bbox_to_anchor=(1.0, 0.5), title="sensor")
+    else:
+        no_data(ax, "no noisy signals")
+    ax.set_xlabel("plate displacement u (mm)")
+    ax.set_ylabel("ς_z (kPa)")
+    ax.set_title(f"The signals inverted (the {len(loudest)} loudest of {len(sensors)} sensors shown): the row's FE "
+                 f"scan (thick) with the paper's noise (thin)")
+    for x in f["position_mm"][f["source"] == "truth"]:
+        bx.axvline(x, color="0.5", ls=":", lw=1.2)
+    m = f["source"] == "multi"
+    bx.plot(f["position_mm"][m], np.zeros(m.sum()), "kD", ms=9, label="every sensor, the offset fitted")
+    for s in sensors:
+        m = (f["source"] == "naive") & (f["sensor"] == s)
+        bx.plot(f["position_mm"][m], np.full(m.sum(), s), "o", color=sensor_color(s), ms=6)
+    bx.set_yticks([0] + sensors)
+    bx.set_yticklabels(["all"] + [f"#{s} alone" for s in sensors])
+    bx.set_ylim(len(sensors) + 0.7, -0.7)
+    bx.set_xlabel("feature position on the plate at u = 0 (mm); dotted: the true holes")
+    ms = inv.get("multi_sensor", {})
+    bx.set_title(f"Features found: every sensor together, rms error {ms.get('rms_error_mm', float('nan')):.2g} mm, "
+                 f"{ms.get('missed', '?')} missed, {ms.get('false_features', '?')} false; below, the paper's "
+                 f"naive inversion, one sensor at a time")
+    bx.legend(loc="upper right", fontsize=8)
+    fig.tight_layout()
+    return fig
+
+
 FIGURES = [
     ("fig1_calibration.png", ("green/green.csv", "kfit/kfit.json"), fig1_calibration),
     ("fig2_static_sliding.png", ("crosscheck/readings.csv",), fig2_static_sliding),
@@ -728,6 +916,12 @@ FIGURES = [
     ("k_sweep.png", ("kfit/k_sweep.csv", "kfit/kfit.json"), k_sweep),
     ("pareto.png", ("study/chain_study.csv",), pareto),
     ("post_design.png", ("green/post_design.csv",), post_design),
+    ("perception_scan.png", ("perception/row.csv", "perception/summary.json"), perception_scan),
+    ("perception_superposition.png", ("perception/pairs.csv", "perception/summary.json"), perception_superposition),
+    ("perception_detection.png", ("perception/detection.csv", "perception/detection_map.csv",
+                                  "perception/summary.json"), perception_detection),
+    ("perception_inversion.png", ("perception/row.csv", "perception/features.csv", "perception/summary.json"),
+     perception_inversion),
 ]
 
 

@@ -137,6 +137,33 @@ if rows and abs(float(rows[0]["g_zz_integral"]) - pd.get("post", {}).get("g_zz",
     bad.append("post_design.csv's post row is not report.json's")
 if rows and f"{float(rows[0]['g_zz_peak_per_mm2']):.4g}" not in pd.get("answer", ""): bad.append(f"post_design answer does not quote the post's peak: {pd.get('answer')}")
 if "green/post_design.csv" not in links or "What a post changes" not in html: bad.append("index.html lacks the post design")
+# The perception section: its files with their documented columns, linked from the page under its heading;
+# the row's superposition column is the sum over its holes of the single-hole signals (checked in
+# tests/pipeline/test_report_perception.cpp), so here: one row per position and sensor, the noisy columns
+# filled, every true hole listed, and the numbers on the page those of report.json.
+pr = r.get("perception", {})
+if "skipped" in pr or "row" not in pr: bad.append(f"report.json perception: {pr.get('skipped', 'missing')}")
+else:
+    heads = {"row.csv": "u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa,superposed_z_kPa,superposed_x_kPa,noisy_z_kPa,noisy_x_kPa",
+             "pairs.csv": "case,spacing_mm,rel_diff_z,rel_diff_x",
+             "detection.csv": "case,diameter_mm,array_snr,best_sensor_snr",
+             "detection_map.csv": "case,passages,array_mm,best_sensor_mm",
+             "features.csv": "source,sensor,position_mm,diameter_mm,amplitude,snr"}
+    for f, h in heads.items():
+        first = open(os.path.join(out, "perception", f)).readline().strip()
+        if first != h: bad.append(f"perception/{f} header {first!r}")
+        if f"perception/{f}" not in links: bad.append(f"index.html does not link perception/{f}")
+    rows = list(csv.DictReader(open(os.path.join(out, "perception", "row.csv"))))
+    if len(rows) != 3 * pr["row"]["positions"] or any(x["noisy_z_kPa"] == "" for x in rows):
+        bad.append(f"perception/row.csv: {len(rows)} rows for {pr['row']['positions']} positions x 3 sensors")
+    truth = [float(x["position_mm"]) for x in csv.DictReader(open(os.path.join(out, "perception", "features.csv")))
+             if x["source"] == "truth"]
+    if truth != pr["row"]["holes_mm"]: bad.append(f"features.csv truth {truth} against {pr['row']['holes_mm']}")
+    if "<h2>Perception" not in html: bad.append("index.html has no perception section")
+    ms = pr["inversion"]["multi_sensor"]
+    if f"{ms['found']} of {len(truth)} holes found" not in html: bad.append("the page does not quote the inversion")
+    for fig in ("perception_scan", "perception_superposition", "perception_detection", "perception_inversion"):
+        if f"figures/{fig}.png" not in links: bad.append(f"index.html does not show {fig}.png")
 # Inside the swept hole the frames measure the gap to the hole's bottom (0.5 mm deep by default): the skin
 # bulges a few um above the plate's face there, never down to the bottom, so every such gap is positive.
 import vtk
@@ -167,17 +194,18 @@ import json, os, sys
 full, fast = (json.load(open(os.path.join(d, "report.json"))) for d in sys.argv[1:3])
 html = open(os.path.join(sys.argv[2], "index.html"), encoding="utf-8").read()
 bad = []
-for key in ("error_bars", "hole_budget", "post_design", "chain_study", "k_paper"):
+for key in ("error_bars", "hole_budget", "post_design", "chain_study", "k_paper", "perception"):
     if key in fast: bad.append(f"--fast report.json has {key}")
 if any("effective_thickness_mm" in s for s in fast["kfit"]["sensors"]): bad.append("--fast fitted thicknesses")
 for f in ("crosscheck/hole_budget.csv", "green/post_design.csv", "study/chain_study.csv", "defect/defect.pvd",
-          "defect/frames", "kfit/k_sweep.csv", "figures/k_sweep.png"):
+          "defect/frames", "kfit/k_sweep.csv", "figures/k_sweep.png", "perception/summary.json",
+          "figures/perception_scan.png"):
     if os.path.exists(os.path.join(sys.argv[2], f)): bad.append(f"--fast wrote or left {f}")
     if f'href="{f}"' in html: bad.append(f"index.html links {f}")
 stale = [f for f in os.listdir(os.path.join(sys.argv[2], "figures")) if f.startswith(("budget_", "pareto", "post_design"))]
 if stale: bad.append(f"figures/ keeps {stale}")
 left = fast.get("fast", {}).get("left_out", "")
-if any(w not in left for w in ("error bars", "budget", "frames", "k sweep", "effective-thickness")):
+if any(w not in left for w in ("error bars", "budget", "frames", "k sweep", "effective-thickness", "perception")):
     bad.append(f"report.json fast.left_out = {left!r}")
 if "A fast report" not in html or left not in html: bad.append("index.html does not say what --fast left out")
 if f"fast: left out the {left}" not in open(sys.argv[3]).read(): bad.append("the terminal does not say it")
