@@ -7,7 +7,6 @@
 
 #include "skinfem/pipeline/progress.hpp"
 #include "skinfem/pipeline/scan.hpp"
-#include "skinfem/scene/random.hpp"
 
 namespace skinfem::pipeline {
 
@@ -222,64 +221,21 @@ ReportPerception report_perception_scans(const Scene& scene, std::shared_ptr<con
   return p;
 }
 
-Eigen::MatrixXd with_noise(const Eigen::MatrixXd& y, const validation::SensorNoise& noise,
-                           std::uint64_t seed) {
-  SplitMix64 rng{seed};
-  const double root = std::sqrt(static_cast<double>(noise.passages));
-  Eigen::MatrixXd out = y;
-  for (Eigen::Index i = 0; i < y.rows(); ++i)
-    for (Eigen::Index j = 0; j < y.cols(); ++j)
-      out(i, j) += (j % 2 ? noise.sigma_x_kPa : noise.sigma_z_kPa) / root * rng.normal();
-  return out;
-}
-
-InversionScore score_inversion(const std::vector<validation::Feature>& features,
-                               const std::vector<double>& truth, double reach) {
-  InversionScore s;
-  std::vector<double> best(truth.size(), 1e300);
-  for (const validation::Feature& f : features) {
-    int nearest = -1;
-    for (size_t k = 0; k < truth.size(); ++k)
-      if (std::abs(f.position_mm - truth[k]) < reach &&
-          (nearest < 0 || std::abs(f.position_mm - truth[k]) < std::abs(f.position_mm - truth[nearest])))
-        nearest = static_cast<int>(k);
-    if (nearest < 0) {
-      ++s.false_features;
-      continue;
-    }
-    // A hole's second feature is one too many: it counts as false, the nearer one as the hole's.
-    if (best[nearest] < 1e299) ++s.false_features;
-    best[nearest] = std::min(best[nearest], std::abs(f.position_mm - truth[nearest]));
-  }
-  double sum = 0;
-  for (double e : best) {
-    if (e > 1e299) {
-      ++s.missed;
-      continue;
-    }
-    ++s.found;
-    sum += e * e;
-    s.largest_error_mm = std::max(s.largest_error_mm, e);
-  }
-  if (s.found > 0) s.rms_error_mm = std::sqrt(sum / s.found);
-  return s;
-}
-
 void report_perception_inversion(const Scene& scene, ReportPerception& p) {
   const Stopwatch clock;
   validation::ScanSignals& sig = p.noisy;
   sig.u = p.row.u;
   for (const Vec2& x : scene.sensors.positions) sig.sensors.push_back(x[0]);
   InversionOptions o;
-  sig.y = with_noise(1e3 * p.row.varsigma, o.noise, kNoiseSeed);
+  sig.y = validation::with_noise(1e3 * p.row.varsigma, o.noise, kNoiseSeed);
   Scene bulge = scene;
   bulge.contact->sweep->model = HoleModel::bulge;
   p.inversion = inversion_run(bulge, sig, o);
   const double reach = 0.5 * p.period_mm;
-  p.multi_score = score_inversion(p.inversion->multi.features, p.row_holes_mm, reach);
+  p.multi_score = validation::score_inversion(p.inversion->multi.features, p.row_holes_mm, reach);
   p.naive_scores.clear();
   for (const validation::Inversion& n : p.inversion->naive)
-    p.naive_scores.push_back(score_inversion(n.features, p.row_holes_mm, reach));
+    p.naive_scores.push_back(validation::score_inversion(n.features, p.row_holes_mm, reach));
   p.wall["perception_inversion"] = clock.seconds();
 }
 
@@ -319,7 +275,7 @@ nlohmann::json report_perception_json(const Scene& scene, const ReportPerception
   }
   j["detection_map"] = map;
   if (p.inversion) {
-    const auto score = [](const InversionScore& s) {
+    const auto score = [](const validation::InversionScore& s) {
       return nlohmann::json{{"found", s.found},
                             {"missed", s.missed},
                             {"false_features", s.false_features},

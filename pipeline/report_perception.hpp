@@ -50,12 +50,6 @@ struct DetectionPoint {
   std::string array_outside, sensor_outside;
 };
 
-// One inversion against the truth: features matched to the nearest true hole within half the period.
-struct InversionScore {
-  int found = 0, missed = 0, false_features = 0;
-  double rms_error_mm = 0, largest_error_mm = 0;  // over the matched holes
-};
-
 struct ReportPerception {
   double period_mm = 0;                   // the row's
   std::vector<double> row_holes_mm;       // the row's holes on the plate at u = 0 (x; y = the track's)
@@ -67,8 +61,8 @@ struct ReportPerception {
   // The inversion example (empty until report_perception_inversion).
   validation::ScanSignals noisy;
   std::optional<InversionRun> inversion;
-  InversionScore multi_score;
-  std::vector<InversionScore> naive_scores;  // per sensor
+  validation::InversionScore multi_score;
+  std::vector<validation::InversionScore> naive_scores;  // per sensor
   Timings wall;
 };
 
@@ -84,16 +78,6 @@ ReportPerception report_perception_scans(const Scene& scene, std::shared_ptr<con
 // The inversion example: its own factorization (the dictionary's virtual sensors); call it with the
 // chain's set-up released.
 void report_perception_inversion(const Scene& scene, ReportPerception& p);
-
-// Features against the true holes (positions, mm): each feature goes to the nearest hole within `reach`,
-// the rest are false; a hole with no feature is missed; with several, the nearest is the hole's and the
-// others are false (a hole split in two is one feature too many).
-InversionScore score_inversion(const std::vector<validation::Feature>& features,
-                               const std::vector<double>& truth, double reach);
-
-// The seeded noise of N passages added to signals (kPa, positions × 2·sensors).
-Eigen::MatrixXd with_noise(const Eigen::MatrixXd& y, const validation::SensorNoise& noise,
-                           std::uint64_t seed);
 
 // report.json's "perception".
 nlohmann::json report_perception_json(const Scene& scene, const ReportPerception& p);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "skinfem/scene/parallel.hpp"
+#include "skinfem/scene/random.hpp"
 
 namespace skinfem::validation {
 
@@ -207,6 +208,48 @@ double position_crb(const ScanSignals& sig, const HoleResponses& r, const Sensor
       }
     }
   return std::sqrt(F.inverse()(0, 0));
+}
+
+Eigen::MatrixXd with_noise(const Eigen::MatrixXd& y, const SensorNoise& noise, std::uint64_t seed) {
+  SplitMix64 rng{seed};
+  const double root = std::sqrt(static_cast<double>(noise.passages));
+  Eigen::MatrixXd out = y;
+  for (Eigen::Index i = 0; i < y.rows(); ++i)
+    for (Eigen::Index j = 0; j < y.cols(); ++j)
+      out(i, j) += (j % 2 ? noise.sigma_x_kPa : noise.sigma_z_kPa) / root * rng.normal();
+  return out;
+}
+
+InversionScore score_inversion(const std::vector<Feature>& features, const std::vector<double>& truth,
+                               double reach) {
+  InversionScore s;
+  std::vector<double> best(truth.size(), 1e300);
+  for (const Feature& f : features) {
+    int nearest = -1;
+    for (size_t k = 0; k < truth.size(); ++k)
+      if (std::abs(f.position_mm - truth[k]) < reach &&
+          (nearest < 0 || std::abs(f.position_mm - truth[k]) < std::abs(f.position_mm - truth[nearest])))
+        nearest = static_cast<int>(k);
+    if (nearest < 0) {
+      ++s.false_features;
+      continue;
+    }
+    // A hole's second feature is one too many: it counts as false, the nearer one as the hole's.
+    if (best[nearest] < 1e299) ++s.false_features;
+    best[nearest] = std::min(best[nearest], std::abs(f.position_mm - truth[nearest]));
+  }
+  double sum = 0;
+  for (double e : best) {
+    if (e > 1e299) {
+      ++s.missed;
+      continue;
+    }
+    ++s.found;
+    sum += e * e;
+    s.largest_error_mm = std::max(s.largest_error_mm, e);
+  }
+  if (s.found > 0) s.rms_error_mm = std::sqrt(sum / s.found);
+  return s;
 }
 
 }  // namespace skinfem::validation

@@ -71,4 +71,19 @@ Eigen::MatrixXd simulated_signals(const std::vector<double>& u, const std::vecto
                                   const HoleResponses& responses, const std::vector<Feature>& features,
                                   double offset);
 
+// One inversion against the truth (score_inversion).
+struct InversionScore {
+  int found = 0, missed = 0, false_features = 0;
+  double rms_error_mm = 0, largest_error_mm = 0;  // over the matched holes
+};
+
+// Features against the true holes (positions, mm): each feature goes to the nearest hole within `reach`,
+// the rest are false; a hole with no feature is missed; with several, the nearest is the hole's and the
+// others are false (a hole split in two is one feature too many).
+InversionScore score_inversion(const std::vector<Feature>& features, const std::vector<double>& truth,
+                               double reach);
+
+// The seeded noise of N passages added to signals (kPa, positions × 2·sensors).
+Eigen::MatrixXd with_noise(const Eigen::MatrixXd& y, const SensorNoise& noise, std::uint64_t seed);
+
 }  // namespace skinfem::validation

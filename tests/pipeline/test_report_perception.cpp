@@ -3,8 +3,7 @@
 // table of single-hole signals on the step's grid); perception_run run again at another number of passages
 // (the map's √N scaling of the matched filter's SNR against a second computation); the report's path run on
 // along the sweep's line, which leaves the sweep's own signals as they were (round-off) and cuts a hole
-// past the sweep's end as a sweep reaching there does; the matching of features to holes by hand; and the
-// noise's standard deviation within 4 of its sampling errors.
+// past the sweep's end as a sweep reaching there does.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -98,35 +97,6 @@ TEST(ReportPerception, ThePathRunOnToTheZonesEdgeChangesNoSweepAndCutsAHolePastI
   const Eigen::RowVectorXd expected = reaching.sweeps.at(1).varsigma.row(5);
   ASSERT_GT(expected.cwiseAbs().maxCoeff(), 0);
   EXPECT_LT((past.varsigma.row(0) - expected).cwiseAbs().maxCoeff(), 1e-6 * expected.cwiseAbs().maxCoeff());
-}
-
-TEST(ScoreInversion, EachFeatureGoesToTheNearestHoleWithinReach) {
-  std::vector<validation::Feature> f(4);
-  f[0].position_mm = 0.1;
-  f[1].position_mm = 2.05;
-  f[2].position_mm = 2.3;  // a second feature for hole 2: the nearer one counts, this one is false
-  f[3].position_mm = 7;    // near no hole: false
-  const InversionScore s = score_inversion(f, {0, 2, 4}, 1.0);
-  EXPECT_EQ(s.found, 2);
-  EXPECT_EQ(s.missed, 1);
-  EXPECT_EQ(s.false_features, 2);
-  EXPECT_NEAR(s.rms_error_mm, std::sqrt((0.01 + 0.0025) / 2), 1e-12);
-  EXPECT_NEAR(s.largest_error_mm, 0.1, 1e-12);
-}
-
-TEST(WithNoise, SeededAndOfTheMeanOfNPassages) {
-  const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(10000, 4);
-  const validation::SensorNoise noise{0.6, 0.4, 14};
-  const Eigen::MatrixXd a = with_noise(zero, noise, 3), b = with_noise(zero, noise, 3);
-  EXPECT_EQ((a - b).cwiseAbs().maxCoeff(), 0);
-  const double n = 2.0 * zero.rows();  // samples per component
-  for (int comp = 0; comp < 2; ++comp) {
-    double sum2 = 0;
-    for (int j = comp; j < 4; j += 2) sum2 += a.col(j).squaredNorm();
-    const double sd = std::sqrt(sum2 / n), want = (comp ? 0.4 : 0.6) / std::sqrt(14.0);
-    // The sample standard deviation's error is sd/√(2n).
-    EXPECT_NEAR(sd, want, 4 * want / std::sqrt(2 * n)) << comp;
-  }
 }
 
 }  // namespace
