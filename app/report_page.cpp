@@ -494,10 +494,10 @@ void perception(std::ostream& h, const ReportResult& in) {
     << "differs from the sum of the holes' single-hole signals (the paper's linear prediction) by at most "
     << pct(row.at("superposition_rel_diff_z").get<double>()) << " (ςz) and "
     << pct(row.at("superposition_rel_diff_x").get<double>()) << " (ςx) of the largest signal. Its curves "
-    << "wiggle with a period of a few tenths of a millimetre: the holes are resolved, and the rim's pressure "
-    << "concentration falls between the track's nodes (mesh "
-    << fmt("%.3g", row.at("track_mesh_h_mm").get<double>())
-    << " mm; about ±10 % of a single hole's peak, docs/contact.md); both sides of the comparison carry them.";
+    << "wiggle: the holes are resolved, and the rim's pressure concentration falls between the track's nodes "
+    << "(mesh " << fmt("%.3g", row.at("track_mesh_h_mm").get<double>()) << " mm; a single hole's ςz changes "
+    << "its slope by up to " << pct(row.at("single_hole_second_difference_rel").get<double>())
+    << " of its peak from one step to the next); both sides of the comparison carry the wiggles.";
   // The smallest spacing from which every larger one holds within 5 % (the larger of ςz and ςx), per case.
   for (const char* c : {"static", "sliding"}) {
     std::vector<std::pair<double, double>> worst;  // spacing, larger of the two components

@@ -62,6 +62,17 @@ SingleHoleTable single_hole_table(const contact::ContactSolver& solver, const Ho
   return t;
 }
 
+// The largest |ς_z(i + 1) − 2 ς_z(i) + ς_z(i − 1)| over the sensors and positions, over the largest |ς_z|.
+double second_difference_rel(const Eigen::MatrixXd& varsigma) {
+  double d2 = 0, peak = 0;
+  for (Eigen::Index k = 0; k < varsigma.cols(); k += 2) {
+    peak = std::max(peak, varsigma.col(k).cwiseAbs().maxCoeff());
+    for (Eigen::Index i = 1; i + 1 < varsigma.rows(); ++i)
+      d2 = std::max(d2, std::abs(varsigma(i + 1, k) - 2 * varsigma(i, k) + varsigma(i - 1, k)));
+  }
+  return peak > 0 ? d2 / peak : 0.0;
+}
+
 // The contact's extent along x (mm): its touching vertices' (the solve without holes).
 std::pair<double, double> contact_extent(const contact::ContactSolver& solver, FrictionMode mode,
                                          const TetMesh& mesh) {
@@ -151,6 +162,7 @@ ReportPerception report_perception_scans(const Scene& scene, std::shared_ptr<con
   single["sliding"] = single_hole_table(solver, sw, dir, FrictionMode::coupled, step, -reach, last + reach);
   p.row = contact::texture_scan(solver, row, dir, u, FrictionMode::coupled, clear(u));
   p.row_superposed.varsigma = single["sliding"].sum(p.row_holes_mm, u);
+  p.wiggle_rel = second_difference_rel(single["sliding"].varsigma);
   p.wall["perception_row"] = clock.seconds();
 
   // Pairs: the second hole one spacing behind the first, from the first's entry at the track's start until
@@ -246,6 +258,7 @@ nlohmann::json report_perception_json(const Scene& scene, const ReportPerception
   j["row"] = {{"holes_mm", p.row_holes_mm},  {"period_mm", p.period_mm},
               {"positions", p.row.u.size()}, {"step_mm", p.row.u.size() > 1 ? p.row.u[1] - p.row.u[0] : 0.0},
               {"seconds", p.row.seconds},    {"track_mesh_h_mm", hole_mesh_h(scene, sw.h)}};
+  j["row"]["single_hole_second_difference_rel"] = p.wiggle_rel;
   const PairPoint row = pair_point(p.row, p.row_superposed);
   j["row"]["superposition_rel_diff_z"] = row.rel_diff_z;
   j["row"]["superposition_rel_diff_x"] = row.rel_diff_x;

@@ -51,7 +51,10 @@ struct DetectionPoint {
 };
 
 struct ReportPerception {
-  double period_mm = 0;                   // the row's
+  double period_mm = 0;  // the row's
+  // The single hole's sliding signal's largest second difference along u over its largest |ς_z|: the
+  // resolved rim's wiggle on the track's mesh.
+  double wiggle_rel = 0;
   std::vector<double> row_holes_mm;       // the row's holes on the plate at u = 0 (x; y = the track's)
   contact::ScanResult row;                // sliding
   contact::Superposition row_superposed;  // its varsigma only
