@@ -98,7 +98,6 @@ PairPoint pair_point(const contact::ScanResult& s, const contact::Superposition&
   PairPoint p;
   p.rel_diff_z = rel(dz, pz);
   p.rel_diff_x = rel(dx, px);
-  p.positions = static_cast<int>(s.u.size());
   return p;
 }
 
