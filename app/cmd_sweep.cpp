@@ -27,6 +27,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -97,6 +98,20 @@ void lock_sweep_dir(const std::string& dir) {
   }
 }
 
+// Whether PATH holds an executable `name`: a sweep without Snakemake is refused before anything is written.
+bool on_path(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "";
+  for (std::size_t start = 0; start <= dirs.size();) {
+    std::size_t end = dirs.find(':', start);
+    if (end == std::string::npos) end = dirs.size();
+    const std::string dir = end > start ? dirs.substr(start, end - start) : ".";
+    if (::access((dir + "/" + name).c_str(), X_OK) == 0) return true;
+    start = end + 1;
+  }
+  return false;
+}
+
 }  // namespace
 
 int run_sweep(const std::string& spec_path, const std::string& out, int cores, const std::string& profile,
@@ -105,6 +120,11 @@ int run_sweep(const std::string& spec_path, const std::string& out, int cores, c
   const std::string out_dir = out.empty() ? "out/" + sweep.name : out;
   check_output_dir(out_dir);
   check_run_record(out_dir, "sweep");
+  if (!dry_run && !on_path("snakemake"))
+    throw std::runtime_error(
+        "sweep: Snakemake is not installed (not on PATH); install it and the results' HDF5 writer with "
+        "`apt-get install snakemake python3-h5py` (scripts/test installs both), or write the members with "
+        "--dry-run");
 
   // Every member's kernel grid as `skinfem green --grid` would check it, before anything is written.
   const auto grid = std::find(sweep.options.begin(), sweep.options.end(), "--grid");
@@ -233,8 +253,7 @@ int run_sweep(const std::string& spec_path, const std::string& out, int cores, c
   }
   if (rc != 0) {
     const std::string what =
-        rc < 0 ? "could not start or was killed (is Debian's snakemake installed? scripts/setup installs it)"
-               : "exited with code " + std::to_string(rc);
+        rc < 0 ? "could not start or was killed" : "exited with code " + std::to_string(rc);
     std::fprintf(stderr,
                  "skinfem: sweep: Snakemake %s; the members' errors are in %s/members/*/status.json\n",
                  what.c_str(), out_dir.c_str());

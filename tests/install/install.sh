@@ -38,6 +38,37 @@ if int(got["free_dofs"]) <= 0:
     sys.exit("install.sh: downstream factored no DOFs")
 print(f"downstream: {got['nodes']} nodes, {got['elements']} elements, {got['free_dofs']} free DOFs, as skinfem mesh")
 PY
+# The README's C++ example as printed (its CMakeLists.txt and main.cpp), built against the prefix and run from
+# the source tree: it prints its progress through its sink, and the installed command's `report --fast` numbers.
+readme=$work/readme
+mkdir -p "$readme"
+python3 - "$src/README.md" "$readme" <<'PY'
+import re, sys
+text = open(sys.argv[1]).read()
+for marker, name in (("cmake-example", "CMakeLists.txt"), ("cpp-example", "main.cpp")):
+    blocks = re.findall(rf"<!-- {marker} -->\s*```\w+\n(.*?)```", text, re.S)
+    if len(blocks) != 1:
+        sys.exit(f"install.sh: README.md has {len(blocks)} <!-- {marker} --> blocks, not one")
+    open(f"{sys.argv[2]}/{name}", "w").write(blocks[0])
+PY
+cmake -S "$readme" -B "$readme/b" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+cmake --build "$readme/b" >/dev/null
+(cd "$src" && "$readme/b/mine") >"$work/mine.txt" 2>"$work/mine.err"
+grep -q '^\[mine\] ' "$work/mine.err" ||
+  { echo "install.sh: the README's C++ example printed no progress line through its sink" >&2; exit 1; }
+"$prefix/bin/skinfem" report "$src/scenes/hertz_layer.json" --fast --out "$work/report" >/dev/null 2>&1
+python3 - "$work/mine.txt" "$work/report/report.json" <<'PY'
+import json, re, sys
+line = open(sys.argv[1]).read().strip()
+m = re.fullmatch(r"(\S+): (\d+) DOFs, k_central ([0-9.]+), contact radius ([0-9.]+) mm", line)
+if not m:
+    sys.exit(f"install.sh: the README's C++ example printed '{line}'")
+ref = json.load(open(sys.argv[2]))
+want = (ref["scene"]["name"], str(ref["dofs"]), f"{ref['kfit']['k_central']:.4f}", f"{ref['contact']['contact_radius_mm']:.3f}")
+if m.groups() != want:
+    sys.exit(f"install.sh: the README's C++ example printed {m.groups()}, the installed command's report {want}")
+print(f"README's C++ example: {line}, as skinfem report --fast")
+PY
 # The installed command runs the installed figure script, not the source tree's.
 figures=$("$prefix/bin/skinfem" --version | sed -n 's/^figures: //p')
 [ "$figures" = "$(realpath "$prefix/share/skinfem/figures.py")" ] ||
