@@ -10,10 +10,11 @@
 
 namespace skinfem::app {
 
-// Prints each quantity's order and errors and each stage's time-vs-DOFs exponent (from study,
-// pipeline::chain_study_json's), writes DIR/chain_study.csv (stage,level,dofs,seconds,error; the Pareto plot
-// of scripts/figures.py) and DIR/chain_study.json (study).
+// Writes DIR/chain_study.csv (stage,level,dofs,seconds,error; the Pareto plot of scripts/figures.py) and
+// DIR/chain_study.json (study, pipeline::chain_study_json's). print_table: also print each quantity's order
+// and errors and each stage's time-vs-DOFs exponent (`study --chain`; the report prints its error bars in
+// its own words).
 void write_chain_study(const std::vector<pipeline::ChainLevel>& levels, const nlohmann::json& study,
-                       const std::string& out_dir);
+                       const std::string& out_dir, bool print_table);
 
 }  // namespace skinfem::app

@@ -40,7 +40,7 @@ int run_chain_study(const Scene& scene, const std::string& out_dir, const std::v
     std::printf("\n");
   }
 
-  write_chain_study(levels, chain_study_json(scene, levels), out_dir);
+  write_chain_study(levels, chain_study_json(scene, levels), out_dir, true);
   return 0;
 }
 

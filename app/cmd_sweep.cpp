@@ -4,9 +4,10 @@
 //   $ skinfem sweep sweeps/k_vs_nu_and_punch.json --out out/k_sweep --cores 2
 //   sweep k_vs_nu_and_punch: 42 members of `skinfem kfit --path meridian` (grid 6 x 7), 0 already done;
 //   memory per job from the spec's mem_mb 256 MB
-//   ... (Snakemake's job log, on stderr) ...
-//   gathered 42 members (42 ok, 0 failed) into /abs/out/k_sweep: results.csv (66 columns), results.h5,
+//   [skinfem] sweep: 12 of 42 members finished (0 failed), 31 s, about 1.3 min to go   (one line, rewritten)
+//   gathered 42 members (42 ok, 0 failed) into /abs/out/k_sweep: results.csv (64 columns), results.h5,
 //   2 plots
+//   Snakemake's log: out/k_sweep/snakemake.log
 //
 // The spec's format: scene/sweep.cpp. Writes DIR/scenes/<id>.json (one per member, named by a hash of its
 // content and only written when absent, so that an unchanged member is recognised), DIR/manifest.json (the
@@ -25,12 +26,17 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
+#include <thread>
+#include <vector>
 
 #include "app/commands.hpp"
 #include "app/common.hpp"
@@ -96,6 +102,93 @@ void lock_sweep_dir(const std::string& dir) {
                                "wait for it to end, or give another directory");
     throw std::runtime_error("--out " + dir + ": cannot lock " + path + " (" + std::strerror(e) + ")");
   }
+}
+
+// One progress line while Snakemake runs (its own log goes to DIR/snakemake.log): members finished of the
+// total, failed, elapsed time and an estimate from this run's pace. On a terminal the line is rewritten in
+// place; elsewhere a line is printed when the count has changed, at most every 10 s, and at the end.
+class SweepProgress {
+ public:
+  SweepProgress(const Sweep& sweep, const std::string& dir, int done_before)
+      : sweep_(sweep),
+        dir_(dir),
+        before_(done_before),
+        tty_(isatty(STDERR_FILENO) == 1),
+        start_(std::chrono::steady_clock::now()),
+        thread_([this] { run(); }) {}
+  ~SweepProgress() {
+    {
+      std::lock_guard<std::mutex> lock(m_);
+      stop_ = true;
+    }
+    cv_.notify_all();
+    thread_.join();
+    report(true);
+  }
+
+ private:
+  void run() {
+    std::unique_lock<std::mutex> lock(m_);
+    while (!cv_.wait_for(lock, std::chrono::seconds(1), [this] { return stop_; })) report(false);
+  }
+  void report(bool last) {
+    int finished = 0, failed = 0;
+    for (const SweepMember& m : sweep_.members) {
+      std::ifstream in(dir_ + "/members/" + m.id + "/status.json");
+      if (!in) continue;
+      const nlohmann::json st = nlohmann::json::parse(in, nullptr, false);
+      ++finished;
+      failed += !(st.is_object() && st.value("exit_code", -1) == 0);
+    }
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const bool changed = finished != shown_;
+    if (!last && !tty_ && !(changed && elapsed - shown_at_ >= 10)) return;
+    if (!last && tty_ && !changed && elapsed - shown_at_ < 1) return;
+    const int total = static_cast<int>(sweep_.members.size()), now = finished - before_;
+    std::string eta;
+    if (now > 0 && finished < total)
+      eta = ", about " + duration(elapsed / now * (total - finished)) + " to go";
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "sweep: %d of %d members finished (%d failed), %s%s", finished, total,
+                  failed, duration(elapsed).c_str(), eta.c_str());
+    if (tty_)
+      std::fprintf(stderr, "\r[skinfem] %s\033[K%s", buf, last ? "\n" : "");
+    else
+      std::fprintf(stderr, "[skinfem] %s\n", buf);
+    std::fflush(stderr);
+    shown_ = finished, shown_at_ = elapsed;
+  }
+  static std::string duration(double s) {
+    char buf[32];
+    if (s < 90)
+      std::snprintf(buf, sizeof buf, "%.0f s", s);
+    else
+      std::snprintf(buf, sizeof buf, "%.1f min", s / 60);
+    return buf;
+  }
+  const Sweep& sweep_;
+  const std::string dir_;
+  const int before_;
+  const bool tty_;
+  const std::chrono::steady_clock::time_point start_;
+  int shown_ = -1;
+  double shown_at_ = -1e9;
+  std::mutex m_;
+  std::condition_variable cv_;
+  bool stop_ = false;
+  std::thread thread_;
+};
+
+// The last lines of a file, for a failure's context.
+std::string tail_of(const std::string& path, int lines) {
+  std::ifstream in(path);
+  std::vector<std::string> all;
+  for (std::string line; std::getline(in, line);) all.push_back(line);
+  std::string out;
+  for (std::size_t i = all.size() > static_cast<std::size_t>(lines) ? all.size() - lines : 0; i < all.size();
+       ++i)
+    out += "  " + all[i] + "\n";
+  return out;
 }
 
 // Whether PATH holds an executable `name`: a sweep without Snakemake is refused before anything is written.
@@ -237,7 +330,12 @@ int run_sweep(const std::string& spec_path, const std::string& out, int cores, c
   bool killed = false;
   // Snakemake can deadlock in its own handler of the signal we pass on: 30 s after it, it is killed. If we
   // are killed outright, it gets SIGTERM (and shuts its members down) rather than running on.
-  const int rc = run_child(argv, &stopped_by, 30, &killed, true);
+  const std::string log = out_dir + "/snakemake.log";
+  int rc = 0;
+  {
+    SweepProgress watch(sweep, out_dir, done);
+    rc = run_child(argv, &stopped_by, 30, &killed, true, log);
+  }
   if (stopped_by != 0) {
     // A killed Snakemake leaves its lock, which would refuse every re-run; its process is gone, so the lock
     // holds nothing (its unfinished members are marked incomplete and run again).
@@ -254,11 +352,18 @@ int run_sweep(const std::string& spec_path, const std::string& out, int cores, c
   if (rc != 0) {
     const std::string what =
         rc < 0 ? "could not start or was killed" : "exited with code " + std::to_string(rc);
-    std::fprintf(stderr,
-                 "skinfem: sweep: Snakemake %s; the members' errors are in %s/members/*/status.json\n",
-                 what.c_str(), out_dir.c_str());
+    std::fprintf(
+        stderr,
+        "skinfem: sweep: Snakemake %s; the members' errors are in %s/members/*/status.json, its log in "
+        "%s; its last lines:\n%s",
+        what.c_str(), out_dir.c_str(), log.c_str(), tail_of(log, 5).c_str());
     return 1;
   }
+  // The gather's own summary line (gathered N members ... into DIR: results.csv ...), from the log.
+  std::ifstream in(log);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("gathered ", 0) == 0) std::printf("%s\n", line.c_str());
+  std::printf("Snakemake's log: %s\n", log.c_str());
   return 0;
 }
 

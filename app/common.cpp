@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -100,7 +101,11 @@ extern "C" void pass_to_child(int sig) {
 }  // namespace
 
 int run_child(const std::vector<std::string>& argv, int* interrupted_by, double grace_s, bool* killed,
-              bool end_with_us) {
+              bool end_with_us, const std::string& log_path) {
+  const int log_fd =
+      log_path.empty() ? -1 : ::open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (!log_path.empty() && log_fd < 0)
+    throw std::runtime_error("cannot write " + log_path + " (" + std::strerror(errno) + ")");
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
@@ -129,7 +134,12 @@ int run_child(const std::vector<std::string>& argv, int* interrupted_by, double 
     // A parent killed outright (SIGKILL: no handler runs) would otherwise leave the child running, e.g. a
     // Snakemake that goes on with the members and keeps its lock.
     if (end_with_us && (prctl(PR_SET_PDEATHSIG, SIGTERM) != 0 || getppid() != parent)) _exit(128 + SIGTERM);
-    dup2(STDERR_FILENO, STDOUT_FILENO);
+    if (log_fd >= 0) {
+      dup2(log_fd, STDOUT_FILENO);
+      dup2(log_fd, STDERR_FILENO);
+    } else {
+      dup2(STDERR_FILENO, STDOUT_FILENO);
+    }
     // Defaults before unblocking: a signal arriving before exec must act on the child, not run our handler.
     for (int s : passed) sigaction(s, &fallback, nullptr);
     sigprocmask(SIG_SETMASK, &previous, nullptr);
@@ -155,6 +165,7 @@ int run_child(const std::vector<std::string>& argv, int* interrupted_by, double 
       waitpid(pid, nullptr, 0);
     }
   }
+  if (log_fd >= 0) close(log_fd);
   child_group = err == 0 ? pid : 0;
   sigprocmask(SIG_SETMASK, &previous, nullptr);
   int status = 0, rc = -1;

@@ -40,9 +40,10 @@ void add_write_seconds(nlohmann::json& summary, double seconds);
 // group has not ended `grace_s` seconds after the signal (> 0; Snakemake can deadlock in its own signal
 // handler) is killed with SIGKILL, and *killed (when given) says so. end_with_us: the child gets SIGTERM
 // when we end without passing it a signal (killed by SIGKILL), so that it does not outlive us.
-// Our open file descriptors without close-on-exec are inherited (the sweep's lock on its folder).
+// Our open file descriptors without close-on-exec are inherited (the sweep's lock on its folder). log_path:
+// the child's stdout and stderr go to that file (created or truncated), else both to our stderr.
 int run_child(const std::vector<std::string>& argv, int* interrupted_by = nullptr, double grace_s = 0,
-              bool* killed = nullptr, bool end_with_us = false);
+              bool* killed = nullptr, bool end_with_us = false, const std::string& log_path = {});
 
 // A child started in the background, its stdout sent to our stderr, in our process group (a terminal's
 // Ctrl-C reaches it as it reaches us), ended with SIGTERM when we end first. Returns its id, or -1 when it

@@ -83,7 +83,10 @@ std::vector<std::pair<std::string, std::string>> figure_captions(const std::stri
       {"fig4_varsigma_x", "Paper fig. 4: the hole signal ςx(u), as fig. 3." + on},
       {"pressure_profiles",
        "Contact pressure p along y = 0: Hertz on the half-space, the exact bonded layer, FE frictionless "
-       "and FE with coupled friction (its tangential traction q dotted)." +
+       "and FE with coupled friction (its tangential traction q dotted). Near the contact's edges the FE "
+       "tractions wiggle over a few cells of the mesh along y = 0 (most visibly p and q with coupled "
+       "friction "
+       "at the front edge): the discrete contact resolves an edge to a cell, no finer." +
            on},
       {"green_vs_halfspace",
        "Sensor #1's FE Green tensor (g_zz, g_xx) against the half-space rescaled by both k, and the "
@@ -136,6 +139,59 @@ std::vector<std::pair<std::string, std::string>> figure_captions(const std::stri
   return f;
 }
 
+// The pictures of the mesh and of the contact's fields (scripts/figures.py draws them from the VTK files),
+// then the hole budget's summary, last.
+std::vector<std::pair<std::string, std::string>> field_captions(const Scene& scene, const ReportResult& in) {
+  const std::string on = " Scene " + scene.name + ".";
+  std::vector<std::pair<std::string, std::string>> f;
+  if (in.json.contains("mesh")) {
+    const nlohmann::json& m = in.json.at("mesh");
+    f.push_back({"skin_mesh",
+                 "The mesh: the skin's top seen from above (its triangles; red: the outline of the nodes "
+                 "in contact under the sliding plate; dots: the sensors' centres on the base), and "
+                 "the section y = 0 (the cut tetrahedra, z stretched 2×; ▲: the sensors). " +
+                     std::to_string(m.at("elements").get<int>()) + " quadratic tetrahedra, " +
+                     std::to_string(m.at("nodes").get<int>()) + " nodes, edges from " +
+                     fmt("%.2g", m.at("min_edge_mm").get<double>()) + " to " +
+                     fmt("%.2g", m.at("max_edge_mm").get<double>()) +
+                     " mm: fine along the sensors' line, at their discs and under the contact. The "
+                     "outline steps at the mesh's scale." +
+                     on});
+  }
+  if (in.json.contains("contact")) {
+    const nlohmann::json& c = in.json.at("contact");
+    const std::string mode = c.at("friction").get<std::string>();
+    f.push_back(
+        {"contact_pressure_map",
+         "The contact pressure p on the skin's top (" + mode +
+             " friction), seen from above with the outline of the nodes in contact, and along y = 0. "
+             "Largest p " +
+             fmt("%.1f", c.at("p_max_kPa").get<double>()) + " kPa; contact radius " +
+             fmt("%.3f", c.at("contact_radius_mm").get<double>()) +
+             " mm. Near the edges p wiggles over the last cells before it falls to zero, and the "
+             "colour reaches about a cell past the outline (nodes beside the contact carry a small p in "
+             "contact/pressure.vtp): the discrete contact resolves an edge to a cell, no finer." +
+             on});
+    f.push_back(
+        {"skin_stress",
+         "σzz on the section y = 0 through the skin under the plate (" + mode +
+             " friction), kPa (negative: compression; z stretched 2×; ▲: the sensors, whose σz is −σzz "
+             "averaged over their disc on the base). With friction, compression gathers under the "
+             "front of the contact and tension behind it. The thin streaks at the contact's edges near "
+             "the top are a cell wide." +
+             on});
+  }
+  f.push_back(
+      {"budget_summary",
+       "The hole-signal budget in one figure: the sliding amplitude of full FE over the paper's model per "
+       "sensor, ςz (left) and ςx (right), one line per hypothesis labelled with the paper's facts it "
+       "meets (the budget's table gives each verdict's reason). Bands: F2 asks the back sensors to match "
+       "the model (0.5–2×), F3 the front ones to reach 2–4×. Each hypothesis's signals: the folded "
+       "figures at the end." +
+           on});
+  return f;
+}
+
 // The page up to its first table: scene, units, size, time and memory, and what a fast report left out.
 void page_head(std::ostream& h, const Scene& scene, const ReportResult& in) {
   h << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>skinfem report: "
@@ -180,29 +236,41 @@ void error_levels(std::ostream& h, const ReportResult& in) {
     for (size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::sort(order.begin(), order.end(),
               [&](size_t a, size_t b) { return levels.back().names[a] < levels.back().names[b]; });
-    h << "<h2>Speed against error: the levels behind the error bars</h2><table><tr><th>mesh scale</th>"
-         "<th>DOFs</th>";
-    for (const auto& st : stages) h << "<th>" << st << " s</th>";
-    h << "<th>peak MB</th>";
-    for (size_t i : order) h << "<th>" << levels.back().names[i] << "</th>";
-    h << "</tr>\n";
-    for (const ChainLevel& l : levels) {
-      h << "<tr><td>" << fmt("%g", l.scale) << "</td><td>" << l.dofs << "</td>";
-      for (const auto& st : stages)
-        h << "<td>" << (l.wall.contains(st) ? fmt("%.2f", l.wall.at(st)) : "") << "</td>";
-      h << "<td>" << fmt("%.0f", l.peak_rss_mb) << "</td>";
-      for (size_t i : order) h << "<td>" << fmt("%.6g", l.value[i]) << "</td>";
-      h << "</tr>\n";
-    }
-    h << "<tr><td style=\"text-align:left\" colspan=\"2\">time &prop; DOFs<sup>e</sup>, e =</td>";
+    // Transposed (a row per stage or quantity, a column per level): as wide as the levels are many.
+    h << "<h2>Speed against error: the levels behind the error bars</h2><table><tr><th "
+         "style=\"text-align:left\">"
+         "</th><th>unit</th>";
+    for (const ChainLevel& l : levels) h << "<th>mesh scale " << fmt("%g", l.scale) << "</th>";
+    h << "<th>time &prop; DOFs<sup>e</sup>: e</th></tr>\n";
+    const auto row = [&](const std::string& what, const std::string& unit, const auto& cell,
+                         const std::string& last) {
+      h << "<tr><td style=\"text-align:left\">" << what << "</td><td>" << unit << "</td>";
+      for (const ChainLevel& l : levels) h << "<td>" << cell(l) << "</td>";
+      h << "<td>" << last << "</td></tr>\n";
+    };
+    row(
+        "DOFs", "", [](const ChainLevel& l) { return std::to_string(l.dofs); }, "");
+    row(
+        "peak memory", "MB", [](const ChainLevel& l) { return fmt("%.0f", l.peak_rss_mb); }, "");
     for (const auto& st : stages) {
       const auto e = in.exponents.find(st);
-      h << "<td>" << (e != in.exponents.end() ? fmt("%.2f", e->second) : "") << "</td>";
+      row(
+          "time: " + st, "s",
+          [&](const ChainLevel& l) {
+            return l.wall.contains(st) ? fmt("%.2f", l.wall.at(st)) : std::string();
+          },
+          e != in.exponents.end() ? fmt("%.2f", e->second) : "");
     }
-    h << "<td colspan=\"" << 1 + order.size() << "\"></td></tr></table><p>Values in mm and MPa. Peak memory "
-      << "per level: each coarser level's own; the scene's level (scale 1) is the report's up to its error "
-         "bars. Errors per level: <a href=\"study/chain_study.csv\">study/chain_study.csv</a>, Pareto "
-         "plot below.</p>\n";
+    for (size_t i : order) {
+      const std::string& name = levels.back().names[i];
+      const pipeline::QuantityDisplay* d = pipeline::quantity_display(name);
+      row(
+          d ? html_escape(d->what) : name, d ? html_escape(d->unit) : "",
+          [&](const ChainLevel& l) { return fmt("%.6g", (d ? d->factor : 1) * l.value[i]); }, "");
+    }
+    h << "</table><p>Peak memory per level: each coarser level's own; the scene's level (scale 1) is the "
+         "report's up to its error bars. Errors per level: <a href=\"study/chain_study.csv\">"
+         "study/chain_study.csv</a>, Pareto plot below.</p>\n";
   }
 }
 
@@ -411,35 +479,42 @@ void crosscheck(std::ostream& h, const Scene& scene, const ReportResult& in) {
     for (int c = 0; c < 2; ++c) {
       h << "<h3>" << (c ? "sliding" : "static") << " (p_x = "
         << (x->shear[c] != 0 ? fmt("%.3g kPa", 1e3 * x->shear[c]) + (x->ratio[c] != 0 ? " + " : "") : "")
-        << (x->ratio[c] != 0 || x->shear[c] == 0 ? fmt("%.3g p_z", x->ratio[c]) : "")
-        << ")</h3><table><tr><th>variant</th>";
-      for (int k = 0; k < ns; ++k) h << "<th>#" << k + 1 << " σz</th><th>σx</th>";
+        << (x->ratio[c] != 0 || x->shear[c] == 0 ? fmt("%.3g p_z", x->ratio[c]) : "") << ")</h3>\n";
+      // A row per sensor, a column per variant; σz and σx side by side as two tables.
+      for (int b = 0; b < 2; ++b) {
+        h << "<table style=\"display:inline-block;vertical-align:top;margin-right:1em\"><tr><th>"
+          << (b ? "σx" : "σz") << " kPa</th>";
+        for (size_t v = 0; v < x->readings.size(); ++v)
+          h << "<th title=\"" << html_escape(x->reading_variants[v].what) << "\">"
+            << x->reading_variants[v].name << "</th>";
+        h << "</tr>\n";
+        for (int k = 0; k < ns; ++k) {
+          h << "<tr><td>#" << k + 1 << "</td>";
+          for (size_t v = 0; v < x->readings.size(); ++v)
+            h << "<td>" << fmt("%.2f", 1e3 * x->readings[v][c][2 * k + b]) << "</td>";
+          h << "</tr>\n";
+        }
+        h << "</table>\n";
+      }
+    }
+    h << "<h2>Hole signals: amplitude of each variant over full FE (sliding), attribution</h2>\n";
+    for (int b = 0; b < 2; ++b) {
+      h << "<table "
+           "style=\"display:inline-block;vertical-align:top;margin-right:1em\"><tr><th>sensor</th><th>FE "
+           "max|"
+        << (b ? "ςx" : "ςz") << "| kPa</th>";
+      for (size_t v = 1; v < x->signals.size(); ++v) h << "<th>" << x->signal_variants[v].name << "</th>";
       h << "</tr>\n";
-      for (size_t v = 0; v < x->readings.size(); ++v) {
-        h << "<tr><td style=\"text-align:left\" title=\"" << html_escape(x->reading_variants[v].what) << "\">"
-          << x->reading_variants[v].name << "</td>";
-        for (int k = 0; k < 2 * ns; ++k) h << "<td>" << fmt("%.2f", 1e3 * x->readings[v][c][k]) << "</td>";
+      for (int k = 0; k < ns; ++k) {
+        h << "<tr><td>#" << k + 1 << "</td><td>"
+          << fmt("%.4f", 1e3 * x->signals[0][1].col(2 * k + b).cwiseAbs().maxCoeff()) << "</td>";
+        for (size_t v = 1; v < x->signals.size(); ++v)
+          h << "<td>" << fmt("%.3g", x->metrics[v][1][k][b].amplitude_ratio) << "</td>";
         h << "</tr>\n";
       }
       h << "</table>\n";
     }
-    h << "<h2>Hole signals: amplitude of each variant over full FE (sliding), "
-         "attribution</h2>\n<table><tr><th>sensor</th>"
-         "<th>FE max|ςz| kPa</th>";
-    for (size_t v = 1; v < x->signals.size(); ++v) h << "<th>" << x->signal_variants[v].name << " z</th>";
-    h << "<th>FE max|ςx| kPa</th>";
-    for (size_t v = 1; v < x->signals.size(); ++v) h << "<th>" << x->signal_variants[v].name << " x</th>";
-    h << "</tr>\n";
-    for (int k = 0; k < ns; ++k) {
-      h << "<tr><td>#" << k + 1 << "</td>";
-      for (int b = 0; b < 2; ++b) {
-        h << "<td>" << fmt("%.4f", 1e3 * x->signals[0][1].col(2 * k + b).cwiseAbs().maxCoeff()) << "</td>";
-        for (size_t v = 1; v < x->signals.size(); ++v)
-          h << "<td>" << fmt("%.3g", x->metrics[v][1][k][b].amplitude_ratio) << "</td>";
-      }
-      h << "</tr>\n";
-    }
-    h << "</table><p>Variants:</p><ul>\n";
+    h << "<p>Variants:</p><ul>\n";
     for (const auto& v : x->signal_variants)
       h << "<li><b>" << v.name << "</b>: " << html_escape(v.what) << "</li>\n";
     h << "</ul><p>Peak shifts and shape errors of every variant, case and sensor: <a "
@@ -456,17 +531,60 @@ void figures(std::ostream& h, const std::string& dir, const Scene& scene, const 
       if (e.path().extension() == ".png") drawn.push_back(e.path().stem().string());
   std::sort(drawn.begin(), drawn.end());
   auto captions = figure_captions(scene.name, in.budget);
+  // The pictures of the skin's fields come after the pressure profiles, the budget's summary before its
+  // grids.
+  const auto after = [&](const std::string& stem) {
+    auto it = std::find_if(captions.begin(), captions.end(), [&](const auto& c) { return c.first == stem; });
+    return it == captions.end() ? captions.end() : it + 1;
+  };
+  auto fields = field_captions(scene, in);
+  captions.insert(after("pressure_profiles"), fields.begin(), fields.end() - 1);
+  const auto grid = std::find_if(captions.begin(), captions.end(),
+                                 [](const auto& c) { return c.first.rfind("budget_", 0) == 0; });
+  captions.insert(grid, fields.back());
   for (const std::string& stem : drawn)
     if (std::none_of(captions.begin(), captions.end(), [&](const auto& c) { return c.first == stem; }))
       captions.push_back({stem, stem});
-  int number = 0;
-  for (const auto& [stem, caption] : captions)
-    if (std::binary_search(drawn.begin(), drawn.end(), stem)) {
-      const std::string file = "figures/" + stem + ".png";
-      h << "<figure id=\"" << stem << "\"><a href=\"" << file << "\"><img src=\"" << file << "\" alt=\""
-        << html_escape(stem) << "\"></a><figcaption>Figure " << ++number << " (" << stem
-        << ".png, click for full size). " << html_escape(caption) << "</figcaption></figure>\n";
-    }
+  // The per-hypothesis budget grids come last, folded: the budget's summary figure stands for them.
+  const auto is_grid = [](const std::string& stem) {
+    return stem.rfind("budget_", 0) == 0 && stem != "budget_summary";
+  };
+  int number = 0, grids = 0;
+  std::ostringstream folded;
+  for (const bool grid : {false, true})
+    for (const auto& [stem, caption] : captions)
+      if (is_grid(stem) == grid && std::binary_search(drawn.begin(), drawn.end(), stem)) {
+        const std::string file = "figures/" + stem + ".png";
+        std::ostream& out = grid ? static_cast<std::ostream&>(folded) : h;
+        out << "<figure id=\"" << stem << "\"><a href=\"" << file << "\"><img src=\"" << file << "\" alt=\""
+            << html_escape(stem) << "\"></a><figcaption>Figure " << ++number << " (" << stem
+            << ".png, click for full size). " << html_escape(caption) << "</figcaption></figure>\n";
+        grids += grid;
+      }
+  if (grids > 0)
+    h << "<details><summary>The hole budget hypothesis by hypothesis: " << grids
+      << " figures of full FE against the paper's model per sensor (open)</summary>\n"
+      << folded.str() << "</details>\n";
+}
+
+// A contents list of the page's sections: every <h2> gets an id, and the list goes before the first.
+std::string with_contents(const std::string& page) {
+  std::string out, nav = "<nav><b>Contents</b><ol>\n";
+  std::size_t pos = 0, first = std::string::npos;
+  for (int n = 1;; ++n) {
+    const std::size_t a = page.find("<h2>", pos);
+    const std::size_t b = a == std::string::npos ? a : page.find("</h2>", a);
+    if (b == std::string::npos) break;
+    const std::string title = page.substr(a + 4, b - a - 4), id = "section-" + std::to_string(n);
+    out += page.substr(pos, a - pos);
+    if (first == std::string::npos) first = out.size();
+    out += "<h2 id=\"" + id + "\">" + title + "</h2>";
+    nav += "<li><a href=\"#" + id + "\">" + title + "</a></li>\n";
+    pos = b + 5;
+  }
+  out += page.substr(pos);
+  if (first != std::string::npos) out.insert(first, nav + "</ol></nav>\n");
+  return out;
 }
 
 // report.json's perception entry as paragraphs and a table: the row, the pairs, the detection map and the
@@ -614,6 +732,7 @@ constexpr const char* kReportFiles[] = {"mesh/mesh.vtu",
                                         "crosscheck/attribution.csv",
                                         "crosscheck/hole_budget.csv",
                                         "crosscheck/hole_budget_signals.csv",
+                                        "crosscheck/hole_budget_facts.csv",
                                         "perception/row.csv",
                                         "perception/pairs.csv",
                                         "perception/detection.csv",
@@ -669,7 +788,7 @@ void write_index(const std::string& dir, const Scene& scene, const ReportResult&
   perception(h, in);
   figures(h, dir, scene, in);
   files(h, dir);
-  write_text_atomic(dir + "/index.html", h.str());
+  write_text_atomic(dir + "/index.html", with_contents(h.str()));
 }
 
 }  // namespace skinfem::app

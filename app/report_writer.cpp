@@ -101,7 +101,7 @@ void ReportWriter::perception(const pipeline::ReportPerception& p, const nlohman
 void ReportWriter::chain_done() { figures_.go(); }
 
 void ReportWriter::chain_study(const std::vector<pipeline::ChainLevel>& levels, const nlohmann::json& study) {
-  write_chain_study(levels, study, out_ + "/study");
+  write_chain_study(levels, study, out_ + "/study", false);
 }
 
 void ReportWriter::k_sweep(const validation::KTargetAnswer& a) { write_k_sweep(a, out_ + "/kfit"); }

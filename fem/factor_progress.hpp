@@ -12,7 +12,7 @@ struct FactorStatus {
   double fraction = 0;         // estimated, in [0, 0.99] while running, 1 when done
   double elapsed_s = 0;        // since the factorization phase began
   double estimated_flops = 0;  // from the analysis
-  double estimated_s = 0;      // estimated_flops / measured rate
+  double estimated_s = 0;      // from estimated_flops and the unknowns at the measured dense rate
 };
 
 using FactorProgress = std::function<void(const FactorStatus&)>;

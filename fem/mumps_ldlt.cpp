@@ -45,17 +45,22 @@ struct MumpsLdlt::Impl {
 };
 
 namespace {
-// MUMPS's factorization rate over Eigen's single-threaded dense Cholesky rate, measured on the 2-core
-// development machine: 1.5 on the flat layer (1.7e11 flops, 6.7 s), 2.0 on the paper's cap (7.1e11, 20 s).
-constexpr double kMumpsOverDenseRate = 1.75;
+// MUMPS's factorization rate over Eigen's single-threaded dense Cholesky rate, and the work outside the
+// counted flops (assembling the fronts, moving the factors) as flops per unknown at that rate, which takes
+// most of the time on small meshes. Fitted (2026-12, 2-core development machine) on the report's four
+// factorizations of the paper's cap, 25k-125k unknowns and 4.3e9-1.7e11 flops: quiet, they took 0.61-6.0 s,
+// 0.64-0.89 of the estimate; beside a 2-core build, 0.88-9.3 s, up to 1.6 times it. (Flops alone at a ratio
+// of 1.75 had the smallest take 4.9 times its estimate.)
+constexpr double kMumpsOverDenseRate = 2.5;
+constexpr double kFlopsPerUnknown = 1e6;
 
 // Calls `progress` every `every_s` seconds from its own thread until destroyed.
 class Watcher {
  public:
-  Watcher(const FactorProgress& progress, double flops, double every_s)
+  Watcher(const FactorProgress& progress, double flops, double unknowns, double every_s)
       : progress_(progress), start_(std::chrono::steady_clock::now()) {
     status_.estimated_flops = flops;
-    status_.estimated_s = flops / (kMumpsOverDenseRate * dense_flop_rate());
+    status_.estimated_s = (flops + kFlopsPerUnknown * unknowns) / (kMumpsOverDenseRate * dense_flop_rate());
     if (progress_) thread_ = std::thread([this, every_s] { run(every_s); });
   }
   ~Watcher() {
@@ -225,7 +230,7 @@ void MumpsLdlt::factor_locked(const FactorProgress& progress, double every_s) {
     throw std::runtime_error(buf);
   }
   {
-    Watcher watcher(progress, s.id.rinfog[0], every_s);
+    Watcher watcher(progress, s.id.rinfog[0], s.id.n, every_s);
     s.call(2);
   }
   s.factored = true;

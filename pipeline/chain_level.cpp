@@ -172,36 +172,35 @@ nlohmann::json chain_study_json(const Scene& scene, const std::vector<ChainLevel
           {"peak_rss_mb", peak_rss_mb()}};
 }
 
-std::vector<ErrorBar> error_bars(const std::vector<ChainError>& errors,
-                                 const std::vector<double>& coarse_scales) {
-  struct Display {
-    const char* name;
-    const char* what;
-    const char* unit;
-    double factor;
-  };
-  const Display table[] = {
+const QuantityDisplay* quantity_display(const std::string& name) {
+  static const QuantityDisplay table[] = {
       {"k_central", "k, central criterion (sensor #1)", "", 1},
       {"k_lsq_line", "k, line fit (sensor #1)", "", 1},
       {"contact_radius", "contact radius (coupled friction)", "mm", 1},
       {"contact_p0", "central pressure (coupled friction)", "kPa", 1e3},
       {"indentation", "indentation (coupled friction)", "um", 1e3},
       {"hole_signal", "largest sliding |varsigma_z| over sensors and hole positions", "kPa", 1e3}};
+  for (const QuantityDisplay& d : table)
+    if (name == d.name) return &d;
+  return nullptr;
+}
+
+std::vector<ErrorBar> error_bars(const std::vector<ChainError>& errors,
+                                 const std::vector<double>& coarse_scales) {
   std::string levels;
   for (double s : coarse_scales) levels += validation::fmt("%g", s) + ", ";
   levels += "1";
   std::vector<ErrorBar> out;
   for (const ChainError& e : errors)
-    for (const Display& d : table)
-      if (e.name == d.name)
-        out.push_back({e.name, d.what, d.unit,
-                       e.asymptotic ? "|value - Richardson limit| over mesh scales " + levels +
-                                          ", observed order " + validation::fmt("%.2f", e.order)
-                                    : "last change between mesh scales " +
-                                          validation::fmt("%g", coarse_scales.back()) +
-                                          " and 1; no asymptotic regime over " + levels + " (" + e.why_not +
-                                          "), so an order of magnitude only",
-                       d.factor * e.value, d.factor * e.error, e.error / std::abs(e.value)});
+    if (const QuantityDisplay* d = quantity_display(e.name))
+      out.push_back({e.name, d->what, d->unit,
+                     e.asymptotic
+                         ? "|value - Richardson limit| over mesh scales " + levels + ", observed order " +
+                               validation::fmt("%.2f", e.order)
+                         : "last change between mesh scales " + validation::fmt("%g", coarse_scales.back()) +
+                               " and 1; no asymptotic regime over " + levels + " (" + e.why_not +
+                               "), so an order of magnitude only",
+                     d->factor * e.value, d->factor * e.error, e.error / std::abs(e.value)});
   return out;
 }
 

@@ -65,6 +65,16 @@ nlohmann::json chain_study_json(const Scene& scene, const std::vector<ChainLevel
 // The chain's errors as the page and report.json show them: in display units (kPa, µm as "um"), what each
 // quantity is and how its error was estimated; coarse_scales: the coarser levels' mesh scales, coarse to
 // fine.
+// How a chain quantity is shown (the page, the terminal): its description, its unit and the factor from the
+// chain's own units (mm, MPa) to it; null for a name the chain does not have.
+struct QuantityDisplay {
+  const char* name;
+  const char* what;
+  const char* unit;
+  double factor;
+};
+const QuantityDisplay* quantity_display(const std::string& name);
+
 struct ErrorBar {
   std::string quantity, what, unit, method;
   double value = 0, error = 0, relative_error = 0;

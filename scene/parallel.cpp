@@ -53,12 +53,17 @@ void for_each_index(std::size_t n, const std::function<void(std::size_t)>& f, bo
   std::mutex mutex;
   std::size_t failed = n;  // the lowest index that threw
   std::exception_ptr error;
+  std::size_t reported = n + 1;  // the count last passed to done (on this thread only): no line twice
+  const auto report = [&] {
+    const std::size_t k = finished.load();
+    if (k != reported) done(reported = k);
+  };
   const auto work = [&](bool reports) {
     // An item's own loops run on its thread: one loop's threads are the machine's cores already.
     std::optional<ThreadCap> one_each;
     if (threads > 1) one_each.emplace(1);
     for (;;) {
-      if (reports && done) done(finished.load());
+      if (reports && done) report();
       const std::size_t i = next++;
       {
         // Indices are taken in order, so every index below a failed one has been taken and finishes.
@@ -78,7 +83,7 @@ void for_each_index(std::size_t n, const std::function<void(std::size_t)>& f, bo
   for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work, false);
   work(true);
   for (auto& t : pool) t.join();
-  if (done) done(finished.load());
+  if (done) report();
   if (error) std::rethrow_exception(error);
 }
 

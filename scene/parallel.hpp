@@ -29,7 +29,8 @@ class ThreadCap {
 // more than one thread, each item runs under ThreadCap(1) (a loop inside an item runs on the item's thread).
 // After an item throws, no item above it starts; the exception of the lowest index that threw is rethrown
 // once every thread has ended, as a loop in one thread would. done(k), if given, is called on this thread
-// only, with k items finished, before each item it takes and once at the end (progress lines).
+// only, with k items finished, before each item it takes and once at the end, whenever k has changed since
+// its last call (progress lines, none twice).
 void for_each_index(std::size_t n, const std::function<void(std::size_t)>& f, bool parallel = true,
                     const std::function<void(std::size_t)>& done = {});
 

@@ -13,8 +13,9 @@
 # and the rest at its end. --wait-for-go: read one line from stdin first and draw only if it says go (the
 # report starts the interpreter, whose imports take a third of a second, before the inputs are written).
 #
-# Needs only the standard library, numpy and matplotlib (Debian's /usr/bin/python3; Agg backend). No
-# randomness and no version string in the PNGs (savefig metadata Software=None): same inputs, same bytes.
+# Needs the standard library, numpy and matplotlib (Debian's /usr/bin/python3; Agg backend), and for the VTK
+# files the vtk module (python3-vtk9, which libvtk9-dev installs). No randomness and no version string in the
+# PNGs (savefig metadata Software=None): same inputs, same bytes.
 #
 # Inputs (under DIR; numbers in plain decimal or exponent notation, finite):
 #   green/green.csv          sensor,component,offset_x_mm,offset_y_mm,g_point_per_mm2,g_disc_per_mm2
@@ -35,6 +36,18 @@
 #                            outside the ladder); perception/features.csv source,sensor,position_mm,diameter_mm
 #                            (source truth, multi or naive); perception/summary.json (objects "row",
 #                            "detection", "inversion"). Optional: the report's perception section.
+#   crosscheck/hole_budget.csv  hypothesis,case,sensor,component,fe_peak_kPa,model_peak_kPa,ratio (component
+#                            z or x; ratio = FE/model amplitude); crosscheck/hole_budget_facts.csv
+#                            hypothesis,fact,met (F1-F5, met 0 or 1).
+#   contact/sensors.csv      sensor,x_mm,y_mm (the sensors' centres on the base, z = 0).
+#   contact/summary.json     "friction": the mode drawn (uncoupled and coupled slide).
+#   mesh/mesh.vtu            VTK XML (read with Debian's python3-vtk9): the tetrahedra (10-node, VTK type 24, or
+#                            4-node); mesh/boundary.vtu its boundary triangles (6- or 3-node), cell array
+#                            boundary_marker (2: the top).
+#   contact/pressure.vtp     VTK XML: the contact zone's triangles on the top, point arrays pressure_kPa,
+#                            traction_kPa (3 components), in_contact (1 at the active nodes).
+#   contact/fields.vtu       VTK XML: the tetrahedra with point array stress_MPa (9 components, row-major).
+#   Without the vtk module the figures reading a VTK file are skipped, each with one line saying so.
 #   Sensors are numbered 1, 2, ...; extra columns are ignored.
 #
 # Outputs (DIR/figures/, 120 dpi), each written only if all its inputs exist:
@@ -72,10 +85,22 @@
 #                            required SNR, and the smallest hole detected against N.
 #   perception_inversion.png row.csv, features.csv: the noisy ς_z inverted, then the features found by every
 #                            sensor together and by each alone against the true holes (dotted).
+#   skin_mesh.png            boundary.vtu, mesh.vtu, pressure.vtp, sensors.csv: the top's triangles from above
+#                            with the contact zone (the level 1/2 of in_contact) and the sensors; the section
+#                            y = 0 (faces lying in it, or the cut of the tetrahedra it crosses) over the sensors
+#                            and the contact ± 1.5 mm, z stretched 2×.
+#   contact_pressure_map.png pressure.vtp, summary.json: p from above around the contact zone, its outline, the
+#                            sliding direction (the traction's resultant) when the mode slides; p at the nodes on
+#                            y = 0 against x.
+#   skin_stress.png          fields.vtu, pressure.vtp, sensors.csv, summary.json: σ_zz (kPa) on the section y = 0,
+#                            as skin_mesh.png's, with the sensors and the contact on y = 0.
+#   budget_summary.png       hole_budget.csv, hole_budget_facts.csv: the sliding FE/model ratio per sensor, ς_z
+#                            and ς_x, one line per hypothesis labelled with the facts it meets, with the bands
+#                            of the paper's facts F2 (0.5–2) and F3 (up to 4).
 # Each PNG is written to a hidden temporary name in DIR/figures and renamed into place. A figure whose inputs
-# are missing prints `figures: skipped <name>.png: missing <file>`. The PNGs this run selects (all, without
-# --only or --except) are deleted first, so DIR/figures never keeps one from an earlier run that this run
-# skipped or did not reach.
+# are missing prints `figures: skipped <name>.png: missing <file>` (one needing vtk without it: `missing the
+# vtk module …`). The PNGs this run selects (all, without --only or --except) are deleted first, so
+# DIR/figures never keeps one from an earlier run that this run skipped or did not reach.
 # Prints `figures: wrote figures/<name>.png` per figure and `figures: N written, M skipped`; exit 0.
 # Malformed input (unreadable, empty, missing column or key, wrong field count, bad or non-finite value, a
 # case/component outside the lists above): one line `figures: error: <file>: line N, column 'c': ...` on
@@ -91,10 +116,12 @@ import sys
 import matplotlib
 
 matplotlib.use("Agg")  # before pyplot: no display
+import matplotlib.collections  # noqa: E402
 import matplotlib.lines  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 import matplotlib.transforms  # noqa: E402
+import matplotlib.tri  # noqa: E402
 import numpy as np  # noqa: E402
 
 # Titles at the top of their axes: placed automatically, each one measures its axes' decorations at every
@@ -653,6 +680,8 @@ def budget_figures(d):
             # The name becomes part of a file name: letters, digits and underscores only.
             if not h or not all(c.isascii() and (c.isalnum() or c == "_") for c in h):
                 raise InputError(f"{path}: line {rows.line_num}: hypothesis {h!r}: must be letters, digits, _")
+            if f"budget_{h}.png" in {f[0] for f in FIGURES}:
+                raise InputError(f"{path}: line {rows.line_num}: hypothesis {h!r}: its figure's name is taken")
             if h not in names:
                 names.append(h)
     inputs = ("crosscheck/hole_budget_signals.csv", "crosscheck/defect.csv")
@@ -906,6 +935,442 @@ def perception_inversion(d):
     return fig
 
 
+# ---- the mesh and the contact's fields (VTK XML files, read with Debian's python3-vtk9) --------------------
+class MissingModule(Exception):
+    """A module a figure needs is not installed: the figure is skipped with the reason, the others drawn."""
+
+
+VTK_TETRA, VTK_QUADRATIC_TETRA = 10, 24
+VTK_TRIANGLE, VTK_QUADRATIC_TRIANGLE = 5, 22
+TET_EDGES = ((0, 1), (1, 2), (0, 2), (0, 3), (1, 3), (2, 3))  # a quadratic tetra's mid-edge nodes 4..9
+TET_MID = np.full((4, 4), -1)
+for _e, (_i, _j) in enumerate(TET_EDGES):
+    TET_MID[_i, _j] = TET_MID[_j, _i] = 4 + _e
+BOUNDARY_TOP = 2  # mesh.vtu / boundary.vtu boundary_marker: 1 base, 2 top, 4 side
+
+
+def read_vtk(path, point_arrays=(), cell_arrays=()):
+    """Points (n × 3), cells (connectivity, offsets, types; a .vtp's polygons) and the named point and cell
+    arrays of a VTK XML file. Raises MissingModule without vtk, InputError for an unreadable file or a missing
+    or non-finite array."""
+    try:
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+        from vtkmodules.vtkCommonCore import vtkObject
+        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLUnstructuredGridReader
+    except ImportError as e:
+        raise MissingModule(f"the vtk module (Debian's python3-vtk9): {e}") from None
+    vtkObject.GlobalWarningDisplayOff()  # a bad file is reported below in one line, not by VTK's window
+    poly = path.endswith(".vtp")
+    reader = vtkXMLPolyDataReader() if poly else vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    data = reader.GetOutput()
+    if reader.GetErrorCode() or data is None or data.GetPoints() is None or data.GetNumberOfPoints() == 0:
+        raise InputError(f"{path}: not a readable VTK XML {'poly data' if poly else 'unstructured grid'} file "
+                         "with points")
+    cells = data.GetPolys() if poly else data.GetCells()
+    out = {"points": vtk_to_numpy(data.GetPoints().GetData()).astype(float),
+           "connectivity": vtk_to_numpy(cells.GetConnectivityArray()).astype(np.int64),
+           "offsets": vtk_to_numpy(cells.GetOffsetsArray()).astype(np.int64),
+           "types": None if poly else vtk_to_numpy(data.GetCellTypesArray()).astype(int)}
+    for where, names in ((data.GetPointData(), point_arrays), (data.GetCellData(), cell_arrays)):
+        for name in names:
+            a = where.GetArray(name)
+            if a is None:
+                raise InputError(f"{path}: missing array '{name}'")
+            v = vtk_to_numpy(a).astype(float)
+            if not np.isfinite(v).all():
+                raise InputError(f"{path}: array '{name}': a non-finite value")
+            out[name] = v
+    return out
+
+
+def cells_of(mesh, path, kinds):
+    """The cells as an array (cells × nodes), all of one of `kinds` ((VTK type, nodes) pairs, or nodes per
+    polygon for a .vtp)."""
+    sizes = np.diff(mesh["offsets"])
+    for kind, n in kinds:
+        if sizes.size and (sizes == n).all() and (mesh["types"] is None or (mesh["types"] == kind).all()):
+            return mesh["connectivity"].reshape(-1, n)
+    raise InputError(f"{path}: cells are not all of one of the VTK types {', '.join(str(k) for k, _ in kinds)}")
+
+
+def tetrahedra(mesh, path):
+    return cells_of(mesh, path, ((VTK_QUADRATIC_TETRA, 10), (VTK_TETRA, 4)))
+
+
+def triangles_of(mesh, path):
+    return cells_of(mesh, path, ((VTK_QUADRATIC_TRIANGLE, 6), (VTK_TRIANGLE, 3)))
+
+
+def section_y(points, tets, values=None, y0=0.0):
+    """The cut of the tetrahedra by the plane y = y0 in (x, z): (xz, triangles, vals, segments). A face lying
+    in the plane (a mirrored half mesh's cut: every face there is one) is taken once and split at its mid-edge
+    nodes into 4; a tetrahedron the plane crosses gives its polygon, fanned into triangles. vals (vertices × k):
+    `values` (points × k) at the vertices, nodal on a face, along a crossed edge the edge's quadratic through
+    its mid node. segments: the cut polygons' edges, through the mid-edge nodes (the mesh the section shows)."""
+    values = np.zeros((len(points), 0)) if values is None else values.reshape(len(points), -1)
+    d = points[:, 1] - y0
+    side = np.where(np.abs(d) <= 1e-9 * np.ptp(points, axis=0).max(), 0, np.sign(d)).astype(int)
+    corners = tets[:, :4]
+    quadratic = tets.shape[1] == 10
+    s = side[corners]
+    xz, tris, vals, segs = [np.zeros((0, 2))], [np.zeros((0, 3), dtype=int)], [np.zeros((0, values.shape[1]))], []
+    n = 0
+    on = np.where((s == 0).sum(axis=1) == 3)[0]
+    if on.size:
+        local = np.argsort(s[on] != 0, axis=1, kind="stable")[:, :3]  # the three corners in the plane
+        faces = np.take_along_axis(corners[on], local, axis=1)
+        _, first = np.unique(np.sort(faces, axis=1), axis=0, return_index=True)
+        first.sort()
+        on, local, faces = on[first], local[first], faces[first]
+        if quadratic:
+            a, b, c = local.T
+            mids = np.stack([tets[on, TET_MID[a, b]], tets[on, TET_MID[b, c]], tets[on, TET_MID[c, a]]], axis=1)
+            nodes = np.concatenate([faces, mids], axis=1)  # a, b, c, ab, bc, ca
+            sub = np.array([[0, 3, 5], [3, 1, 4], [5, 4, 2], [3, 4, 5]])
+            loops = np.array([0, 3, 1, 4, 2, 5, 0])
+        else:
+            nodes, sub, loops = faces, np.array([[0, 1, 2]]), np.array([0, 1, 2, 0])
+        used, inverse = np.unique(nodes, return_inverse=True)
+        local_nodes = inverse.reshape(nodes.shape)
+        xz.append(points[used][:, [0, 2]])
+        vals.append(values[used])
+        tris.append(local_nodes[:, sub].reshape(-1, 3))
+        p = points[nodes][:, loops][:, :, [0, 2]]
+        segs.append(np.stack([p[:, :-1], p[:, 1:]], axis=2).reshape(-1, 2, 2))
+        n = len(used)
+    for t in np.where((s.max(axis=1) > 0) & (s.min(axis=1) < 0))[0]:
+        c, st = corners[t], s[t]
+        pts = [points[c[i]] for i in range(4) if st[i] == 0]
+        pv = [values[c[i]] for i in range(4) if st[i] == 0]
+        for e, (i, j) in enumerate(TET_EDGES):
+            if st[i] * st[j] < 0:
+                f = d[c[i]] / (d[c[i]] - d[c[j]])
+                pts.append(points[c[i]] + f * (points[c[j]] - points[c[i]]))
+                vi, vj = values[c[i]], values[c[j]]
+                pv.append(vi * (1 - f) * (1 - 2 * f) + 4 * values[tets[t, 4 + e]] * f * (1 - f) + vj * f * (2 * f - 1)
+                          if quadratic else vi + f * (vj - vi))
+        q = np.array(pts)[:, [0, 2]]
+        o = np.argsort(np.arctan2(q[:, 1] - q[:, 1].mean(), q[:, 0] - q[:, 0].mean()), kind="stable")
+        q = q[o]
+        xz.append(q)
+        vals.append(np.array(pv)[o])
+        tris.append(n + np.array([[0, k, k + 1] for k in range(1, len(q) - 1)]))
+        segs.append(np.stack([q, np.roll(q, -1, axis=0)], axis=1))
+        n += len(q)
+    segs = np.concatenate(segs) if segs else np.zeros((0, 2, 2))
+    return np.concatenate(xz), np.concatenate(tris), np.concatenate(vals), segs
+
+
+def read_sensor_positions(d):
+    t = read_csv(os.path.join(d, "contact/sensors.csv"), {"sensor": sensor_number, "x_mm": number, "y_mm": number})
+    return [(int(s), x, y) for s, x, y in zip(t["sensor"].tolist(), t["x_mm"].tolist(), t["y_mm"].tolist())]
+
+
+def read_contact_zone(d):
+    """contact/pressure.vtp: points, triangles and the named arrays; `zone` the active nodes' mask."""
+    path = os.path.join(d, "contact/pressure.vtp")
+    pr = read_vtk(path, point_arrays=("pressure_kPa", "traction_kPa", "in_contact"))
+    pr["triangles"] = cells_of(pr, path, ((VTK_TRIANGLE, 3),))
+    pr["zone"] = pr["in_contact"] > 0.5
+    if not pr["zone"].any():
+        raise InputError(f"{path}: no node in contact (in_contact)")
+    return pr
+
+
+def contact_outline(ax, pr, **style):
+    """The contact zone's outline seen from above: the level 1/2 of in_contact (1 at the active nodes) on the
+    zone's triangles, halfway between the last active node and the first free one."""
+    tri = matplotlib.tri.Triangulation(pr["points"][:, 0], pr["points"][:, 1], pr["triangles"])
+    return ax.tricontour(tri, pr["in_contact"], levels=[0.5], **style)
+
+
+def contact_on_section(pr, y0=0.0):
+    """The active nodes on the line y = y0 of the top, sorted along x: (x, z), or None."""
+    p = pr["points"]
+    m = pr["zone"] & (np.abs(p[:, 1] - y0) <= 1e-9 * np.ptp(p, axis=0).max())
+    if not m.any():
+        return None
+    o = np.argsort(p[m, 0], kind="stable")
+    return p[m][o][:, 0], p[m][o][:, 2]
+
+
+def section_window(points, sensors, contact, margin=1.5):
+    """The x range of the section drawn: the sensors on y = 0 and the contact on it, with a margin, inside the
+    skin."""
+    xs = [x for _, x, y in sensors if abs(y) < 1e-9]
+    if contact is not None:
+        xs += [contact[0].min(), contact[0].max()]
+    lo, hi = points[:, 0].min(), points[:, 0].max()
+    if not xs:
+        return lo, hi
+    return max(lo, min(xs) - margin), min(hi, max(xs) + margin)
+
+
+def sliding_direction(d, pr):
+    """The unit tangential traction's resultant (the plate's motion) when contact/summary.json's friction mode
+    slides (uncoupled, coupled) and the traction is not zero; else None."""
+    path = os.path.join(d, "contact/summary.json")
+    try:
+        with open(path) as f:
+            mode = json.load(f).get("friction")
+    except (OSError, UnicodeDecodeError, ValueError, AttributeError) as e:
+        raise InputError(f"{path}: {e}") from None
+    r = pr["traction_kPa"].reshape(len(pr["points"]), -1)[:, :2].sum(axis=0)
+    if mode not in ("uncoupled", "coupled") or np.hypot(*r) == 0:
+        return None
+    return r / np.hypot(*r)
+
+
+def mark_sensors(ax, sensors, on_line=False, **style):
+    """Every sensor at its (x, y) from above, or (on_line) those on y = 0 at their x, below the base line."""
+    for s, x, y in sensors:
+        if not on_line:
+            ax.plot([x], [y], "o", color=sensor_color(s), mec="k", mew=0.6, zorder=5, **style)
+        elif abs(y) < 1e-9:
+            ax.plot([x], [0], "^", color=sensor_color(s), mec="k", mew=0.6, clip_on=False, zorder=5,
+                    transform=ax.transData + matplotlib.transforms.ScaledTranslation(0, -4.5 / 72,
+                                                                                     ax.figure.dpi_scale_trans),
+                    **style)
+
+
+def section_axes(x0, x1, height_mm, exaggeration, width_in, left, right, bottom, top):
+    """A figure whose one axes shows x0..x1 (mm) across width_in inches and 0..height_mm with z stretched
+    `exaggeration` times: its height follows from the window (no blank band beside an equal-aspect axes)."""
+    h = width_in * exaggeration * height_mm / (x1 - x0)
+    fig = plt.figure(figsize=(left + width_in + right, bottom + h + top))
+    w, H = fig.get_size_inches()
+    ax = fig.add_axes([left / w, bottom / H, width_in / w, h / H])
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(0, height_mm)
+    return fig, ax
+
+
+def skin_mesh(d):
+    bpath, mpath = os.path.join(d, "mesh/boundary.vtu"), os.path.join(d, "mesh/mesh.vtu")
+    b = read_vtk(bpath, cell_arrays=("boundary_marker",))
+    faces = triangles_of(b, bpath)[b["boundary_marker"] == BOUNDARY_TOP]
+    if not len(faces):
+        raise InputError(f"{bpath}: no top face (boundary_marker {BOUNDARY_TOP})")
+    m = read_vtk(mpath)
+    tets = tetrahedra(m, mpath)
+    pr, sensors = read_contact_zone(d), read_sensor_positions(d)
+    # The top's triangle edges, each once, through its mid-edge node when quadratic.
+    pairs = ((0, 1, 3), (1, 2, 4), (2, 0, 5)) if faces.shape[1] == 6 else ((0, 1, 0), (1, 2, 1), (2, 0, 2))
+    edges = np.concatenate([faces[:, [i, j, k]] for i, j, k in pairs])
+    _, first = np.unique(np.sort(edges[:, :2], axis=1), axis=0, return_index=True)
+    edges = edges[np.sort(first)]
+    xy = b["points"][:, :2]
+    top = np.concatenate([np.stack([xy[edges[:, 0]], xy[edges[:, 2]]], axis=1),
+                          np.stack([xy[edges[:, 2]], xy[edges[:, 1]]], axis=1)])
+    contact = contact_on_section(pr)
+    x0, x1 = section_window(m["points"], sensors, contact)
+    _, _, _, segs = section_y(m["points"], tets)
+    keep = (segs[:, :, 0].max(axis=1) >= x0) & (segs[:, :, 0].min(axis=1) <= x1)
+    fig = plt.figure(figsize=(9, 4.3))
+    ax = fig.add_axes([0.6 / 9, 0.5 / 4.3, 3.5 / 9, 3.5 / 4.3])
+    ax.add_collection(matplotlib.collections.LineCollection(top, colors="0.25", linewidths=0.25))
+    contact_outline(ax, pr, colors="tab:red", linewidths=1.4)
+    mark_sensors(ax, sensors, ms=3.5)
+    lo, hi = xy.min(axis=0) - 0.5, xy.max(axis=0) + 0.5
+    half = (hi - lo).max() / 2
+    ax.set_xlim((lo + hi)[0] / 2 - half, (lo + hi)[0] / 2 + half)
+    ax.set_ylim((lo + hi)[1] / 2 - half, (lo + hi)[1] / 2 + half)
+    ax.set_aspect("equal")
+    ax.grid(False)
+    ax.set_xlabel("x (mm)")
+    ax.set_ylabel("y (mm)")
+    ax.set_title("top surface from above: its triangles", fontsize=9)
+    ax.tick_params(labelsize=8)
+    ax.legend(handles=[matplotlib.lines.Line2D([], [], color="tab:red", lw=1.4, label="contact zone"),
+                       matplotlib.lines.Line2D([], [], ls="", marker="o", mfc="0.6", mec="k", ms=4,
+                                               label="sensors (on the base)")],
+              loc="lower left", fontsize=8, framealpha=0.9)
+    # The section: its window's width and height in the figure's right part, z stretched.
+    exaggeration, zmax = 2, m["points"][:, 2].max()
+    width = 4.25
+    height = width * exaggeration * (zmax + 0.1) / (x1 - x0)
+    bx = fig.add_axes([4.6 / 9, (0.5 + (3.5 - height) / 2) / 4.3, width / 9, height / 4.3])
+    bx.add_collection(matplotlib.collections.LineCollection(segs[keep], colors="0.2", linewidths=0.35))
+    bx.axhline(0, color="k", lw=1.2)
+    mark_sensors(bx, sensors, on_line=True, ms=5)
+    if contact is not None:
+        bx.plot(contact[0], contact[1], color="tab:red", lw=2.5, solid_capstyle="butt", zorder=4, clip_on=False)
+    bx.set_xlim(x0, x1)
+    bx.set_ylim(0, zmax + 0.1)
+    bx.set_aspect(exaggeration)
+    bx.grid(False)
+    bx.set_xlabel("x (mm); ▲ sensors", labelpad=6)
+    bx.set_ylabel(f"z (mm), stretched {exaggeration}×", fontsize=9)
+    bx.set_title("section y = 0: the cut tetrahedra; base z = 0", fontsize=9)
+    bx.tick_params(labelsize=8)
+    bx.tick_params(axis="x", pad=8)
+    return fig
+
+
+def contact_pressure_map(d):
+    pr = read_contact_zone(d)
+    direction = sliding_direction(d, pr)
+    p, z = pr["points"], pr["zone"]
+    tri = matplotlib.tri.Triangulation(p[:, 0], p[:, 1], pr["triangles"])
+    margin = 0.4
+    lo, hi = p[z, :2].min(axis=0) - margin, p[z, :2].max(axis=0) + margin
+    side = 3.4  # inches, the map's height
+    wmap = side * (hi[0] - lo[0]) / (hi[1] - lo[1])
+    fig = plt.figure(figsize=(9, side + 0.95))
+    ax = fig.add_axes([0.65 / 9, 0.55 / (side + 0.95), wmap / 9, side / (side + 0.95)])
+    cax = fig.add_axes([(0.65 + wmap + 0.1) / 9, 0.55 / (side + 0.95), 0.15 / 9, side / (side + 0.95)])
+    px0 = 0.65 + wmap + 0.1 + 0.15 + 0.95
+    bx = fig.add_axes([px0 / 9, 0.55 / (side + 0.95), (9 - px0 - 0.15) / 9, side / (side + 0.95)])
+    cmap = plt.get_cmap("viridis")
+    im = ax.tripcolor(tri, pr["pressure_kPa"], shading="gouraud", cmap=cmap, vmin=0,
+                      vmax=pr["pressure_kPa"].max(), rasterized=True)
+    contact_outline(ax, pr, colors="w", linewidths=1.0)
+    ax.set_xlim(lo[0], hi[0])
+    ax.set_ylim(lo[1], hi[1])
+    ax.grid(False)
+    ax.set_facecolor(cmap(0.0))  # outside the zone solved: no contact, p = 0
+    if direction is not None:
+        tail = np.array([lo[0] + 0.06 * (hi[0] - lo[0]), hi[1] - 0.07 * (hi[1] - lo[1])])
+        ax.annotate("", xy=tail + 0.22 * (hi[0] - lo[0]) * direction, xytext=tail,
+                    arrowprops=dict(arrowstyle="-|>", color="w", lw=1.6, mutation_scale=14))
+        ax.text(tail[0], tail[1] - 0.04 * (hi[1] - lo[1]), "sliding direction", color="w", ha="left", va="top",
+                fontsize=8)
+    ax.plot([], [], color="w", lw=1.0, label="contact zone (active nodes)")
+    ax.legend(loc="lower left", fontsize=8, facecolor=cmap(0.0), labelcolor="w", edgecolor="w")
+    ax.set_xlabel("x (mm)")
+    ax.set_ylabel("y (mm)")
+    ax.set_title("p on the skin's top, from above", fontsize=9)
+    ax.tick_params(labelsize=8)
+    cax.grid(False)
+    cb = fig.colorbar(im, cax=cax)
+    cb.set_label("contact pressure p (kPa)", fontsize=9)
+    cb.ax.tick_params(labelsize=8)
+    line = np.abs(p[:, 1]) <= 1e-9 * np.ptp(p, axis=0).max()
+    if line.any():
+        o = np.argsort(p[line, 0], kind="stable")
+        bx.plot(p[line, 0][o], pr["pressure_kPa"][line][o], "-", color="k", lw=1.2, marker=".", ms=3,
+                label="p at the nodes on y = 0")
+        zl = line & z
+        if zl.any():
+            bx.axvspan(p[zl, 0].min(), p[zl, 0].max(), color="tab:green", alpha=0.12, lw=0,
+                       label="active nodes on y = 0")
+        bx.legend(loc="upper left", fontsize=8)
+    else:
+        no_data(bx, "no node on y = 0")
+    bx.set_xlim(lo[0], hi[0])
+    bx.set_ylim(0, 1.3 * pr["pressure_kPa"].max())
+    bx.set_xlabel("x (mm), along y = 0")
+    bx.set_ylabel("p (kPa)")
+    bx.set_title("p along y = 0", fontsize=9)
+    bx.tick_params(labelsize=8)
+    return fig
+
+
+def skin_stress(d):
+    path = os.path.join(d, "contact/fields.vtu")
+    f = read_vtk(path, point_arrays=("stress_MPa",))
+    if f["stress_MPa"].ndim != 2 or f["stress_MPa"].shape[1] != 9:
+        raise InputError(f"{path}: array 'stress_MPa' has not 9 components")
+    tets = tetrahedra(f, path)
+    pr, sensors = read_contact_zone(d), read_sensor_positions(d)
+    contact = contact_on_section(pr)
+    direction = sliding_direction(d, pr)
+    xz, tris, vals, _ = section_y(f["points"], tets, 1e3 * f["stress_MPa"][:, 8])  # σ_zz (row-major), kPa
+    x0, x1 = section_window(f["points"], sensors, contact)
+    keep = (xz[tris, 0].max(axis=1) >= x0) & (xz[tris, 0].min(axis=1) <= x1)
+    v = vals[:, 0]
+    top = np.abs(v[np.unique(tris[keep])]).max() or 1.0
+    exaggeration, zmax = 2, f["points"][:, 2].max()
+    fig, ax = section_axes(x0, x1, zmax + 0.45, exaggeration, 7.3, left=0.65, right=1.05, bottom=0.65, top=0.3)
+    cmap = plt.get_cmap("RdBu_r")
+    im = ax.tripcolor(matplotlib.tri.Triangulation(xz[:, 0], xz[:, 1], tris[keep]), v, shading="gouraud",
+                      cmap=cmap, vmin=-top, vmax=top, rasterized=True)
+    ax.set_facecolor("0.8")  # outside the skin
+    ax.axhline(0, color="k", lw=1.2)
+    mark_sensors(ax, sensors, on_line=True, ms=6)
+    if contact is not None:
+        ax.plot(contact[0], contact[1] + 0.05, color="k", lw=3, solid_capstyle="butt", zorder=4,
+                label="contact on y = 0")
+        if direction is not None and abs(direction[0]) > 1e-9:
+            xm, zt, sgn = contact[0].mean(), contact[1].max() + 0.27, np.sign(direction[0])
+            ax.annotate("", xy=(xm + 0.7 * sgn, zt), xytext=(xm - 0.7 * sgn, zt),
+                        arrowprops=dict(arrowstyle="-|>", color="k", lw=1.4, mutation_scale=12))
+            ax.text(xm + 0.9, zt, "sliding", ha="left", va="center", fontsize=8)
+    ax.set_aspect(exaggeration)
+    ax.grid(False)
+    w, h = fig.get_size_inches()
+    cax = fig.add_axes([(w - 0.95) / w, 0.65 / h, 0.15 / w, (h - 0.95) / h])
+    cax.grid(False)
+    cb = fig.colorbar(im, cax=cax)
+    cb.set_label("σ_zz (kPa; < 0: compression)", fontsize=9)
+    cb.ax.tick_params(labelsize=8)
+    ax.set_xlabel("x (mm); ▲ sensors on the base", labelpad=4)
+    ax.tick_params(axis="x", pad=9, labelsize=8)
+    ax.tick_params(axis="y", labelsize=8)
+    ax.set_ylabel(f"z (mm), stretched {exaggeration}×")
+    ax.set_title("σ_zz on the section y = 0 through the skin (grey: outside it; black bar: the contact)",
+                 fontsize=9)
+    return fig
+
+
+def budget_style(names):
+    """(colour, marker) per hypothesis: a family (the name's first word: coulomb, shear, mixed, …) has one
+    colour map, its members darker in file order."""
+    maps = ("Blues", "Reds", "Greens", "Purples", "Oranges", "Greys")
+    families = in_order(np.array([n.split("_")[0] for n in names]))
+    members = {f: [n for n in names if n.split("_")[0] == f] for f in families}
+    markers = "osD^v<>PX*h"
+    style = {}
+    for i, fam in enumerate(families):
+        cmap = plt.get_cmap(maps[i % len(maps)])
+        k = len(members[fam])
+        for j, n in enumerate(members[fam]):
+            style[n] = (cmap(0.9 - 0.5 * j / max(k - 1, 1)), markers[names.index(n) % len(markers)])
+    return style
+
+
+def budget_summary(d):
+    t = read_csv(os.path.join(d, "crosscheck/hole_budget.csv"),
+                 {"hypothesis": text, "case": one_of(*CASES), "sensor": sensor_number, "component": one_of("z", "x"),
+                  "fe_peak_kPa": number, "model_peak_kPa": number, "ratio": number})
+    names = in_order(t["hypothesis"])
+    style = budget_style(names)
+    f = read_csv(os.path.join(d, "crosscheck/hole_budget_facts.csv"),
+                 {"hypothesis": text, "fact": one_of("F1", "F2", "F3", "F4", "F5"), "met": one_of("0", "1")})
+    met = {n: " ".join(sorted(x for x, h, m in zip(f["fact"], f["hypothesis"], f["met"]) if h == n and m == "1"))
+           for n in names}
+    sensors = sorted(set(t["sensor"].tolist()))
+    fig, axes = plt.subplots(1, 2, figsize=(9, 4.8), sharey=True)
+    for ax, comp in zip(axes, ("z", "x")):
+        ax.axhspan(0.5, 2, color="tab:green", alpha=0.12, lw=0, label="F2: the back sensors match (0.5–2×)")
+        ax.axhspan(2, 4, color="tab:orange", alpha=0.15, lw=0, label="F3: the front sensors up to 4× (≥ 2×)")
+        ax.axhline(1, color="k", lw=0.8, ls="--", label="FE = the paper's model")
+        for n in names:
+            m = (t["hypothesis"] == n) & (t["case"] == "sliding") & (t["component"] == comp) & (t["ratio"] > 0)
+            if m.any():
+                color, marker = style[n]
+                ax.plot(*series(t, m, "sensor", "ratio"), marker=marker, color=color, lw=1.1, ms=4.5,
+                        label=f"{n} (met: {met[n] or 'none'})")
+        ax.set_yscale("log")
+        plain_log_ticks(ax.yaxis)
+        ax.yaxis.set_major_locator(matplotlib.ticker.FixedLocator([0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1, 2, 4, 10, 20]))
+        ax.set_xticks(sensors)
+        ax.set_xticklabels([f"#{s}" for s in sensors])
+        ax.set_xlabel("sensor")
+        ax.set_title(f"ς_{comp}", fontsize=10)
+        ax.tick_params(labelsize=8)
+    axes[0].set_ylabel("max |ς| sliding: FE / paper's model")
+    handles, labels = axes[0].get_legend_handles_labels()
+    order = list(range(3, len(handles))) + [0, 1, 2]
+    fig.legend([handles[i] for i in order], [labels[i] for i in order], loc="lower center", ncol=4, fontsize=8)
+    fig.suptitle("Hole-signal budget: max |ς| of each hypothesis over the paper's model, per sensor (sliding)",
+                 fontsize=10)
+    inch_margins(fig, left=0.7, right=0.15, bottom=1.35, top=0.55, wspace=0.06, hspace=0.2)
+    return fig
+
+
 FIGURES = [
     ("fig1_calibration.png", ("green/green.csv", "kfit/kfit.json"), fig1_calibration),
     ("fig2_static_sliding.png", ("crosscheck/readings.csv",), fig2_static_sliding),
@@ -922,6 +1387,11 @@ FIGURES = [
                                   "perception/summary.json"), perception_detection),
     ("perception_inversion.png", ("perception/row.csv", "perception/features.csv", "perception/summary.json"),
      perception_inversion),
+    ("skin_mesh.png", ("mesh/boundary.vtu", "mesh/mesh.vtu", "contact/pressure.vtp", "contact/sensors.csv"), skin_mesh),
+    ("contact_pressure_map.png", ("contact/pressure.vtp", "contact/summary.json"), contact_pressure_map),
+    ("skin_stress.png", ("contact/fields.vtu", "contact/pressure.vtp", "contact/sensors.csv", "contact/summary.json"),
+     skin_stress),
+    ("budget_summary.png", ("crosscheck/hole_budget.csv", "crosscheck/hole_budget_facts.csv"), budget_summary),
 ]
 
 
@@ -974,7 +1444,7 @@ def main(argv):
     for name in os.listdir(out):  # figures/ then holds exactly what this run drew, nothing from an earlier one
         if name.endswith(".png") and (selection is None or name in chosen):
             os.remove(os.path.join(out, name))
-    budget = [f for f in _FIGURES if f[0].startswith("budget_")]
+    budget = [f for f in _FIGURES if "crosscheck/hole_budget_signals.csv" in f[1]]  # not budget_summary.png
     signals = any("crosscheck/defect.csv" in f[1] for f in _FIGURES)
     try:
         if signals and os.path.isfile(os.path.join(d, "crosscheck/defect.csv")):
@@ -1018,6 +1488,8 @@ def draw_figure(i):
         save(draw(_DIR), os.path.join(_DIR, "figures", name))
     except InputError as e:
         return "error", str(e)
+    except MissingModule as e:
+        return "skipped", str(e)
     return "wrote", ""
 
 

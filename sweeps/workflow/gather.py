@@ -8,7 +8,8 @@ runs it again: killed by a signal or out of memory) in members/<id>/status.json.
 gather: results.csv (one row per member: its id, the axes' values, its status, every number of its summary
 file flattened as dotted keys), results.h5 (per member: its parameters as attributes, every numeric array of
 its summary file and every column of its CSV outputs) and plots/<axis>.png (the headline numbers against each
-axis, one line per value of the other axes).
+axis, one line per value of the other axes, with error bars where the members carry them: error_of). A summary
+number equal to an axis on every member is not repeated in results.csv.
 """
 import csv
 import datetime
@@ -147,6 +148,9 @@ def gather(manifest, directory):
         rows.append((m, status, summary))
         numbers.append(flat)
 
+    # A summary number that repeats an axis on every member (kfit.json's "nu" on a /material/nu axis) is left
+    # out: the axis column says it.
+    columns = [k for k in columns if not any(repeats_axis(k, i, rows, numbers) for i in range(len(axes)))]
     header = ["id"] + [axis_column(a) for a in axes] + ["exit_code", "error", "member_wall_s"] + columns
     tmp = os.path.join(directory, "results.csv.tmp")
     with open(tmp, "w", newline="") as f:
@@ -186,6 +190,23 @@ def gather(manifest, directory):
              len(header), len(written), plural(len(written))))
 
 
+def repeats_axis(key, i, rows, numbers):
+    """Whether the summary number `key` equals axis i's value on every member that has it (and one does)."""
+    pairs = [(m["values"][i], flat[key]) for (m, _, _), flat in zip(rows, numbers) if key in flat]
+    return bool(pairs) and all(isinstance(v, (int, float)) and not isinstance(v, bool)
+                               and math.isclose(v, x, rel_tol=1e-12, abs_tol=1e-15) for v, x in pairs)
+
+
+def error_of(flat, key):
+    """A plotted number's error bar where the member carries one: `<key>_error` (absolute) or
+    `<key>_change_from_half_resolution` (relative: the meridian path's k against half its resolution)."""
+    if key + "_error" in flat:
+        return abs(flat[key + "_error"])
+    if key + "_change_from_half_resolution" in flat:
+        return abs(flat[key + "_change_from_half_resolution"] * flat[key])
+    return None
+
+
 def store_csv(group, name, path):
     """A CSV output's columns as datasets name/<column>: numbers as float arrays, text (green's component
     names) as strings."""
@@ -223,15 +244,24 @@ def plot(manifest, rows, numbers, plotted, plots_dir):
             others = tuple((axis_column(a), json.dumps(m["values"][j])) for j, a in enumerate(axes) if j != i)
             groups.setdefault(others, []).append((m["values"][i], flat))
         for panel, key in zip(panels[0], plotted):
+            bars = None  # the largest error bar drawn
             for others, points in groups.items():
-                points = sorted((x, f[key]) for x, f in points if key in f and math.isfinite(f[key]))
+                points = sorted((x, f[key], error_of(f, key)) for x, f in points
+                                if key in f and math.isfinite(f[key]))
                 if points:
                     label = ", ".join("%s %s" % (o[0].rsplit(".", 1)[-1], o[1]) for o in others) or None
-                    panel.plot([p[0] for p in points], [p[1] for p in points], "o-", ms=3, label=label)
+                    errors = [p[2] for p in points]
+                    panel.errorbar([p[0] for p in points], [p[1] for p in points], fmt="o-", ms=3, capsize=2,
+                                   yerr=errors if all(e is not None for e in errors) else None, label=label)
+                    if all(e is not None for e in errors):
+                        bars = max(bars or 0.0, max(errors))
             if manifest["command"] == "kfit" and "paper_k" in numbers[0]:
                 panel.axhline(numbers[0]["paper_k"], color="k", ls="--", lw=0.8, label="the paper's k")
             panel.set_xlabel(axis_column(axis))
-            panel.set_title(key)
+            lo, hi = panel.get_ylim()
+            note = "" if bars is None else ("\nerror bars smaller than the markers" if bars < 0.01 * (hi - lo)
+                                            else "\nwith the members' error bars")
+            panel.set_title(key + note, fontsize=8.5)
             panel.grid(alpha=0.3)
         if len(groups) <= 10 and panels[0][-1].get_legend_handles_labels()[1]:
             panels[0][-1].legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1))

@@ -6,6 +6,7 @@
 # - every link and image resolves: a relative file under OUT_DIR, or an #id on the page;
 # - every image has alt text, links to its own file (full size) and sits in a <figure> with a caption;
 # - the paper's figures 1-4 come first, in its order;
+# - a quantity named in two tables with a unit column has one unit (the headline numbers, the levels);
 # - the visible text uses the page's notation, not the terminal's ASCII (+-, um, varsigma, sigma_z).
 # Prints one line per defect; exit 1 if any, 0 otherwise.
 import os
@@ -36,11 +37,13 @@ class Page(HTMLParser):
         if tag not in VOID:
             self.stack.append((tag, a))
         if tag == "table":
-            self.tables.append({"rows": [], "line": self.getpos()[0]})
+            self.tables.append({"rows": [], "cells": [], "line": self.getpos()[0]})
         elif tag == "tr" and self.tables:
             self.tables[-1]["rows"].append(0)
+            self.tables[-1]["cells"].append([])
         elif tag in ("td", "th") and self.tables and self.tables[-1]["rows"]:
             self.tables[-1]["rows"][-1] += int(a.get("colspan", "1"))
+            self.tables[-1]["cells"][-1].append("")
         elif tag == "a" and "href" in a:
             self.links.append((a["href"], self.where()))
         elif tag == "img":
@@ -70,6 +73,9 @@ class Page(HTMLParser):
         if any(t in ("style", "script", "title") for t, _ in self.stack):
             return
         self.text.append(data)
+        if self.tables and self.tables[-1]["cells"] and self.tables[-1]["cells"][-1] and \
+                any(t in ("td", "th") for t, _ in self.stack):
+            self.tables[-1]["cells"][-1][-1] += data
         if self.figure is not None and any(t == "figcaption" for t, _ in self.stack):
             self.figure["caption"] += data
 
@@ -88,6 +94,19 @@ def main(out):
         for r, w in enumerate(widths[1:], start=2):
             if w != widths[0]:
                 bad.append(f"table {i + 1} (line {t['line']}): row {r} spans {w} columns, its header {widths[0]}")
+    # One unit per quantity: a quantity named in two tables with a unit column has the same unit in both.
+    units = {}
+    for i, t in enumerate(page.tables):
+        head = [c.strip() for c in t["cells"][0]] if t["cells"] else []
+        if "unit" not in head:
+            continue
+        u = head.index("unit")
+        for row in t["cells"][1:]:
+            if len(row) > u and row[0].strip():
+                name, unit = row[0].strip(), row[u].strip()
+                if units.setdefault(name, (unit, i + 1))[0] != unit:
+                    bad.append(f"'{name}' in {units[name][0] or 'no unit'} (table {units[name][1]}) and in "
+                               f"{unit or 'no unit'} (table {i + 1})")
     for link, where in page.links:
         u = urlparse(link)
         if u.scheme in ("http", "https", "mailto"):

@@ -2,8 +2,10 @@
 # The report's page in a real browser: headless Chromium renders index.html of a coarse report
 # (tests/app/data/coarse_cap.json) at the page's design width; the screenshot must be the size asked for and
 # show the page (not a blank or an error page): mostly white background, with text and the figures' colours.
-# Where no headless browser is installed (Debian's chromium is not among skinfem's dependencies) the test is
-# skipped with the reason printed (exit 77, ctest's SKIP_RETURN_CODE).
+# Laid out by the browser at that width, no table is wider than the page (none scrolls sideways), and the
+# contents list names every section, each link landing on its heading.
+# Where no headless browser is installed (scripts/test installs Debian's chromium; scripts/run does not) the
+# test is skipped with the reason printed (exit 77, ctest's SKIP_RETURN_CODE).
 set -u
 skinfem=$1
 browser=""
@@ -39,5 +41,42 @@ if not 0.5 < white < 0.995: bad.append(f"white fraction {white:.3f}: blank or no
 if colours < 200: bad.append(f"{colours} distinct colours: no figure rendered")
 for b in bad: print("FAIL screenshot:", b)
 print(f"screenshot {img.shape[1]}x{img.shape[0]}: white {white:.3f}, {colours} colours")
+sys.exit(1 if bad else 0)
+PY
+[ $? -eq 0 ] || exit 1
+# The layout as the browser computes it: a script added to a copy of the page records each table's width
+# against the width it is given, and the contents list against the headings; --dump-dom prints the result.
+python3 - "$tmp/rep/index.html" "$tmp/rep/probe.html" <<'PY'
+import sys
+page = open(sys.argv[1], encoding="utf-8").read()
+probe = """<script>
+const r = {wide: [], contents: [], headings: document.querySelectorAll('h2').length};
+document.querySelectorAll('table').forEach((t, i) => {
+  if (t.scrollWidth > t.clientWidth + 1)
+    r.wide.push(`table ${i + 1} (${t.rows[0].innerText.replace(/\\s+/g, ' ').slice(0, 60)}): ${t.scrollWidth} px in ${t.clientWidth} px`);
+});
+document.querySelectorAll('nav a').forEach(a => {
+  const target = document.querySelector(a.getAttribute('href'));
+  r.contents.push([a.innerText, target !== null && target.tagName === 'H2' && target.innerText === a.innerText]);
+});
+document.body.setAttribute('data-probe', JSON.stringify(r));
+</script>"""
+open(sys.argv[2], "w", encoding="utf-8").write(page.replace("</body>", probe + "</body>"))
+PY
+"$browser" --headless --no-sandbox --disable-gpu --window-size=$width,$height --dump-dom \
+  "file://$tmp/rep/probe.html" >"$tmp/dom.html" 2>>"$tmp/browser.log"
+/usr/bin/python3 - "$tmp/dom.html" <<'PY'
+import html, json, re, sys
+m = re.search(r'data-probe="([^"]*)"', open(sys.argv[1], encoding="utf-8").read())
+if not m:
+    sys.exit("FAIL layout: the browser ran no probe")
+r = json.loads(html.unescape(m.group(1)))
+bad = [f"wider than the page: {w}" for w in r["wide"]]
+if len(r["contents"]) != r["headings"]:
+    bad.append(f"the contents list has {len(r['contents'])} entries, the page {r['headings']} sections")
+bad += [f"contents entry '{name}' does not land on its heading" for name, ok in r["contents"] if not ok]
+for b in bad:
+    print("FAIL layout:", b)
+print(f"layout: {r['headings']} sections in the contents list, no table wider than the page" if not bad else "")
 sys.exit(1 if bad else 0)
 PY

@@ -159,7 +159,7 @@ else:
     truth = [float(x["position_mm"]) for x in csv.DictReader(open(os.path.join(out, "perception", "features.csv")))
              if x["source"] == "truth"]
     if truth != pr["row"]["holes_mm"]: bad.append(f"features.csv truth {truth} against {pr['row']['holes_mm']}")
-    if "<h2>Perception" not in html: bad.append("index.html has no perception section")
+    if not re.search(r"<h2[^>]*>Perception", html): bad.append("index.html has no perception section")
     ms = pr["inversion"]["multi_sensor"]
     if f"{ms['found']} of {len(truth)} holes found" not in html: bad.append("the page does not quote the inversion")
     for fig in ("perception_scan", "perception_superposition", "perception_detection", "perception_inversion"):

@@ -38,7 +38,7 @@ pid=$!
 # Snakemake's "1 of 6 steps" line: the first member is done and registered (a status written but not yet
 # registered is removed as incomplete by the shutdown).
 for _ in $(seq 1 6000); do
-  grep -q "^1 of 6 steps" run1.log && break
+  grep -q "^1 of 6 steps" D/snakemake.log 2>/dev/null && break
   kill -0 $pid 2>/dev/null || fail "the sweep ended before its first member finished: $(tail -3 run1.log)"
   sleep 0.05
 done
@@ -60,14 +60,18 @@ for f in $first; do cp "$f" "$f.before"; done
 # 2. Resumed with 2 cores: the missing members run, the finished ones do not.
 "$skinfem" sweep spec.json --out D --cores 2 >run2.log 2>&1 || fail "resume: $(tail -3 run2.log)"
 grep -q "4 members .*, $n_first already done" run2.log || fail "resume: $(head -1 run2.log)"
-ran=$(grep -c "^rule member:" run2.log)
+ran=$(grep -c "^rule member:" D/snakemake.log)
 [ "$ran" -eq $((4 - n_first)) ] || fail "the resume ran $ran members, want the $((4 - n_first)) missing"
 for f in $first; do cmp -s "$f" "$f.before" || fail "$f was run again"; done
 [ "$(statuses | wc -l)" -eq 4 ] || fail "after the resume: $(statuses | wc -l) statuses"
 
 # 3. Nothing changed: nothing runs.
 "$skinfem" sweep spec.json --out D --cores 2 >run3.log 2>&1 || fail "third run: $(tail -3 run3.log)"
-[ "$(grep -c '^rule member:' run3.log)" -eq 0 ] || fail "the third sweep ran members again"
+[ "$(grep -c '^rule member:' D/snakemake.log)" -eq 0 ] || fail "the third sweep ran members again"
+# What the terminal shows: the progress line and the gather's summary; Snakemake's own log is in its file.
+grep -q "sweep: 4 of 4 members finished (0 failed)" run2.log || fail "no progress line: $(cat run2.log)"
+grep -q "^gathered 4 members (4 ok, 0 failed)" run2.log || fail "no gather summary: $(cat run2.log)"
+! grep -q "^rule member:" run2.log || fail "Snakemake's job log on the terminal: $(head -5 run2.log)"
 
 # 4. The gathered table against the members' own files.
 /usr/bin/python3 - <<'PY' || exit 1
@@ -84,6 +88,8 @@ for row, m in zip(rows, manifest["members"]):
     seen.add((nu, d))
     k = json.load(open("D/members/%s/out/kfit.json" % m["id"]))
     assert k["nu"] == nu and k["punch_diameter_mm"] == d, (k["nu"], k["punch_diameter_mm"])
+    # kfit.json's nu and punch_diameter_mm repeat the axes: the axis columns stand for them.
+    assert "nu" not in row and "punch_diameter_mm" not in row, [c for c in row if c in ("nu", "punch_diameter_mm")]
     for key in ("k_central", "k_lsq_line", "k_central_exact", "k_lsq_line_exact", "dofs", "h_mm"):
         assert float(row[key]) == k[key], (key, row[key], k[key])
     for c in ("zz", "zx", "xz", "xx"):

@@ -4,6 +4,11 @@
 // come to 0.81–1.04. Measured again (2026-11): the shipped scenes at their own sizes 0.52 (fingertip)–1.04,
 // at every size × 2 0.25–0.92 (TetGen grades more slowly than a growth of 2.4 asks; the built mesh is checked
 // again before assembly). The guard only needs a factor of 2, so the tests allow [0.6, 1.6].
+// Measured 2026-12 (whole skins, scaled_scene at 1, 1.41, 2), actual / estimate: candelier2011 1.30, 1.61,
+// 2.17; fingertip 1.93, 2.55, 4.13; flat_layer 0.91, 0.95, 0.99; hertz_layer 1.26, 1.49, 1.88; texture_row
+// 1.31, 1.50, 2.26. Neither a growth capped at what TetGen achieves nor a surface term (1/h² over top and
+// base) brought all of them within 25 %; the progress line prints the range these span
+// (pipeline/resources.cpp).
 #include <gtest/gtest.h>
 
 #include <cstdio>
