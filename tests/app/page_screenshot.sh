@@ -2,8 +2,9 @@
 # The report's page in a real browser: headless Chromium renders index.html of a coarse report
 # (tests/app/data/coarse_cap.json) at the page's design width; the screenshot must be the size asked for and
 # show the page (not a blank or an error page): mostly white background, with text and the figures' colours.
-# Laid out by the browser at that width, no table is wider than the page (none scrolls sideways), and the
-# contents list names every section, each link landing on its heading.
+# Laid out by the browser at that width, no table is wider than the page (none scrolls sideways), the
+# contents list names every section, each link landing on its heading, and a quantity named in two tables
+# with a unit column (the headline numbers, the levels behind them) has one unit.
 # Where no headless browser is installed (scripts/test installs Debian's chromium; scripts/run does not) the
 # test is skipped with the reason printed (exit 77, ctest's SKIP_RETURN_CODE).
 set -u
@@ -55,6 +56,21 @@ document.querySelectorAll('table').forEach((t, i) => {
   if (t.scrollWidth > t.clientWidth + 1)
     r.wide.push(`table ${i + 1} (${t.rows[0].innerText.replace(/\\s+/g, ' ').slice(0, 60)}): ${t.scrollWidth} px in ${t.clientWidth} px`);
 });
+// One unit per quantity: a row named in two tables with a unit column has the same unit in both.
+const units = {};
+r.units = [];
+document.querySelectorAll('table').forEach((t, i) => {
+  const head = [...t.rows[0].cells].map(c => c.innerText.trim()), u = head.indexOf('unit');
+  if (u < 0) return;
+  [...t.rows].slice(1).forEach(row => {
+    const name = row.cells[0].innerText.trim(), unit = row.cells[u] ? row.cells[u].innerText.trim() : '';
+    if (!name) return;
+    if (name in units && units[name][0] !== unit)
+      r.units.push(`'${name}' in '${units[name][0]}' (table ${units[name][1]}) and '${unit}' (table ${i + 1})`);
+    units[name] = [unit, i + 1];
+  });
+});
+r.unit_rows = Object.keys(units).length;
 document.querySelectorAll('nav a').forEach(a => {
   const target = document.querySelector(a.getAttribute('href'));
   r.contents.push([a.innerText, target !== null && target.tagName === 'H2' && target.innerText === a.innerText]);
@@ -75,8 +91,12 @@ bad = [f"wider than the page: {w}" for w in r["wide"]]
 if len(r["contents"]) != r["headings"]:
     bad.append(f"the contents list has {len(r['contents'])} entries, the page {r['headings']} sections")
 bad += [f"contents entry '{name}' does not land on its heading" for name, ok in r["contents"] if not ok]
+bad += [f"two units for {u}" for u in r["units"]]
+if r["unit_rows"] == 0:
+    bad.append("no table with a unit column: the units were not checked")
 for b in bad:
     print("FAIL layout:", b)
-print(f"layout: {r['headings']} sections in the contents list, no table wider than the page" if not bad else "")
+print(f"layout: {r['headings']} sections in the contents list, no table wider than the page, one unit for "
+      f"each of {r['unit_rows']} quantities" if not bad else "")
 sys.exit(1 if bad else 0)
 PY
