@@ -28,7 +28,7 @@ void write_perception(const Scene& scene, const pipeline::ReportPerception& p, c
     for (int k = 0; k < ns; ++k) {
       row << p.row.u[i] << "," << k + 1;
       for (int c = 0; c < 2; ++c) row << "," << 1e3 * p.row.varsigma(i, 2 * k + c);
-      for (int c = 0; c < 2; ++c) row << "," << 1e3 * p.row_superposed.varsigma(i, 2 * k + c);
+      for (int c = 0; c < 2; ++c) row << "," << 1e3 * p.row_superposed(i, 2 * k + c);
       for (int c = 0; c < 2; ++c) {
         row << ",";
         if (noisy) row << p.noisy.y(i, 2 * k + c);

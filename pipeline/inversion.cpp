@@ -23,20 +23,24 @@ int dictionary_positions(const Scene& scene, double dx) {
   return static_cast<int>(std::ceil(2 * (contact_zone_radius(scene) + hole) / dx)) + 1;
 }
 
+std::string inversion_unavailable(const Scene& scene) {
+  if (!scene.contact || !scene.contact->sweep)
+    return "contact.sweep: missing; the inversion takes its hole as the dictionary's";
+  if (scene.contact->direction[0] != 1)
+    return "contact.friction.direction: the inversion reads scans along +x";
+  if (scene.sensors.model != SensorModel::disc)
+    return "sensors.model: the inversion reads the dictionary through virtual disc sensors";
+  for (const Vec2& p : scene.sensors.positions)
+    if (p[1] != scene.sensors.positions.at(0)[1])
+      return "sensors.positions: the inversion needs the sensors on one line y = const";
+  return "";
+}
+
 validation::HoleResponses hole_responses(const Scene& scene, FrictionMode mode, double dx,
                                          const std::vector<double>& offsets, Timings& wall, int& dofs) {
-  const std::string& file = scene.source_path;
-  if (!scene.contact || !scene.contact->sweep)
-    throw SceneError(file + ": contact.sweep: missing; skinfem invert takes its hole as the dictionary's");
-  if (scene.contact->direction[0] != 1)
-    throw SceneError(file + ": contact.friction.direction: skinfem invert reads scans along +x");
-  if (scene.sensors.model != SensorModel::disc)
-    throw SceneError(file +
-                     ": sensors.model: skinfem invert reads the dictionary through virtual disc sensors");
+  if (const std::string why = inversion_unavailable(scene); !why.empty())
+    throw SceneError(scene.source_path + ": " + why);
   const double y = scene.sensors.positions.at(0)[1];
-  for (const Vec2& p : scene.sensors.positions)
-    if (p[1] != y)
-      throw SceneError(file + ": sensors: skinfem invert needs the sensors on one line y = const");
   // The virtual sensors: every x_i − δ, once.
   Scene s = scene;
   validation::HoleResponses r;

@@ -31,9 +31,12 @@ struct InversionRun {
   Timings wall;
 };
 
-// The dictionary for signals sampled every dx (mm) and the offsets. Throws SceneError when the scene has
-// no contact.sweep (its hole is the dictionary's), slides other than along +x, or its sensors are not
-// discs on one line y = const.
+// Why the dictionary cannot be built for a scene, naming the scene key ("" when it can): no contact.sweep
+// (its hole is the dictionary's), sliding other than along +x, or sensors that are not discs on one line
+// y = const (the dictionary reads virtual disc sensors along that line).
+std::string inversion_unavailable(const Scene& scene);
+// The dictionary for signals sampled every dx (mm) and the offsets. Throws SceneError with
+// inversion_unavailable's reason.
 validation::HoleResponses hole_responses(const Scene& scene, FrictionMode mode, double dx,
                                          const std::vector<double>& offsets, Timings& wall, int& dofs);
 // How many hole positions the dictionary holds for signals sampled every dx (mm): the zone's width and the

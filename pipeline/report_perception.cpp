@@ -86,12 +86,12 @@ std::pair<double, double> contact_extent(const contact::ContactSolver& solver, F
 }
 
 // The largest |scan − superposition| and |scan| per component over every sensor.
-PairPoint pair_point(const contact::ScanResult& s, const contact::Superposition& sp) {
+PairPoint pair_point(const contact::ScanResult& s, const Eigen::MatrixXd& superposed) {
   const Eigen::Index cols = s.varsigma.cols();
   Eigen::VectorXd dz(cols / 2), dx(cols / 2), pz(cols / 2), px(cols / 2);
   for (Eigen::Index k = 0; 2 * k < cols; ++k) {
-    dz[k] = (s.varsigma.col(2 * k) - sp.varsigma.col(2 * k)).cwiseAbs().maxCoeff();
-    dx[k] = (s.varsigma.col(2 * k + 1) - sp.varsigma.col(2 * k + 1)).cwiseAbs().maxCoeff();
+    dz[k] = (s.varsigma.col(2 * k) - superposed.col(2 * k)).cwiseAbs().maxCoeff();
+    dx[k] = (s.varsigma.col(2 * k + 1) - superposed.col(2 * k + 1)).cwiseAbs().maxCoeff();
     pz[k] = s.varsigma.col(2 * k).cwiseAbs().maxCoeff();
     px[k] = s.varsigma.col(2 * k + 1).cwiseAbs().maxCoeff();
   }
@@ -104,15 +104,13 @@ PairPoint pair_point(const contact::ScanResult& s, const contact::Superposition&
 }  // namespace
 
 std::string perception_unavailable(const Scene& scene) {
-  if (!scene.contact || !scene.contact->sweep) return "the scene has no contact.sweep";
+  // The section ends with an inversion of its row: what the inversion needs, it needs.
+  if (std::string why = inversion_unavailable(scene); !why.empty()) return why;
   const HoleSweep& sw = *scene.contact->sweep;
-  if (scene.contact->direction[0] != 1 || sw.to[1] != sw.from[1] || !(sw.to[0] > sw.from[0]))
-    return "the hole sweep does not run along the sliding direction +x";
+  if (sw.to[1] != sw.from[1] || !(sw.to[0] > sw.from[0]))
+    return "contact.sweep: the row runs along the sliding direction +x, the sweep does not";
   if (scene.contact->interface.law != InterfaceLaw::hard)
-    return "the detection ladder's small holes (the bulge) need a hard interface";
-  if (scene.sensors.model != SensorModel::disc) return "the inversion reads virtual disc sensors";
-  for (const Vec2& p : scene.sensors.positions)
-    if (p[1] != scene.sensors.positions[0][1]) return "the inversion needs the sensors on one line";
+    return "contact.interface: the detection ladder's small holes (the bulge) need a hard interface";
   return "";
 }
 
@@ -160,7 +158,7 @@ ReportPerception report_perception_scans(const Scene& scene, std::shared_ptr<con
   std::map<std::string, SingleHoleTable> single;
   single["sliding"] = single_hole_table(solver, sw, dir, FrictionMode::coupled, step, -reach, last + reach);
   p.row = contact::texture_scan(solver, row, dir, u, FrictionMode::coupled, clear(u));
-  p.row_superposed.varsigma = single["sliding"].sum(p.row_holes_mm, u);
+  p.row_superposed = single["sliding"].sum(p.row_holes_mm, u);
   p.wiggle_rel = second_difference_rel(single["sliding"].varsigma);
   p.wall["perception_row"] = clock.seconds();
 
@@ -188,10 +186,9 @@ ReportPerception report_perception_scans(const Scene& scene, std::shared_ptr<con
           both.push_back(up.back()), rows.push_back(static_cast<int>(up.size()) - 1);
       }
       const std::vector<double> plate{sw.from[0], sw.from[0] - gap * step};
-      contact::Superposition sum;
-      sum.varsigma = single[name].sum(plate, up);
+      const Eigen::MatrixXd sum = single[name].sum(plate, up);
       contact::ScanResult scan;
-      scan.varsigma = sum.varsigma;
+      scan.varsigma = sum;
       scan.u = up;
       if (!both.empty()) {
         const contact::ScanResult solved = contact::texture_scan(

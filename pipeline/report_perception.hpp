@@ -55,9 +55,9 @@ struct ReportPerception {
   // The single hole's sliding signal's largest second difference along u over its largest |ς_z|: the
   // resolved rim's wiggle on the track's mesh.
   double wiggle_rel = 0;
-  std::vector<double> row_holes_mm;       // the row's holes on the plate at u = 0 (x; y = the track's)
-  contact::ScanResult row;                // sliding
-  contact::Superposition row_superposed;  // its varsigma only
+  std::vector<double> row_holes_mm;  // the row's holes on the plate at u = 0 (x; y = the track's)
+  contact::ScanResult row;           // sliding
+  Eigen::MatrixXd row_superposed;    // the row's superposition: positions × 2·sensors (ς_z, ς_x), MPa
   std::vector<PairPoint> pairs;
   PerceptionRun detection;
   std::vector<DetectionPoint> detection_map;
@@ -69,8 +69,8 @@ struct ReportPerception {
   Timings wall;
 };
 
-// Why a scene gets no perception section (empty: it gets one): no contact.sweep, a sweep not along the
-// sliding direction +x, a compliant interface, or sensors that are not discs on one line.
+// Why a scene gets no perception section (empty: it gets one), naming the scene key: what the inversion
+// needs (inversion_unavailable), a sweep along the sliding direction +x and a hard interface.
 std::string perception_unavailable(const Scene& scene);
 
 // The row, the pairs and the detection on the report's set-up: its path (HolePath::always) watches the

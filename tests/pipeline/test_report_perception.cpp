@@ -34,7 +34,7 @@ TEST(ReportPerception, TheTablesSumsAreTheSuperpositionAndTheMapScalesAsRootN) {
       contact::superposed_scan(*setup->solver, row, {1, 0}, p.row.u, FrictionMode::coupled);
   const double peak = direct.varsigma.cwiseAbs().maxCoeff();
   ASSERT_GT(peak, 0);
-  EXPECT_LT((p.row_superposed.varsigma - direct.varsigma).cwiseAbs().maxCoeff(), kRoundOff * peak);
+  EXPECT_LT((p.row_superposed - direct.varsigma).cwiseAbs().maxCoeff(), kRoundOff * peak);
   // The full scan differs from it, but by less than the signal.
   const double diff = (p.row.varsigma - direct.varsigma).cwiseAbs().maxCoeff();
   EXPECT_GT(diff, 0);
