@@ -8,7 +8,9 @@
 //   invert candelier2011: 12 features, contact offset 0.000 mm; ...
 //
 // Writes DIR/features.csv (position_mm,diameter_mm,amplitude,snr: positions on the plate at u = 0, one row
-// per feature) and DIR/summary.json (contact_offset_mm, the residual per offset tried, the features, the
+// per feature), DIR/dictionary.csv (x_mm,site_mm,R_z_kPa,R_x_kPa: the response of a sensor at `site` to the
+// scene's hole at x, both in the contact's frame; what the fit is made of, for another solver to read) and
+// DIR/summary.json (contact_offset_mm, the residual per offset tried, the features, the
 // naive single-sensor features, the dictionary's size, wall_s per stage, peak_rss_mb).
 #include <cmath>
 #include <cstdio>
@@ -134,6 +136,15 @@ int run_invert(const Scene& scene, const std::string& signals_path, const std::s
   for (const validation::Feature& f : run.multi.features)
     csv << f.position_mm << "," << f.diameter_mm << "," << f.amplitude << "," << f.snr << "\n";
   write_text_atomic(out_dir + "/features.csv", csv.str());
+  std::ostringstream dictionary;
+  dictionary.precision(10);
+  dictionary << "x_mm,site_mm,R_z_kPa,R_x_kPa\n";
+  const validation::HoleResponses& r = run.responses;
+  for (Eigen::Index m = 0; m < r.R.rows(); ++m)
+    for (size_t k = 0; k < r.sites.size(); ++k)
+      dictionary << r.x0 + m * r.dx << "," << r.sites[k] << "," << r.R(m, 2 * k) << "," << r.R(m, 2 * k + 1)
+                 << "\n";
+  write_text_atomic(out_dir + "/dictionary.csv", dictionary.str());
   add_write_seconds(j, clock.seconds());
   write_json(out_dir + "/summary.json", j);
   std::printf(
@@ -150,7 +161,7 @@ int run_invert(const Scene& scene, const std::string& signals_path, const std::s
       "%.0f MB\n",
       run.responses.sites.size(), static_cast<int>(run.responses.R.rows()), run.dofs,
       j["wall_total_s"].get<double>(), run.wall.at("invert"), peak_rss_mb());
-  std::printf("  wrote %s/features.csv, summary.json\n", out_dir.c_str());
+  std::printf("  wrote %s/features.csv, dictionary.csv, summary.json\n", out_dir.c_str());
   return 0;
 }
 

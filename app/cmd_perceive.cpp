@@ -3,7 +3,9 @@
 // scene's hole sweep (its bulge, static and sliding) at the scene's diameter and on a ladder down to an
 // eighth of it, the matched filter's signal-to-noise ratio per sensor and across the array, the smallest
 // diameter detected with probability 0.9 at a 1 % false-alarm rate, and a Monte Carlo of the filter checking
-// both rates (validation/detection.hpp; docs/perception.md).
+// both rates (validation/detection.hpp; docs/perception.md); the same where the hole's place is unknown along
+// a scan (--scan-mm, 10 mm: the filter slid along it, its threshold from Rice's formula,
+// validation/scan_detection.hpp).
 //
 //   $ skinfem perceive scenes/candelier2011.json --out out/perceive
 //   perceive candelier2011: noise 0.6 kPa (varsigma_z), 0.4 kPa (varsigma_x) per sample every 0.033 mm, ...
@@ -82,6 +84,18 @@ int run_perceive(const Scene& scene, const std::string& out_dir, const pipeline:
           "%.4f +- %.4f), detections %.4f (nominal %.4f +- %.4f)\n",
           c.name.c_str(), c.rates.trials, c.rates.false_alarm, options.p_fa, c.rates.false_alarm_sigma,
           c.rates.detection, options.p_d, c.rates.detection_sigma);
+    const nlohmann::json& u = k["unknown_place"];
+    std::printf(
+        "  %s, the place unknown along %.3g mm: threshold %.3f across the array, %.3f at sensor #%d (Rice); "
+        "smallest hole detected: %s across the array, %s by one sensor\n",
+        c.name.c_str(), options.scan_mm, c.scan_threshold_array, c.scan_threshold_best, c.best_sensor + 1,
+        smallest(u["smallest_detected_array"]).c_str(), smallest(u["smallest_detected_best_sensor"]).c_str());
+    if (c.scan_rates.trials > 0)
+      std::printf(
+          "  %s: Monte Carlo of the slid filter (%d scans): false alarms %.4f (Rice: at most %.4f, +- %.4f "
+          "sampling), detections %.4f (at least %.4f)\n",
+          c.name.c_str(), c.scan_rates.trials, c.scan_rates.false_alarm, options.p_fa,
+          c.scan_rates.false_alarm_sigma, c.scan_rates.detection, options.p_d);
   }
   std::printf("  %d DOFs; total %.1f s, peak %.0f MB; wrote %s/perception.json, roc.csv\n", run.dofs,
               j["wall_total_s"].get<double>(), peak_rss_mb(), out_dir.c_str());

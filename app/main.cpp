@@ -97,6 +97,8 @@ const std::map<std::string, Handler>& handlers() {
           p.noise.sigma_z_kPa = o.number("noise_z");
           p.noise.sigma_x_kPa = o.number("noise_x");
           p.sample_mm = o.number("sample_mm");
+          p.scan_mm = o.number("scan_mm");
+          p.scan_trials = static_cast<int>(o.number("scan_trials"));
           return app::run_perceive(s, out, p);
         }}},
       {"invert",

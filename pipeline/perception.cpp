@@ -8,6 +8,7 @@
 #include "skinfem/pipeline/progress.hpp"
 #include "skinfem/pipeline/resources.hpp"
 #include "skinfem/pipeline/scene_json.hpp"
+#include "skinfem/validation/scan_detection.hpp"
 
 namespace skinfem::pipeline {
 
@@ -39,8 +40,11 @@ PerceptionRun perception_run(const Scene& scene, std::shared_ptr<const ContactSe
         ": contact.sweep.hole_model = \"resolved\": skinfem perceive sweeps holes down to an eighth "
         "of the scene's, below the mesh: it needs the small hole's model, \"bulge\" (under a hard "
         "interface)");
-  if (!(o.p_fa > 0 && o.p_fa < 1) || !(o.p_d > 0 && o.p_d < 1) || o.trials < 1 || o.sample_mm < 0)
-    throw std::invalid_argument("perception_run: p_fa and p_d in (0, 1), trials >= 1, sample_mm >= 0");
+  if (!(o.p_fa > 0 && o.p_fa < 1) || !(o.p_d > 0 && o.p_d < 1) || o.trials < 1 || o.sample_mm < 0 ||
+      !(o.scan_mm >= 0) || o.scan_trials < 0)
+    throw std::invalid_argument(
+        "perception_run: p_fa and p_d in (0, 1), trials >= 1, sample_mm >= 0, scan_mm >= 0, scan_trials >= "
+        "0");
   PerceptionRun run;
   run.options = o;
   run.wall = setup->wall;
@@ -93,6 +97,28 @@ PerceptionRun perception_run(const Scene& scene, std::shared_ptr<const ContactSe
       c.rates = validation::monte_carlo_rates(c.signal * (need / c.array_snr), o.noise, {}, o.p_fa, o.trials,
                                               o.seed);
     run.wall["monte_carlo_" + name] = mc.seconds();
+    if (c.array_snr > 0) {
+      Stopwatch scan;
+      for (size_t k = 0; k < c.sensor_snr.size(); ++k)
+        if (c.sensor_snr[k] > c.sensor_snr[c.best_sensor]) c.best_sensor = static_cast<int>(k);
+      const double z_pd = validation::normal_quantile(o.p_d);
+      c.scan_decorrelation_array = validation::scan_decorrelation(c.signal, o.noise, {}, run.sample_mm);
+      c.scan_threshold_array = validation::scan_threshold(c.scan_decorrelation_array, o.scan_mm, o.p_fa);
+      c.scan_decorrelation_best =
+          validation::scan_decorrelation(c.signal, o.noise, {c.best_sensor}, run.sample_mm);
+      c.scan_threshold_best = validation::scan_threshold(c.scan_decorrelation_best, o.scan_mm, o.p_fa);
+      c.array_min_unknown_mm =
+          smallest_detected(run.diameters, c.ladder_array, c.scan_threshold_array + z_pd);
+      c.sensor_min_unknown_mm = smallest_detected(run.diameters, c.ladder_best, c.scan_threshold_best + z_pd);
+      if (o.scan_trials > 0) {
+        progress("perceive " + name + ": Monte Carlo of the filter slid along " + std::to_string(o.scan_mm) +
+                 " mm (" + std::to_string(o.scan_trials) + " draws)");
+        c.scan_rates = validation::monte_carlo_scan(
+            c.signal * ((c.scan_threshold_array + z_pd) / c.array_snr), o.noise, {}, run.sample_mm, o.scan_mm,
+            c.scan_threshold_array, o.p_fa, o.scan_trials, o.seed);
+      }
+      run.wall["unknown_place_" + name] = scan.seconds();
+    }
     run.cases.push_back(std::move(c));
   }
   return run;
@@ -121,13 +147,38 @@ nlohmann::json perception_json(const Scene& scene, const PerceptionRun& run) {
     k["sensor_snr"] = c.sensor_snr;
     k["ladder_array_snr"] = c.ladder_array;
     k["ladder_best_sensor_snr"] = c.ladder_best;
-    const auto bound = [&](const std::optional<double>& v, const std::vector<double>& snr) -> nlohmann::json {
+    const auto bound_at = [&](const std::optional<double>& v, const std::vector<double>& snr,
+                              double required) -> nlohmann::json {
       if (v) return {{"mm", *v}};
-      if (snr.back() >= need) return {{"below_mm", run.diameters.back()}};
+      if (snr.back() >= required) return {{"below_mm", run.diameters.back()}};
       return {{"above_mm", run.diameters.front()}};
+    };
+    const auto bound = [&](const std::optional<double>& v, const std::vector<double>& snr) {
+      return bound_at(v, snr, need);
     };
     k["smallest_detected_array"] = bound(c.array_min_mm, c.ladder_array);
     k["smallest_detected_best_sensor"] = bound(c.sensor_min_mm, c.ladder_best);
+    const double z_pd = validation::normal_quantile(o.p_d);
+    nlohmann::json u{{"scan_mm", o.scan_mm},
+                     {"samples", static_cast<int>(std::lround(o.scan_mm / run.sample_mm)) + 1},
+                     {"array_decorrelation_per_mm", c.scan_decorrelation_array},
+                     {"array_threshold", c.scan_threshold_array},
+                     {"array_required_snr", c.scan_threshold_array + z_pd},
+                     {"best_sensor", c.best_sensor + 1},
+                     {"best_sensor_decorrelation_per_mm", c.scan_decorrelation_best},
+                     {"best_sensor_threshold", c.scan_threshold_best},
+                     {"best_sensor_required_snr", c.scan_threshold_best + z_pd}};
+    u["smallest_detected_array"] =
+        bound_at(c.array_min_unknown_mm, c.ladder_array, c.scan_threshold_array + z_pd);
+    u["smallest_detected_best_sensor"] =
+        bound_at(c.sensor_min_unknown_mm, c.ladder_best, c.scan_threshold_best + z_pd);
+    if (c.scan_rates.trials > 0)
+      u["monte_carlo"] = {{"trials", c.scan_rates.trials},
+                          {"false_alarm", c.scan_rates.false_alarm},
+                          {"false_alarm_sigma", c.scan_rates.false_alarm_sigma},
+                          {"detection", c.scan_rates.detection},
+                          {"detection_sigma", c.scan_rates.detection_sigma}};
+    k["unknown_place"] = u;
     k["monte_carlo"] = {{"trials", c.rates.trials},
                         {"false_alarm", c.rates.false_alarm},
                         {"false_alarm_sigma", c.rates.false_alarm_sigma},

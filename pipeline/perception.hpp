@@ -3,8 +3,8 @@
 // smaller ones on the same factorization, the matched filter's signal-to-noise ratio per sensor and across
 // the array, and from it the smallest diameter detected with probability p_d at false-alarm rate p_fa,
 // interpolated on the ladder (log d against log D: the bulge's signal grows as D³ under Coulomb friction, a
-// shear strength's hole as D²). The filter knows where
-// the hole is (the detection of a hole at a given place). `skinfem perceive` writes perception_json's object
+// shear strength's hole as D²), where the filter knows the hole's place and where it does not (the filter
+// slid along a scan, validation/scan_detection.hpp). `skinfem perceive` writes perception_json's object
 // as perception.json and the ROC curves as roc.csv.
 #pragma once
 
@@ -26,6 +26,10 @@ struct PerceptionOptions {
   double p_fa = 0.01, p_d = 0.9;
   int trials = 20000;  // Monte Carlo draws checking the false-alarm and detection rates
   std::uint64_t seed = 1;
+  // A hole at an unknown place (validation/scan_detection.hpp): the filter slid along a scan this long, its
+  // threshold from Rice's formula, checked on scan_trials noise-only scans (0: no check).
+  double scan_mm = 10;
+  int scan_trials = 2000;
   PerceptionOptions() { noise.passages = 14; }
 };
 
@@ -42,6 +46,15 @@ struct PerceptionCase {
   // The array's filter on the scene's signal scaled to the required SNR (the threshold hole's): its
   // detection rate is p_d there.
   validation::MonteCarloRates rates;
+  // At an unknown place along options.scan_mm: the filter's decorrelation √λ₂ (1/mm) and Rice's threshold,
+  // for the array and for the best sensor at the scene's hole (the bulge's ladder only scales the signal, so
+  // the best sensor and these numbers hold on every rung), the smallest hole detected with p_d, and the
+  // array's slid filter on noise-only scans and with the threshold hole.
+  double scan_decorrelation_array = 0, scan_threshold_array = 0;
+  double scan_decorrelation_best = 0, scan_threshold_best = 0;
+  int best_sensor = 0;  // 0-based
+  std::optional<double> array_min_unknown_mm, sensor_min_unknown_mm;
+  validation::MonteCarloRates scan_rates;
 };
 
 struct PerceptionRun {

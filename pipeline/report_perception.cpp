@@ -211,6 +211,7 @@ ReportPerception report_perception_scans(const Scene& scene, std::shared_ptr<con
   bulge.contact->sweep->model = HoleModel::bulge;
   PerceptionOptions o;
   o.trials = kTrials;
+  o.scan_trials = 0;  // the slid filter's Monte Carlo is `skinfem perceive`'s
   p.detection = perception_run(bulge, setup, o);
   const double need = validation::required_snr(o.p_fa, o.p_d);
   for (const PerceptionCase& c : p.detection.cases)

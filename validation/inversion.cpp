@@ -65,6 +65,9 @@ Eigen::VectorXd nnls(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, int max
 }
 
 namespace {
+// An atom whose whitened response is below this fraction of the largest is not identifiable (invert_scan).
+constexpr double kIdentifiable = 1e-6;
+
 // The column of responses.R for site s (mm), or −1.
 int site_column(const HoleResponses& r, double s) {
   for (size_t k = 0; k < r.sites.size(); ++k)
@@ -149,6 +152,13 @@ Inversion invert_scan(const ScanSignals& sig, const HoleResponses& r, const Sens
           for (int c = 0; c < 2; ++c)
             A((i * used.size() + s) * 2 + c, j) = weight(noise, c) * r.R(m, 2 * k[used[s]] + c);
       }
+    // A hole the scan never brings into the contact gives the FE's round-off (1e-13 of the largest
+    // response), not a signal: its amplitude is not identifiable, and the fit would spend it on the noise
+    // (amplitudes of 1e10). Such atoms are left out (a zero column never enters NNLS's active set).
+    const Eigen::VectorXd norms = A.colwise().norm();
+    const double floor = kIdentifiable * norms.maxCoeff();
+    for (int j = 0; j < atoms; ++j)
+      if (norms[j] <= floor) A.col(j).setZero();
     return A;
   };
   for_each_index(n_off, [&](std::size_t o) {

@@ -9,8 +9,10 @@
 // offset from its nominal place relative to the sensors. For each δ on a grid the amplitudes on a grid of
 // q (the scan's step) solve the non-negative least squares min ‖W (y − A_δ a)‖², a ≥ 0 (Lawson & Hanson,
 // Solving Least Squares Problems, 1974, ch. 23), W the noise's 1/σ per component; the δ of the least
-// residual wins. Adjacent non-zero amplitudes (one hole between grid points) merge into one feature at their
-// amplitude-weighted position; a feature whose own SNR is below the detector's threshold is dropped.
+// residual wins. A hole position whose response is below 1e-6 of the largest (a hole the scan never brings
+// into the contact: the FE's round-off) is left out of the fit. Adjacent non-zero amplitudes (one hole
+// between grid points) merge into one feature at their amplitude-weighted position; a feature whose own SNR
+// is below the detector's threshold is dropped.
 #pragma once
 
 #include <Eigen/Dense>

@@ -5,7 +5,8 @@
 # animation lists a frame per position and case and each file exists; summary.json counts the holes; a
 # second run writes the same scan.csv byte for byte (the cut problems are built on several threads).
 # perceive: the required SNR is Φ⁻¹(0.99) + Φ⁻¹(0.9) = 3.608 (tables); the ROC curves rise with the
-# false-alarm rate; the Monte Carlo rates lie within 4 standard errors of the nominal ones. invert: the
+# false-alarm rate; the Monte Carlo rates lie within 4 standard errors of the nominal ones, the slid filter's
+# false alarms under Rice's bound; dictionary.csv holds what summary.json counts. invert: the
 # scene's defect sweep, inverted, gives its hole back at the plate's origin.
 set -u
 skinfem=$1
@@ -66,6 +67,12 @@ for case in ["static", "sliding"]:
         bad.append(f"{case}: Monte Carlo false alarms {mc['false_alarm']}")
     if abs(mc["detection"] - p["p_d"]) > 4 * mc["detection_sigma"]:
         bad.append(f"{case}: Monte Carlo detections {mc['detection']}")
+    # At an unknown place the slid filter's false alarms stay under Rice's bound (within 4 sampling errors).
+    un = p["cases"][case]["unknown_place"]
+    if not un["array_threshold"] > p["threshold"]:
+        bad.append(f"{case}: the unknown place's threshold {un['array_threshold']} is not above {p['threshold']}")
+    if un["monte_carlo"]["false_alarm"] > p["p_fa"] + 4 * un["monte_carlo"]["false_alarm_sigma"]:
+        bad.append(f"{case}: slid filter false alarms {un['monte_carlo']['false_alarm']}")
 # invert: the defect sweep's hole sits at the plate's origin (its centre is at u); the strongest feature
 # comes back there within the sweep's step, the contact within one offset step of its place.
 features = list(csv.DictReader(open(f"{tmp}/i/features.csv")))
@@ -77,6 +84,13 @@ else:
         bad.append(f"invert: the hole found at {strongest['position_mm']} mm, not 0")
     if abs(json.load(open(f"{tmp}/i/summary.json"))["contact_offset_mm"]) > 0.1 + 1e-9:
         bad.append("invert: the contact's offset is more than one step off")
+# dictionary.csv: one row per virtual sensor and hole position, as summary.json counts them.
+d = json.load(open(f"{tmp}/i/summary.json"))["dictionary"]
+rows = list(csv.DictReader(open(f"{tmp}/i/dictionary.csv")))
+if not rows or list(rows[0].keys()) != ["x_mm", "site_mm", "R_z_kPa", "R_x_kPa"]:
+    bad.append("dictionary.csv: empty, or other columns")
+elif len(rows) != d["virtual_sensors"] * d["hole_positions"]:
+    bad.append(f"dictionary.csv: {len(rows)} rows for {d['virtual_sensors']} x {d['hole_positions']}")
 for b in bad:
     print("FAIL", b)
 sys.exit(1 if bad else 0)

@@ -3,7 +3,8 @@
 // ∫_H p ω, ω ∝ ε), so the matched filter's SNR falls by 2^(3/4) per rung of the ladder to the bulge's next
 // term, (ε/a)² with a the contact's radius (here (0.2/1)² = 4 %: 5 % asserted); the smallest detected hole,
 // whose SNR by that law is the required one; a Monte Carlo of the filter within 4 binomial standard errors
-// of the nominal rates; and the refusal of a resolved hole.
+// of the nominal rates; at an unknown place, the threshold between the known place's and Bonferroni's and
+// the slid filter's Monte Carlo within Rice's bound; and the refusal of a resolved hole.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -36,6 +37,21 @@ TEST(Perception, TheSnrFallsAsTheHolesVolumeAndTheThresholdHoleMeetsTheRequiredS
     }
     EXPECT_NEAR(c.rates.false_alarm, o.p_fa, 4 * c.rates.false_alarm_sigma) << c.name;
     EXPECT_NEAR(c.rates.detection, o.p_d, 4 * c.rates.detection_sigma) << c.name;
+    // At an unknown place: the threshold between the known place's and Bonferroni's over the scan's
+    // samples; a larger hole needed, again by the D³ law; the slid filter's false alarms at most Rice's
+    // bound and its detections at least p_d, each within 4 sampling errors.
+    const double samples = o.scan_mm / run.sample_mm + 1;
+    EXPECT_GT(c.scan_threshold_array, validation::detection_threshold(o.p_fa)) << c.name;
+    EXPECT_LT(c.scan_threshold_array, validation::detection_threshold(o.p_fa / samples)) << c.name;
+    ASSERT_TRUE(c.array_min_unknown_mm) << c.name;
+    EXPECT_GT(*c.array_min_unknown_mm, *c.array_min_mm) << c.name;
+    const double need_unknown = c.scan_threshold_array + validation::normal_quantile(o.p_d);
+    EXPECT_NEAR(c.array_snr * std::pow(*c.array_min_unknown_mm / run.diameters[0], 3), need_unknown,
+                0.05 * need_unknown)
+        << c.name;
+    EXPECT_LE(c.scan_rates.false_alarm, o.p_fa + 4 * c.scan_rates.false_alarm_sigma) << c.name;
+    EXPECT_GE(c.scan_rates.detection, o.p_d - 4 * std::sqrt(o.p_d * (1 - o.p_d) / c.scan_rates.trials))
+        << c.name;
   }
 }
 
