@@ -8,12 +8,17 @@ the largest difference over the largest signal (varsigma_z and varsigma_x, stati
 hypothesis: Coulomb under a hard interface, a shear strength under a hard interface, Coulomb through a rough
 (linear) interface.
 
-    $ /usr/bin/python3 bench/pair_study.py build/app/skinfem out/pair_study [pairs|rows]
+    $ /usr/bin/python3 bench/pair_study.py build/app/skinfem out/pair_study [pairs|rows|lattices|random]
     coulomb_hard         s = 0.60 mm: sliding z 3.7 %, x 3.7 %
 
 Rows: Coulomb under a hard interface, the plate covered by a row of 0.5 mm holes at a period p on y = 0,
 scanned 4 mm at 0.05 mm, every hole crossing the zone (rows.csv: period_mm,case,holes,most_holes,rel_diff_z,
 rel_diff_x,single_hole_solves,seconds).
+
+Lattices and random textures (Coulomb, hard, 4 mm scanned at 0.05 mm, the candidate zone 3 mm in radius):
+square lattices of 0.5 mm holes against their period, and holes of 0.3 to 0.6 mm at random against their
+density, on the plate's rectangle whose holes reach the zone during the scan; 5 to 15 min each (lattices.csv, random.csv: texture,label,
+density_per_mm2,case,holes,most_holes,rel_diff_z,rel_diff_x,dofs,seconds,peak_mb).
 
 Writes OUT/pair_study.csv (hypothesis,spacing_mm,case,rel_diff_z,rel_diff_x,max_diff_z_kPa,max_diff_x_kPa,
 most_holes,seconds) and OUT/pair_study.png. Every run is a fresh process (mesh and factorization included):
@@ -91,6 +96,68 @@ def main_rows(skinfem, out, base):
         w.writerows(rows)
 
 
+def textured(base, texture, name):
+    """The default scene, its plate carrying `texture`, scanned 4 mm at 0.05 mm (Coulomb, hard), the
+    candidate zone 3 mm in radius (the contact's is 2.5 mm): off y = 0 the whole skin is solved, every hole's
+    track watched."""
+    s = json.loads(json.dumps(base))
+    c = s["contact"]
+    c.pop("sweep", None)
+    c["zone_radius"] = ZONE
+    c["texture"] = dict(texture, h=0.25)
+    c["scan"] = {"from": 0.0, "to": 4.0, "step": 0.05}
+    s["name"] = name
+    return s
+
+
+# The plate's rectangle every hole of which reaches the candidate zone (radius 3 mm about x = 0.5) during
+# the 4 mm scan: |y| <= 2.5 mm (the contact's radius), x within the zone's caps there
+# (sqrt(3^2 - 2.5^2) = 1.66 mm, less 0.06 mm).
+ZONE = 3.0
+PLATE = ([0.5 - 4.0 - 1.6, -2.5], [0.5 + 1.6, 2.5])
+LATTICE_PERIODS = [0.75, 1.0, 1.5, 2.0, 3.0]
+DENSITIES = [0.25, 0.5, 1.0]  # holes per mm^2
+SEEDS = [1]
+
+
+def density_rows(kind, points):
+    """One table for lattices and random textures: density, holes, interaction, cost."""
+    return [[kind, label, density, case, summary["holes"], k["most_holes_in_zone"],
+             k["superposition"]["rel_diff_z"], k["superposition"]["rel_diff_x"], summary["dofs"],
+             summary["wall_total_s"], summary["peak_rss_mb"]]
+            for label, density, summary in points for case, k in summary["cases"].items()]
+
+
+def main_density(skinfem, out, base, part):
+    """Square lattices (rows on y = 0, +-p, ...: the half model holds) against their period, and random
+    textures (0.3 to 0.6 mm) against their density; both off y = 0, so solved on the whole skin."""
+    points = []
+    if part == "lattices":
+        for p in LATTICE_PERIODS:
+            ny = 2 * int(PLATE[1][1] / p + 1e-9) + 1
+            nx = int((PLATE[1][0] - PLATE[0][0]) / p + 1e-9) + 1
+            tex = {"lattice": {"origin": [PLATE[0][0], -(ny // 2) * p], "period": [p, p], "count": [nx, ny],
+                               "diameter": 0.5}}
+            summary = run_scan(skinfem, out, f"lattice_{p:.2f}", textured(base, tex, "lattice"))
+            points.append((f"p = {p:.2f} mm", 1 / p ** 2, summary))
+    else:
+        for d in DENSITIES:
+            for seed in SEEDS:
+                tex = {"random": {"from": PLATE[0], "to": PLATE[1], "density": d, "diameter": [0.3, 0.6],
+                                  "seed": seed}}
+                summary = run_scan(skinfem, out, f"random_{d:.2f}_{seed}", textured(base, tex, "random"))
+                points.append((f"seed {seed}", d, summary))
+    rows = density_rows(part, points)
+    for r in rows:
+        print(f"{part} {r[1]} ({r[2]:.2f} /mm^2, {r[4]} holes, up to {r[5]} in the zone): {r[3]:7s} "
+              f"z {100 * r[6]:.1f} %, x {100 * r[7]:.1f} %  ({r[8]} DOFs, {r[9]:.0f} s, {r[10]:.0f} MB)", flush=True)
+    with open(os.path.join(out, part + ".csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["texture", "label", "density_per_mm2", "case", "holes", "most_holes", "rel_diff_z",
+                    "rel_diff_x", "dofs", "seconds", "peak_mb"])
+        w.writerows(rows)
+
+
 def main():
     skinfem, out = sys.argv[1], sys.argv[2]
     part = sys.argv[3] if len(sys.argv) > 3 else "pairs"
@@ -98,6 +165,8 @@ def main():
     base = json.load(open(os.path.join(HERE, "..", "scenes", "candelier2011.json")))
     if part == "rows":
         return main_rows(skinfem, out, base)
+    if part in ("lattices", "random"):
+        return main_density(skinfem, out, base, part)
     rows = []
     for name, extra in HYPOTHESES.items():
         for s in SPACINGS:

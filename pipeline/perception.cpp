@@ -1,6 +1,7 @@
 #include "skinfem/pipeline/perception.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "skinfem/contact/holes/sweep.hpp"
@@ -111,8 +112,10 @@ PerceptionRun perception_run(const Scene& scene, std::shared_ptr<const ContactSe
           smallest_detected(run.diameters, c.ladder_array, c.scan_threshold_array + z_pd);
       c.sensor_min_unknown_mm = smallest_detected(run.diameters, c.ladder_best, c.scan_threshold_best + z_pd);
       if (o.scan_trials > 0) {
-        progress("perceive " + name + ": Monte Carlo of the filter slid along " + std::to_string(o.scan_mm) +
-                 " mm (" + std::to_string(o.scan_trials) + " draws)");
+        char line[160];
+        std::snprintf(line, sizeof line, "perceive %s: Monte Carlo of the filter slid along %g mm (%d scans)",
+                      name.c_str(), o.scan_mm, o.scan_trials);
+        progress(line);
         c.scan_rates = validation::monte_carlo_scan(
             c.signal * ((c.scan_threshold_array + z_pd) / c.array_snr), o.noise, {}, run.sample_mm, o.scan_mm,
             c.scan_threshold_array, o.p_fa, o.scan_trials, o.seed);
