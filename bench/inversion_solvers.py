@@ -26,8 +26,12 @@ Two measurements:
   20 draws), every second dictionary position (0.05 mm); resolved when each hole has its own feature within
   half the spacing; limit = the smallest spacing from which on 90 % of the draws are resolved.
 
+A third, `fe-pairs`: the pairs scanned by the FE (`skinfem scan`, the full contact, sliding, every 0.05 mm;
+spacings as above, a fresh process of about 20 s each) and inverted by NNLS with the same noise: the
+resolution on FE signals, against the model's (OUT/fe_pairs.csv: passages,spacing_mm,resolved_fraction).
+
     $ apt-get install python3-scipy python3-sklearn
-    $ /usr/bin/python3 bench/inversion_solvers.py build/app/skinfem out/inversion_solvers
+    $ /usr/bin/python3 bench/inversion_solvers.py build/app/skinfem out/inversion_solvers [fe-pairs]
     row, noise-free: nnls 20 features, 0 missed, rms 0.033 mm ...
 
 Writes OUT/row.csv (solver,signals,features,missed,false,rms_mm,largest_mm,seconds) and OUT/pairs.csv
@@ -170,8 +174,76 @@ def run(cmd):
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
 
 
+def resolved(found, truth, s):
+    """Each hole's nearest feature within half the spacing, and not the same one."""
+    mine = [min((abs(p - h), p) for p, _, _ in found)[1] if found else None for h in truth]
+    return all(m is not None and abs(m - h) < s / 2 for m, h in zip(mine, truth)) and mine[0] != mine[1]
+
+
+def limit_of(fractions):
+    """The smallest spacing from which on every one is resolved on 90 % of the draws."""
+    k = len(fractions)
+    while k > 0 and fractions[k - 1][1] >= 0.9:
+        k -= 1
+    if k == len(fractions):
+        return "none resolved on 90 %"
+    return f"<= {fractions[0][0]:.2f} mm" if k == 0 else f"{fractions[k][0]:.2f} mm"
+
+
+def read_scan(path, case="sliding"):
+    sig = {}
+    for r in csv.DictReader(open(path)):
+        if r.get("case", case) == case:
+            sig.setdefault(float(r["u_mm"]), {})[int(r["sensor"])] = (float(r["varsigma_z_kPa"]),
+                                                                      float(r["varsigma_x_kPa"]))
+    u = sorted(sig)
+    return u, np.array([[sig[v][s] for s in sorted(sig[v])] for v in u])  # nu x ns x 2
+
+
+def fe_pairs(exe, out, R, x0, dx):
+    """Two 0.5 mm holes s apart on the default scene, scanned by the FE (full contact, sliding, every
+    0.05 mm), with the paper's noise, inverted by NNLS: the resolution on FE signals, against the model's."""
+    base = json.load(open(os.path.join(ROOT, "scenes/candelier2011.json")))
+    Rp, dxp = R[::2], 2 * dx
+    rows = []
+    for s in SPACINGS:
+        scene = json.loads(json.dumps(base))
+        c = scene["contact"]
+        c.pop("sweep", None)
+        reach = 4.0 + 0.25 + 0.5 * s
+        c["texture"] = {"holes": [{"center": [-0.5 * s, 0.0], "diameter": 0.5},
+                                  {"center": [0.5 * s, 0.0], "diameter": 0.5}], "h": 0.25}
+        c["scan"] = {"from": round(0.5 - reach, 2), "to": round(0.5 + reach, 2), "step": dxp}
+        scene["name"] = "pair"
+        d = os.path.join(out, f"pair_{s:.2f}")
+        if not os.path.exists(os.path.join(d, "scan.csv")):
+            path = d + ".json"
+            json.dump(scene, open(path, "w"), indent=1)
+            run([exe, "scan", path, "--no-superposition", "--out", d])
+        u, y = read_scan(os.path.join(d, "scan.csv"))
+        nu = len(u)
+        q0 = x0 - u[0] - (nu - 1) * dxp
+        truth = [-0.5 * s, 0.5 * s]
+        for n in PASSAGES:
+            w = weights(n)
+            A = design(Rp, nu, w)
+            rng = np.random.default_rng(2000 + n)
+            hits = sum(resolved(features(solve("nnls", A, ((y + rng.standard_normal(y.shape) * np.array(SIGMA) /
+                                                               math.sqrt(n)) * w).reshape(-1)), A, q0, dxp),
+                                truth, s) for _ in range(DRAWS))
+            rows.append([n, s, hits / DRAWS])
+        print(f"FE pair s = {s:.2f} mm: resolved " + ", ".join(f"N = {r[0]} {r[2]:.0%}" for r in rows[-3:]),
+              flush=True)
+    with open(os.path.join(out, "fe_pairs.csv"), "w", newline="") as fh:
+        wr = csv.writer(fh)
+        wr.writerow(["passages", "spacing_mm", "resolved_fraction"])
+        wr.writerows(rows)
+    for n in PASSAGES:
+        print(f"limit on FE signals, N = {n:2d}: {limit_of([(r[1], r[2]) for r in rows if r[0] == n])}")
+
+
 def main():
-    if len(sys.argv) != 3:
+    if len(sys.argv) not in (3, 4):
         sys.exit(__doc__.split("\n\n")[-3])
     exe, out = sys.argv[1], sys.argv[2]
     os.makedirs(out, exist_ok=True)
@@ -182,15 +254,11 @@ def main():
         run([exe, "invert", os.path.join(scan_dir, "scan.csv"), os.path.join(ROOT, "scenes/candelier2011.json"),
              "--offset-range", "0", "--out", inv_dir])
     R, x0, dx, sites = read_dictionary(os.path.join(inv_dir, "dictionary.csv"))
+    if len(sys.argv) == 4 and sys.argv[3] == "fe-pairs":
+        return fe_pairs(exe, out, R, x0, dx)
 
     # The row: the FE scan's sliding signals.
-    sig = {}
-    for r in csv.DictReader(open(os.path.join(scan_dir, "scan.csv"))):
-        if r.get("case", "sliding") == "sliding":
-            sig.setdefault(float(r["u_mm"]), {})[int(r["sensor"])] = (float(r["varsigma_z_kPa"]),
-                                                                      float(r["varsigma_x_kPa"]))
-    u = sorted(sig)
-    y = np.array([[sig[v][s] for s in sorted(sig[v])] for v in u])  # nu x ns x 2
+    u, y = read_scan(os.path.join(scan_dir, "scan.csv"))
     nu = len(u)
     w14, wclean = weights(14), weights(CLEAN_PASSAGES)
     A = design(R, nu, w14)
@@ -262,11 +330,7 @@ def main():
                     t = time.perf_counter()
                     f = features(solve(name, A, b), A, q0, dxp)
                     counts[name][1] += time.perf_counter() - t
-                    # Each hole's nearest feature within half the spacing, and not the same one.
-                    mine = [min((abs(p - h), p) for p, _, _ in f)[1] if f else None for h in truth]
-                    ok = all(m is not None and abs(m - h) < s / 2 for m, h in zip(mine, truth))
-                    ok = ok and mine[0] != mine[1]
-                    counts[name][0] += ok
+                    counts[name][0] += resolved(f, truth, s)
             for name, (resolved, seconds) in counts.items():
                 pair_rows.append([name, n, gap * dxp, resolved / DRAWS, seconds / DRAWS])
             print(f"pairs, N = {n}, s = {gap * dxp:.2f} mm: " +
@@ -278,13 +342,7 @@ def main():
             wr.writerow([r[0], r[1], f"{r[2]:.3f}", f"{r[3]:.2f}", f"{r[4]:.3g}"])
     for name in ["nnls", "omp", "lasso"]:
         for n in PASSAGES:
-            fr = [(r[2], r[3]) for r in pair_rows if r[0] == name and r[1] == n]
-            k = len(fr)
-            while k > 0 and fr[k - 1][1] >= 0.9:
-                k -= 1
-            limit = "none resolved on 90 %" if k == len(fr) else (
-                f"<= {fr[0][0]:.2f} mm" if k == 0 else f"{fr[k][0]:.2f} mm")
-            print(f"limit {name:5s} N = {n:2d}: {limit}")
+            print(f"limit {name:5s} N = {n:2d}: {limit_of([(r[2], r[3]) for r in pair_rows if r[0] == name and r[1] == n])}")
 
 
 if __name__ == "__main__":
