@@ -243,8 +243,8 @@ def fe_pairs(exe, out, R, x0, dx):
 
 
 def main():
-    if len(sys.argv) not in (3, 4):
-        sys.exit(__doc__.split("\n\n")[-3])
+    if len(sys.argv) not in (3, 4) or (len(sys.argv) == 4 and sys.argv[3] != "fe-pairs"):
+        sys.exit("usage: bench/inversion_solvers.py SKINFEM OUT [fe-pairs]")
     exe, out = sys.argv[1], sys.argv[2]
     os.makedirs(out, exist_ok=True)
     scan_dir, inv_dir = os.path.join(out, "scan"), os.path.join(out, "invert")
