@@ -36,8 +36,7 @@ int run_perceive(const Scene& scene, const std::string& out_dir, const pipeline:
   roc.precision(8);
   roc << "case,filter,p_fa,p_d\n";
   for (const pipeline::PerceptionCase& c : run.cases) {
-    double best = 0;
-    for (double s : c.sensor_snr) best = std::max(best, s);
+    const double best = c.sensor_snr.empty() ? 0 : c.sensor_snr[c.best_sensor];
     for (int i = 0; i <= 60; ++i) {
       const double p_fa = std::pow(10.0, -6 + 6.0 * i / 60) * (i == 60 ? 0.999 : 1.0);
       roc << c.name << ",array," << p_fa << "," << validation::detection_probability(c.array_snr, p_fa)
@@ -68,9 +67,7 @@ int run_perceive(const Scene& scene, const std::string& out_dir, const pipeline:
   };
   for (const pipeline::PerceptionCase& c : run.cases) {
     const nlohmann::json& k = j["cases"][c.name];
-    int best = 0;
-    for (size_t s = 0; s < c.sensor_snr.size(); ++s)
-      if (c.sensor_snr[s] > c.sensor_snr[best]) best = static_cast<int>(s);
+    const int best = c.best_sensor;
     std::printf(
         "  %s: the %.3g mm hole at SNR %.2f across the array (p_d %.3f), %.2f at sensor #%d alone; smallest "
         "hole detected: %s across the array, %s by one sensor\n",

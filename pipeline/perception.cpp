@@ -98,27 +98,28 @@ PerceptionRun perception_run(const Scene& scene, std::shared_ptr<const ContactSe
       c.rates = validation::monte_carlo_rates(c.signal * (need / c.array_snr), o.noise, {}, o.p_fa, o.trials,
                                               o.seed);
     run.wall["monte_carlo_" + name] = mc.seconds();
+    for (size_t k = 0; k < c.sensor_snr.size(); ++k)
+      if (c.sensor_snr[k] > c.sensor_snr[c.best_sensor]) c.best_sensor = static_cast<int>(k);
     if (c.array_snr > 0) {
       Stopwatch scan;
-      for (size_t k = 0; k < c.sensor_snr.size(); ++k)
-        if (c.sensor_snr[k] > c.sensor_snr[c.best_sensor]) c.best_sensor = static_cast<int>(k);
       const double z_pd = validation::normal_quantile(o.p_d);
       c.scan_decorrelation_array = validation::scan_decorrelation(c.signal, o.noise, {}, run.sample_mm);
       c.scan_threshold_array = validation::scan_threshold(c.scan_decorrelation_array, o.scan_mm, o.p_fa);
       c.scan_decorrelation_best =
           validation::scan_decorrelation(c.signal, o.noise, {c.best_sensor}, run.sample_mm);
       c.scan_threshold_best = validation::scan_threshold(c.scan_decorrelation_best, o.scan_mm, o.p_fa);
-      c.array_min_unknown_mm =
-          smallest_detected(run.diameters, c.ladder_array, c.scan_threshold_array + z_pd);
-      c.sensor_min_unknown_mm = smallest_detected(run.diameters, c.ladder_best, c.scan_threshold_best + z_pd);
+      c.scan_required_array = c.scan_threshold_array + z_pd;
+      c.scan_required_best = c.scan_threshold_best + z_pd;
+      c.array_min_unknown_mm = smallest_detected(run.diameters, c.ladder_array, c.scan_required_array);
+      c.sensor_min_unknown_mm = smallest_detected(run.diameters, c.ladder_best, c.scan_required_best);
       if (o.scan_trials > 0) {
         char line[160];
         std::snprintf(line, sizeof line, "perceive %s: Monte Carlo of the filter slid along %g mm (%d scans)",
                       name.c_str(), o.scan_mm, o.scan_trials);
         progress(line);
-        c.scan_rates = validation::monte_carlo_scan(
-            c.signal * ((c.scan_threshold_array + z_pd) / c.array_snr), o.noise, {}, run.sample_mm, o.scan_mm,
-            c.scan_threshold_array, o.p_fa, o.scan_trials, o.seed);
+        c.scan_rates = validation::monte_carlo_scan(c.signal * (c.scan_required_array / c.array_snr), o.noise,
+                                                    {}, run.sample_mm, o.scan_mm, c.scan_threshold_array,
+                                                    o.p_fa, o.scan_trials, o.seed);
       }
       run.wall["unknown_place_" + name] = scan.seconds();
     }
@@ -161,20 +162,18 @@ nlohmann::json perception_json(const Scene& scene, const PerceptionRun& run) {
     };
     k["smallest_detected_array"] = bound(c.array_min_mm, c.ladder_array);
     k["smallest_detected_best_sensor"] = bound(c.sensor_min_mm, c.ladder_best);
-    const double z_pd = validation::normal_quantile(o.p_d);
     nlohmann::json u{{"scan_mm", o.scan_mm},
                      {"samples", static_cast<int>(std::lround(o.scan_mm / run.sample_mm)) + 1},
                      {"array_decorrelation_per_mm", c.scan_decorrelation_array},
                      {"array_threshold", c.scan_threshold_array},
-                     {"array_required_snr", c.scan_threshold_array + z_pd},
+                     {"array_required_snr", c.scan_required_array},
                      {"best_sensor", c.best_sensor + 1},
                      {"best_sensor_decorrelation_per_mm", c.scan_decorrelation_best},
                      {"best_sensor_threshold", c.scan_threshold_best},
-                     {"best_sensor_required_snr", c.scan_threshold_best + z_pd}};
-    u["smallest_detected_array"] =
-        bound_at(c.array_min_unknown_mm, c.ladder_array, c.scan_threshold_array + z_pd);
+                     {"best_sensor_required_snr", c.scan_required_best}};
+    u["smallest_detected_array"] = bound_at(c.array_min_unknown_mm, c.ladder_array, c.scan_required_array);
     u["smallest_detected_best_sensor"] =
-        bound_at(c.sensor_min_unknown_mm, c.ladder_best, c.scan_threshold_best + z_pd);
+        bound_at(c.sensor_min_unknown_mm, c.ladder_best, c.scan_required_best);
     if (c.scan_rates.trials > 0)
       u["monte_carlo"] = {{"trials", c.scan_rates.trials},
                           {"false_alarm", c.scan_rates.false_alarm},

@@ -48,11 +48,12 @@ struct PerceptionCase {
   validation::MonteCarloRates rates;
   // At an unknown place along options.scan_mm: the filter's decorrelation √λ₂ (1/mm) and Rice's threshold,
   // for the array and for the best sensor at the scene's hole (the bulge's ladder only scales the signal, so
-  // the best sensor and these numbers hold on every rung), the smallest hole detected with p_d, and the
-  // array's slid filter on noise-only scans and with the threshold hole.
-  double scan_decorrelation_array = 0, scan_threshold_array = 0;
-  double scan_decorrelation_best = 0, scan_threshold_best = 0;
-  int best_sensor = 0;  // 0-based
+  // the best sensor and these numbers hold on every rung), the SNR that detects with p_d there (threshold +
+  // Φ⁻¹(p_d)), the smallest hole detected with p_d, and the array's slid filter on noise-only scans and with
+  // the threshold hole.
+  double scan_decorrelation_array = 0, scan_threshold_array = 0, scan_required_array = 0;
+  double scan_decorrelation_best = 0, scan_threshold_best = 0, scan_required_best = 0;
+  int best_sensor = 0;  // 0-based, the largest sensor_snr
   std::optional<double> array_min_unknown_mm, sensor_min_unknown_mm;
   validation::MonteCarloRates scan_rates;
 };

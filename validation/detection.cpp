@@ -7,9 +7,7 @@
 
 namespace skinfem::validation {
 
-namespace {
-// Per column, 1/σ² of the mean of N passages, 0 for a sensor the filter leaves out.
-Eigen::RowVectorXd weights(int columns, const SensorNoise& noise, const std::vector<int>& sensors) {
+Eigen::RowVectorXd filter_weights(int columns, const SensorNoise& noise, const std::vector<int>& sensors) {
   if (!(noise.sigma_z_kPa > 0) || !(noise.sigma_x_kPa > 0) || noise.passages < 1)
     throw std::invalid_argument("SensorNoise: the deviations must be > 0 and the passages >= 1");
   Eigen::RowVectorXd w = Eigen::RowVectorXd::Zero(columns);
@@ -24,7 +22,6 @@ Eigen::RowVectorXd weights(int columns, const SensorNoise& noise, const std::vec
   for (int k : sensors) use(k);
   return w;
 }
-}  // namespace
 
 double normal_cdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
 
@@ -40,7 +37,7 @@ double normal_quantile(double p) {
 
 double matched_filter_snr(const Eigen::MatrixXd& s, const SensorNoise& noise,
                           const std::vector<int>& sensors) {
-  const Eigen::RowVectorXd w = weights(static_cast<int>(s.cols()), noise, sensors);
+  const Eigen::RowVectorXd w = filter_weights(static_cast<int>(s.cols()), noise, sensors);
   return std::sqrt((s.array().square().rowwise() * w.array()).sum());
 }
 
@@ -53,14 +50,14 @@ double required_snr(double p_fa, double p_d) { return detection_threshold(p_fa) 
 MonteCarloRates monte_carlo_rates(const Eigen::MatrixXd& s, const SensorNoise& noise,
                                   const std::vector<int>& sensors, double p_fa, int trials,
                                   std::uint64_t seed) {
-  const Eigen::RowVectorXd w = weights(static_cast<int>(s.cols()), noise, sensors);
+  const Eigen::RowVectorXd w = filter_weights(static_cast<int>(s.cols()), noise, sensors);
   const double d = matched_filter_snr(s, noise, sensors), tau = detection_threshold(p_fa);
   if (!(d > 0)) throw std::invalid_argument("monte_carlo_rates: the signal is zero on the filter's sensors");
   // The filter's weights s_j/σ_j² / d, and per column the noise's standard deviation.
   const Eigen::MatrixXd filter = (s.array().rowwise() * w.array()).matrix() / d;
-  Eigen::RowVectorXd sigma(s.cols());
+  Eigen::RowVectorXd sigma = Eigen::RowVectorXd::Zero(s.cols());
   for (int j = 0; j < s.cols(); ++j)
-    sigma[j] = (j % 2 ? noise.sigma_x_kPa : noise.sigma_z_kPa) / std::sqrt(double(noise.passages));
+    if (w[j] > 0) sigma[j] = 1 / std::sqrt(w[j]);
   const double mean = d;  // Σ filter·s = d: the statistic with the hole is the noise's plus d
   SplitMix64 rng{seed};
   long above0 = 0, above1 = 0;

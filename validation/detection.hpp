@@ -28,6 +28,9 @@ double normal_quantile(double p);
 
 // signal: samples × 2·sensors, kPa (σ_z of sensor k in column 2k, σ_x in 2k + 1); sensors: the 0-based
 // sensors the filter uses (empty: all).
+// Per column of such a signal, 1/σ² of the mean of N passages, 0 for a sensor the filter leaves out (the
+// weights every filter here shares). Throws on a non-positive deviation, N < 1 or a sensor not in `columns`.
+Eigen::RowVectorXd filter_weights(int columns, const SensorNoise& noise, const std::vector<int>& sensors);
 double matched_filter_snr(const Eigen::MatrixXd& signal, const SensorNoise& noise,
                           const std::vector<int>& sensors = {});
 double detection_threshold(double p_fa);                // τ = Φ⁻¹(1 − p_fa)

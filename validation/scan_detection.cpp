@@ -9,25 +9,14 @@
 namespace skinfem::validation {
 
 namespace {
-// Per column, 1/σ² of the mean of N passages (0 for a sensor left out), and per column σ.
+// Per column, 1/σ² (filter_weights) and σ (0 for a sensor left out).
 struct Columns {
   Eigen::RowVectorXd w, sigma;
 };
 Columns columns(int cols, const SensorNoise& noise, const std::vector<int>& sensors) {
-  if (!(noise.sigma_z_kPa > 0) || !(noise.sigma_x_kPa > 0) || noise.passages < 1)
-    throw std::invalid_argument("SensorNoise: the deviations must be > 0 and the passages >= 1");
-  Columns c{Eigen::RowVectorXd::Zero(cols), Eigen::RowVectorXd::Zero(cols)};
-  const auto use = [&](int k) {
-    if (k < 0 || 2 * k + 1 >= cols)
-      throw std::invalid_argument("scanned filter: no sensor " + std::to_string(k));
-    for (int j : {2 * k, 2 * k + 1}) {
-      c.sigma[j] = (j % 2 ? noise.sigma_x_kPa : noise.sigma_z_kPa) / std::sqrt(double(noise.passages));
-      c.w[j] = 1 / (c.sigma[j] * c.sigma[j]);
-    }
-  };
-  if (sensors.empty())
-    for (int k = 0; 2 * k + 1 < cols; ++k) use(k);
-  for (int k : sensors) use(k);
+  Columns c{filter_weights(cols, noise, sensors), Eigen::RowVectorXd::Zero(cols)};
+  for (int j = 0; j < cols; ++j)
+    if (c.w[j] > 0) c.sigma[j] = 1 / std::sqrt(c.w[j]);
   return c;
 }
 
