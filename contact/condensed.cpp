@@ -239,21 +239,23 @@ CutProblem cut_problem(const CondensedContact& c, const HoleCut& cut, bool tange
     const int i = T[a];
     if (!(out.area[i] < 0.5 * c.zone.area[i]) || !P.watched_hat[i]) continue;
     slivers.push_back(a);
-    const Eigen::RowVectorXd r = Eigen::RowVectorXd(P.Dw.row(i)) - Eigen::RowVectorXd(BT.row(a));
+    // r is sparse (the hat's nodes): every product below costs its few nodes' rows, not n_w of them.
+    const Eigen::SparseMatrix<double, Eigen::RowMajor> r = P.Dw.row(i) - BT.row(a);  // 1 × n_w
     const Eigen::VectorXd wr = P.Gzz * r.transpose();
     out.zz.row(a) = r * P.Wz;
     const Eigen::VectorXd bw = BT * wr;
     for (int b = 0; b < t; ++b) out.zz(a, T[b]) -= bw[b];
-    out.zz(a, i) = r.dot(wr);
+    out.zz(a, i) = (r * wr)(0);
     out.sp.col(a) = (r * P.Rz).transpose();
     if (tangential) {
+      const Eigen::VectorXd tr = P.Gtz * r.transpose(), ttr = P.Gtz.transpose() * r.transpose();
       const Eigen::RowVectorXd whole = r * P.DtG.transpose();
-      const Eigen::VectorXd gr = BT * (P.Gtz * r.transpose()), gc = BT * (P.Gtz.transpose() * r.transpose());
+      const Eigen::VectorXd gr = BT * tr, gc = BT * ttr;
       out.zt_whole.row(a) = whole;
       out.zt_rows.row(a) = whole;
       out.zt_cols.row(a) = r * P.Ut;
       for (int b = 0; b < t; ++b) out.zt_rows(a, T[b]) -= gr[b], out.zt_cols(a, T[b]) -= gc[b];
-      out.zt_rows(a, i) = out.zt_cols(a, i) = r * P.Gtz.transpose() * r.transpose();
+      out.zt_rows(a, i) = out.zt_cols(a, i) = (r * tr)(0);
       out.st.col(a) = (r * P.Rt).transpose();
     }
   }
