@@ -132,6 +132,7 @@ class ContactSolver {
   const CondensedContact& condensed() const { return c_; }
   // The zone results refer to: the whole one.
   const MortarZone& zone() const { return mirror_ ? mirror_->zone : c_.zone; }
+  bool mirrored() const { return mirror_ != nullptr; }  // solved on the half y >= 0
   const Eigen::Vector2d& direction() const { return c_.direction; }
   // Whole multiplier i's index in condensed(), and the share of a gap opening at i that its row sees (½
   // under a mirror view: an opening at i and its image average to that row's; 1 otherwise).

@@ -1,5 +1,7 @@
 #include "skinfem/pipeline/symmetry.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace skinfem::pipeline {
@@ -43,13 +45,24 @@ std::string contact_mirror_unavailable(const Scene& scene) {
       return buf;
     }
   if (c.sweep && (c.sweep->from[1] != 0 || c.sweep->to[1] != 0)) return "the hole sweep's path is off y = 0";
-  if (c.texture)
-    for (size_t i = 0; i < c.texture->holes.size(); ++i)
-      if (c.texture->holes[i].center[1] != 0) {
-        std::snprintf(buf, sizeof buf, "texture hole %zu is off y = 0 (y = %g mm)", i + 1,
-                      c.texture->holes[i].center[1]);
+  // A texture off y = 0 is symmetric when every hole there has its image (x, -y) of the same size: the half
+  // then solves each such hole with its image (contact/holes/scan.hpp).
+  if (c.texture) {
+    const auto& holes = c.texture->holes;
+    for (size_t i = 0; i < holes.size(); ++i) {
+      const Hole& h = holes[i];
+      if (h.center[1] == 0) continue;
+      const bool imaged = std::any_of(holes.begin(), holes.end(), [&](const Hole& o) {
+        return std::abs(o.center[0] - h.center[0]) <= 1e-9 && std::abs(o.center[1] + h.center[1]) <= 1e-9 &&
+               o.diameter == h.diameter && o.depth == h.depth;
+      });
+      if (!imaged) {
+        std::snprintf(buf, sizeof buf, "texture hole %zu at (%g, %g) mm has no mirror image at (%g, %g) mm",
+                      i + 1, h.center[0], h.center[1], h.center[0], -h.center[1]);
         return buf;
       }
+    }
+  }
   return "";
 }
 

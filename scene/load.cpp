@@ -66,7 +66,8 @@
 //                                            "count": [nx, ny], "diameter", "depth"*},   scan`, on the
 //                               "random"*: {"from": [x, y], "to": [x, y],             plate at u = 0,
 //                                           "density": <holes/mm^2>, "diameter": [min, max],
-//                                           "depth"*, "seed"*: integer >= 0 (default 1)},
+//                                           "depth"*, "seed"*: integer >= 0 (default 1),
+//                                           "mirror"*: true: in pairs mirrored about y = 0},
 //                               "h"*: > 0, mesh size along their tracks (absent: the zone's)},
 //                  "scan"*: {"from": <mm>, "to": <mm>, "step": <mm, > 0>}}  the plate's displacement
 //                                                    along the sliding direction; with "texture" only
@@ -928,7 +929,7 @@ Texture read_texture(const Reader& r, const json& j, const std::string& path) {
   }
   if (const json* rn = Reader::find(j, "random")) {
     const std::string P = sub(path, "random");
-    r.object(*rn, P, {"from", "to", "density", "diameter", "depth", "seed"});
+    r.object(*rn, P, {"from", "to", "density", "diameter", "depth", "seed", "mirror"});
     RandomHoles h;
     h.from = r.vec2(*rn, P, "from");
     h.to = r.vec2(*rn, P, "to");
@@ -943,10 +944,17 @@ Texture read_texture(const Reader& r, const json& j, const std::string& path) {
     h.depth = r.number_or(*rn, P, "depth", h.depth, length());
     if (const json* seed = Reader::find(*rn, "seed"))
       h.seed = static_cast<std::uint64_t>(r.integer(*seed, sub(P, "seed"), 0, 1LL << 53));
+    if (const json* m = Reader::find(*rn, "mirror")) h.mirror = r.boolean(*m, sub(P, "mirror"));
+    if (h.mirror && h.from[1] != -h.to[1])
+      r.fail(sub(P, "from"), (*rn)["from"],
+             "with \"mirror\": true the rectangle must be symmetric about y = 0 (from's y = -to's y; here " +
+                 fmt(h.from[1]) + " and " + fmt(h.to[1]) + ")");
     const double area = std::abs((h.to[0] - h.from[0]) * (h.to[1] - h.from[1]));
-    if (std::lround(h.density * area) < 1 || h.density * area > 10000)
+    if ((h.mirror ? 2 * std::lround(0.5 * h.density * area) : std::lround(h.density * area)) < 1 ||
+        h.density * area > 10000)
       r.fail(sub(P, "density"), json(h.density),
-             "times the rectangle's area " + fmt(area) + " mm^2 must give 1 to 10000 holes");
+             "times the rectangle's area " + fmt(area) + " mm^2 must give 1 to 10000 holes" +
+                 (h.mirror ? " (2 or more in mirrored pairs)" : ""));
     t.random = h;
   }
   if (t.listed.empty() && !t.lattice && !t.random)

@@ -251,6 +251,10 @@ struct RandomHoles {
   double density = 0;                                          // holes per mm²
   double diameter_min = 0.5, diameter_max = 0.5, depth = 0.5;  // mm
   std::uint64_t seed = 1;
+  // Drawn in pairs mirrored about y = 0 (the rectangle symmetric about it): the plate, the contact and the
+  // sensors on y = 0 are then mirror-symmetric and the half skin solves them (pipeline/symmetry.hpp). A pair
+  // must not overlap itself: no centre lies within its radius of y = 0.
+  bool mirror = false;
 };
 
 struct Texture {

@@ -29,7 +29,8 @@ TextureHoles texture_holes(const Texture& t) {
             {l->origin[0] + i * l->period[0], l->origin[1] + j * l->period[1]}, l->diameter, 0, l->depth});
   if (const auto& r = t.random) {
     const double area = std::abs((r->to[0] - r->from[0]) * (r->to[1] - r->from[1]));
-    const long wanted = std::lround(r->density * area);
+    const long wanted = r->mirror ? 2 * std::lround(0.5 * r->density * area) : std::lround(r->density * area);
+    const double y_top = std::max(r->from[1], r->to[1]);
     SplitMix64 rng{r->seed};
     // Give up after 20,000 rejections in a row: the rectangle is full (each draw checks every hole placed,
     // so the bound keeps a hopeless density to about a second).
@@ -37,11 +38,15 @@ TextureHoles texture_holes(const Texture& t) {
     while (placed < wanted && rejected < 20000) {
       ++draws;
       Hole h;
-      h.center = {rng.uniform(r->from[0], r->to[0]), rng.uniform(r->from[1], r->to[1])};
+      h.center = {rng.uniform(r->from[0], r->to[0]),
+                  r->mirror ? rng.uniform(0.0, y_top) : rng.uniform(r->from[1], r->to[1])};
       h.diameter = rng.uniform(r->diameter_min, r->diameter_max);
       h.depth = r->depth;
-      bool free = true;
-      for (const Hole& o : out.holes) free = free && !holes_overlap(h, o);
+      Hole image = h;
+      image.center[1] = -h.center[1];
+      bool free = !r->mirror || !holes_overlap(h, image);
+      for (const Hole& o : out.holes)
+        free = free && !holes_overlap(h, o) && !(r->mirror && holes_overlap(image, o));
       if (!free) {
         ++rejected;
         continue;
@@ -49,6 +54,7 @@ TextureHoles texture_holes(const Texture& t) {
       rejected = 0;
       out.holes.push_back(h);
       ++placed;
+      if (r->mirror) out.holes.push_back(image), ++placed;
     }
     if (placed < wanted)
       out.error = "placed " + std::to_string(placed) + " of its " + std::to_string(wanted) +

@@ -12,15 +12,16 @@
 
 namespace skinfem::contact {
 
-TextureCut texture_cut(const PathCompliance& path, int n_c, const std::vector<Hole>& holes) {
+TextureCut texture_cut(const PathCompliance& path, int n_c, const std::vector<Hole>& holes, bool mirrored) {
   TextureCut out;
   out.cut.area = Eigen::VectorXd::Zero(n_c);
   out.cut.gap0 = Eigen::VectorXd::Zero(n_c);
   out.cut.B.resize(n_c, static_cast<int>(path.nodes.size()));
   for (const Hole& h : holes) {
+    if (mirrored && h.center[1] < 0) continue;
     HoleCut c = hole_cut(path, n_c, h);
     if (c.B.nonZeros() == 0) continue;
-    ++out.n_holes;
+    out.n_holes += mirrored && h.center[1] > 0 ? 2 : 1;
     out.cut.B += c.B;
     out.cut.area += c.area;
     out.cut.gap0 += c.gap0;
@@ -66,7 +67,7 @@ void solve_hole_sets(const ContactSolver& solver, FrictionMode mode,
   for (int first = 0; first < n; first += kChunk) {
     const int m = std::min(kChunk, n - first);
     for_each_index(m, [&](std::size_t k) {
-      const TextureCut t = texture_cut(*c.path, n_c, sets[first + k]);
+      const TextureCut t = texture_cut(*c.path, n_c, sets[first + k], solver.mirrored());
       cut_holes[k] = t.n_holes;
       if (t.n_holes > 0) problems[k] = cut_problem(c, t.cut, true);
     });
@@ -126,8 +127,10 @@ Superposition superposed_scan(const ContactSolver& solver, const std::vector<Hol
   std::map<Key, int> index;
   std::vector<std::vector<Hole>> sets;
   std::vector<std::vector<int>> uses;  // per solve: the positions it adds to
+  Superposition out;
   for (const Hole& p : plate)
     for (size_t i = 0; i < u.size(); ++i) {
+      if (solver.mirrored() && p.center[1] < 0) break;  // solved with its image
       const std::vector<Hole> one = holes_near({p}, direction, u[i], centre, reach);
       if (one.empty()) continue;
       const Hole& h = one[0];
@@ -136,10 +139,10 @@ Superposition superposed_scan(const ContactSolver& solver, const std::vector<Hol
       if (fresh) {
         sets.push_back(one);
         uses.emplace_back();
+        out.mirror_pair_solves += solver.mirrored() && h.center[1] > 0;
       }
       uses[it->second].push_back(static_cast<int>(i));
     }
-  Superposition out;
   out.varsigma = Eigen::MatrixXd::Zero(static_cast<int>(u.size()), baseline.readings.size());
   solve_hole_sets(solver, mode, sets, baseline, [&](int s, const ContactResult& r, int) {
     const Eigen::RowVectorXd v = (r.readings - baseline.readings).transpose();

@@ -18,12 +18,15 @@
 namespace skinfem::contact {
 
 // The cut of disjoint holes: the sum of their cuts (contact/holes/cut.hpp). n_holes: how many of them cut a
-// hat (the others miss the watched faces).
+// hat (the others miss the watched faces). mirrored: the path is the half y >= 0's of a mirror-symmetric
+// texture: a hole below y = 0 is the image of one above it and is cut with it (left out here), and a hole
+// above y = 0 counts with its image (twice).
 struct TextureCut {
   HoleCut cut;
   int n_holes = 0;
 };
-TextureCut texture_cut(const PathCompliance& path, int n_c, const std::vector<Hole>& holes);
+TextureCut texture_cut(const PathCompliance& path, int n_c, const std::vector<Hole>& holes,
+                       bool mirrored = false);
 
 struct ScanResult {
   FrictionMode mode = FrictionMode::none;
@@ -48,10 +51,13 @@ ScanResult texture_scan(
 
 // The linear prediction Σ_k ς_k(u) at the same positions (positions × 2·sensors, MPa), ς_k from the scan of
 // hole k alone. Holes that sit at the same place in space at some positions (a row whose period is a
-// multiple of the step) share those solves. solves: how many single-hole contacts it took.
+// multiple of the step) share those solves. solves: how many single-hole contacts it took. On a mirrored
+// solver (the half of a mirror-symmetric texture) a hole off y = 0 can only be solved with its image: its
+// term is the pair's, so the difference leaves out the interaction of each hole with its own image
+// (mirror_pair_solves of the solves were pairs).
 struct Superposition {
   Eigen::MatrixXd varsigma;
-  int solves = 0;
+  int solves = 0, mirror_pair_solves = 0;
   double seconds = 0;
 };
 Superposition superposed_scan(const ContactSolver& solver, const std::vector<Hole>& plate,

@@ -9,11 +9,13 @@
 
 #include "skinfem/contact/contact_solver.hpp"
 #include "skinfem/contact/holes/cover.hpp"
+#include "skinfem/contact/holes/scan.hpp"
 #include "skinfem/contact/holes/small_hole.hpp"
 #include "skinfem/contact/holes/sweep.hpp"
 #include "skinfem/contact/metrics.hpp"
 #include "skinfem/mesh/build.hpp"
 #include "skinfem/mesh/mirror.hpp"
+#include "skinfem/scene/texture.hpp"
 
 namespace skinfem::contact {
 namespace {
@@ -142,6 +144,64 @@ TEST(MirrorContact, HalfEqualsTheMirroredWholeInEveryFrictionModeWithHoles) {
   // Round-off of two direct factorizations (residual checked at 1e-10 relative) through the condensed
   // compliance and the LCP's principal solves (complementarity to ~1e-13).
   EXPECT_LT(worst, 1e-8);
+}
+
+// A texture off y = 0 but mirror-symmetric: a hole on the axis and a hole with its image. The half cuts the
+// hole above y = 0 and mirrors it (contact/holes/scan.hpp): its scan is the mirrored whole's, and its
+// superposition's terms are the axis hole alone and the pair together, each scanned on the whole.
+TEST(MirrorContact, HalfScansAMirrorSymmetricTextureAsTheMirroredWhole) {
+  Scene s = plate_on_cap();
+  s.mesh.h_min = 0.7, s.contact->h = 0.5;  // coarser than the other tests': only the equality is asserted
+  const TetMesh half = build_mesh(s, MeshPart::half_y);
+  std::vector<int> source;
+  const TetMesh whole = mirror_half(half, &source);
+  const Hole axis{{-0.6, 0.0}, 0.3}, above{{0.4, 0.45}, 0.3}, below{{0.4, -0.45}, 0.3};
+  const std::vector<Hole> texture{axis, above, below};
+  const Scan scan{-1.2, 1.2, 0.4};
+  std::vector<double> u;
+  for (int i = 0; i < scan.positions(); ++i) u.push_back(scan.u(i));
+  const auto condensed = [&](const TetMesh& m) {
+    Side x;
+    x.model = std::make_unique<ElasticModel>(m, s.material, s.geometry.side, std::vector<Punch>{});
+    x.indenter = std::make_unique<Indenter>(s, m);
+    const auto zone = mortar_zone(m, contact_center(s), s.contact->zone_radius);
+    std::vector<int> faces;
+    for (const HoleTrack& k : hole_tracks(texture, {1, 0}, scan, contact_center(s), s.contact->zone_radius)) {
+      const std::vector<int> f = watch_path(m, zone, k.from, k.to, k.radius);
+      faces.insert(faces.end(), f.begin(), f.end());
+    }
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    x.condensed = std::make_unique<CondensedContact>(
+        condense(*x.model, zone, *x.indenter, SensorReadings(m, reading_sites(s.sensors), &x.model->solver()),
+                 {1, 0}, {}, faces));
+    return x;
+  };
+  const Side h = condensed(half), w = condensed(whole);
+  const MirrorView view =
+      mirror_view(whole, source, h.condensed->zone, contact_center(s), s.contact->zone_radius);
+  const ContactSolver full(*w.condensed, *s.contact), reduced(*h.condensed, *s.contact, &view);
+  ASSERT_TRUE(reduced.mirrored());
+  ASSERT_FALSE(full.mirrored());
+  double worst = 0;
+  for (FrictionMode mode : {FrictionMode::static_residual, FrictionMode::coupled}) {
+    const ScanResult a = texture_scan(reduced, texture, {1, 0}, u, mode),
+                     b = texture_scan(full, texture, {1, 0}, u, mode);
+    EXPECT_EQ(a.holes_in, b.holes_in) << "a hole above y = 0 counts with its image";
+    EXPECT_EQ(*std::max_element(b.holes_in.begin(), b.holes_in.end()), 3);
+    const double peak = b.varsigma.cwiseAbs().maxCoeff();
+    ASSERT_GT(peak, 0);
+    worst = std::max(worst, (a.varsigma - b.varsigma).cwiseAbs().maxCoeff() / peak);
+    const Superposition sa = superposed_scan(reduced, texture, {1, 0}, u, mode);
+    const Eigen::MatrixXd terms = texture_scan(full, {axis}, {1, 0}, u, mode).varsigma +
+                                  texture_scan(full, {above, below}, {1, 0}, u, mode).varsigma;
+    worst = std::max(worst, (sa.varsigma - terms).cwiseAbs().maxCoeff() / peak);
+    EXPECT_GT(sa.mirror_pair_solves, 0);
+    EXPECT_LT(sa.mirror_pair_solves, sa.solves);
+    EXPECT_EQ(superposed_scan(full, texture, {1, 0}, u, mode).mirror_pair_solves, 0);
+  }
+  std::printf("mirror-symmetric texture: max |half − whole| %.2e of the peak\n", worst);
+  EXPECT_LT(worst, 1e-8);  // as above: round-off of two factorizations and LCP solves
 }
 
 // Posts on y = 0 cut in half: the half's top keeps its own points on the cut, the base has the posts' ends

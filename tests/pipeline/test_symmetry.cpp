@@ -144,6 +144,19 @@ TEST(Symmetry, EachContactFieldOffTheMirrorMeshesTheWhole) {
   Scene sweep = symmetric_contact_scene();
   sweep.contact->sweep->to = {1, 0.1};
   check(sweep, "sweep");
+  Scene texture = symmetric_contact_scene();
+  texture.contact->texture = Texture{};
+  texture.contact->texture->holes = {Hole{{0, 0}}, Hole{{1, 0.8}}, Hole{{1, -0.8}, 0.4}};
+  check(texture, "texture hole 2");  // its image is smaller
+}
+
+TEST(Symmetry, ATextureOffTheMirrorWithEveryImageIsSolvedOnTheHalf) {
+  Scene s = symmetric_contact_scene();
+  s.contact->texture = Texture{};
+  s.contact->texture->holes = {Hole{{0, 0}}, Hole{{1, 0.8}}, Hole{{-2, -1.5}}, Hole{{1, -0.8}},
+                               Hole{{-2, 1.5}}};
+  EXPECT_EQ(contact_mirror_unavailable(s), "");
+  EXPECT_EQ(contact_mesh_part(s), MeshPart::half_y);
 }
 
 TEST(Symmetry, APlaneOnACapTouchesAtTheApex) {

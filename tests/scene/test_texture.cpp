@@ -53,6 +53,27 @@ TEST(Texture, RandomHolesKeepTheirContractAndTheirSeed) {
   EXPECT_NE(c.holes[0].center[0], a.holes[0].center[0]);
 }
 
+TEST(Texture, MirroredRandomHolesComeInPairsAboutTheAxis) {
+  Texture t;
+  t.random = RandomHoles{{-2, -1}, {3, 1}, 2.0, 0.2, 0.4, 0.5, 7};
+  t.random->mirror = true;
+  const TextureHoles a = texture_holes(t);
+  ASSERT_TRUE(a.error.empty()) << a.error;
+  ASSERT_EQ(a.holes.size(), 20u);  // 10 pairs: 2 per mm² on 5 × 2 mm
+  for (size_t k = 0; k < a.holes.size(); k += 2) {
+    const Hole &h = a.holes[k], &image = a.holes[k + 1];
+    EXPECT_GE(h.center[1], 0.5 * h.diameter) << "a pair must not overlap itself";
+    EXPECT_LE(h.center[1], 1);
+    EXPECT_EQ(image.center[0], h.center[0]);
+    EXPECT_EQ(image.center[1], -h.center[1]);
+    EXPECT_EQ(image.diameter, h.diameter);
+    for (size_t l = 0; l < a.holes.size(); ++l)
+      if (l != k) {
+        EXPECT_FALSE(holes_overlap(h, a.holes[l])) << k << " and " << l;
+      }
+  }
+}
+
 TEST(Texture, RandomHolesThatCannotFitSaySo) {
   Texture t;
   // 40 holes of 0.5 mm on 2 mm²: more than the plane can hold (at most about 2 mm² / 0.2 mm² each).
