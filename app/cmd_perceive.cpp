@@ -26,7 +26,7 @@
 namespace skinfem::app {
 
 int run_perceive(const Scene& scene, const std::string& out_dir, const pipeline::PerceptionOptions& options) {
-  require_sweep(scene);
+  pipeline::require_perceivable(scene);
   check_output_dir(out_dir);
   const pipeline::PerceptionRun run = pipeline::perception_run(scene, contact_setup(scene), options);
   nlohmann::json j = pipeline::perception_json(scene, run);

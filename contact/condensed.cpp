@@ -57,16 +57,18 @@ CondenseColumns condense_columns(const TetMesh& m, const MortarZone& zone, const
 CondensedContact condense(const ElasticModel& model, const MortarZone& zone, const Indenter& indenter,
                           const SensorReadings& readings, const Vec2& direction,
                           const std::function<void(double, const std::string&)>& progress,
-                          const std::vector<int>& watch_faces, const CondenseColumns* bordered) {
+                          const std::vector<int>& watch_faces, const CondenseColumns* bordered,
+                          const std::function<void(const CondensedContact&)>& before_path) {
   return condense(model.mesh(), model.solver(), model.fixed(), zone, indenter, readings, direction, progress,
-                  watch_faces, bordered);
+                  watch_faces, bordered, before_path);
 }
 
 CondensedContact condense(const TetMesh& m, const MixedSolver& solver, const std::vector<bool>& fixed,
                           const MortarZone& zone, const Indenter& indenter, const SensorReadings& readings,
                           const Vec2& direction,
                           const std::function<void(double, const std::string&)>& progress,
-                          const std::vector<int>& watch_faces, const CondenseColumns* bordered) {
+                          const std::vector<int>& watch_faces, const CondenseColumns* bordered,
+                          const std::function<void(const CondensedContact&)>& before_path) {
   const auto start = std::chrono::steady_clock::now();
   CondensedContact c;
   c.zone = zone;
@@ -149,6 +151,19 @@ CondensedContact condense(const TetMesh& m, const MixedSolver& solver, const std
       {adjoint, nread, nr, "adjoint solves for " + std::to_string(readings.size()) + " sensors"},
       {multiplier, 0, nc, "condensing onto " + std::to_string(nc) + " contact multipliers"},
       {watched, 2 * nc, nw, "compliance of the " + std::to_string(nw) + " nodes a swept hole can reach"}};
+  // The hole-free problem, as soon as its multipliers and adjoints are known (before the path's solves).
+  const auto hole_free = [&] {
+    if (!before_path || !c.path) return;
+    CondensedContact pre;
+    pre.zone = c.zone;
+    pre.direction = c.direction;
+    pre.C_zz = 0.5 * (c.C_zz + c.C_zz.transpose());
+    pre.C_zt = c.C_zt;
+    pre.gap0 = c.gap0;
+    pre.S_p = c.S_p;
+    pre.S_t = c.S_t;
+    before_path(pre);
+  };
   if (bordered && solver.coupling_products().size() > 0) {
     const Eigen::MatrixXd& G = solver.coupling_products();
     if (G.rows() != cols.size())
@@ -156,12 +171,14 @@ CondensedContact condense(const TetMesh& m, const MixedSolver& solver, const std
     if (progress) progress(0.0, "condensing onto " + std::to_string(nc) + " contact multipliers (bordered)");
     for (const auto& s : sources)
       if (s.count > 0) place(s.src, 0, G.block(0, s.first, nread, s.count));
+    hole_free();
   } else {
     // Readouts on the free DOFs only (the products' definition), as sparse rows.
     Eigen::SparseMatrix<double> R = cols.coupling.F.leftCols(nread);
     R.prune([&](int row, int, double) { return !fixed[row]; });
     const Eigen::SparseMatrix<double, Eigen::RowMajor> Rt = R.transpose();
-    for (const auto& s : sources)
+    for (const auto& s : sources) {
+      if (s.src == watched) hole_free();
       for (int j0 = 0; j0 < s.count; j0 += kBlock) {
         const int k = std::min(kBlock, s.count - j0);
         if (progress) progress(double(j0) / s.count, s.what);
@@ -173,6 +190,7 @@ CondensedContact condense(const TetMesh& m, const MixedSolver& solver, const std
         c.block_solves += k;
         if (s.src == watched) c.path->block_solves += k;
       }
+    }
   }
   // Symmetric by reciprocity up to the solver's round-off; make them exactly so for the LCP.
   c.C_zz = 0.5 * (c.C_zz + c.C_zz.transpose()).eval();

@@ -60,12 +60,14 @@ CondenseColumns condense_columns(const TetMesh& mesh, const MortarZone& zone, co
 // hole can cut (contact/holes/cut.hpp, watch_path); their P2 nodes get one more solve each. When the model
 // was factored with the coupling of condense_columns(…) of these same arguments, pass it as `bordered`:
 // its products replace every block solve (where MUMPS's estimates chose the plain factorization instead,
-// MixedSolver::border_choice, the block solves run).
+// MixedSolver::border_choice, the block solves run). before_path, with watched faces: called with the
+// hole-free problem (no path) before the watched nodes' solves, so that a caller can check it (the zone's
+// size) before paying for them; it may throw.
 CondensedContact condense(const ElasticModel& model, const MortarZone& zone, const Indenter& indenter,
                           const SensorReadings& readings, const Vec2& direction,
                           const std::function<void(double, const std::string&)>& progress = {},
-                          const std::vector<int>& watch_faces = {},
-                          const CondenseColumns* bordered = nullptr);
+                          const std::vector<int>& watch_faces = {}, const CondenseColumns* bordered = nullptr,
+                          const std::function<void(const CondensedContact&)>& before_path = {});
 
 // The same on any factored skin: solver, the skin's (or a finite-strain tangent's,
 // contact/finite_contact.hpp) factorization on mesh m with its held DOFs `fixed` (3N).
@@ -73,8 +75,8 @@ CondensedContact condense(const TetMesh& m, const MixedSolver& solver, const std
                           const MortarZone& zone, const Indenter& indenter, const SensorReadings& readings,
                           const Vec2& direction,
                           const std::function<void(double, const std::string&)>& progress = {},
-                          const std::vector<int>& watch_faces = {},
-                          const CondenseColumns* bordered = nullptr);
+                          const std::vector<int>& watch_faces = {}, const CondenseColumns* bordered = nullptr,
+                          const std::function<void(const CondensedContact&)>& before_path = {});
 
 // The condensed problem with a hole that cuts the hats (holes/cut.hpp): the hole-free one with the rows and
 // columns of the multipliers the hole touches (T) replaced. Shapes: |T| × n for rows, 2·sensors × |T| for

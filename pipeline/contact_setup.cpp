@@ -132,7 +132,15 @@ std::unique_ptr<ContactSetup> contact_setup(const Scene& scene, ContactSkin cs) 
                       condense_clock.seconds());
         progress(buf);
       },
-      cs.watch_faces, cs.columns.get()));
+      cs.watch_faces, cs.columns.get(),
+      [&](const contact::CondensedContact& hole_free) {
+        // Fail before the path's solves (minutes on a textured plate), not after them: the commands that
+        // watch a path solve these two hole-free contacts first and refuse a zone they outgrow.
+        if (!scene.contact->holes.empty()) return;
+        const contact::ContactSolver solver(hole_free, *scene.contact, s->mirror.get());
+        for (FrictionMode mode : {FrictionMode::static_residual, FrictionMode::coupled})
+          check_zone(scene, s->mesh(), solver, s->zone_radius, s->zone_h, solver.solve(mode));
+      }));
   s->solver = std::make_unique<contact::ContactSolver>(*s->condensed, *scene.contact, s->mirror.get());
   s->top = std::make_unique<PlanarFaceIndex>(s->mesh(), kTop);
   s->wall["condense"] = clock.seconds();
@@ -176,13 +184,18 @@ std::string condensation_said(const ContactSetup& setup) {
 constexpr double kZoneTailFraction = 1e-3;
 
 void check_zone(const Scene& scene, const ContactSetup& s, const contact::ContactResult& r) {
-  const auto& z = s.solver->zone();
+  check_zone(scene, s.mesh(), *s.solver, s.zone_radius, s.zone_h, r);
+}
+
+void check_zone(const Scene& scene, const TetMesh& mesh, const contact::ContactSolver& solver,
+                double zone_radius, double zone_h, const contact::ContactResult& r) {
+  const auto& z = solver.zone();
   const Vec2 c = contact_center(scene);
   const auto distance = [&](int i) {
-    return std::hypot(s.mesh().nodes(z.vertices[i], 0) - c[0], s.mesh().nodes(z.vertices[i], 1) - c[1]);
+    return std::hypot(mesh.nodes(z.vertices[i], 0) - c[0], mesh.nodes(z.vertices[i], 1) - c[1]);
   };
   // The outermost ring of multipliers lies within one element of the zone's edge.
-  const double ring = s.zone_radius - s.zone_h;
+  const double ring = zone_radius - zone_h;
   if (kind(scene.contact->interface.law).smooth) {
     // An exponential interface touches everywhere: its tail is cut at the zone's edge whatever the radius.
     // The outer ring's share of the force measures the cut (it bounds what lies beyond where the tail
@@ -200,14 +213,14 @@ void check_zone(const Scene& scene, const ContactSetup& s, const contact::Contac
           "%s: contact.zone_radius = %g: the exponential interface carries %.2g of the force in the "
           "zone's outer element ring (friction %s; allowed %.0e): its tail is cut short there; give a "
           "larger contact.zone_radius",
-          scene.source_path.c_str(), s.zone_radius, outer / total, to_string(r.mode), kZoneTailFraction);
+          scene.source_path.c_str(), zone_radius, outer / total, to_string(r.mode), kZoneTailFraction);
       throw SceneError(buf);
     }
     return;
   }
   double reach = 0;
   for (int i : r.active) reach = std::max(reach, distance(i));
-  check_zone_reach(scene, s.zone_radius, s.zone_h, reach, r.mode);
+  check_zone_reach(scene, zone_radius, zone_h, reach, r.mode);
 }
 
 void check_zone_reach(const Scene& scene, double zone_radius, double zone_h, double reach,

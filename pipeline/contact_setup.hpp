@@ -79,6 +79,10 @@ std::string condensation_said(const ContactSetup& setup);
 // Throws (one line, naming contact.zone_radius) when an active multiplier lies in the zone's outer ring:
 // the contact could be larger than the zone allows, so the answer would be wrong.
 void check_zone(const Scene& scene, const ContactSetup& setup, const contact::ContactResult& r);
+// The same for a solver on `mesh` (the results' mesh: the whole under mirror symmetry) before its setup is
+// complete.
+void check_zone(const Scene& scene, const TetMesh& mesh, const contact::ContactSolver& solver,
+                double zone_radius, double zone_h, const contact::ContactResult& r);
 // The same for a contact whose farthest active multiplier lies `reach` mm from the centre (a zone of
 // zone_radius, meshed at zone_h).
 void check_zone_reach(const Scene& scene, double zone_radius, double zone_h, double reach, FrictionMode mode);

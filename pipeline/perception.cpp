@@ -30,8 +30,7 @@ std::optional<double> smallest_detected(const std::vector<double>& D, const std:
   return std::nullopt;  // not monotone: no single answer
 }
 
-PerceptionRun perception_run(const Scene& scene, std::shared_ptr<const ContactSetup> setup,
-                             const PerceptionOptions& o) {
+void require_perceivable(const Scene& scene) {
   require_sweep(scene);
   // A resolved hole below the mesh is not resolved: the ladder of smaller holes is the bulge's, the small
   // hole's own model.
@@ -41,6 +40,11 @@ PerceptionRun perception_run(const Scene& scene, std::shared_ptr<const ContactSe
         ": contact.sweep.hole_model = \"resolved\": skinfem perceive sweeps holes down to an eighth "
         "of the scene's, below the mesh: it needs the small hole's model, \"bulge\" (under a hard "
         "interface)");
+}
+
+PerceptionRun perception_run(const Scene& scene, std::shared_ptr<const ContactSetup> setup,
+                             const PerceptionOptions& o) {
+  require_perceivable(scene);
   if (!(o.p_fa > 0 && o.p_fa < 1) || !(o.p_d > 0 && o.p_d < 1) || o.trials < 1 || o.sample_mm < 0 ||
       !(o.scan_mm >= 0) || o.scan_trials < 0)
     throw std::invalid_argument(

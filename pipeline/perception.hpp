@@ -73,7 +73,10 @@ struct PerceptionRun {
 std::optional<double> smallest_detected(const std::vector<double>& D, const std::vector<double>& snr,
                                         double need);
 
-// Throws SceneError without a contact.sweep, and std::invalid_argument for options out of range.
+// Throws SceneError without a contact.sweep or with a resolved one (its ladder goes below the mesh): what a
+// command checks before it sets up the contact.
+void require_perceivable(const Scene& scene);
+// Throws as require_perceivable, and std::invalid_argument for options out of range.
 PerceptionRun perception_run(const Scene& scene, std::shared_ptr<const ContactSetup> setup,
                              const PerceptionOptions& options);
 nlohmann::json perception_json(const Scene& scene, const PerceptionRun& run);

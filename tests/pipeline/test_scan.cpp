@@ -101,6 +101,17 @@ TEST(Scan, TwoHolesSharingTheContactDifferFromTheirSumByLessThanTheMeshError) {
   }
 }
 
+TEST(Scan, AZoneTheContactOutgrowsIsRefusedBeforeTheTracksAreCondensed) {
+  Scene scene = scanned_layer({hole(0)}, -1.8, 1.8, 0.3, 13);
+  scene.contact->zone_radius = 0.8;  // the hole-free contact is about 2 mm across
+  try {
+    contact_setup(scene);  // scan_run would check it only after the whole condensation
+    ADD_FAILURE() << "a zone the contact outgrows was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("contact.zone_radius"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Scan, WithoutATextureTheSweepsHoleIsScannedAlongItsPath) {
   const Scene scene = testing::swept_layer("swept_only", 13, {-1.8, 0}, {1.8, 0}, 2.0, kHole);
   const Scene s = scanned_scene(scene);
