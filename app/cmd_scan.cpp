@@ -11,7 +11,8 @@
 // the sweep's hole, resolved, along its path: the paper's single-hole experiment.
 //
 // Writes DIR/scan.csv (case,u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa,superposed_z_kPa,superposed_x_kPa;
-// u = the plate's displacement), DIR/scan.pvd with DIR/frames/<case>_NNNNN.vtp (the contact pressure and
+// u = the plate's displacement), DIR/holes.csv (x_mm,y_mm,diameter_mm,depth_mm: the plate's holes at u = 0,
+// random ones included), DIR/scan.pvd with DIR/frames/<case>_NNNNN.vtp (the contact pressure and
 // the holes at each position, at most 201 per case evenly spaced) and DIR/summary.json (per case the peaks
 // per sensor, the superposition's largest difference, time per position; wall_s per stage, peak_rss_mb).
 // The computation and summary.json are pipeline/scan.hpp's; this file writes and prints them.
@@ -64,7 +65,13 @@ void write_scan(const Scene& scene, const pipeline::ScanRun& run, nlohmann::json
         csv << "\n";
       }
   }
+  std::ostringstream plate;
+  plate.precision(10);
+  plate << "x_mm,y_mm,diameter_mm,depth_mm\n";
+  for (const Hole& h : scene.contact->texture->holes)
+    plate << h.center[0] << "," << h.center[1] << "," << h.diameter << "," << h.depth << "\n";
   write_text_atomic(out_dir + "/scan.csv", csv.str());
+  write_text_atomic(out_dir + "/holes.csv", plate.str());
   write_text_atomic(out_dir + "/scan.pvd", pvd);
   add_write_seconds(summary, clock.seconds());
   write_json(out_dir + "/summary.json", summary);
@@ -111,7 +118,7 @@ void write_scan(const Scene& scene, const pipeline::ScanRun& run, nlohmann::json
           100 * s["rel_diff_x"].get<double>());
     }
   }
-  std::printf("  wrote %s/scan.csv, scan.pvd (+ frames/), summary.json\n", out_dir.c_str());
+  std::printf("  wrote %s/scan.csv, holes.csv, scan.pvd (+ frames/), summary.json\n", out_dir.c_str());
 }
 }  // namespace
 

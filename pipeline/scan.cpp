@@ -1,7 +1,9 @@
 #include "skinfem/pipeline/scan.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "skinfem/contact/pressure_map.hpp"
 #include "skinfem/pipeline/progress.hpp"
@@ -188,6 +190,16 @@ nlohmann::json scan_json(const Scene& scene, const ScanRun& run) {
   summary["friction_law"] = to_string(load.law);
   summary["interface"] = to_string(load.interface.law);
   summary["holes"] = load.texture->holes.size();
+  // The narrowest ligament between two holes' rims: below about a millimetre the rims reload each other
+  // (docs/contact.md, "Where superposition holds").
+  const std::vector<Hole>& holes = load.texture->holes;
+  double closest = std::numeric_limits<double>::infinity();
+  for (size_t a = 0; a < holes.size(); ++a)
+    for (size_t b = 0; b < a; ++b)
+      closest = std::min(closest, std::hypot(holes[a].center[0] - holes[b].center[0],
+                                             holes[a].center[1] - holes[b].center[1]) -
+                                      0.5 * (holes[a].diameter + holes[b].diameter));
+  if (holes.size() > 1) summary["closest_rims_mm"] = closest;
   summary["positions"] = n;
   summary["scan_mm"] = {{"from", load.scan->from}, {"to", load.scan->to}, {"step", load.scan->step}};
   summary["direction"] = {load.direction[0], load.direction[1]};

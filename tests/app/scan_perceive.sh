@@ -2,7 +2,8 @@
 # skinfem scan and skinfem perceive through the command line, on a sphere pressed into a small flat layer.
 # scan: a random texture of two holes off y = 0 (so the whole mesh, not the half) scanned 4 mm: exit 0;
 # scan.csv has a row per case, position and sensor with the superposition beside, every number finite; the
-# animation lists a frame per position and case and each file exists; summary.json counts the holes; a
+# animation lists a frame per position and case and each file exists; summary.json counts the holes and
+# holes.csv lists them (in their rectangle, the narrowest ligament the summary's); a
 # second run writes the same scan.csv byte for byte (the cut problems are built on several threads).
 # perceive: the required SNR is Φ⁻¹(0.99) + Φ⁻¹(0.9) = 3.608 (tables); the ROC curves rise with the
 # false-alarm rate; the Monte Carlo rates lie within 4 standard errors of the nominal ones, the slid filter's
@@ -50,6 +51,17 @@ if not all(math.isfinite(float(r[c])) for r in rows for c in cols[1:]):
 summary = json.load(open(f"{tmp}/a/summary.json"))
 if summary["holes"] != 2:
     bad.append(f"summary.json: {summary['holes']} holes, expected 2")
+# holes.csv lists the random holes: inside their rectangle, diameters in range, the narrowest ligament the
+# summary's (recomputed from the file's 10 digits).
+holes = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(f"{tmp}/a/holes.csv"))]
+if len(holes) != 2 or not all(-3 <= h["x_mm"] <= -1 and -0.5 <= h["y_mm"] <= 0.5 and 0.35 <= h["diameter_mm"] <= 0.45
+                              for h in holes):
+    bad.append(f"holes.csv: {holes}")
+else:
+    a, b = holes
+    gap = math.hypot(a["x_mm"] - b["x_mm"], a["y_mm"] - b["y_mm"]) - 0.5 * (a["diameter_mm"] + b["diameter_mm"])
+    if not gap > 0 or abs(gap - summary["closest_rims_mm"]) > 1e-8:
+        bad.append(f"closest rims {summary['closest_rims_mm']} against holes.csv's {gap}")
 frames = re.findall(r'file="(frames/[^"]+)"', open(f"{tmp}/a/scan.pvd").read())
 if len(frames) != 2 * 41 or not all(os.path.exists(f"{tmp}/a/{f}") for f in frames):
     bad.append(f"scan.pvd lists {len(frames)} frames (expected 82, each written)")
