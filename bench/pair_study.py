@@ -8,19 +8,26 @@ the largest difference over the largest signal (varsigma_z and varsigma_x, stati
 hypothesis: Coulomb under a hard interface, a shear strength under a hard interface, Coulomb through a rough
 (linear) interface.
 
-    $ /usr/bin/python3 bench/pair_study.py build/app/skinfem out/pair_study [pairs|rows|lattices|random]
+    $ /usr/bin/python3 bench/pair_study.py build/app/skinfem out/pair_study [pairs|rows|twins|lattices|random]
     coulomb_hard         s = 0.60 mm: sliding z 3.7 %, x 3.7 %
 
 Rows: Coulomb under a hard interface, the plate covered by a row of 0.5 mm holes at a period p on y = 0,
 scanned 4 mm at 0.05 mm, every hole crossing the zone (rows.csv: period_mm,case,holes,most_holes,rel_diff_z,
 rel_diff_x,single_hole_solves,seconds).
 
-Lattices and random textures (Coulomb, hard, 4 mm scanned at 0.05 mm):
-square lattices of 0.5 mm holes against their period, and holes of 0.3 to 0.6 mm at random against their
-density, on the plate's rectangle whose holes reach the zone during the scan. Off y = 0 they solve the whole
-skin with every hole's track watched: 240,000-300,000 DOFs and 4,900-6,700 watched nodes, over 30 min per
-texture on 2 cores (docs/contact.md, "Textures off the axis") (lattices.csv, random.csv: texture,label,
-density_per_mm2,case,holes,most_holes,rel_diff_z,rel_diff_x,dofs,seconds,peak_mb).
+Twins: two 0.5 mm holes s apart across the sliding direction (at y = +-s/2), on the whole skin
+("symmetry": "none"): the interaction the half model leaves out of a mirror-symmetric texture's superposition
+(twins.csv: spacing_mm,case,rel_diff_z,rel_diff_x,max_diff_z_kPa,max_diff_x_kPa,dofs,watched_nodes,seconds).
+
+Lattices and random textures (Coulomb, hard, 4 mm scanned at 0.05 mm): square lattices of 0.5 mm holes
+centred on y = 0 against their period, and holes of 0.3 to 0.6 mm drawn at random in mirrored pairs against
+their density (two seeds), on the plate's rectangle whose holes reach the zone during the scan. Both are
+mirror-symmetric, so the half skin solves them (docs/contact.md, "Textures off the axis"): 93,000-148,000
+DOFs, 850-3,700 watched nodes, 10 s to 4 min per texture on 2 cores (lattices.csv, random.csv: texture,label,
+density_per_mm2,case,holes,closest_rims_mm,most_holes,rel_diff_z,rel_diff_x,mirror_pair_terms,dofs,
+watched_nodes,seconds,peak_mb).
+
+A run already in OUT with the same scene file is reused.
 
 Writes OUT/pair_study.csv (hypothesis,spacing_mm,case,rel_diff_z,rel_diff_x,max_diff_z_kPa,max_diff_x_kPa,
 most_holes,seconds) and OUT/pair_study.png. Every run is a fresh process (mesh and factorization included):
@@ -64,9 +71,16 @@ PERIODS = [0.6, 0.75, 0.9, 1.2, 1.5, 2.0, 3.0]
 
 
 def run_scan(skinfem, out, name, scene_json):
+    """skinfem scan of the scene into OUT/NAME; a run already there of the same scene file is reused."""
     path = os.path.join(out, name + ".json")
-    json.dump(scene_json, open(path, "w"), indent=1)
+    text = json.dumps(scene_json, indent=1)
     run_dir = os.path.join(out, name)
+    summary = os.path.join(run_dir, "summary.json")
+    if os.path.exists(path) and open(path).read() == text and os.path.exists(summary):
+        done = json.load(open(summary))
+        if "closest_rims_mm" in done or done["holes"] < 2:
+            return done
+    open(path, "w").write(text)
     subprocess.run([skinfem, "scan", path, "--out", run_dir], check=True, stdout=subprocess.DEVNULL,
                    env=dict(os.environ, OPENBLAS_NUM_THREADS="1"))
     return json.load(open(os.path.join(run_dir, "summary.json")))
@@ -117,15 +131,17 @@ def textured(base, texture, name):
 # (the contact's half width), x within the zone's caps there (sqrt(4^2 - 2.5^2) = 3.12 mm, less 0.07 mm).
 ZONE = 4.0
 PLATE = ([0.5 - 4.0 - 3.05, -2.5], [0.5 + 3.05, 2.5])
-LATTICE_PERIODS = [0.75, 1.5, 3.0]
-DENSITIES = [0.25, 0.5, 1.0]  # holes per mm^2
-SEEDS = [1]
+LATTICE_PERIODS = [0.75, 0.9, 1.0, 1.2, 1.5, 2.0, 3.0]
+DENSITIES = [0.25, 0.5, 1.0, 1.5]  # holes per mm^2
+SEEDS = [1, 2]
 
 
 def density_rows(kind, points):
     """One table for lattices and random textures: density, holes, interaction, cost."""
-    return [[kind, label, density, case, summary["holes"], k["most_holes_in_zone"],
-             k["superposition"]["rel_diff_z"], k["superposition"]["rel_diff_x"], summary["dofs"],
+    return [[kind, label, density, case, summary["holes"], summary.get("closest_rims_mm", ""),
+             k["most_holes_in_zone"],
+             k["superposition"]["rel_diff_z"], k["superposition"]["rel_diff_x"],
+             k["superposition"]["mirror_pair_solves"], summary["dofs"], summary["watched_nodes"],
              summary["wall_total_s"], summary["peak_rss_mb"]]
             for label, density, summary in points for case, k in summary["cases"].items()]
 
@@ -146,17 +162,49 @@ def main_density(skinfem, out, base, part):
         for d in DENSITIES:
             for seed in SEEDS:
                 tex = {"random": {"from": PLATE[0], "to": PLATE[1], "density": d, "diameter": [0.3, 0.6],
-                                  "seed": seed}}
+                                  "seed": seed, "mirror": True}}
                 summary = run_scan(skinfem, out, f"random_{d:.2f}_{seed}", textured(base, tex, "random"))
                 points.append((f"seed {seed}", d, summary))
     rows = density_rows(part, points)
     for r in rows:
-        print(f"{part} {r[1]} ({r[2]:.2f} /mm^2, {r[4]} holes, up to {r[5]} in the zone): {r[3]:7s} "
-              f"z {100 * r[6]:.1f} %, x {100 * r[7]:.1f} %  ({r[8]} DOFs, {r[9]:.0f} s, {r[10]:.0f} MB)", flush=True)
+        print(f"{part} {r[1]} ({r[2]:.2f} /mm^2, {r[4]} holes, rims {r[5]:.3f} mm apart at the closest, up to "
+              f"{r[6]} in the zone): {r[3]:7s} z {100 * r[7]:.1f} %, x {100 * r[8]:.1f} %  ({r[10]} DOFs, "
+              f"{r[11]} watched nodes, {r[12]:.0f} s, {r[13]:.0f} MB)", flush=True)
     with open(os.path.join(out, part + ".csv"), "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["texture", "label", "density_per_mm2", "case", "holes", "most_holes", "rel_diff_z",
-                    "rel_diff_x", "dofs", "seconds", "peak_mb"])
+        w.writerow(["texture", "label", "density_per_mm2", "case", "holes", "closest_rims_mm", "most_holes",
+                    "rel_diff_z", "rel_diff_x", "mirror_pair_terms", "dofs", "watched_nodes", "seconds",
+                    "peak_mb"])
+        w.writerows(rows)
+
+
+# A hole and its mirror image s apart across the sliding direction, on the whole skin: the interaction the
+# half model leaves out of a mirror-symmetric texture's superposition (its terms are such pairs).
+TWIN_SPACINGS = [0.6, 1.0, 1.5, 2.0, 3.0]
+
+
+def main_twins(skinfem, out, base):
+    rows = []
+    for sp in TWIN_SPACINGS:
+        s = scene(base, 0.0, {})
+        s["symmetry"] = "none"
+        s["contact"]["texture"]["holes"] = [{"center": [0.0, 0.5 * sp], "diameter": 0.5},
+                                            {"center": [0.0, -0.5 * sp], "diameter": 0.5}]
+        x0, reach = 0.5, 4.0 + 0.25
+        s["contact"]["scan"] = {"from": round(x0 - reach, 3), "to": round(x0 + reach, 3), "step": 0.05}
+        s["name"] = "twins"
+        summary = run_scan(skinfem, out, f"twins_{sp:.2f}", s)
+        for case, k in summary["cases"].items():
+            p = k["superposition"]
+            rows.append([sp, case, p["rel_diff_z"], p["rel_diff_x"], p["max_diff_z_kPa"], p["max_diff_x_kPa"],
+                         summary["dofs"], summary["watched_nodes"], summary["wall_total_s"]])
+            print(f"twins s = {sp:.2f} mm: {case:7s} z {100 * p['rel_diff_z']:.2f} %, x {100 * p['rel_diff_x']:.2f} % "
+                  f"({summary['dofs']} DOFs, {summary['watched_nodes']} watched nodes, "
+                  f"{summary['wall_total_s']:.0f} s)", flush=True)
+    with open(os.path.join(out, "twins.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["spacing_mm", "case", "rel_diff_z", "rel_diff_x", "max_diff_z_kPa", "max_diff_x_kPa", "dofs",
+                    "watched_nodes", "seconds"])
         w.writerows(rows)
 
 
@@ -169,6 +217,8 @@ def main():
         return main_rows(skinfem, out, base)
     if part in ("lattices", "random"):
         return main_density(skinfem, out, base, part)
+    if part == "twins":
+        return main_twins(skinfem, out, base)
     rows = []
     for name, extra in HYPOTHESES.items():
         for s in SPACINGS:
