@@ -1,6 +1,6 @@
-// skinfem scan — a textured plate (contact.texture: listed holes, a lattice, random holes) moved along the
-// sliding direction over the skin from contact.scan.from to .to by .step; at every position the full
-// contact with every hole over the zone resolved on its exact disc and the contact set free, static
+// skinfem scan — a textured plate (contact.texture: listed holes, a lattice, grooves, random holes) moved
+// along the sliding direction over the skin from contact.scan.from to .to by .step; at every position the
+// full contact with every hole over the zone resolved on its exact disc and the contact set free, static
 // (residual traction) and sliding (the scene's friction law), and beside it the paper's linear prediction
 // Σ_k ς_k(u) from the holes one at a time (docs/contact.md, "Textures and scans").
 //
@@ -11,8 +11,9 @@
 // the sweep's hole, resolved, along its path: the paper's single-hole experiment.
 //
 // Writes DIR/scan.csv (case,u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa,superposed_z_kPa,superposed_x_kPa;
-// u = the plate's displacement), DIR/holes.csv (x_mm,y_mm,diameter_mm,depth_mm: the plate's holes at u = 0,
-// random ones included), DIR/scan.pvd with DIR/frames/<case>_NNNNN.vtp (the contact pressure and
+// u = the plate's displacement), DIR/holes.csv (x_mm,y_mm,diameter_mm,depth_mm,length_mm: the plate's holes
+// at u = 0, random ones included; a groove's width in diameter_mm, its length across the sliding direction in
+// length_mm, 0 for a disc), DIR/scan.pvd with DIR/frames/<case>_NNNNN.vtp (the contact pressure and
 // the holes at each position, at most 201 per case evenly spaced) and DIR/summary.json (per case the peaks
 // per sensor, the superposition's largest difference, time per position; wall_s per stage, peak_rss_mb).
 // The computation and summary.json are pipeline/scan.hpp's; this file writes and prints them.
@@ -67,9 +68,10 @@ void write_scan(const Scene& scene, const pipeline::ScanRun& run, nlohmann::json
   }
   std::ostringstream plate;
   plate.precision(10);
-  plate << "x_mm,y_mm,diameter_mm,depth_mm\n";
+  plate << "x_mm,y_mm,diameter_mm,depth_mm,length_mm\n";
   for (const Hole& h : scene.contact->texture->holes)
-    plate << h.center[0] << "," << h.center[1] << "," << h.diameter << "," << h.depth << "\n";
+    plate << h.center[0] << "," << h.center[1] << "," << h.diameter << "," << h.depth << "," << h.length
+          << "\n";
   write_text_atomic(out_dir + "/scan.csv", csv.str());
   write_text_atomic(out_dir + "/holes.csv", plate.str());
   write_text_atomic(out_dir + "/scan.pvd", pvd);

@@ -8,7 +8,7 @@ the largest difference over the largest signal (varsigma_z and varsigma_x, stati
 hypothesis: Coulomb under a hard interface, a shear strength under a hard interface, Coulomb through a rough
 (linear) interface.
 
-    $ /usr/bin/python3 bench/pair_study.py build/app/skinfem out/pair_study [pairs|rows|twins|lattices|random]
+    $ /usr/bin/python3 bench/pair_study.py build/app/skinfem out/pair_study [pairs|rows|twins|lattices|random|gratings]
     coulomb_hard         s = 0.60 mm: sliding z 3.7 %, x 3.7 %
 
 Rows: Coulomb under a hard interface, the plate covered by a row of 0.5 mm holes at a period p on y = 0,
@@ -26,6 +26,11 @@ mirror-symmetric, so the half skin solves them (docs/contact.md, "Textures off t
 DOFs, 850-3,700 watched nodes, 10 s to 4 min per texture on 2 cores (lattices.csv, random.csv: texture,label,
 density_per_mm2,case,holes,closest_rims_mm,most_holes,rel_diff_z,rel_diff_x,mirror_pair_terms,dofs,
 watched_nodes,seconds,peak_mb).
+
+Gratings (Coulomb, hard, 4 mm scanned at 0.05 mm): grooves 0.5 mm wide across the sliding direction, 9 mm
+long (beyond the 4 mm zone on both sides of y = 0, so the half skin solves them), against their period, and
+one groove alone (gratings.csv: period_mm,case,grooves,most_in_zone,rel_diff_z,rel_diff_x,peak_z_kPa,
+peak_x_kPa,dofs,watched_nodes,seconds,peak_mb; the period of the single groove is empty).
 
 A run already in OUT with the same scene file is reused.
 
@@ -208,6 +213,38 @@ def main_twins(skinfem, out, base):
         w.writerows(rows)
 
 
+GRATING_PERIODS = [0.75, 1.0, 1.5, 2.0, 3.0]
+
+
+def main_gratings(skinfem, out, base):
+    rows = []
+    x0, L = 0.5, 4.0
+    for p in [None] + GRATING_PERIODS:
+        # Every groove crosses the zone during the scan; one groove crosses it at the scan's middle.
+        count = 1 if p is None else int((2 * ZONE + L) / p) + 1
+        origin = x0 - 0.5 * L if p is None else x0 - ZONE - L
+        tex = {"grooves": {"origin": [round(origin, 6), 0.0], "width": 0.5, "length": 2 * ZONE + 1,
+                           "count": count, "period": p if p else 1.0}}
+        summary = run_scan(skinfem, out, f"grating_{p:.2f}" if p else "groove", textured(base, tex, "grating"))
+        for case, k in summary["cases"].items():
+            sp = k.get("superposition", {})
+            pz = max(x["peak_abs_varsigma_z_kPa"] for x in k["sensors"])
+            px = max(x["peak_abs_varsigma_x_kPa"] for x in k["sensors"])
+            rows.append([p or "", case, count, k["most_holes_in_zone"], sp.get("rel_diff_z", ""),
+                         sp.get("rel_diff_x", ""), pz, px, summary["dofs"], summary["watched_nodes"],
+                         summary["wall_total_s"], summary["peak_rss_mb"]])
+            what = f"grating p = {p:.2f} mm ({count} grooves)" if p else "one groove"
+            diff = f", sum z {100 * sp['rel_diff_z']:.1f} %, x {100 * sp['rel_diff_x']:.1f} %" if sp else ""
+            print(f"{what}, up to {k['most_holes_in_zone']} in the zone: {case:7s} peak z {pz:.2f} kPa, "
+                  f"x {px:.2f} kPa{diff} ({summary['dofs']} DOFs, {summary['watched_nodes']} watched nodes, "
+                  f"{summary['wall_total_s']:.0f} s, {summary['peak_rss_mb']:.0f} MB)", flush=True)
+    with open(os.path.join(out, "gratings.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["period_mm", "case", "grooves", "most_in_zone", "rel_diff_z", "rel_diff_x", "peak_z_kPa",
+                    "peak_x_kPa", "dofs", "watched_nodes", "seconds", "peak_mb"])
+        w.writerows(rows)
+
+
 def main():
     skinfem, out = sys.argv[1], sys.argv[2]
     part = sys.argv[3] if len(sys.argv) > 3 else "pairs"
@@ -219,6 +256,8 @@ def main():
         return main_density(skinfem, out, base, part)
     if part == "twins":
         return main_twins(skinfem, out, base)
+    if part == "gratings":
+        return main_gratings(skinfem, out, base)
     rows = []
     for name, extra in HYPOTHESES.items():
         for s in SPACINGS:

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "skinfem/contact/exponential_interface.hpp"
+#include "skinfem/scene/texture.hpp"
 
 namespace skinfem::contact {
 
@@ -520,9 +521,7 @@ Eigen::VectorXd ContactSolver::whole_gaps(const Eigen::VectorXd& solved) const {
 
 int hole_holding(const TetMesh& mesh, int v, const std::vector<Hole>& holes) {
   for (size_t k = 0; k < holes.size(); ++k)
-    if (std::hypot(mesh.nodes(v, 0) - holes[k].center[0], mesh.nodes(v, 1) - holes[k].center[1]) <
-        0.5 * holes[k].diameter)
-      return static_cast<int>(k);
+    if (hole_contains(holes[k], mesh.nodes(v, 0), mesh.nodes(v, 1))) return static_cast<int>(k);
   return -1;
 }
 

@@ -173,7 +173,7 @@ class ContactSolver {
   mutable std::map<FrictionMode, Eigen::VectorXd> touched_;
 };
 
-// The first of the holes whose disc holds mesh node v strictly inside (seen from above), −1 if none.
+// The first of the holes (discs, grooves) holding mesh node v strictly inside (seen from above), −1 if none.
 int hole_holding(const TetMesh& mesh, int v, const std::vector<Hole>& holes);
 // Multipliers whose vertex lies strictly inside one of the holes (the indenter is absent there).
 std::vector<char> excluded_by_holes(const MortarZone& zone, const TetMesh& mesh,

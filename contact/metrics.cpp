@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "skinfem/scene/laws.hpp"
+#include "skinfem/scene/texture.hpp"
 
 namespace skinfem::contact {
 
@@ -79,8 +80,7 @@ ContactMetrics contact_metrics(const ContactSolver& solver, const TetMesh& m, co
   out.front_back_peak_ratio = peak_back > 0 ? peak_front / peak_back : 0.0;
 
   for (const Hole& h : holes)
-    if (std::hypot(center[0] - h.center[0], center[1] - h.center[1]) < 0.5 * h.diameter)
-      out.p0_in_hole = true;
+    if (hole_contains(h, center[0], center[1])) out.p0_in_hole = true;
   double s, tt;
   if (const int f = top.find(center[0], center[1], s, tt); !out.p0_in_hole && f >= 0) {
     const double psi[3] = {1 - s - tt, s, tt};

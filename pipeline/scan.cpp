@@ -9,6 +9,7 @@
 #include "skinfem/pipeline/progress.hpp"
 #include "skinfem/pipeline/resources.hpp"
 #include "skinfem/pipeline/scene_json.hpp"
+#include "skinfem/scene/texture.hpp"
 
 namespace skinfem::pipeline {
 
@@ -65,13 +66,12 @@ void check_texture_clearance(const ContactSetup& setup, const contact::ContactRe
   if (c.clearance_mm > 0) return;
   const Hole& h = holes[c.hole];
   char line[400];
-  std::snprintf(
-      line, sizeof line,
-      "contact.texture: the hole of depth %g mm at (%g, %g) mm at scan position u = %g mm: the skin "
-      "rises %.3g um into it, %s its bottom (%s friction); the contact is solved for holes whose "
-      "bottom the skin does not touch: give deeper holes",
-      h.depth, h.center[0], h.center[1], u, 1e3 * c.rise_mm, c.clearance_mm < 0 ? "past" : "to",
-      to_string(r.mode));
+  std::snprintf(line, sizeof line,
+                "contact.texture: the %s of depth %g mm at (%g, %g) mm at scan position u = %g mm: the skin "
+                "rises %.3g um into it, %s its bottom (%s friction); the contact is solved for holes whose "
+                "bottom the skin does not touch: give deeper holes",
+                hole_word(h), h.depth, h.center[0], h.center[1], u, 1e3 * c.rise_mm,
+                c.clearance_mm < 0 ? "past" : "to", to_string(r.mode));
   throw SceneError(line);
 }
 
@@ -195,10 +195,7 @@ nlohmann::json scan_json(const Scene& scene, const ScanRun& run) {
   const std::vector<Hole>& holes = load.texture->holes;
   double closest = std::numeric_limits<double>::infinity();
   for (size_t a = 0; a < holes.size(); ++a)
-    for (size_t b = 0; b < a; ++b)
-      closest = std::min(closest, std::hypot(holes[a].center[0] - holes[b].center[0],
-                                             holes[a].center[1] - holes[b].center[1]) -
-                                      0.5 * (holes[a].diameter + holes[b].diameter));
+    for (size_t b = 0; b < a; ++b) closest = std::min(closest, rim_gap(holes[a], holes[b]));
   if (holes.size() > 1) summary["closest_rims_mm"] = closest;
   summary["positions"] = n;
   summary["scan_mm"] = {{"from", load.scan->from}, {"to", load.scan->to}, {"step", load.scan->step}};

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "skinfem/scene/texture.hpp"
+
 namespace skinfem::pipeline {
 
 std::string mirror_unavailable(const Scene& scene) {
@@ -54,11 +56,11 @@ std::string contact_mirror_unavailable(const Scene& scene) {
       if (h.center[1] == 0) continue;
       const bool imaged = std::any_of(holes.begin(), holes.end(), [&](const Hole& o) {
         return std::abs(o.center[0] - h.center[0]) <= 1e-9 && std::abs(o.center[1] + h.center[1]) <= 1e-9 &&
-               o.diameter == h.diameter && o.depth == h.depth;
+               o.diameter == h.diameter && o.length == h.length && o.depth == h.depth;
       });
       if (!imaged) {
-        std::snprintf(buf, sizeof buf, "texture hole %zu at (%g, %g) mm has no mirror image at (%g, %g) mm",
-                      i + 1, h.center[0], h.center[1], h.center[0], -h.center[1]);
+        std::snprintf(buf, sizeof buf, "texture %s %zu at (%g, %g) mm has no mirror image at (%g, %g) mm",
+                      hole_word(h), i + 1, h.center[0], h.center[1], h.center[0], -h.center[1]);
         return buf;
       }
     }

@@ -900,8 +900,8 @@ Hole read_texture_hole(const Reader& r, const json& j, const std::string& path) 
   return h;
 }
 
-Texture read_texture(const Reader& r, const json& j, const std::string& path) {
-  r.object(j, path, {"holes", "lattice", "random", "h"});
+Texture read_texture(const Reader& r, const json& j, const std::string& path, const Vec2& direction) {
+  r.object(j, path, {"holes", "lattice", "grooves", "random", "h"});
   Texture t;
   if (Reader::find(j, "holes")) {
     const json& holes = r.array(j, path, "holes", R"(an array of holes {"center": [x, y], "diameter"})");
@@ -926,6 +926,24 @@ Texture read_texture(const Reader& r, const json& j, const std::string& path) {
                "each period along which the lattice has more than one hole must be >= its diameter " +
                    fmt(lat.diameter) + " mm, or its holes overlap");
     t.lattice = lat;
+  }
+  if (const json* g = Reader::find(j, "grooves")) {
+    const std::string P = sub(path, "grooves");
+    r.object(*g, P, {"origin", "width", "length", "period", "count", "depth"});
+    Grooves gr;
+    gr.direction = direction;
+    gr.origin = r.vec2(*g, P, "origin");
+    gr.width = r.number(*g, P, "width", length());
+    gr.length = r.number(*g, P, "length", length());
+    gr.count = static_cast<int>(
+        r.integer(r.need(*g, P, "count", "an integer in [1, 10000]"), sub(P, "count"), 1, 10000));
+    gr.period =
+        gr.count > 1 ? r.number(*g, P, "period", length()) : r.number_or(*g, P, "period", gr.width, length());
+    if (gr.count > 1 && !(gr.period > gr.width))
+      r.fail(sub(P, "period"), json(gr.period),
+             "must be > the grooves' width " + fmt(gr.width) + " mm, or they touch or overlap");
+    gr.depth = r.number_or(*g, P, "depth", gr.depth, length());
+    t.grooves = gr;
   }
   if (const json* rn = Reader::find(j, "random")) {
     const std::string P = sub(path, "random");
@@ -957,8 +975,8 @@ Texture read_texture(const Reader& r, const json& j, const std::string& path) {
                  (h.mirror ? " (2 or more in mirrored pairs)" : ""));
     t.random = h;
   }
-  if (t.listed.empty() && !t.lattice && !t.random)
-    r.fail(path, j, R"(must have at least one of "holes", "lattice", "random")");
+  if (t.listed.empty() && !t.lattice && !t.grooves && !t.random)
+    r.fail(path, j, R"(must have at least one of "holes", "lattice", "grooves", "random")");
   t.h = r.number_or(j, path, "h", 0.0, length());
   TextureHoles all = texture_holes(t);
   if (!all.error.empty()) r.fail(sub(path, "random.density"), j["random"]["density"], all.error);
@@ -1102,7 +1120,7 @@ ContactLoad read_contact(const Reader& r, const json& c, const Geometry& geo) {
     r.fail(sub(P, texture ? "texture" : "scan"), texture ? *texture : *scan,
            R"(a textured plate is scanned: give both "texture" and "scan", or neither)");
   if (texture) {
-    out.texture = read_texture(r, *texture, sub(P, "texture"));
+    out.texture = read_texture(r, *texture, sub(P, "texture"), out.direction);
     out.scan = read_scan(r, *scan, sub(P, "scan"));
   }
   return out;
@@ -1212,10 +1230,13 @@ void check_hole_meshes(const Reader& r, const Scene& scene) {
     const Texture& t = *c.texture;
     const std::size_t listed = t.listed.size();
     const std::size_t in_lattice = t.lattice ? std::size_t(t.lattice->nx) * t.lattice->ny : 0;
+    const std::size_t grooves = t.grooves ? std::size_t(t.grooves->count) : 0;
     for (std::size_t k = 0; k < t.holes.size(); ++k) {
       const std::string field = k < listed                ? at("contact.texture.holes", k) + ".diameter"
                                 : k < listed + in_lattice ? std::string("contact.texture.lattice.diameter")
-                                                          : std::string("contact.texture.random.diameter");
+                                : k < listed + in_lattice + grooves
+                                    ? std::string("contact.texture.grooves.width")
+                                    : std::string("contact.texture.random.diameter");
       check(field, t.holes[k].diameter, t.h, "contact.texture.h");
     }
   }
@@ -1229,6 +1250,10 @@ std::string texture_hole_words(const Texture& t, std::size_t k) {
   if (k < listed + in_lattice)
     return "contact.texture.lattice (hole " + std::to_string(k - listed + 1) + " of " +
            std::to_string(in_lattice) + ")";
+  const std::size_t grooves = t.grooves ? std::size_t(t.grooves->count) : 0;
+  if (k < listed + in_lattice + grooves)
+    return "contact.texture.grooves (groove " + std::to_string(k - listed - in_lattice + 1) + " of " +
+           std::to_string(grooves) + ")";
   return "contact.texture.random (hole " + std::to_string(k - listed - in_lattice + 1) + ")";
 }
 
@@ -1245,8 +1270,9 @@ void check_texture(const Reader& r, const json& j, const Scene& scene) {
     for (std::size_t b = a + 1; b < t.holes.size(); ++b)
       if (holes_overlap(t.holes[a], t.holes[b]))
         r.fail(texture_hole_words(t, b), point(t.holes[b].center),
-               "overlaps " + texture_hole_words(t, a) + " (centre " + fmt(t.holes[a].center) + ", diameter " +
-                   fmt(t.holes[a].diameter) + "): the holes of a texture must be disjoint discs");
+               "overlaps " + texture_hole_words(t, a) + " (centre " + fmt(t.holes[a].center) +
+                   (t.holes[a].groove() ? ", width " : ", diameter ") + fmt(t.holes[a].diameter) +
+                   "): the holes and grooves of a texture must be disjoint");
   const Vec2 o = contact_center(scene);
   const double radius = contact_zone_radius(scene);
   const Vec2 d = c.direction;

@@ -212,6 +212,11 @@ struct Hole {
   // mm, how deep the hole goes into the indenter (the paper's: 500 µm). The skin that bulges into it must
   // stay above its bottom (the solve assumes it touches nothing there); gaps inside are measured to it.
   double depth = 0.5;
+  // A groove (contact.texture.grooves) when > 0: the rectangle `diameter` wide and `length` (mm) long, its
+  // length along the unit vector `across` (the normal of the sliding direction). 0: a disc.
+  double length = 0;
+  Vec2 across{0, 1};
+  bool groove() const { return length > 0; }
 };
 
 // A hole swept along a straight path: `positions` solves with the hole centre evenly spaced from `from`
@@ -233,13 +238,22 @@ struct HoleSweep {
 // A textured plate (contact.texture) scanned over the skin (contact.scan, `skinfem scan`): holes listed one
 // by one, a lattice of identical holes (a row is a lattice one hole across) and holes at random. Positions
 // are on the plate at scan position u = 0; at u the plate and its holes have moved by u along the sliding
-// direction (contact.friction.direction). Every hole is resolved (contact/holes/cut.hpp). Grooves are not
-// modelled: a groove's cut is a strip, not a disc.
+// direction (contact.friction.direction). Every hole is resolved (contact/holes/cut.hpp). Grooves (a
+// grating) are rectangular holes across the sliding direction, cut on their exact rectangle.
 struct HoleLattice {
   Vec2 origin{0, 0};  // mm, the first hole's centre
   Vec2 period{1, 1};  // mm, along x and y
   int nx = 1, ny = 1;
   double diameter = 0.5, depth = 0.5;  // mm
+};
+
+// A grating: `count` parallel grooves across the sliding direction, `period` apart along it, the first
+// centred at `origin`; each `width` wide along the sliding direction and `length` long across it.
+struct Grooves {
+  Vec2 origin{0, 0};                                        // mm
+  double width = 0.5, length = 0, period = 1, depth = 0.5;  // mm
+  int count = 1;
+  Vec2 direction{1, 0};  // the sliding direction (contact.friction.direction), set by the loader
 };
 
 // Holes drawn uniformly on the plate's rectangle [from, to], round(density × area) of them, diameters
@@ -260,10 +274,11 @@ struct RandomHoles {
 struct Texture {
   std::vector<Hole> listed;
   std::optional<HoleLattice> lattice;
+  std::optional<Grooves> grooves;
   std::optional<RandomHoles> random;
   double h = 0;  // mm, mesh size along the holes' tracks through the contact zone; 0 → the zone's
-  // Every hole: the listed ones, the lattice's row by row, the random ones (texture_holes); set by the
-  // loader.
+  // Every hole: the listed ones, the lattice's row by row, the grooves, the random ones (texture_holes,
+  // which places the random ones clear of the others); set by the loader.
   std::vector<Hole> holes;
 };
 

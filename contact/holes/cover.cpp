@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "skinfem/scene/texture.hpp"
+
 namespace skinfem::contact {
 
 namespace {
@@ -42,18 +44,27 @@ double area_centroid(const Poly& poly, Eigen::Vector2d& centroid) {
 
 }  // namespace
 
-std::vector<Eigen::Vector2d> disc_in_triangle(const Hole& h, const Eigen::Vector2d v[3]) {
+std::vector<Eigen::Vector2d> hole_in_triangle(const Hole& h, const Eigen::Vector2d v[3]) {
   // The regular polygon with the circle's area: circumradius r·sqrt(2π / (k sin(2π/k))).
   static const double grow = std::sqrt(2 * M_PI / (kHoleSides * std::sin(2 * M_PI / kHoleSides)));
-  const double r = 0.5 * h.diameter * grow;
+  const double r = h.groove() ? hole_radius(h) : 0.5 * h.diameter * grow;
   const Eigen::Vector2d lo = v[0].cwiseMin(v[1]).cwiseMin(v[2]), hi = v[0].cwiseMax(v[1]).cwiseMax(v[2]);
   if (h.center[0] + r < lo.x() || h.center[0] - r > hi.x() || h.center[1] + r < lo.y() ||
       h.center[1] - r > hi.y())
     return {};
-  Poly disc(kHoleSides);
-  for (int k = 0; k < kHoleSides; ++k) {
-    const double phi = 2 * M_PI * k / kHoleSides;
-    disc[k] = {h.center[0] + r * std::cos(phi), h.center[1] + r * std::sin(phi)};
+  Poly disc;
+  const Eigen::Vector2d c(h.center[0], h.center[1]);
+  if (h.groove()) {
+    // Counter-clockwise: ±half width along the sliding direction s, ±half length along `across` t.
+    const Eigen::Vector2d t(h.across[0], h.across[1]), s(t.y(), -t.x());
+    const double a = 0.5 * h.diameter, b = 0.5 * h.length;
+    disc = {c - a * s - b * t, c + a * s - b * t, c + a * s + b * t, c - a * s + b * t};
+  } else {
+    disc.resize(kHoleSides);
+    for (int k = 0; k < kHoleSides; ++k) {
+      const double phi = 2 * M_PI * k / kHoleSides;
+      disc[k] = c + r * Eigen::Vector2d(std::cos(phi), std::sin(phi));
+    }
   }
   for (int e = 0; e < 3 && !disc.empty(); ++e) disc = clip(disc, v[e], v[(e + 1) % 3]);
   return disc.size() >= 3 ? disc : Poly{};
@@ -76,7 +87,7 @@ Eigen::VectorXd hole_cover(const MortarZone& zone, const TetMesh& m, const std::
     for (int a = 0; a < 3; ++a)
       if (const int i = local[order[a]]; i >= 0) area[i] += t_area / 3;
     for (const Hole& h : holes) {
-      const Poly disc = disc_in_triangle(h, v);
+      const Poly disc = hole_in_triangle(h, v);
       if (disc.size() < 3) continue;
       Eigen::Vector2d c;
       const double a_cut = area_centroid(disc, c);

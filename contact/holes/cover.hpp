@@ -1,4 +1,5 @@
-// How much of each multiplier's hat a hole covers, integrated over the exact hole disc.
+// How much of each multiplier's hat a hole covers, integrated over the exact hole disc (a groove's
+// rectangle).
 //
 // A shear that acts wherever the skin touches (FrictionLaw::shear_strength, mixed) is missing over a hole:
 // its traction is τ0 (1 − 1_hole) on the touched region. On the multipliers' hats (contact/mortar.hpp) it is
@@ -22,7 +23,8 @@ namespace skinfem::contact {
 inline constexpr int kHoleSides = 512;
 
 // The hole's polygon clipped to the triangle v (counter-clockwise, (x, y)): empty if they do not overlap.
-std::vector<Eigen::Vector2d> disc_in_triangle(const Hole& hole, const Eigen::Vector2d v[3]);
+// A disc is the kHoleSides-gon of its area; a groove its exact rectangle.
+std::vector<Eigen::Vector2d> hole_in_triangle(const Hole& hole, const Eigen::Vector2d v[3]);
 
 // Per multiplier of `zone` (zone.size()): the share of ∫ψ_i that lies inside any of `holes`, in [0, 1].
 // Holes must not overlap (scene rules): overlapping discs count twice (clamped to 1).

@@ -62,7 +62,7 @@ HoleCut hole_cut(const PathCompliance& path, int n_c, const Hole& hole) {
     const double det = (v[1] - v[0]).x() * (v[2] - v[0]).y() - (v[1] - v[0]).y() * (v[2] - v[0]).x();
     Eigen::Vector2d ccw[3] = {v[0], v[1], v[2]};
     if (det < 0) std::swap(ccw[1], ccw[2]);
-    const std::vector<Eigen::Vector2d> poly = disc_in_triangle(hole, ccw);
+    const std::vector<Eigen::Vector2d> poly = hole_in_triangle(hole, ccw);
     if (poly.size() < 3) continue;
     // (x, y) → face parameters through the straight corner triangle.
     Eigen::Matrix2d J;

@@ -37,7 +37,7 @@ std::vector<Hole> holes_near(const std::vector<Hole>& plate, const Vec2& directi
   std::vector<Hole> out;
   for (const Hole& p : plate) {
     const Hole h = hole_at(p, direction, u);
-    if (std::hypot(h.center[0] - centre[0], h.center[1] - centre[1]) < reach + 0.5 * h.diameter)
+    if (std::hypot(h.center[0] - centre[0], h.center[1] - centre[1]) < reach + hole_radius(h))
       out.push_back(h);
   }
   return out;
@@ -121,9 +121,9 @@ Superposition superposed_scan(const ContactSolver& solver, const std::vector<Hol
   const ContactResult baseline = solver.solve(mode);
   solver.set_reference(mode, baseline.active);
   const auto [centre, reach] = watched_disc(*solver.condensed().path);
-  // One solve per distinct single hole in space (centre to 1e-9 mm, diameter, depth), in order of the holes
+  // One solve per distinct single hole in space (centre to 1e-9 mm, size, depth), in order of the holes
   // and positions: a row's holes at a period that is a multiple of the step meet the same ones.
-  using Key = std::tuple<long long, long long, double, double>;
+  using Key = std::tuple<long long, long long, double, double, double>;
   std::map<Key, int> index;
   std::vector<std::vector<Hole>> sets;
   std::vector<std::vector<int>> uses;  // per solve: the positions it adds to
@@ -134,7 +134,8 @@ Superposition superposed_scan(const ContactSolver& solver, const std::vector<Hol
       const std::vector<Hole> one = holes_near({p}, direction, u[i], centre, reach);
       if (one.empty()) continue;
       const Hole& h = one[0];
-      const Key key{std::llround(h.center[0] * 1e9), std::llround(h.center[1] * 1e9), h.diameter, h.depth};
+      const Key key{std::llround(h.center[0] * 1e9), std::llround(h.center[1] * 1e9), h.diameter, h.length,
+                    h.depth};
       auto [it, fresh] = index.emplace(key, static_cast<int>(sets.size()));
       if (fresh) {
         sets.push_back(one);

@@ -1,6 +1,6 @@
 // The share of each multiplier's hat under a hole (contact/holes/cover.hpp), on a flat top where the hats'
-// integrals are exact: the covered shares add up to the disc's area, hats inside the disc are covered
-// whole, and the shares move continuously with the disc.
+// integrals are exact: the covered shares add up to the disc's area (a groove's: its rectangle's), hats
+// inside the disc are covered whole, and the shares move continuously with the disc.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -79,6 +79,19 @@ TEST(HoleCover, HatsInsideTheDiscAreCoveredWholeAndFarOnesNot) {
   }
   EXPECT_GT(inside, 0);
   EXPECT_GT(outside, 0);
+}
+
+// A groove's rectangle is clipped exactly (no polygon): its shares add up to width × length, at any angle.
+TEST(HoleCover, AGroovesSharesAddUpToItsRectangle) {
+  for (const Vec2& across : {Vec2{0, 1}, Vec2{0.6, 0.8}}) {
+    Hole g{{0.1, 0.2}, 0.3, 0, 0.5};
+    g.length = 2.0;
+    g.across = across;
+    EXPECT_NEAR(covered_area(hole_cover(flat().zone, flat().mesh, {g})), 0.6, 1e-12);
+    // With a disc beside it: the two add.
+    EXPECT_NEAR(covered_area(hole_cover(flat().zone, flat().mesh, {g, Hole{{-0.9, -0.6}, 0.4}})),
+                0.6 + M_PI * 0.04, 1e-12);
+  }
 }
 
 // A disc moved by δ changes each share by at most its boundary's length × δ over the hat's integral.

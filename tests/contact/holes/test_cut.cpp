@@ -3,6 +3,7 @@
 //   the cut matrices against full FE solves of the cut loads (the low-rank corrections' algebra);
 //   a hole outside the contact changes nothing; a hole far from every hat leaves the problem as it was;
 //   the signal is continuous in the hole's position (no jump when a vertex enters the hole).
+// Grooves (rectangles, one at an angle) pass the same checks.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include "skinfem/contact/holes/cut.hpp"
 #include "skinfem/contact/holes/sweep.hpp"
 #include "skinfem/fem/base_traction.hpp"
+#include "skinfem/scene/texture.hpp"
 
 namespace skinfem::contact {
 namespace {
@@ -36,6 +38,13 @@ testing::CondensedLayer& layer() {
   return f;
 }
 
+// A groove of width w and length L centred at c, its length along `across`.
+Hole groove(Vec2 c, double w, double L, Vec2 across = {0, 1}) {
+  Hole g{c, w, 0, 0.5};
+  g.length = L, g.across = across;
+  return g;
+}
+
 // The cut hats D_i − B_i as sparse rows over the mesh's nodes.
 Eigen::SparseMatrix<double, Eigen::RowMajor> cut_rows(const CondensedContact& c, const HoleCut& cut) {
   std::vector<Eigen::Triplet<double>> t;
@@ -53,7 +62,9 @@ TEST(HoleCut, CutMatricesEqualFullSolvesOfTheCutLoads) {
   auto& f = layer();
   const CondensedContact& c = *f.condensed;
   // A hole off the mesh's symmetry lines, inside the contact, and one leaving a sliver of a hat.
-  for (const Hole& hole : {Hole{{0.23, 0.07}, 0.5}, Hole{{0.4, 0.0}, 0.5}}) {
+  // Grooves within the watched band |y| < 0.25 (their half diagonals are).
+  for (const Hole& hole : {Hole{{0.23, 0.07}, 0.5}, Hole{{0.4, 0.0}, 0.5}, groove({0.23, 0.02}, 0.3, 0.4),
+                           groove({-0.3, 0.03}, 0.2, 0.3, {0.6, 0.8})}) {
     const HoleCut cut = hole_cut(*c.path, c.zone.size(), hole);
     const CutProblem cp = cut_problem(c, cut, true);
     const Eigen::MatrixXd cut_C_zz = patched(c.C_zz, cp.rows, cp.zz, cp.zz),
@@ -92,9 +103,9 @@ TEST(HoleCut, CutMatricesEqualFullSolvesOfTheCutLoads) {
           err_sym = std::max(err_sym, std::abs(cut_C_zz(rows[a], i) - Czz(i, a)) / col);
         }
     std::printf(
-        "hole at (%.2f, %.2f): %zu cut rows (least share outside %.2e): max |C cut - full solve| / column "
+        "%s at (%.2f, %.2f): %zu cut rows (least share outside %.2e): max |C cut - full solve| / column "
         "%.2e (zz), %.2e (zt)\n",
-        hole.center[0], hole.center[1], rows.size(), min_share, err_zz, err_zt);
+        hole_word(hole), hole.center[0], hole.center[1], rows.size(), min_share, err_zz, err_zt);
     // The FE solves' round-off (residual 1e-10 relative) through one product.
     EXPECT_LT(err_zz, 1e-8);
     EXPECT_LT(err_zt, 1e-8);
@@ -108,7 +119,7 @@ TEST(HoleCut, ReadingsEqualAFullSolveOfTheCutPressure) {
   auto& f = layer();
   const CondensedContact& c = *f.condensed;
   const ContactSolver solver(c, *f.scene.contact);
-  for (const Hole& hole : {Hole{{0.23, 0.07}, 0.5}, Hole{{-0.6, 0.1}, 0.5}}) {
+  for (const Hole& hole : {Hole{{0.23, 0.07}, 0.5}, Hole{{-0.6, 0.1}, 0.5}, groove({0.1, 0.0}, 0.3, 0.4)}) {
     const HoleCut cut = hole_cut(*c.path, c.zone.size(), hole);
     const ContactResult r = solver.solve(FrictionMode::coupled, cut);
     const auto D = cut_rows(c, cut);
@@ -130,9 +141,9 @@ TEST(HoleCut, ReadingsEqualAFullSolveOfTheCutPressure) {
           {err, std::abs(v.sigma_z - r.readings[2 * k]), std::abs(v.sigma_x - r.readings[2 * k + 1])});
     }
     std::printf(
-        "hole at (%.2f, %.2f): readings against the full solve %.2e of %.2e MPa, force %.12f vs %.12f N\n",
-        hole.center[0], hole.center[1], err, r.readings.cwiseAbs().maxCoeff(), base.total_force().z(),
-        r.force_N);
+        "%s at (%.2f, %.2f): readings against the full solve %.2e of %.2e MPa, force %.12f vs %.12f N\n",
+        hole_word(hole), hole.center[0], hole.center[1], err, r.readings.cwiseAbs().maxCoeff(),
+        base.total_force().z(), r.force_N);
     EXPECT_LT(err, 1e-8 * r.readings.cwiseAbs().maxCoeff());
     EXPECT_NEAR(base.total_force().z(), r.force_N, 1e-9);
     EXPECT_NEAR(r.force_N, *f.scene.contact->force, 1e-12);
@@ -165,19 +176,23 @@ TEST(HoleCut, AFullyCoveredHatDropsOutWithItsRow) {
   };
   for (int i = 0; i < c.zone.size(); ++i)
     if ((xy(i) - Eigen::Vector2d(0.4, 0)).norm() < (xy(v) - Eigen::Vector2d(0.4, 0)).norm()) v = i;
-  const HoleCut cut = hole_cut(*c.path, c.zone.size(), Hole{{xy(v).x(), xy(v).y()}, 1.6});
-  const CutProblem cp = cut_problem(c, cut, true);
-  const Eigen::MatrixXd C = patched(c.C_zz, cp.rows, cp.zz, cp.zz);
-  const int a = static_cast<int>(std::find(cp.rows.begin(), cp.rows.end(), v) - cp.rows.begin());
-  ASSERT_LT(a, static_cast<int>(cp.rows.size()));
-  std::printf("vertex %d at (%.3f, %.3f): area outside the hole %.2e of %.3f mm2, row %.2e of max C\n", v,
-              xy(v).x(), xy(v).y(), cp.area[v], c.zone.area[v],
-              C.row(v).cwiseAbs().maxCoeff() / c.C_zz.cwiseAbs().maxCoeff());
-  // The polygon's area is the disc's, so a hat inside it is removed to round-off of the same rule as D.
-  EXPECT_LT(std::abs(cp.area[v]), 1e-12 * c.zone.area[v]);
-  EXPECT_LT(std::abs(cp.gap0[v]), 1e-12 * std::abs(c.gap0[v]) + 1e-18);
-  EXPECT_LT(C.row(v).cwiseAbs().maxCoeff(), 1e-10 * c.C_zz.cwiseAbs().maxCoeff());
-  EXPECT_LT(cp.sp.col(a).cwiseAbs().maxCoeff(), 1e-10 * c.S_p.cwiseAbs().maxCoeff());
+  // A groove 1.4 mm square over it covers it too.
+  for (const Hole& hole : {Hole{{xy(v).x(), xy(v).y()}, 1.6}, groove({xy(v).x(), xy(v).y()}, 1.4, 1.4)}) {
+    const HoleCut cut = hole_cut(*c.path, c.zone.size(), hole);
+    const CutProblem cp = cut_problem(c, cut, true);
+    const Eigen::MatrixXd C = patched(c.C_zz, cp.rows, cp.zz, cp.zz);
+    const int a = static_cast<int>(std::find(cp.rows.begin(), cp.rows.end(), v) - cp.rows.begin());
+    ASSERT_LT(a, static_cast<int>(cp.rows.size()));
+    std::printf("%s: vertex %d at (%.3f, %.3f): area outside it %.2e of %.3f mm2, row %.2e of max C\n",
+                hole_word(hole), v, xy(v).x(), xy(v).y(), cp.area[v], c.zone.area[v],
+                C.row(v).cwiseAbs().maxCoeff() / c.C_zz.cwiseAbs().maxCoeff());
+    // The polygon's area is the disc's (a groove's rectangle is exact), so a hat inside it is removed to
+    // round-off of the same rule as D.
+    EXPECT_LT(std::abs(cp.area[v]), 1e-12 * c.zone.area[v]);
+    EXPECT_LT(std::abs(cp.gap0[v]), 1e-12 * std::abs(c.gap0[v]) + 1e-18);
+    EXPECT_LT(C.row(v).cwiseAbs().maxCoeff(), 1e-10 * c.C_zz.cwiseAbs().maxCoeff());
+    EXPECT_LT(cp.sp.col(a).cwiseAbs().maxCoeff(), 1e-10 * c.S_p.cwiseAbs().maxCoeff());
+  }
 }
 
 TEST(HoleCut, NoJumpWhenAVertexEntersTheHole) {
