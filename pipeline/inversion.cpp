@@ -1,5 +1,6 @@
 #include "skinfem/pipeline/inversion.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "skinfem/contact/holes/dimple.hpp"
@@ -23,13 +24,16 @@ int dictionary_positions(const Scene& scene, double dx) {
   return static_cast<int>(std::ceil(2 * (contact_zone_radius(scene) + hole) / dx)) + 1;
 }
 
-std::string inversion_unavailable(const Scene& scene) {
+std::string inversion_unavailable(const Scene& scene, const std::vector<double>& offsets) {
   if (!scene.contact || !scene.contact->sweep)
     return "contact.sweep: missing; the inversion takes its hole as the dictionary's";
   if (scene.contact->direction[0] != 1)
     return "contact.friction.direction: the inversion reads scans along +x";
-  if (scene.sensors.model != SensorModel::disc)
-    return "sensors.model: the inversion reads the dictionary through virtual disc sensors";
+  if (scene.sensors.model == SensorModel::post &&
+      std::any_of(offsets.begin(), offsets.end(), [](double d) { return d != 0; }))
+    return "sensors.model = \"post\": a post reads the skin only where it is meshed, so the dictionary "
+           "cannot "
+           "move the sensors by the contact's offset: give --offset-range 0 (the offset taken as known)";
   for (const Vec2& p : scene.sensors.positions)
     if (p[1] != scene.sensors.positions.at(0)[1])
       return "sensors.positions: the inversion needs the sensors on one line y = const";
@@ -38,7 +42,7 @@ std::string inversion_unavailable(const Scene& scene) {
 
 validation::HoleResponses hole_responses(const Scene& scene, FrictionMode mode, double dx,
                                          const std::vector<double>& offsets, Timings& wall, int& dofs) {
-  if (const std::string why = inversion_unavailable(scene); !why.empty())
+  if (const std::string why = inversion_unavailable(scene, offsets); !why.empty())
     throw SceneError(scene.source_path + ": " + why);
   const double y = scene.sensors.positions.at(0)[1];
   // The virtual sensors: every x_i − δ, once.

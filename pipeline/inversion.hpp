@@ -31,10 +31,11 @@ struct InversionRun {
   Timings wall;
 };
 
-// Why the dictionary cannot be built for a scene, naming the scene key ("" when it can): no contact.sweep
-// (its hole is the dictionary's), sliding other than along +x, or sensors that are not discs on one line
-// y = const (the dictionary reads virtual disc sensors along that line).
-std::string inversion_unavailable(const Scene& scene);
+// Why the dictionary cannot be built for a scene and the offsets (mm), naming the scene key ("" when it
+// can): no contact.sweep (its hole is the dictionary's), sliding other than along +x, sensors off one line
+// y = const (the dictionary reads virtual sensors along that line), or posts with an offset other than 0 (a
+// post reads the skin only where it is meshed: its dictionary is the posts where they stand).
+std::string inversion_unavailable(const Scene& scene, const std::vector<double>& offsets);
 // The dictionary for signals sampled every dx (mm) and the offsets. Throws SceneError with
 // inversion_unavailable's reason.
 validation::HoleResponses hole_responses(const Scene& scene, FrictionMode mode, double dx,

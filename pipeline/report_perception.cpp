@@ -105,7 +105,10 @@ PairPoint pair_point(const contact::ScanResult& s, const Eigen::MatrixXd& superp
 
 std::string perception_unavailable(const Scene& scene) {
   // The section ends with an inversion of its row: what the inversion needs, it needs.
-  if (std::string why = inversion_unavailable(scene); !why.empty()) return why;
+  if (std::string why = inversion_unavailable(
+          scene, offset_grid(InversionOptions{}.offset_range, InversionOptions{}.offset_step));
+      !why.empty())
+    return why;
   const HoleSweep& sw = *scene.contact->sweep;
   if (sw.to[1] != sw.from[1] || !(sw.to[0] > sw.from[0]))
     return "contact.sweep: the row runs along the sliding direction +x, the sweep does not";

@@ -291,6 +291,9 @@ check invert_header 'signals_header.csv: header has no column u_mm' "$skinfem" i
 printf 'u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa\n0,1,0.1,0.2\n0,1,0.1,0.2\n' >"$tmp/signals_twice.csv"
 check invert_twice 'signals_twice.csv: row 3: sensor 1 at u = 0 mm is given twice' "$skinfem" invert "$tmp/signals_twice.csv" "$tmp/invert_scene.json" --out "$tmp/out"
 check invert_missing 'no_signals.csv: cannot read the signals file' "$skinfem" invert "$tmp/no_signals.csv" "$tmp/invert_scene.json" --out "$tmp/out"
+variant invert_posts 'd["sensors"]["model"] = "post"; d["sensors"].pop("disc_diameter", None); d["sensors"]["post"] = {"diameter": 0.2, "height": 0.4}; '"$sphere"', "sweep": {"from": [-1, 0], "to": [1, 0]}}'
+printf 'u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa\n0,1,0.1,0.2\n0.1,1,0.1,0.2\n' >"$tmp/signals_posts.csv"
+check invert_posts_offset 'invert_posts.json: sensors.model = "post": a post reads the skin only where it is meshed.*give --offset-range 0' "$skinfem" invert "$tmp/signals_posts.csv" "$tmp/invert_posts.json" --out "$tmp/out"
 bad scan_no_texture "$sphere}" 'contact.texture: missing; skinfem scan needs' scan
 bad depth_through_skin 'd["contact"] = {"indenter": {"type": "sphere", "R": 50, "center": [0, 0]}, "depth": 5, "zone_radius": 3}' 'contact.depth = 5: must be below the skin.s thickness \(3 mm\)' contact
 bad depth_beyond_sphere 'd["contact"] = {"indenter": {"type": "sphere", "R": 1, "center": [0, 0]}, "depth": 2}' 'contact.depth = 2: must be below the sphere.s radius R = 1 mm' contact

@@ -3,7 +3,7 @@
 // u: inverted against the dictionary, which is built on another mesh (its virtual sensors refine it), the
 // hole comes back at 0 within one scan step, with its diameter within 5 % (the two meshes' difference: the
 // amplitude, D³, within 15 %), the contact within one offset step of its nominal place, and as the
-// strongest feature.
+// strongest feature. Read by posts, the same at the known offset.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,8 +17,8 @@
 namespace skinfem::pipeline {
 namespace {
 
-TEST(InversionRun, TheDefectSweepsHoleComesBackAtItsPlaceAndSize) {
-  const Scene scene = testing::swept_layer("inverted_layer", 41, {-2.0, 0}, {2.0, 0}, 2.0, 0.4);
+// The scene's sliding sweep inverted with the offset searched on ±range.
+InversionRun inverted_sweep(const Scene& scene, double range) {
   const DefectRun defect = defect_run(scene, std::shared_ptr<const ContactSetup>(contact_setup(scene)));
   validation::ScanSignals sig;
   const contact::SweepResult& sliding = defect.sweeps.at(1);
@@ -26,18 +26,41 @@ TEST(InversionRun, TheDefectSweepsHoleComesBackAtItsPlaceAndSize) {
   for (const Vec2& p : scene.sensors.positions) sig.sensors.push_back(p[0]);
   sig.y = 1e3 * sliding.varsigma;
   InversionOptions o;
-  o.offset_range = 0.3;
-  const InversionRun run = inversion_run(scene, sig, o);
-  // The two meshes' difference leaves a residual far below the noise's (4.5 for 246 samples): its minimum
-  // over the offset falls between grid points, within one step of the nominal place.
-  EXPECT_LE(std::abs(run.multi.offset_mm), o.offset_step + 1e-9);
+  o.offset_range = range;
+  return inversion_run(scene, sig, o);
+}
+
+// The hole comes back at 0 within one scan step (0.1 mm), the strongest feature, its diameter within 5 %.
+void expect_the_hole(const InversionRun& run, size_t sensors) {
   ASSERT_FALSE(run.multi.features.empty());
   const validation::Feature* strongest = &run.multi.features[0];
   for (const validation::Feature& f : run.multi.features)
     if (f.snr > strongest->snr) strongest = &f;
   EXPECT_NEAR(strongest->position_mm, 0, 0.1);
   EXPECT_NEAR(strongest->diameter_mm, 0.4, 0.05 * 0.4);
-  ASSERT_EQ(run.naive.size(), 3u);
+  ASSERT_EQ(run.naive.size(), sensors);
+}
+
+TEST(InversionRun, TheDefectSweepsHoleComesBackAtItsPlaceAndSize) {
+  const Scene scene = testing::swept_layer("inverted_layer", 41, {-2.0, 0}, {2.0, 0}, 2.0, 0.4);
+  const InversionRun run = inverted_sweep(scene, 0.3);
+  // The two meshes' difference leaves a residual far below the noise's (4.5 for 246 samples): its minimum
+  // over the offset falls between grid points, within one step of the nominal place.
+  EXPECT_LE(std::abs(run.multi.offset_mm), 0.1 + 1e-9);
+  expect_the_hole(run, 3);
+}
+
+// Posts read the skin only where they are meshed: the dictionary is the posts where they stand, the offset
+// known (an offset range refused, naming --offset-range).
+TEST(InversionRun, PostsReadTheHoleAtItsPlaceAndSizeAtTheKnownOffset) {
+  Scene scene = testing::swept_layer("inverted_posts", 41, {-2.0, 0}, {2.0, 0}, 2.0, 0.4);
+  scene.sensors.model = SensorModel::post;
+  scene.sensors.post = {0.2, 0.4};
+  EXPECT_NE(inversion_unavailable(scene, {-0.1, 0, 0.1}).find("--offset-range 0"), std::string::npos);
+  EXPECT_EQ(inversion_unavailable(scene, {0}), "");
+  const InversionRun run = inverted_sweep(scene, 0);
+  EXPECT_EQ(run.multi.offset_mm, 0);
+  expect_the_hole(run, 3);
 }
 
 }  // namespace
