@@ -8,7 +8,7 @@ the largest difference over the largest signal (varsigma_z and varsigma_x, stati
 hypothesis: Coulomb under a hard interface, a shear strength under a hard interface, Coulomb through a rough
 (linear) interface.
 
-    $ /usr/bin/python3 bench/pair_study.py build/app/skinfem out/pair_study [pairs|rows|twins|lattices|random|gratings]
+    $ /usr/bin/python3 bench/pair_study.py build/app/skinfem out/pair_study [pairs|rows|twins|lattices|random|lattice_laws|gratings]
     coulomb_hard         s = 0.60 mm: sliding z 3.7 %, x 3.7 %
 
 Rows: Coulomb under a hard interface, the plate covered by a row of 0.5 mm holes at a period p on y = 0,
@@ -25,12 +25,14 @@ their density (two seeds), on the plate's rectangle whose holes reach the zone d
 mirror-symmetric, so the half skin solves them (docs/contact.md, "Textures off the axis"): 93,000-148,000
 DOFs, 850-3,700 watched nodes, 10 s to 4 min per texture on 2 cores (lattices.csv, random.csv: texture,label,
 density_per_mm2,case,holes,closest_rims_mm,most_holes,rel_diff_z,rel_diff_x,mirror_pair_terms,dofs,
-watched_nodes,seconds,peak_mb).
+watched_nodes,seconds,peak_mb). lattice_laws: the lattices of 0.9, 1.0 and 1.2 mm (about the 5 % line of
+Coulomb, hard) under a shear strength and through a rough interface (lattice_laws.csv, the same columns).
 
 Gratings (Coulomb, hard, 4 mm scanned at 0.05 mm): grooves 0.5 mm wide across the sliding direction, 9 mm
 long (beyond the 4 mm zone on both sides of y = 0, so the half skin solves them), against their period, and
 one groove alone (gratings.csv: period_mm,case,grooves,most_in_zone,rel_diff_z,rel_diff_x,peak_z_kPa,
-peak_x_kPa,dofs,watched_nodes,seconds,peak_mb; the period of the single groove is empty).
+peak_x_kPa,dofs,watched_nodes,seconds,peak_mb; the single groove, its period empty, is scanned through the
+whole zone, 9 mm).
 
 A run already in OUT with the same scene file is reused.
 
@@ -54,15 +56,20 @@ HYPOTHESES = {
 }
 
 
-def scene(base, spacing, extra):
-    s = json.loads(json.dumps(base))
-    c = s["contact"]
-    c.pop("sweep", None)
+def with_hypothesis(c, extra):
+    """The contact section c under a hypothesis of HYPOTHESES (its keys merged into c's)."""
     for k, v in extra.items():
         if isinstance(v, dict) and isinstance(c.get(k), dict):
             c[k].update(v)
         else:
             c[k] = v
+
+
+def scene(base, spacing, extra):
+    s = json.loads(json.dumps(base))
+    c = s["contact"]
+    c.pop("sweep", None)
+    with_hypothesis(c, extra)
     # The pair centred on the plate's origin, scanned from wholly before the zone to wholly after it.
     x0, reach = 0.5, 4.0 + 0.25 + 0.5 * spacing
     c["texture"] = {"holes": [{"center": [-0.5 * spacing, 0.0], "diameter": 0.5},
@@ -117,13 +124,13 @@ def main_rows(skinfem, out, base):
         w.writerows(rows)
 
 
-def textured(base, texture, name):
-    """The default scene, its plate carrying `texture`, scanned 4 mm at 0.05 mm (Coulomb, hard), the
-    candidate zone 4 mm in radius: off y = 0 the whole skin is solved, every hole's
-    track watched."""
+def textured(base, texture, name, extra=None):
+    """The default scene, its plate carrying `texture`, scanned 4 mm at 0.05 mm (Coulomb, hard, or the
+    hypothesis `extra`), the candidate zone 4 mm in radius, every hole's track watched."""
     s = json.loads(json.dumps(base))
     c = s["contact"]
     c.pop("sweep", None)
+    with_hypothesis(c, extra or {})
     c["zone_radius"] = ZONE
     c["texture"] = dict(texture, h=0.25)
     c["scan"] = {"from": 0.0, "to": 4.0, "step": 0.05}
@@ -151,18 +158,33 @@ def density_rows(kind, points):
             for label, density, summary in points for case, k in summary["cases"].items()]
 
 
+def lattice(p):
+    """A square lattice of 0.5 mm holes at period p on the plate's rectangle, rows on y = 0, +-p, ..."""
+    ny = 2 * int(PLATE[1][1] / p + 1e-9) + 1
+    nx = int((PLATE[1][0] - PLATE[0][0]) / p + 1e-9) + 1
+    return {"lattice": {"origin": [PLATE[0][0], -(ny // 2) * p], "period": [p, p], "count": [nx, ny],
+                        "diameter": 0.5}}
+
+
+# Lattices about the Coulomb, hard 5 % line under the other friction hypotheses.
+LAW_LATTICE_PERIODS = [0.9, 1.0, 1.2]
+
+
 def main_density(skinfem, out, base, part):
-    """Square lattices (rows on y = 0, +-p, ...: the half model holds) against their period, and random
-    textures (0.3 to 0.6 mm) against their density; both off y = 0, so solved on the whole skin."""
+    """Square lattices (rows on y = 0, +-p, ...) against their period, and random textures (0.3 to 0.6 mm,
+    mirrored) against their density: mirror-symmetric, so solved on the half; `lattice_laws`: the lattices
+    about the 5 % line under the other hypotheses."""
     points = []
     if part == "lattices":
         for p in LATTICE_PERIODS:
-            ny = 2 * int(PLATE[1][1] / p + 1e-9) + 1
-            nx = int((PLATE[1][0] - PLATE[0][0]) / p + 1e-9) + 1
-            tex = {"lattice": {"origin": [PLATE[0][0], -(ny // 2) * p], "period": [p, p], "count": [nx, ny],
-                               "diameter": 0.5}}
-            summary = run_scan(skinfem, out, f"lattice_{p:.2f}", textured(base, tex, "lattice"))
+            summary = run_scan(skinfem, out, f"lattice_{p:.2f}", textured(base, lattice(p), "lattice"))
             points.append((f"p = {p:.2f} mm", 1 / p ** 2, summary))
+    elif part == "lattice_laws":
+        for name, extra in list(HYPOTHESES.items())[1:]:
+            for p in LAW_LATTICE_PERIODS:
+                s = textured(base, lattice(p), "lattice", extra)
+                summary = run_scan(skinfem, out, f"lattice_{name}_{p:.2f}", s)
+                points.append((f"{name} p = {p:.2f} mm", 1 / p ** 2, summary))
     else:
         for d in DENSITIES:
             for seed in SEEDS:
@@ -222,10 +244,13 @@ def main_gratings(skinfem, out, base):
     for p in [None] + GRATING_PERIODS:
         # Every groove crosses the zone during the scan; one groove crosses it at the scan's middle.
         count = 1 if p is None else int((2 * ZONE + L) / p) + 1
-        origin = x0 - 0.5 * L if p is None else x0 - ZONE - L
+        origin = x0 if p is None else x0 - ZONE - L
         tex = {"grooves": {"origin": [round(origin, 6), 0.0], "width": 0.5, "length": 2 * ZONE + 1,
                            "count": count, "period": p if p else 1.0}}
-        summary = run_scan(skinfem, out, f"grating_{p:.2f}" if p else "groove", textured(base, tex, "grating"))
+        s = textured(base, tex, "grating")
+        if p is None:  # the groove from before the zone to past it
+            s["contact"]["scan"] = {"from": -ZONE - 0.5, "to": ZONE + 0.5, "step": 0.05}
+        summary = run_scan(skinfem, out, f"grating_{p:.2f}" if p else "groove", s)
         for case, k in summary["cases"].items():
             sp = k.get("superposition", {})
             pz = max(x["peak_abs_varsigma_z_kPa"] for x in k["sensors"])
@@ -252,7 +277,7 @@ def main():
     base = json.load(open(os.path.join(HERE, "..", "scenes", "candelier2011.json")))
     if part == "rows":
         return main_rows(skinfem, out, base)
-    if part in ("lattices", "random"):
+    if part in ("lattices", "random", "lattice_laws"):
         return main_density(skinfem, out, base, part)
     if part == "twins":
         return main_twins(skinfem, out, base)

@@ -32,8 +32,8 @@ std::string inversion_unavailable(const Scene& scene, const std::vector<double>&
   if (scene.sensors.model == SensorModel::post &&
       std::any_of(offsets.begin(), offsets.end(), [](double d) { return d != 0; }))
     return "sensors.model = \"post\": a post reads the skin only where it is meshed, so the dictionary "
-           "cannot "
-           "move the sensors by the contact's offset: give --offset-range 0 (the offset taken as known)";
+           "cannot move the sensors by the contact's offset: give --offset-range 0 (the offset taken as "
+           "known)";
   for (const Vec2& p : scene.sensors.positions)
     if (p[1] != scene.sensors.positions.at(0)[1])
       return "sensors.positions: the inversion needs the sensors on one line y = const";

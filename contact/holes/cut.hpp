@@ -15,9 +15,9 @@
 //   S_p'  = S_p − (B Rz)ᵀ,   S_t' = S_t − (B Rt)ᵀ,   gap0' = gap0 − ∫_H ψ (z_touch + φ − s),  area' = area −
 //   ∫_H ψ,
 // (shapes below). The hole's integrals use the disc as a polygon of kHoleSides sides with its area (a
-// groove: its rectangle), clipped
-// against the straight projection of each face and integrated with the curved face's Jacobian by the same
-// degree-5 rule as D, so a face the hole covers entirely removes exactly its part of D.
+// groove: its rectangle), clipped against the straight projection of each face and integrated with the
+// curved face's Jacobian by the same degree-5 rule as D, so a face the hole covers entirely removes exactly
+// its part of D.
 #pragma once
 
 #include <Eigen/Dense>
