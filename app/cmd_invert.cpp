@@ -10,8 +10,9 @@
 // Writes DIR/features.csv (position_mm,diameter_mm,amplitude,snr: positions on the plate at u = 0, one row
 // per feature), DIR/dictionary.csv (x_mm,site_mm,R_z_kPa,R_x_kPa: the response of a sensor at `site` to the
 // scene's hole at x, both in the contact's frame; what the fit is made of, for another solver to read) and
-// DIR/summary.json (contact_offset_mm, the residual per offset tried, the features, the
-// naive single-sensor features, the dictionary's size, wall_s per stage, peak_rss_mb).
+// DIR/summary.json (contact_offset_mm; contact_offset_refined_mm, between grid points from the residuals'
+// parabola; the residual per offset tried, the features, the naive single-sensor features, the dictionary's
+// size, wall_s per stage, peak_rss_mb).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -149,9 +150,9 @@ int run_invert(const Scene& scene, const std::string& signals_path, const std::s
   write_json(out_dir + "/summary.json", j);
   std::printf(
       "invert %s (%s case, %zu positions every %.4g mm): %zu features, contact offset %.3f mm (searched "
-      "+-%.3g mm by %.3g)\n",
+      "+-%.3g mm by %.3g; %.3f mm between grid points)\n",
       scene.name.c_str(), case_name.c_str(), signals.u.size(), run.responses.dx, run.multi.features.size(),
-      run.multi.offset_mm, options.offset_range, options.offset_step);
+      run.multi.offset_mm, options.offset_range, options.offset_step, run.multi.offset_refined_mm);
   for (const validation::Feature& f : run.multi.features)
     std::printf("  at %.3f mm: diameter %.3f mm (SNR %.1f)\n", f.position_mm, f.diameter_mm, f.snr);
   std::printf("  each sensor alone (naive, offset 0): features found per sensor:");

@@ -114,6 +114,7 @@ nlohmann::json inversion_json(const Scene& scene, const InversionRun& run, const
                 {"sigma_x_kPa", o.noise.sigma_x_kPa},
                 {"passages", o.noise.passages}};
   j["contact_offset_mm"] = run.multi.offset_mm;
+  j["contact_offset_refined_mm"] = run.multi.offset_refined_mm;
   j["offsets_mm"] = run.multi.offsets;
   j["weighted_residuals"] = run.multi.residuals;
   j["features"] = features(run.multi);

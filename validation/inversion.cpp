@@ -173,7 +173,16 @@ Inversion invert_scan(const ScanSignals& sig, const HoleResponses& r, const Sens
   for (int o = 1; o < n_off; ++o)
     if (residuals[o] < residuals[chosen]) chosen = o;
   best.weighted_residual = residuals[chosen];
-  best.offset_mm = offsets[chosen];
+  best.offset_mm = best.offset_refined_mm = offsets[chosen];
+  if (chosen > 0 && chosen + 1 < n_off) {
+    const double x0 = offsets[chosen - 1], x1 = offsets[chosen], x2 = offsets[chosen + 1];
+    const double f0 = residuals[chosen - 1], f1 = residuals[chosen], f2 = residuals[chosen + 1];
+    const double den = (x1 - x0) * (f1 - f2) - (x1 - x2) * (f1 - f0);
+    // The vertex lies between the neighbours when the parabola opens upwards (den < 0 for x0 < x1 < x2).
+    if (x0 < x1 && x1 < x2 && den < 0)
+      best.offset_refined_mm =
+          x1 - 0.5 * ((x1 - x0) * (x1 - x0) * (f1 - f2) - (x1 - x2) * (x1 - x2) * (f1 - f0)) / den;
+  }
   const Eigen::VectorXd& best_a = amplitudes[chosen];
   const Eigen::MatrixXd best_A = design(offsets[chosen]);
   // Adjacent non-zero atoms are one feature.

@@ -51,15 +51,18 @@ struct Feature {
 
 struct Inversion {
   std::vector<Feature> features;
-  double offset_mm = 0;                    // δ
+  double offset_mm = 0;  // δ
+  // The least residual's δ between grid points: the vertex of the parabola through the best δ and its two
+  // neighbours (offset_mm at the grid's ends, or where the three do not open upwards).
+  double offset_refined_mm = 0;
   double weighted_residual = 0;            // ‖W (y − A a)‖² at the chosen δ
   std::vector<double> offsets, residuals;  // every δ tried and its residual
 };
 
-// offsets: the δ grid (mm); every x_i − δ must be one of responses.sites (to 1e-6 mm). p_fa: a feature whose
-// own SNR is below the threshold Φ⁻¹(1 − p_fa) is dropped. single_sensor ≥ 0:
-// invert that sensor's signals alone (the paper's "naive" inversion), else all of them. Throws
-// std::invalid_argument when a site is missing or the grids do not match (u's step must be dx).
+// offsets: the δ grid (mm, ascending); every x_i − δ must be one of responses.sites (to 1e-6 mm). p_fa: a
+// feature whose own SNR is below the threshold Φ⁻¹(1 − p_fa) is dropped. single_sensor ≥ 0: invert that
+// sensor's signals alone (the paper's "naive" inversion), else all of them. Throws std::invalid_argument when
+// a site is missing or the grids do not match (u's step must be dx).
 Inversion invert_scan(const ScanSignals& signals, const HoleResponses& responses, const SensorNoise& noise,
                       const std::vector<double>& offsets, double p_fa = 0.01, int single_sensor = -1);
 
