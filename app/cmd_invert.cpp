@@ -10,14 +10,23 @@
 // Writes DIR/features.csv (position_mm,diameter_mm,amplitude,snr: positions on the plate at u = 0, one row
 // per feature), DIR/dictionary.csv (x_mm,site_mm,R_z_kPa,R_x_kPa: the response of a sensor at `site` to the
 // scene's hole at x, both in the contact's frame; what the fit is made of, for another solver to read) and
-// DIR/summary.json (contact_offset_mm; contact_offset_refined_mm, between grid points from the residuals'
-// parabola; the residual per offset tried, the features, the naive single-sensor features, the dictionary's
-// size, wall_s per stage, peak_rss_mb).
+// DIR/dictionary.key (the case and the scene's text it was built for, and its DOFs), and DIR/summary.json
+// (contact_offset_mm; contact_offset_refined_mm, between grid points from the residuals' parabola; the
+// residual per offset tried, the features, the naive single-sensor features, the dictionary's size, wall_s
+// per stage, peak_rss_mb).
+//
+// --dictionary DIR reuses the dictionary an earlier invert wrote in DIR instead of building it (11 s of the
+// 15 s on the default scene): refused in one line when its key differs from this run's (another scene or
+// case: the first line that differs), or when its step, hole positions or virtual sensors do not fit the
+// signals and --offset-range.
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "app/commands.hpp"
@@ -111,11 +120,106 @@ validation::ScanSignals read_signals(const std::string& path, const Scene& scene
 }
 // The fit's dense design matrix per offset (two in flight, 200 MB each).
 constexpr double kMaxDesign = 2.5e7;
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError(path + ": cannot read it");
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// What a dictionary is built from besides the step and the offsets (which dictionary_mismatch checks): the
+// case and the scene's text, with an imported surface's size and time (its bytes would make the key as large
+// as the mesh). Written as DIR/dictionary.key; a reuse compares it line by line.
+std::string dictionary_key(const Scene& scene, const std::string& case_name) {
+  std::string key = "skinfem invert dictionary\ncase " + case_name + "\n";
+  if (scene.geometry.kind == GeometryKind::surface) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const auto size = fs::file_size(scene.geometry.surface.path, ec);
+    const auto time = fs::last_write_time(scene.geometry.surface.path, ec).time_since_epoch().count();
+    key += "surface " + scene.geometry.surface.path + " " + std::to_string(size) + " bytes, written " +
+           std::to_string(time) + "\n";
+  }
+  return key + "scene:\n" + read_text(scene.source_path);
+}
+
+struct StoredDictionary {
+  validation::HoleResponses responses;
+  int dofs = 0;
+};
+
+// The key as written: the DOFs the dictionary was solved on on its second line.
+std::string keyed(const std::string& key, int dofs) {
+  const size_t first = key.find('\n') + 1;
+  return key.substr(0, first) + "dofs " + std::to_string(dofs) + "\n" + key.substr(first);
+}
+
+// DIR/dictionary.csv as `skinfem invert` wrote it (rows by hole position, then by site), after DIR/
+// dictionary.key has been checked against this run's: SceneError naming the first line that differs.
+StoredDictionary read_dictionary(const std::string& dir, const std::string& key, const Scene& scene) {
+  StoredDictionary d;
+  std::string stored = read_text(dir + "/dictionary.key");
+  const size_t first = stored.find('\n') + 1, second = stored.find('\n', first);
+  if (first == 0 || second == std::string::npos || stored.compare(first, 5, "dofs ") != 0)
+    throw SceneError("--dictionary " + dir + ": its dictionary.key is not one skinfem invert wrote");
+  d.dofs = std::atoi(stored.c_str() + first + 5);
+  stored.erase(first, second + 1 - first);
+  std::istringstream a(stored), b(key);
+  std::string la, lb;
+  // Lines numbered as in the file, whose line 2 (the DOFs) was taken out.
+  for (int line = 1;; ++line) {
+    const bool more_a = static_cast<bool>(std::getline(a, la)),
+               more_b = static_cast<bool>(std::getline(b, lb));
+    if (!more_a && !more_b) break;
+    if (more_a != more_b || la != lb)
+      throw SceneError("--dictionary " + dir + ": built for another scene or case: line " +
+                       std::to_string(line + (line >= 2)) + " of its dictionary.key reads '" +
+                       (more_a ? la : "") + "', this run's '" + (more_b ? lb : "") + "'");
+  }
+  const std::string path = dir + "/dictionary.csv";
+  std::ifstream in(path);
+  std::string line;
+  if (!in || !std::getline(in, line) || line != "x_mm,site_mm,R_z_kPa,R_x_kPa")
+    throw SceneError(path + ": cannot read it, or its header is not x_mm,site_mm,R_z_kPa,R_x_kPa");
+  std::vector<std::array<double, 4>> rows;
+  for (int row = 2; std::getline(in, line); ++row) {
+    const std::vector<std::string> cells = split_csv(line);
+    std::array<double, 4> v{};
+    char* end = nullptr;
+    for (size_t c = 0; c < 4; ++c) {
+      v[c] = c < cells.size() ? std::strtod(cells[c].c_str(), &end) : NAN;
+      if (cells.size() != 4 || cells[c].empty() || *end != '\0' || !std::isfinite(v[c]))
+        throw SceneError(path + ": row " + std::to_string(row) + ": expected four finite numbers");
+    }
+    rows.push_back(v);
+  }
+  validation::HoleResponses& r = d.responses;
+  r.diameter = scene.contact->sweep->hole_diameter;
+  for (size_t k = 0; k < rows.size() && rows[k][0] == rows[0][0]; ++k) r.sites.push_back(rows[k][1]);
+  const size_t n = r.sites.size();
+  if (n == 0 || rows.size() % n != 0 || rows.size() < 2 * n)
+    throw SceneError(path + ": " + std::to_string(rows.size()) + " rows are not whole hole positions of " +
+                     std::to_string(n) + " sites");
+  r.x0 = rows[0][0];
+  r.dx = rows[n][0] - rows[0][0];
+  r.R.resize(static_cast<Eigen::Index>(rows.size() / n), static_cast<Eigen::Index>(2 * n));
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const size_t m = i / n, k = i % n;
+    if (std::abs(rows[i][0] - (r.x0 + m * r.dx)) > 1e-6 || rows[i][1] != r.sites[k])
+      throw SceneError(path + ": row " + std::to_string(i + 2) + " is out of order (x_mm " +
+                       std::to_string(rows[i][0]) + ", site_mm " + std::to_string(rows[i][1]) + ")");
+    r.R(m, 2 * k) = rows[i][2];
+    r.R(m, 2 * k + 1) = rows[i][3];
+  }
+  return d;
+}
 }  // namespace
 
 int run_invert(const Scene& scene, const std::string& signals_path, const std::string& out_dir,
-               const pipeline::InversionOptions& options, const std::string& case_name) {
+               const pipeline::InversionOptions& options, const std::string& case_name,
+               const std::string& dictionary_dir) {
   const validation::ScanSignals signals = read_signals(signals_path, scene, case_name);
+  const std::string key = dictionary_key(scene, case_name);
   // The fit's design matrix: a column per hole position the scan can show, a row per sample.
   const double step = signals.u[1] - signals.u[0];
   const double atoms = pipeline::dictionary_positions(scene, step) + signals.u.size() - 1;
@@ -127,8 +231,18 @@ int run_invert(const Scene& scene, const std::string& signals_path, const std::s
                      std::to_string(static_cast<long long>(samples)) +
                      " samples; at most 2.5e7 entries: resample the signals coarser or scan a shorter range");
   check_output_dir(out_dir);
-  const pipeline::InversionRun run = pipeline::inversion_run(scene, signals, options);
+  Stopwatch reading;
+  std::optional<StoredDictionary> reused;
+  if (!dictionary_dir.empty()) reused = read_dictionary(dictionary_dir, key, scene);
+  const double read_s = reading.seconds();
+  pipeline::InversionRun run =
+      pipeline::inversion_run(scene, signals, options, reused ? &reused->responses : nullptr);
+  if (reused) {
+    run.wall["dictionary_read"] = read_s;
+    run.dofs = reused->dofs;
+  }
   nlohmann::json j = pipeline::inversion_json(scene, run, options);
+  if (reused) j["dictionary"]["read_from"] = dictionary_dir;
   Stopwatch clock;
   prepare_output_dir(out_dir);
   std::ostringstream csv;
@@ -146,6 +260,7 @@ int run_invert(const Scene& scene, const std::string& signals_path, const std::s
       dictionary << r.x0 + m * r.dx << "," << r.sites[k] << "," << r.R(m, 2 * k) << "," << r.R(m, 2 * k + 1)
                  << "\n";
   write_text_atomic(out_dir + "/dictionary.csv", dictionary.str());
+  write_text_atomic(out_dir + "/dictionary.key", keyed(key, run.dofs));
   add_write_seconds(j, clock.seconds());
   write_json(out_dir + "/summary.json", j);
   std::printf(
@@ -158,11 +273,12 @@ int run_invert(const Scene& scene, const std::string& signals_path, const std::s
   std::printf("  each sensor alone (naive, offset 0): features found per sensor:");
   for (const validation::Inversion& n : run.naive) std::printf(" %zu", n.features.size());
   std::printf(
-      "\n  dictionary: %zu virtual sensors x %d hole positions on %d DOFs; total %.1f s, invert %.2f s, peak "
-      "%.0f MB\n",
+      "\n  dictionary: %zu virtual sensors x %d hole positions on %d DOFs%s; total %.1f s, invert %.2f s, "
+      "peak %.0f MB\n",
       run.responses.sites.size(), static_cast<int>(run.responses.R.rows()), run.dofs,
-      j["wall_total_s"].get<double>(), run.wall.at("invert"), peak_rss_mb());
-  std::printf("  wrote %s/features.csv, dictionary.csv, summary.json\n", out_dir.c_str());
+      reused ? (", read from " + dictionary_dir).c_str() : "", j["wall_total_s"].get<double>(),
+      run.wall.at("invert"), peak_rss_mb());
+  std::printf("  wrote %s/features.csv, dictionary.csv, dictionary.key, summary.json\n", out_dir.c_str());
   return 0;
 }
 

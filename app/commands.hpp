@@ -26,9 +26,11 @@ int run_defect(const Scene& scene, const std::string& out_dir, const std::vector
 // superpose: also the holes one at a time (the linear prediction).
 int run_scan(const Scene& scene, const std::string& out_dir, bool superpose);
 int run_perceive(const Scene& scene, const std::string& out_dir, const pipeline::PerceptionOptions& options);
-// signals_path: scan.csv's columns; case_name: the rows of that case when the file has a case column.
+// signals_path: scan.csv's columns; case_name: the rows of that case when the file has a case column;
+// dictionary_dir: an earlier invert's output directory whose dictionary to reuse ("" builds it).
 int run_invert(const Scene& scene, const std::string& signals_path, const std::string& out_dir,
-               const pipeline::InversionOptions& options, const std::string& case_name);
+               const pipeline::InversionOptions& options, const std::string& case_name,
+               const std::string& dictionary_dir);
 // fast: without the error bars' levels, the hypothesis budget and the post design sweep.
 int run_report(const Scene& scene, const std::string& out_dir, const std::vector<double>& error_scales,
                bool fast = false);

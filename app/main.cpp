@@ -111,7 +111,7 @@ const std::map<std::string, Handler>& handlers() {
           p.offset_range = o.number("offset_range");
           p.mode = o.text("case") == "static" ? skinfem::FrictionMode::static_residual
                                               : skinfem::FrictionMode::coupled;
-          return app::run_invert(s, o.text("signals"), out, p, o.text("case"));
+          return app::run_invert(s, o.text("signals"), out, p, o.text("case"), o.text("dictionary"));
         }}},
       {"report",
        {error_scales_check,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "skinfem/contact/holes/dimple.hpp"
 #include "skinfem/contact/holes/sweep.hpp"
@@ -81,12 +82,40 @@ validation::HoleResponses hole_responses(const Scene& scene, FrictionMode mode, 
   return r;
 }
 
+std::string dictionary_mismatch(const Scene& scene, const validation::HoleResponses& r, double dx,
+                                const std::vector<double>& offsets) {
+  const auto mm = [](double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.6g mm", v);
+    return std::string(b);
+  };
+  if (std::abs(r.dx - dx) > 1e-6) return "its step is " + mm(r.dx) + ", the signals' " + mm(dx);
+  if (r.R.rows() != dictionary_positions(scene, dx))
+    return "it holds " + std::to_string(r.R.rows()) + " hole positions; the scene's zone needs " +
+           std::to_string(dictionary_positions(scene, dx));
+  for (const Vec2& p : scene.sensors.positions)
+    for (double d : offsets)
+      if (std::none_of(r.sites.begin(), r.sites.end(),
+                       [&](double s) { return std::abs(s - (p[0] - d)) < 1e-6; }))
+        return "it has no virtual sensor at " + mm(p[0] - d) + " (sensor at " + mm(p[0]) + ", offset " +
+               mm(d) + "): it was built for another --offset-range";
+  return "";
+}
+
 InversionRun inversion_run(const Scene& scene, const validation::ScanSignals& signals,
-                           const InversionOptions& o) {
+                           const InversionOptions& o, const validation::HoleResponses* dictionary) {
   InversionRun run;
   const double dx = (signals.u.back() - signals.u.front()) / (signals.u.size() - 1);
   const std::vector<double> offsets = offset_grid(o.offset_range, o.offset_step);
-  run.responses = hole_responses(scene, o.mode, dx, offsets, run.wall, run.dofs);
+  if (dictionary) {
+    if (const std::string why = inversion_unavailable(scene, offsets); !why.empty())
+      throw SceneError(scene.source_path + ": " + why);
+    if (const std::string why = dictionary_mismatch(scene, *dictionary, dx, offsets); !why.empty())
+      throw SceneError("--dictionary: " + why);
+    run.responses = *dictionary;
+  } else {
+    run.responses = hole_responses(scene, o.mode, dx, offsets, run.wall, run.dofs);
+  }
   Stopwatch clock;
   run.multi = validation::invert_scan(signals, run.responses, o.noise, offsets, o.p_fa);
   run.wall["invert"] = clock.seconds();

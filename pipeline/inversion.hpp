@@ -45,8 +45,15 @@ validation::HoleResponses hole_responses(const Scene& scene, FrictionMode mode, 
 int dictionary_positions(const Scene& scene, double dx);
 // The offset grid: −range, −range + step, …, range (0 included).
 std::vector<double> offset_grid(double range, double step);
+// Why a dictionary built earlier cannot serve signals sampled every dx (mm) with these offsets ("" when it
+// can): another step, too few or too many hole positions, or a virtual sensor x_i − δ it lacks.
+std::string dictionary_mismatch(const Scene& scene, const validation::HoleResponses& dictionary, double dx,
+                                const std::vector<double>& offsets);
+// dictionary: one built earlier for this scene and case (its mismatch throws SceneError), or null to build
+// it.
 InversionRun inversion_run(const Scene& scene, const validation::ScanSignals& signals,
-                           const InversionOptions& options);
+                           const InversionOptions& options,
+                           const validation::HoleResponses* dictionary = nullptr);
 nlohmann::json inversion_json(const Scene& scene, const InversionRun& run, const InversionOptions& options);
 
 }  // namespace skinfem::pipeline

@@ -141,15 +141,20 @@ std::vector<CommandSpec> table() {
       {"invert",
        "where the holes are: a scan's signals deconvolved over the scene's single-hole responses, the "
        "contact's offset fitted, beside each sensor alone (features.csv, summary.json)",
-       on_scene({{"signals", K::positional,
-                  "signals CSV in scan.csv's columns (u_mm,sensor,varsigma_z_kPa,"
-                  "varsigma_x_kPa[,case])"},
-                 {"case", K::choice, "the case the signals are of", "sliding", {"static", "sliding"}},
-                 {"passages", K::count, "N: the signals are the mean of N passages", "14"},
-                 {"noise_z", K::positive, "noise on varsigma_z per sample and passage, kPa", "0.6"},
-                 {"noise_x", K::positive, "noise on varsigma_x per sample and passage, kPa", "0.4"},
-                 {"offset_range", K::nonnegative,
-                  "the contact's offset from the sensors is searched in +-this, mm", "1.0"}}),
+       on_scene(
+           {{"signals", K::positional,
+             "signals CSV in scan.csv's columns (u_mm,sensor,varsigma_z_kPa,"
+             "varsigma_x_kPa[,case])"},
+            {"case", K::choice, "the case the signals are of", "sliding", {"static", "sliding"}},
+            {"passages", K::count, "N: the signals are the mean of N passages", "14"},
+            {"noise_z", K::positive, "noise on varsigma_z per sample and passage, kPa", "0.6"},
+            {"noise_x", K::positive, "noise on varsigma_x per sample and passage, kPa", "0.4"},
+            {"offset_range", K::nonnegative,
+             "the contact's offset from the sensors is searched in +-this, mm", "1.0"},
+            {"dictionary", K::text,
+             "reuse the dictionary an earlier invert wrote in this directory (same scene, case, step and "
+             "offsets) instead of building it",
+             ""}}),
        false},
       {"report",
        "the whole chain on one factorization and the paper's model against it (index.html, report.json)",

@@ -8,7 +8,8 @@
 # perceive: the required SNR is Φ⁻¹(0.99) + Φ⁻¹(0.9) = 3.608 (tables); the ROC curves rise with the
 # false-alarm rate; the Monte Carlo rates lie within 4 standard errors of the nominal ones, the slid filter's
 # false alarms under Rice's bound; dictionary.csv holds what summary.json counts. invert: the
-# scene's defect sweep, inverted, gives its hole back at the plate's origin.
+# scene's defect sweep, inverted, gives its hole back at the plate's origin; with --dictionary the same
+# features from the dictionary it wrote, and that dictionary refused for another case or offset range.
 set -u
 skinfem=$1
 tmp=$(mktemp -d)
@@ -36,6 +37,20 @@ cmp -s "$tmp/a/scan.csv" "$tmp/b/scan.csv" || { echo "FAIL: two runs wrote diffe
   { echo "FAIL defect:"; cat "$tmp/err"; exit 1; }
 "$skinfem" invert "$tmp/d/defect.csv" "$tmp/scene.json" --offset-range 0.3 --out "$tmp/i" >"$tmp/i.out" 2>"$tmp/err" ||
   { echo "FAIL invert:"; cat "$tmp/err"; exit 1; }
+"$skinfem" invert "$tmp/d/defect.csv" "$tmp/scene.json" --offset-range 0.3 --dictionary "$tmp/i" --out "$tmp/r" \
+  >"$tmp/r.out" 2>"$tmp/err" || { echo "FAIL invert --dictionary:"; cat "$tmp/err"; exit 1; }
+# A dictionary reused for what it was not built for: another case, a wider offset range.
+refused() {
+  if "$skinfem" invert "$tmp/d/defect.csv" "$tmp/scene.json" --dictionary "$tmp/i" --out "$tmp/x" "${@:2}" \
+    >/dev/null 2>"$tmp/err"; then
+    echo "FAIL invert --dictionary ${*:2}: accepted"; exit 1
+  fi
+  grep -q -- "$1" "$tmp/err" || { echo "FAIL invert --dictionary ${*:2}: said"; cat "$tmp/err"; exit 1; }
+  [ ! -e "$tmp/x" ] || { echo "FAIL invert --dictionary ${*:2}: wrote $tmp/x"; exit 1; }
+}
+refused "built for another scene or case: line 3 of its dictionary.key reads 'case sliding', this run's 'case static'" \
+  --case static --offset-range 0.3
+refused "it has no virtual sensor at .*it was built for another --offset-range" --offset-range 0.5
 /usr/bin/python3 - "$tmp" <<'PY'
 import csv, json, math, os, re, sys
 tmp = sys.argv[1]
@@ -96,6 +111,16 @@ else:
         bad.append(f"invert: the hole found at {strongest['position_mm']} mm, not 0")
     if abs(json.load(open(f"{tmp}/i/summary.json"))["contact_offset_mm"]) > 0.1 + 1e-9:
         bad.append("invert: the contact's offset is more than one step off")
+# --dictionary: the reused dictionary (its 10 digits read back) gives the built one's features and offset.
+reused = list(csv.DictReader(open(f"{tmp}/r/features.csv")))
+rs = json.load(open(f"{tmp}/r/summary.json"))
+if len(reused) != len(features) or any(abs(float(a[c]) - float(b[c])) > 1e-6 * max(1, abs(float(a[c])))
+                                       for a, b in zip(features, reused) for c in a):
+    bad.append("invert --dictionary: other features than the built dictionary's")
+if rs["contact_offset_mm"] != json.load(open(f"{tmp}/i/summary.json"))["contact_offset_mm"]:
+    bad.append("invert --dictionary: another offset")
+if "dictionary_sweep" in rs["wall_s"] or rs["dictionary"].get("read_from") != f"{tmp}/i":
+    bad.append(f"invert --dictionary: built it again, or did not say where it read it: {rs['wall_s']}")
 # dictionary.csv: one row per virtual sensor and hole position, as summary.json counts them.
 d = json.load(open(f"{tmp}/i/summary.json"))["dictionary"]
 rows = list(csv.DictReader(open(f"{tmp}/i/dictionary.csv")))

@@ -3,7 +3,7 @@
 // u: inverted against the dictionary, which is built on another mesh (its virtual sensors refine it), the
 // hole comes back at 0 within one scan step, with its diameter within 5 % (the two meshes' difference: the
 // amplitude, D³, within 15 %), the contact within one offset step of its nominal place, and as the
-// strongest feature. Read by posts, the same at the known offset.
+// strongest feature. Read by posts, the same at the known offset. Its dictionary given back, the same fit.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,17 +17,21 @@
 namespace skinfem::pipeline {
 namespace {
 
-// The scene's sliding sweep inverted with the offset searched on ±range.
-InversionRun inverted_sweep(const Scene& scene, double range) {
+// The scene's sliding sweep as signals.
+validation::ScanSignals swept_signals(const Scene& scene) {
   const DefectRun defect = defect_run(scene, std::shared_ptr<const ContactSetup>(contact_setup(scene)));
   validation::ScanSignals sig;
   const contact::SweepResult& sliding = defect.sweeps.at(1);
   for (const Vec2& c : sliding.centers) sig.u.push_back(c[0]);
   for (const Vec2& p : scene.sensors.positions) sig.sensors.push_back(p[0]);
   sig.y = 1e3 * sliding.varsigma;
+  return sig;
+}
+
+InversionOptions searched(double range) {
   InversionOptions o;
   o.offset_range = range;
-  return inversion_run(scene, sig, o);
+  return o;
 }
 
 // The hole comes back at 0 within one scan step (0.1 mm), the strongest feature, its diameter within 5 %.
@@ -43,11 +47,25 @@ void expect_the_hole(const InversionRun& run, size_t sensors) {
 
 TEST(InversionRun, TheDefectSweepsHoleComesBackAtItsPlaceAndSize) {
   const Scene scene = testing::swept_layer("inverted_layer", 41, {-2.0, 0}, {2.0, 0}, 2.0, 0.4);
-  const InversionRun run = inverted_sweep(scene, 0.3);
+  const validation::ScanSignals sig = swept_signals(scene);
+  const InversionRun run = inversion_run(scene, sig, searched(0.3));
   // The two meshes' difference leaves a residual far below the noise's (4.5 for 246 samples): its minimum
   // over the offset falls between grid points, within one step of the nominal place.
   EXPECT_LE(std::abs(run.multi.offset_mm), 0.1 + 1e-9);
   expect_the_hole(run, 3);
+  // Its dictionary given back (`invert --dictionary`): the same fit, bit for bit; refused for a wider
+  // offset range (a virtual sensor missing) and another step.
+  const InversionRun again = inversion_run(scene, sig, searched(0.3), &run.responses);
+  ASSERT_EQ(again.multi.features.size(), run.multi.features.size());
+  for (size_t k = 0; k < run.multi.features.size(); ++k)
+    EXPECT_EQ(again.multi.features[k].position_mm, run.multi.features[k].position_mm);
+  EXPECT_EQ(again.multi.residuals, run.multi.residuals);
+  const double dx = sig.u[1] - sig.u[0];
+  EXPECT_NE(dictionary_mismatch(scene, run.responses, dx, offset_grid(0.5, 0.1)).find("no virtual sensor"),
+            std::string::npos);
+  EXPECT_NE(dictionary_mismatch(scene, run.responses, 2 * dx, offset_grid(0.3, 0.1)).find("step"),
+            std::string::npos);
+  EXPECT_THROW(inversion_run(scene, sig, searched(0.5), &run.responses), SceneError);
 }
 
 // Posts read the skin only where they are meshed: the dictionary is the posts where they stand, the offset
@@ -58,7 +76,7 @@ TEST(InversionRun, PostsReadTheHoleAtItsPlaceAndSizeAtTheKnownOffset) {
   scene.sensors.post = {0.2, 0.4};
   EXPECT_NE(inversion_unavailable(scene, {-0.1, 0, 0.1}).find("--offset-range 0"), std::string::npos);
   EXPECT_EQ(inversion_unavailable(scene, {0}), "");
-  const InversionRun run = inverted_sweep(scene, 0);
+  const InversionRun run = inversion_run(scene, swept_signals(scene), searched(0));
   EXPECT_EQ(run.multi.offset_mm, 0);
   expect_the_hole(run, 3);
 }
