@@ -56,6 +56,13 @@ HYPOTHESES = {
 }
 
 
+def write_csv(out, name, rows, header):
+    with open(os.path.join(out, name), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(header)
+        w.writerows(rows)
+
+
 def with_hypothesis(c, extra):
     """The contact section c under a hypothesis of HYPOTHESES (its keys merged into c's)."""
     for k, v in extra.items():
@@ -117,11 +124,9 @@ def main_rows(skinfem, out, base):
                          sp["single_hole_solves"], summary["wall_total_s"]])
             print(f"row p = {p:.2f} mm ({count} holes, up to {k['most_holes_in_zone']} in the zone): {case:7s} "
                   f"z {100 * sp['rel_diff_z']:.1f} %, x {100 * sp['rel_diff_x']:.1f} %", flush=True)
-    with open(os.path.join(out, "rows.csv"), "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(["period_mm", "case", "holes", "most_holes", "rel_diff_z", "rel_diff_x", "single_hole_solves",
-                    "seconds"])
-        w.writerows(rows)
+    write_csv(out, "rows.csv", rows, [
+        "period_mm", "case", "holes", "most_holes", "rel_diff_z", "rel_diff_x", "single_hole_solves",
+        "seconds"])
 
 
 def textured(base, texture, name, extra=None):
@@ -197,12 +202,9 @@ def main_density(skinfem, out, base, part):
         print(f"{part} {r[1]} ({r[2]:.2f} /mm^2, {r[4]} holes, rims {r[5]:.3f} mm apart at the closest, up to "
               f"{r[6]} in the zone): {r[3]:7s} z {100 * r[7]:.1f} %, x {100 * r[8]:.1f} %  ({r[10]} DOFs, "
               f"{r[11]} watched nodes, {r[12]:.0f} s, {r[13]:.0f} MB)", flush=True)
-    with open(os.path.join(out, part + ".csv"), "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(["texture", "label", "density_per_mm2", "case", "holes", "closest_rims_mm", "most_holes",
-                    "rel_diff_z", "rel_diff_x", "mirror_pair_terms", "dofs", "watched_nodes", "seconds",
-                    "peak_mb"])
-        w.writerows(rows)
+    write_csv(out, part + ".csv", rows, [
+        "texture", "label", "density_per_mm2", "case", "holes", "closest_rims_mm", "most_holes", "rel_diff_z",
+        "rel_diff_x", "mirror_pair_terms", "dofs", "watched_nodes", "seconds", "peak_mb"])
 
 
 # A hole and its mirror image s apart across the sliding direction, on the whole skin: the interaction the
@@ -228,11 +230,9 @@ def main_twins(skinfem, out, base):
             print(f"twins s = {sp:.2f} mm: {case:7s} z {100 * p['rel_diff_z']:.2f} %, x {100 * p['rel_diff_x']:.2f} % "
                   f"({summary['dofs']} DOFs, {summary['watched_nodes']} watched nodes, "
                   f"{summary['wall_total_s']:.0f} s)", flush=True)
-    with open(os.path.join(out, "twins.csv"), "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(["spacing_mm", "case", "rel_diff_z", "rel_diff_x", "max_diff_z_kPa", "max_diff_x_kPa", "dofs",
-                    "watched_nodes", "seconds"])
-        w.writerows(rows)
+    write_csv(out, "twins.csv", rows, [
+        "spacing_mm", "case", "rel_diff_z", "rel_diff_x", "max_diff_z_kPa", "max_diff_x_kPa", "dofs",
+        "watched_nodes", "seconds"])
 
 
 GRATING_PERIODS = [0.75, 1.0, 1.5, 2.0, 3.0]
@@ -263,11 +263,9 @@ def main_gratings(skinfem, out, base):
             print(f"{what}, up to {k['most_holes_in_zone']} in the zone: {case:7s} peak z {pz:.2f} kPa, "
                   f"x {px:.2f} kPa{diff} ({summary['dofs']} DOFs, {summary['watched_nodes']} watched nodes, "
                   f"{summary['wall_total_s']:.0f} s, {summary['peak_rss_mb']:.0f} MB)", flush=True)
-    with open(os.path.join(out, "gratings.csv"), "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(["period_mm", "case", "grooves", "most_in_zone", "rel_diff_z", "rel_diff_x", "peak_z_kPa",
-                    "peak_x_kPa", "dofs", "watched_nodes", "seconds", "peak_mb"])
-        w.writerows(rows)
+    write_csv(out, "gratings.csv", rows, [
+        "period_mm", "case", "grooves", "most_in_zone", "rel_diff_z", "rel_diff_x", "peak_z_kPa", "peak_x_kPa",
+        "dofs", "watched_nodes", "seconds", "peak_mb"])
 
 
 def main():
@@ -293,11 +291,9 @@ def main():
                              sp["max_diff_x_kPa"], c["most_holes_in_zone"], summary["wall_total_s"]])
                 print(f"{name:20s} s = {s:.2f} mm: {case:7s} z {100 * sp['rel_diff_z']:.1f} %, "
                       f"x {100 * sp['rel_diff_x']:.1f} %", flush=True)
-    with open(os.path.join(out, "pair_study.csv"), "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(["hypothesis", "spacing_mm", "case", "rel_diff_z", "rel_diff_x", "max_diff_z_kPa",
-                    "max_diff_x_kPa", "most_holes", "seconds"])
-        w.writerows(rows)
+    write_csv(out, "pair_study.csv", rows, [
+        "hypothesis", "spacing_mm", "case", "rel_diff_z", "rel_diff_x", "max_diff_z_kPa", "max_diff_x_kPa",
+        "most_holes", "seconds"])
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
