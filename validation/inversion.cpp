@@ -10,12 +10,15 @@
 namespace skinfem::validation {
 
 Eigen::VectorXd nnls(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, int max_iterations) {
-  const int n = static_cast<int>(A.cols());
   // AᵀA by a symmetric rank update: half the product's flops.
-  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(n, n);
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(A.cols(), A.cols());
   G.selfadjointView<Eigen::Lower>().rankUpdate(A.transpose());
   G.triangularView<Eigen::StrictlyUpper>() = G.transpose();
-  const Eigen::VectorXd c = A.transpose() * b;
+  return nnls_gram(G, A.transpose() * b, max_iterations);
+}
+
+Eigen::VectorXd nnls_gram(const Eigen::MatrixXd& G, const Eigen::VectorXd& c, int max_iterations) {
+  const int n = static_cast<int>(G.cols());
   Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
   std::vector<char> in(n, 0);
   const double tol = 1e-10 * std::max(1.0, c.cwiseAbs().maxCoeff());
@@ -141,30 +144,60 @@ Inversion invert_scan(const ScanSignals& sig, const HoleResponses& r, const Sens
   std::vector<Eigen::VectorXd> amplitudes(n_off);
   std::vector<double> residuals(n_off);
   for (double delta : offsets) sites_for(sig.sensors, r, delta);  // throws on the calling thread
-  const auto design = [&](double delta) {
+  // The design A (a row per sample (i, sensor, component), a column per atom) is Hankel in each sensor's
+  // component: A((i, sc), j) = P(i + j, sc), P the weighted responses padded by nu − 1 zeros on both sides.
+  // Its Gram matrix therefore follows along each diagonal, G(j+1, j'+1) = G(j, j') + P(j+nu)·P(j'+nu) −
+  // P(j)·P(j'), in O(atoms² · sc) instead of the product's O(atoms² · samples) (computed afresh every
+  // kRestart steps, so that the recurrence's round-off stays at a few ulps of the largest entry).
+  const int nsc = 2 * static_cast<int>(used.size());
+  const auto padded = [&](double delta) {
     const std::vector<int> k = sites_for(sig.sensors, r, delta);
-    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(b.size(), atoms);
-    for (int j = 0; j < atoms; ++j)
-      for (int i = 0; i < nu; ++i) {
-        const int m = j - (nu - 1) + i;
-        if (m < 0 || m >= rows) continue;
-        for (size_t s = 0; s < used.size(); ++s)
-          for (int c = 0; c < 2; ++c)
-            A((i * used.size() + s) * 2 + c, j) = weight(noise, c) * r.R(m, 2 * k[used[s]] + c);
+    Eigen::MatrixXd P = Eigen::MatrixXd::Zero(rows + 2 * (nu - 1), nsc);
+    for (size_t s = 0; s < used.size(); ++s)
+      for (int c = 0; c < 2; ++c)
+        P.block(nu - 1, 2 * s + c, rows, 1) = weight(noise, c) * r.R.col(2 * k[used[s]] + c);
+    return P;
+  };
+  const Eigen::Map<const Eigen::MatrixXd> B(b.data(), nsc, nu);  // B(sc, i) = b[i·nsc + sc]
+  struct Normal {
+    Eigen::MatrixXd G;
+    Eigen::VectorXd c;
+  };
+  const auto normal_equations = [&](const Eigen::MatrixXd& P) {
+    constexpr int kRestart = 64;
+    Normal ne{Eigen::MatrixXd::Zero(atoms, atoms), Eigen::VectorXd::Zero(atoms)};
+    const auto direct = [&](int j, int jj) {
+      return (P.middleRows(j, nu).cwiseProduct(P.middleRows(jj, nu))).sum();
+    };
+    for (int d = 0; d < atoms; ++d)
+      for (int j = 0; j + d < atoms; ++j) {
+        double& g = ne.G(j + d, j);
+        g = j % kRestart == 0 ? direct(j, j + d)
+                              : ne.G(j + d - 1, j - 1) + P.row(j + nu - 1).dot(P.row(j + d + nu - 1)) -
+                                    P.row(j - 1).dot(P.row(j + d - 1));
+        ne.G(j, j + d) = g;
       }
+    for (int j = 0; j < atoms; ++j) ne.c[j] = (P.middleRows(j, nu).transpose().cwiseProduct(B)).sum();
     // A hole the scan never brings into the contact gives the FE's round-off (1e-13 of the largest
     // response), not a signal: its amplitude is not identifiable, and the fit would spend it on the noise
     // (amplitudes of 1e10). Such atoms are left out (a zero column never enters NNLS's active set).
-    const Eigen::VectorXd norms = A.colwise().norm();
-    const double floor = kIdentifiable * norms.maxCoeff();
+    const double floor = kIdentifiable * kIdentifiable * ne.G.diagonal().maxCoeff();
     for (int j = 0; j < atoms; ++j)
-      if (norms[j] <= floor) A.col(j).setZero();
-    return A;
+      if (ne.G(j, j) <= floor) ne.G.row(j).setZero(), ne.G.col(j).setZero(), ne.c[j] = 0;
+    return ne;
+  };
+  // A a, from the non-zero amplitudes only (samples as in b).
+  const auto apply = [&](const Eigen::MatrixXd& P, const Eigen::VectorXd& a) {
+    Eigen::MatrixXd Y = Eigen::MatrixXd::Zero(nsc, nu);
+    for (int j = 0; j < atoms; ++j)
+      if (a[j] != 0) Y += a[j] * P.middleRows(j, nu).transpose();
+    return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(Y.data(), Y.size()));
   };
   for_each_index(n_off, [&](std::size_t o) {
-    const Eigen::MatrixXd A = design(offsets[o]);
-    amplitudes[o] = nnls(A, b);
-    residuals[o] = (b - A * amplitudes[o]).squaredNorm();
+    const Eigen::MatrixXd P = padded(offsets[o]);
+    const Normal ne = normal_equations(P);
+    amplitudes[o] = nnls_gram(ne.G, ne.c);
+    residuals[o] = (b - apply(P, amplitudes[o])).squaredNorm();
   });
   Inversion best;
   best.offsets = offsets;
@@ -184,7 +217,7 @@ Inversion invert_scan(const ScanSignals& sig, const HoleResponses& r, const Sens
           x1 - 0.5 * ((x1 - x0) * (x1 - x0) * (f1 - f2) - (x1 - x2) * (x1 - x2) * (f1 - f0)) / den;
   }
   const Eigen::VectorXd& best_a = amplitudes[chosen];
-  const Eigen::MatrixXd best_A = design(offsets[chosen]);
+  const Eigen::MatrixXd best_P = padded(offsets[chosen]);
   // Adjacent non-zero atoms are one feature.
   const double tau = detection_threshold(p_fa);
   for (int j = 0; j < atoms;) {
@@ -193,12 +226,13 @@ Inversion invert_scan(const ScanSignals& sig, const HoleResponses& r, const Sens
       continue;
     }
     double sum = 0, moment = 0;
-    Eigen::VectorXd signal = Eigen::VectorXd::Zero(b.size());
+    Eigen::VectorXd run = Eigen::VectorXd::Zero(atoms);
     for (; j < atoms && best_a[j] > 0; ++j) {
       sum += best_a[j];
       moment += best_a[j] * q_of(j);
-      signal += best_a[j] * best_A.col(j);
+      run[j] = best_a[j];
     }
+    const Eigen::VectorXd signal = apply(best_P, run);
     Feature f;
     f.amplitude = sum;
     f.position_mm = moment / sum + best.offset_mm;

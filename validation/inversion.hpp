@@ -25,6 +25,8 @@ namespace skinfem::validation {
 // min ‖A x − b‖², x ≥ 0, by Lawson–Hanson's active set (A: m × n, any m). Converges in finitely many steps;
 // max_iterations bounds them (3n if 0). Throws std::runtime_error when they run out.
 Eigen::VectorXd nnls(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, int max_iterations = 0);
+// The same from the normal equations: G = AᵀA (n × n), c = Aᵀb.
+Eigen::VectorXd nnls_gram(const Eigen::MatrixXd& G, const Eigen::VectorXd& c, int max_iterations = 0);
 
 // The dictionary: responses R_s(x) of sensors at `sites` (mm along the scan, in the contact's frame) to the
 // scene's hole at x = x0 + m·dx, m = 0 … rows − 1 (outside the grid R = 0).

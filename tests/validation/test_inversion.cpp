@@ -9,6 +9,7 @@
 // to holes, by hand, and the noise's standard deviation within 4 of its sampling errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -110,6 +111,47 @@ TEST(Inversion, AnOffsetBetweenGridPointsIsFoundByTheResidualsParabola) {
     EXPECT_LT(error, std::abs(inv.offset_mm - offset)) << h;
     EXPECT_LT(error, h / 20) << h;
   }
+}
+
+// invert_scan forms the normal equations from the design's Hankel structure (a recurrence along G's
+// diagonals). Against the explicit design, each column a unit hole simulated at its atom's place and solved
+// by nnls on the product AᵀA: the same residual at every offset to 1e-9, with noise, and so the same offset.
+TEST(Inversion, TheStructuredNormalEquationsGiveTheExplicitDesignsFit) {
+  const double dx = 0.05;
+  const HoleResponses r = analytic_responses(dx);
+  ScanSignals sig;
+  sig.u = grid(0, 6, dx);
+  sig.sensors = grid(-4.5, 4.5, 1.0);
+  const SensorNoise noise{0.6, 0.4, 14};
+  const std::vector<Feature> planted{{-4.0, 0.5, 1.0, 0}, {-2.5, 0.5, 0.7, 0}};
+  sig.y = with_noise(simulated_signals(sig.u, sig.sensors, r, planted, 0.1), noise, 5);
+  const std::vector<double> offsets{-0.1, 0.0, 0.1, 0.2};
+  const Inversion inv = invert_scan(sig, r, noise, offsets);
+  const int nu = static_cast<int>(sig.u.size()), atoms = static_cast<int>(r.R.rows()) + nu - 1;
+  const auto whiten = [&](const Eigen::MatrixXd& y) {  // rows (i, sensor, component), as invert_scan's
+    Eigen::VectorXd w(y.size());
+    for (int i = 0; i < nu; ++i)
+      for (int j = 0; j < y.cols(); ++j)
+        w[i * y.cols() + j] = std::sqrt(14.0) / (j % 2 ? 0.4 : 0.6) * y(i, j);
+    return w;
+  };
+  const Eigen::VectorXd b = whiten(sig.y);
+  std::vector<double> brute;
+  for (size_t o = 0; o < offsets.size(); ++o) {
+    Eigen::MatrixXd A(b.size(), atoms);
+    for (int j = 0; j < atoms; ++j) {
+      const double q = r.x0 - sig.u[0] + (j - (nu - 1)) * dx;
+      A.col(j) =
+          whiten(simulated_signals(sig.u, sig.sensors, r, {{q + offsets[o], 0.5, 1.0, 0}}, offsets[o]));
+    }
+    const double floor = 1e-6 * A.colwise().norm().maxCoeff();
+    for (int j = 0; j < atoms; ++j)
+      if (A.col(j).norm() <= floor) A.col(j).setZero();
+    brute.push_back((b - A * nnls(A, b)).squaredNorm());
+    EXPECT_NEAR(inv.residuals[o], brute.back(), 1e-9 * brute.back()) << "offset " << offsets[o];
+  }
+  // The fit's choice is the explicit residuals' least.
+  EXPECT_EQ(inv.offset_mm, offsets[std::min_element(brute.begin(), brute.end()) - brute.begin()]);
 }
 
 TEST(Inversion, WithThePapersNoiseThePositionErrorIsWithinTwiceTheCramerRaoBound) {
