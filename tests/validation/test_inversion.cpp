@@ -70,12 +70,18 @@ std::vector<double> grid(double from, double to, double step) {
   return u;
 }
 
-TEST(Inversion, NoiseFreeSignalsGiveThePlantedFeaturesAndTheOffset) {
-  const double dx = 0.05;
-  const HoleResponses r = analytic_responses(dx);
+// Ten sensors 1 mm apart on [−4.5, 4.5] (the paper's), a 6 mm scan every dx; no signals yet.
+ScanSignals ten_sensor_scan(double dx) {
   ScanSignals sig;
   sig.u = grid(0, 6, dx);
   sig.sensors = grid(-4.5, 4.5, 1.0);
+  return sig;
+}
+
+TEST(Inversion, NoiseFreeSignalsGiveThePlantedFeaturesAndTheOffset) {
+  const double dx = 0.05;
+  const HoleResponses r = analytic_responses(dx);
+  ScanSignals sig = ten_sensor_scan(dx);
   const double offset = 0.3;
   // Plate positions 2 mm apart, one between grid points, amplitudes of holes 0.5, 0.4 and 0.6 mm across.
   const std::vector<Feature> planted{{-6.0, 0.5, 1.0, 0}, {-4.025, 0.4, 0.512, 0}, {-2.0, 0.6, 1.728, 0}};
@@ -96,9 +102,7 @@ TEST(Inversion, NoiseFreeSignalsGiveThePlantedFeaturesAndTheOffset) {
 // worth reporting). Observed: 1e-3, 6e-5 and 8e-5 mm; the floor is the fit's, not the parabola's.
 TEST(Inversion, AnOffsetBetweenGridPointsIsFoundByTheResidualsParabola) {
   const double dx = 0.05, offset = 0.27;
-  ScanSignals sig;
-  sig.u = grid(0, 6, dx);
-  sig.sensors = grid(-4.5, 4.5, 1.0);
+  ScanSignals sig = ten_sensor_scan(dx);
   // On the grid of hole positions q = position − δ (the scan's step): the model exact at the true offset.
   const std::vector<Feature> planted{{-5.73, 0.5, 1.0, 0}, {-3.73, 0.4, 0.512, 0}, {-1.73, 0.6, 1.728, 0}};
   sig.y = simulated_signals(sig.u, sig.sensors, analytic_responses(dx, 0.01), planted, offset);
@@ -119,9 +123,7 @@ TEST(Inversion, AnOffsetBetweenGridPointsIsFoundByTheResidualsParabola) {
 TEST(Inversion, TheStructuredNormalEquationsGiveTheExplicitDesignsFit) {
   const double dx = 0.05;
   const HoleResponses r = analytic_responses(dx);
-  ScanSignals sig;
-  sig.u = grid(0, 6, dx);
-  sig.sensors = grid(-4.5, 4.5, 1.0);
+  ScanSignals sig = ten_sensor_scan(dx);
   const SensorNoise noise{0.6, 0.4, 14};
   const std::vector<Feature> planted{{-4.0, 0.5, 1.0, 0}, {-2.5, 0.5, 0.7, 0}};
   sig.y = with_noise(simulated_signals(sig.u, sig.sensors, r, planted, 0.1), noise, 5);
@@ -157,9 +159,7 @@ TEST(Inversion, TheStructuredNormalEquationsGiveTheExplicitDesignsFit) {
 TEST(Inversion, WithThePapersNoiseThePositionErrorIsWithinTwiceTheCramerRaoBound) {
   const double dx = 0.05;
   const HoleResponses r = analytic_responses(dx);
-  ScanSignals sig;
-  sig.u = grid(0, 6, dx);
-  sig.sensors = grid(-4.5, 4.5, 1.0);
+  ScanSignals sig = ten_sensor_scan(dx);
   const SensorNoise noise{0.6, 0.4, 14};
   const Feature planted{-3.0, 0.5, 1.0, 0};
   const Eigen::MatrixXd clean = simulated_signals(sig.u, sig.sensors, r, {planted}, 0.0);
