@@ -15,10 +15,11 @@
 // residual per offset tried, the features, the naive single-sensor features, the dictionary's size, wall_s
 // per stage, peak_rss_mb).
 //
-// --dictionary DIR reuses the dictionary an earlier invert wrote in DIR instead of building it (11 s of the
-// 15 s on the default scene): refused in one line when its key differs from this run's (another scene or
+// --dictionary DIR reuses the dictionary an earlier invert wrote in DIR instead of building it (19 of the
+// 19.5 s on the default scene): refused in one line when its key differs from this run's (another scene or
 // case: the first line that differs), or when its step, hole positions or virtual sensors do not fit the
 // signals and --offset-range.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -118,7 +119,8 @@ validation::ScanSignals read_signals(const std::string& path, const Scene& scene
                        std::to_string(sig.u[k]) + " mm); the inversion needs a uniform scan");
   return sig;
 }
-// The fit's dense design matrix per offset (two in flight, 200 MB each).
+// The fit's size per offset: Aᵀb passes over hole positions × samples design entries, and the normal
+// equations hold positions² (200 MB per offset in flight at the bound).
 constexpr double kMaxDesign = 2.5e7;
 
 std::string read_text(const std::string& path) {
@@ -224,12 +226,13 @@ int run_invert(const Scene& scene, const std::string& signals_path, const std::s
   const double step = signals.u[1] - signals.u[0];
   const double atoms = pipeline::dictionary_positions(scene, step) + signals.u.size() - 1;
   const double samples = 2.0 * signals.u.size() * signals.sensors.size();
-  if (atoms * samples > kMaxDesign)
-    throw SceneError(signals_path + ": " + std::to_string(signals.u.size()) + " positions every " +
-                     std::to_string(step) + " mm make a fit of " +
-                     std::to_string(static_cast<long long>(atoms)) + " hole positions by " +
-                     std::to_string(static_cast<long long>(samples)) +
-                     " samples; at most 2.5e7 entries: resample the signals coarser or scan a shorter range");
+  if (atoms * std::max(samples, atoms) > kMaxDesign)
+    throw SceneError(
+        signals_path + ": " + std::to_string(signals.u.size()) + " positions every " + std::to_string(step) +
+        " mm make a fit of " + std::to_string(static_cast<long long>(atoms)) + " hole positions by " +
+        std::to_string(static_cast<long long>(samples)) +
+        " samples; at most 2.5e7 for positions times the larger of the two: resample the signals "
+        "coarser or scan a shorter range");
   check_output_dir(out_dir);
   Stopwatch reading;
   std::optional<StoredDictionary> reused;

@@ -291,6 +291,8 @@ check invert_header 'signals_header.csv: header has no column u_mm' "$skinfem" i
 printf 'u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa\n0,1,0.1,0.2\n0,1,0.1,0.2\n' >"$tmp/signals_twice.csv"
 check invert_twice 'signals_twice.csv: row 3: sensor 1 at u = 0 mm is given twice' "$skinfem" invert "$tmp/signals_twice.csv" "$tmp/invert_scene.json" --out "$tmp/out"
 check invert_missing 'no_signals.csv: cannot read the signals file' "$skinfem" invert "$tmp/no_signals.csv" "$tmp/invert_scene.json" --out "$tmp/out"
+awk 'BEGIN { print "u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa"; for (i = 0; i < 5000; ++i) printf "%.3f,1,0,0\n", 0.001 * i }' >"$tmp/signals_long.csv"
+check invert_too_large 'signals_long.csv: 5000 positions every 0.001000 mm make a fit of .* hole positions by 10000 samples; at most 2.5e7' "$skinfem" invert "$tmp/signals_long.csv" "$tmp/invert_scene.json" --out "$tmp/out"
 variant invert_posts 'd["sensors"]["model"] = "post"; d["sensors"].pop("disc_diameter", None); d["sensors"]["post"] = {"diameter": 0.2, "height": 0.4}; '"$sphere"', "sweep": {"from": [-1, 0], "to": [1, 0]}}'
 printf 'u_mm,sensor,varsigma_z_kPa,varsigma_x_kPa\n0,1,0.1,0.2\n0.1,1,0.1,0.2\n' >"$tmp/signals_posts.csv"
 check invert_posts_offset 'invert_posts.json: sensors.model = "post": a post reads the skin only where it is meshed.*give --offset-range 0' "$skinfem" invert "$tmp/signals_posts.csv" "$tmp/invert_posts.json" --out "$tmp/out"
