@@ -95,8 +95,7 @@ std::string dictionary_mismatch(const Scene& scene, const validation::HoleRespon
            std::to_string(dictionary_positions(scene, dx));
   for (const Vec2& p : scene.sensors.positions)
     for (double d : offsets)
-      if (std::none_of(r.sites.begin(), r.sites.end(),
-                       [&](double s) { return std::abs(s - (p[0] - d)) < 1e-6; }))
+      if (validation::site_column(r, p[0] - d) < 0)
         return "it has no virtual sensor at " + mm(p[0] - d) + " (sensor at " + mm(p[0]) + ", offset " +
                mm(d) + "): it was built for another --offset-range";
   return "";

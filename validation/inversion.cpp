@@ -67,16 +67,15 @@ Eigen::VectorXd nnls_gram(const Eigen::MatrixXd& G, const Eigen::VectorXd& c, in
   }
 }
 
-namespace {
-// An atom whose whitened response is below this fraction of the largest is not identifiable (invert_scan).
-constexpr double kIdentifiable = 1e-6;
-
-// The column of responses.R for site s (mm), or −1.
 int site_column(const HoleResponses& r, double s) {
   for (size_t k = 0; k < r.sites.size(); ++k)
     if (std::abs(r.sites[k] - s) < 1e-6) return static_cast<int>(k);
   return -1;
 }
+
+namespace {
+// An atom whose whitened response is below this fraction of the largest is not identifiable (invert_scan).
+constexpr double kIdentifiable = 1e-6;
 
 std::vector<int> sites_for(const std::vector<double>& sensors, const HoleResponses& r, double offset) {
   std::vector<int> k;

@@ -61,6 +61,9 @@ struct Inversion {
   std::vector<double> offsets, residuals;  // every δ tried and its residual
 };
 
+// The index of site s (mm, to 1e-6 mm) in responses.sites, or −1.
+int site_column(const HoleResponses& responses, double s);
+
 // offsets: the δ grid (mm, ascending); every x_i − δ must be one of responses.sites (to 1e-6 mm). p_fa: a
 // feature whose own SNR is below the threshold Φ⁻¹(1 − p_fa) is dropped. single_sensor ≥ 0: invert that
 // sensor's signals alone (the paper's "naive" inversion), else all of them. Throws std::invalid_argument when
